@@ -1,0 +1,67 @@
+#ifndef tribodyn_core_errors_h
+#define tribodyn_core_errors_h
+
+#include <stdexcept>
+#include <string>
+
+namespace tribodyn
+{
+  /**
+   * An error caused by the user's input (parameter file, data file, command
+   * line) or by a run that cannot go on (unstable time step, NaN). Its
+   * message is one paragraph meant for the user: it names the cause and
+   * the fix. The application catches it at top level, prints it on stderr
+   * and exits with a non-zero code, without a crash dump.
+   */
+  class InputError : public std::runtime_error
+  {
+  public:
+    explicit InputError(const std::string &message);
+  };
+
+  /**
+   * A run aborted mid-way for a numerical reason (NaN, divergence, an
+   * unstable time step discovered during the run). Exit code differs from
+   * InputError so that scripts can tell the two apart.
+   */
+  class RunError : public std::runtime_error
+  {
+  public:
+    explicit RunError(const std::string &message);
+  };
+
+  /// Exit codes of the tribodyn executable.
+  namespace exit_code
+  {
+    constexpr int success        = 0;
+    constexpr int input_error    = 2;
+    constexpr int run_error      = 3;
+    constexpr int internal_error = 4;
+  } // namespace exit_code
+
+  /**
+   * Throw an InputError naming parameter @p name (with its section path)
+   * when @p value is not in the interval described by @p lower and
+   * @p upper. Open or closed ends are chosen by the two flags.
+   */
+  void
+  check_parameter_range(const std::string &name,
+                        const double       value,
+                        const double       lower,
+                        const double       upper,
+                        const bool         lower_open,
+                        const bool         upper_open,
+                        const std::string &hint = "");
+
+  /// Throw an InputError naming parameter @p name unless @p condition.
+  void
+  check_parameter(const bool         condition,
+                  const std::string &name,
+                  const std::string &what_is_allowed);
+
+  /// Format a double for messages with enough digits to be unambiguous.
+  std::string
+  format_number(const double value);
+} // namespace tribodyn
+
+#endif

@@ -1,0 +1,56 @@
+#ifndef tribodyn_core_material_h
+#define tribodyn_core_material_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+
+#include <string>
+
+namespace tribodyn
+{
+  /**
+   * An isotropic linear elastic phase: Young's modulus E (Pa), Poisson's
+   * ratio nu and density rho (kg/m^3). Declared in a subsection of its own
+   * ("Matrix", "Heterogeneity", ...).
+   */
+  struct IsotropicElasticMaterial
+  {
+    double youngs_modulus = 30e9;
+    double poisson_ratio  = 0.2;
+    double density        = 1770.;
+
+    /// Declare E, nu, rho in the current subsection with these defaults.
+    static void
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const double              default_youngs_modulus,
+                       const double              default_poisson_ratio,
+                       const double              default_density);
+    /// Parse and check (E > 0, -1 < nu < 0.5, rho > 0); @p section names
+    /// the subsection in error messages.
+    void
+    parse_parameters(dealii::ParameterHandler &prm, const std::string &section);
+
+    /// Lamé's first parameter lambda = E nu / ((1 + nu)(1 - 2 nu)).
+    double
+    lambda() const;
+    /// Shear modulus mu = G = E / (2 (1 + nu)).
+    double
+    mu() const;
+    /// Bulk modulus K = E / (3 (1 - 2 nu)).
+    double
+    bulk_modulus() const;
+    /// P-wave speed in plane strain, sqrt((lambda + 2 mu) / rho).
+    double
+    p_wave_speed() const;
+
+    /**
+     * Plane-strain stiffness in Voigt notation, order (xx, yy, xy) with the
+     * engineering shear strain gamma_xy = 2 eps_xy:
+     * [[lambda + 2mu, lambda, 0], [lambda, lambda + 2mu, 0], [0, 0, mu]].
+     */
+    dealii::Tensor<2, 3>
+    plane_strain_voigt_stiffness() const;
+  };
+} // namespace tribodyn
+
+#endif

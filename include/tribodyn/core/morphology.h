@@ -1,0 +1,159 @@
+#ifndef tribodyn_core_morphology_h
+#define tribodyn_core_morphology_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/grid/tria.h>
+
+#include <string>
+#include <vector>
+
+namespace tribodyn
+{
+  /// Material ids used by morphologies and meshes.
+  namespace material_id
+  {
+    constexpr unsigned int matrix        = 0;
+    constexpr unsigned int heterogeneity = 1;
+  } // namespace material_id
+
+  /**
+   * Parameters of the subsection "Morphology": a rectangle of width (along
+   * x, the sliding direction) by height (along y), described on a grid of
+   * pixels, each pixel holding the matrix or a heterogeneity.
+   */
+  struct MorphologyParameters
+  {
+    enum class Generator
+    {
+      homogeneous,     ///< only matrix
+      random_vertical, ///< random non-overlapping vertical heterogeneities
+      laminate,        ///< layers through the whole rectangle
+      grid_file        ///< material ids read from a plain-text grid
+    };
+    enum class LaminateNormal
+    {
+      x, ///< vertical layers, stacked along x
+      y  ///< horizontal layers, stacked along y
+    };
+
+    Generator generator = Generator::random_vertical;
+    /// Size of the rectangle along x and y (m).
+    double width  = 28e-3;
+    double height = 8e-3;
+    /// Number of pixels along x and y (generators; a grid file sets its own).
+    unsigned int n_pixels_x = 280;
+    unsigned int n_pixels_y = 80;
+
+    /// Target area fraction of heterogeneities (random, laminate).
+    double volume_fraction = 0.1;
+    /// Random vertical heterogeneities: width (m) and height range (m).
+    double       inclusion_width      = 0.1e-3;
+    double       inclusion_min_height = 1.2e-3;
+    double       inclusion_max_height = 3.6e-3;
+    unsigned int random_seed          = 1;
+
+    /// Laminate: orientation and number of (matrix, heterogeneity) periods.
+    LaminateNormal laminate_normal    = LaminateNormal::x;
+    unsigned int   n_laminate_periods = 4;
+
+    /// Grid file: path of the plain-text grid of material ids.
+    std::string grid_file;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /**
+   * A two-phase morphology on a rectangle: a grid of n_x by n_y pixels, each
+   * of material_id::matrix or material_id::heterogeneity. Pixel (i, j) covers
+   * [i h_x, (i+1) h_x] x [j h_y, (j+1) h_y] with j counted from the bottom.
+   * Shared by the homogenization cell problem and the meso pin of the
+   * contact solver (same parameters and seed give the same morphology).
+   */
+  class Morphology
+  {
+  public:
+    Morphology(const double                     width,
+               const double                     height,
+               const unsigned int               n_x,
+               const unsigned int               n_y,
+               const std::vector<unsigned int> &ids);
+
+    /// Build the morphology the parameters describe (generator or file).
+    static Morphology
+    create(const MorphologyParameters &parameters);
+
+    /// Read a plain-text grid: one row of ids per line, top row first;
+    /// blank lines and lines starting with '#' are ignored.
+    static Morphology
+    read_grid_file(const std::string &file_name,
+                   const double       width,
+                   const double       height);
+
+    unsigned int
+    n_pixels_x() const;
+    unsigned int
+    n_pixels_y() const;
+    double
+    width() const;
+    double
+    height() const;
+    double
+    pixel_width() const;
+    double
+    pixel_height() const;
+
+    /// Material id of pixel (i, j), j counted from the bottom.
+    unsigned int
+    pixel(const unsigned int i, const unsigned int j) const;
+
+    /// Material id at a point of the rectangle (points on pixel edges go to
+    /// the pixel above/right, clamped at the far edges).
+    unsigned int
+    material_at(const dealii::Point<2> &p) const;
+
+    /// Area fraction of heterogeneity pixels.
+    double
+    heterogeneity_fraction() const;
+
+    /// Number of distinct heterogeneities (connected groups of pixels),
+    /// as placed by the generator (0 when unknown, e.g. grid files).
+    unsigned int
+    n_heterogeneities() const;
+
+    /// One-line description for the screen and summary.json.
+    std::string
+    description() const;
+
+    /// Write the grid in the format read_grid_file() reads.
+    void
+    write_grid_file(const std::string &file_name) const;
+
+  private:
+    double                    rectangle_width;
+    double                    rectangle_height;
+    unsigned int              n_x;
+    unsigned int              n_y;
+    std::vector<unsigned int> ids; // row-major from the bottom: ids[j n_x + i]
+    unsigned int              n_placed = 0;
+    std::string               origin;
+  };
+
+  /**
+   * Fill @p triangulation (empty on entry) with a structured mesh of the
+   * morphology's rectangle: @p subdivisions_per_pixel by the same number of
+   * quadrilaterals per pixel, so that phase boundaries lie on element
+   * edges, and set each cell's material id from the morphology. Boundary
+   * ids: 0 left (x = 0), 1 right, 2 bottom (y = 0), 3 top. Global
+   * refinement afterwards keeps the ids (children inherit them).
+   */
+  void
+  create_morphology_mesh(const Morphology &          morphology,
+                         const unsigned int          subdivisions_per_pixel,
+                         dealii::Triangulation<2> &  triangulation);
+} // namespace tribodyn
+
+#endif

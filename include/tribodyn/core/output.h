@@ -1,0 +1,101 @@
+#ifndef tribodyn_core_output_h
+#define tribodyn_core_output_h
+
+#include <deal.II/base/mpi.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tribodyn
+{
+  /**
+   * Write @p content to @p path so that a crash never leaves a truncated
+   * file in place of a good one: the text goes to a temporary file in the
+   * same directory, which is then renamed over @p path (rename is atomic on
+   * POSIX file systems). Throws InputError if the file cannot be written.
+   */
+  void
+  write_file_atomically(const std::string &path, const std::string &content);
+
+  /// Create @p directory (and parents) if it does not exist; clear error if
+  /// it cannot be created or is not writable.
+  void
+  create_output_directory(const std::string &directory);
+
+  /// Join a directory and a file name.
+  std::string
+  join_path(const std::string &directory, const std::string &file);
+
+  /**
+   * A CSV time series: a header line, then one row per record. Rows are kept
+   * in memory and the whole file is rewritten atomically by flush(), so the
+   * file on disk is always complete (every line whole) even if the run dies.
+   * flush() is rate limited by @p min_seconds_between_flushes unless forced;
+   * the destructor flushes what was recorded (so an aborted run keeps its
+   * series). Only the process that is given `active = true` (rank 0) writes.
+   */
+  class CsvWriter
+  {
+  public:
+    CsvWriter() = default;
+    CsvWriter(const std::string &             path,
+              const std::vector<std::string> &columns,
+              const bool                      active,
+              const double min_seconds_between_flushes = 2.0);
+    ~CsvWriter();
+
+    CsvWriter(const CsvWriter &) = delete;
+    CsvWriter &
+    operator=(const CsvWriter &) = delete;
+
+    /// Append a row; its size must equal the number of columns.
+    void
+    add_row(const std::vector<double> &values);
+
+    /// Append a row whose first entries are strings (e.g. labels).
+    void
+    add_row(const std::vector<std::string> &labels,
+            const std::vector<double> &     values);
+
+    /// Rewrite the file if enough time has passed since the last flush (or
+    /// always when @p force).
+    void
+    flush(const bool force = false);
+
+    const std::string &
+    path() const;
+
+  private:
+    std::string path_name;
+    std::size_t n_columns = 0;
+    bool        is_active = false;
+    double      min_interval = 2.0;
+    double      last_flush_time = -1e300;
+    bool        dirty = false;
+    std::string text;
+  };
+
+  /**
+   * The `.pvd` index of a series of parallel VTU files, rewritten atomically
+   * each time a record is added so that ParaView can open it mid-run.
+   */
+  class PvdWriter
+  {
+  public:
+    PvdWriter() = default;
+    PvdWriter(const std::string &path, const bool active);
+
+    /// Record that @p file_name (relative to the pvd's directory) holds the
+    /// fields at time @p time.
+    void
+    add(const double time, const std::string &file_name);
+
+  private:
+    std::string                                  path_name;
+    bool                                         is_active = false;
+    std::vector<std::pair<double, std::string>>  records;
+  };
+} // namespace tribodyn
+
+#endif

@@ -1,0 +1,173 @@
+#ifndef tribodyn_homogenization_cell_problem_h
+#define tribodyn_homogenization_cell_problem_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <tribodyn/core/material.h>
+#include <tribodyn/core/morphology.h>
+#include <tribodyn/homogenization/effective_properties.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tribodyn
+{
+  namespace homogenization
+  {
+    /// The boundary conditions of a cell problem.
+    enum class BoundaryCondition
+    {
+      kubc,    ///< kinematic uniform: u = E x on the whole boundary
+      subc,    ///< static uniform: t = Sigma n on the whole boundary
+      periodic ///< u = E x + w, w periodic
+    };
+
+    /// "KUBC", "SUBC", "periodic": the names used in prm files and outputs.
+    std::string
+    to_string(const BoundaryCondition bc);
+
+    /// Parameters of the subsection "Cell problem".
+    struct CellProblemParameters
+    {
+      std::vector<BoundaryCondition> boundary_conditions = {
+        BoundaryCondition::kubc,
+        BoundaryCondition::subc};
+      /// Finite elements per pixel of the morphology along each axis.
+      unsigned int subdivisions_per_pixel = 1;
+      /// Global refinements of that mesh.
+      unsigned int global_refinements = 0;
+      /// Polynomial degree of the Lagrange elements.
+      unsigned int fe_degree = 1;
+      /// Tolerance of CG: residual relative to the norm of the unassembled
+      /// element loads.
+      double       solver_tolerance = 1e-10;
+      unsigned int max_iterations   = 2000;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /// Volume averages of one load case.
+    struct LoadCaseResult
+    {
+      VoigtVector  mean_stress; ///< <sigma> (Pa), (xx, yy, xy)
+      VoigtVector  mean_strain; ///< <eps>, (xx, yy, gamma_xy)
+      double       mean_stress_zz = 0; ///< <sigma_zz> (Pa), plane strain
+      unsigned int cg_iterations  = 0;
+    };
+
+    /// The three load cases of one boundary condition and what follows.
+    struct CellProblemResult
+    {
+      BoundaryCondition             boundary_condition;
+      std::array<LoadCaseResult, 3> load_cases;
+      ApparentProperties            properties;
+    };
+
+    /**
+     * The cell problem of a 2D composite in plane strain: linear
+     * elasticity with one isotropic phase per material id, three unit load
+     * cases per boundary condition. Strain-driven conditions (KUBC,
+     * periodic) solve for the fluctuation w in u = E x + w; the stress-driven
+     * one (SUBC) solves for u with the load written as the volume term
+     * int eps(v) : Sigma (equal to the boundary work of t = Sigma n).
+     * CG with ML AMG (rigid-body modes as near-null space), one hierarchy per
+     * boundary condition reused for its three load cases.
+     */
+    class CellProblem
+    {
+    public:
+      CellProblem(const MPI_Comm                               comm,
+                  const Morphology &                           morphology,
+                  const std::vector<IsotropicElasticMaterial> &phases,
+                  const CellProblemParameters &                parameters,
+                  dealii::TimerOutput &                        timer);
+
+      /// Solve the three load cases of @p bc. When @p output_directory is
+      /// not empty, write the fields of each load case there
+      /// (fields_<BC>.pvd indexing fields_<BC>_<case>.vtu).
+      CellProblemResult
+      solve(const BoundaryCondition bc,
+            const std::string &     output_directory = "");
+
+      /// Write the material map (morphology.vtu).
+      void
+      write_material_map(const std::string &output_directory) const;
+
+      dealii::types::global_dof_index
+      n_dofs() const;
+      dealii::types::global_cell_index
+      n_cells() const;
+      /// Area fraction of each material id, measured on the mesh.
+      std::vector<double>
+      phase_fractions() const;
+
+    private:
+      void
+      setup_mesh();
+      void
+      setup_dofs();
+      void
+      make_constraints(const BoundaryCondition bc);
+      void
+      assemble(const BoundaryCondition bc);
+      void
+      setup_preconditioner();
+      LoadCaseResult
+      postprocess(const BoundaryCondition                     bc,
+                  const unsigned int                          load_case,
+                  const dealii::TrilinosWrappers::MPI::Vector &solution) const;
+      void
+      write_fields(const BoundaryCondition                     bc,
+                   const unsigned int                          load_case,
+                   const dealii::TrilinosWrappers::MPI::Vector &solution,
+                   const std::string &output_directory) const;
+
+      /// Macroscopic strain (strain-driven) or stress (SUBC) of a load case.
+      static VoigtVector
+      unit_load(const unsigned int load_case);
+
+      MPI_Comm                                     mpi_communicator;
+      const Morphology &                           morphology;
+      const std::vector<IsotropicElasticMaterial> &phases;
+      const CellProblemParameters                  parameters;
+      dealii::TimerOutput &                        timer;
+      dealii::ConditionalOStream                   pcout;
+
+      dealii::parallel::distributed::Triangulation<2> triangulation;
+      dealii::FESystem<2>                             fe;
+      dealii::DoFHandler<2>                           dof_handler;
+      dealii::IndexSet                                locally_owned_dofs;
+      dealii::IndexSet                                locally_relevant_dofs;
+
+      dealii::AffineConstraints<double>             constraints;
+      dealii::TrilinosWrappers::SparseMatrix        system_matrix;
+      std::array<dealii::TrilinosWrappers::MPI::Vector, 3> system_rhs;
+      /// Norm of the unassembled element loads of each load case: the
+      /// scale of the CG tolerance. The assembled right-hand side cancels
+      /// between elements (to round-off for a single phase), so it is no
+      /// scale for the accuracy of the averages.
+      std::array<double, 3> load_scale;
+      dealii::TrilinosWrappers::PreconditionAMG     preconditioner;
+      /// Near-null space of the AMG; must outlive the preconditioner setup.
+      std::unique_ptr<Epetra_MultiVector> rigid_body_modes;
+    };
+  } // namespace homogenization
+} // namespace tribodyn
+
+#endif

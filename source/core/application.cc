@@ -1,0 +1,246 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <tribodyn/core/application.h>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/global_parameters.h>
+#include <tribodyn/core/output.h>
+#include <tribodyn/core/problem.h>
+#include <tribodyn/core/version.h>
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace tribodyn
+{
+  namespace
+  {
+    void
+    print_usage(std::ostream &out)
+    {
+      out << "tribodyn " << version_string << "\n"
+          << "Dynamics of friction in composites: homogenization, explicit "
+             "contact with friction, movable cellular automata.\n\n"
+          << "Usage:\n"
+          << "  tribodyn FILE.prm                 run the problem described "
+             "in FILE.prm\n"
+          << "  mpirun -np N tribodyn FILE.prm    the same on N MPI ranks\n"
+          << "  tribodyn --print-parameters [PROBLEM]\n"
+          << "                                    print every parameter with "
+             "its documentation and default\n"
+          << "  tribodyn --version | --help\n\n"
+          << "Problems:";
+      for (const auto &p : registered_problems())
+        out << "\n  " << p.name << ": " << p.description;
+      out << "\n";
+    }
+
+
+    /// Turn a deal.II exception raised while reading parameters into the
+    /// one-paragraph message of an InputError.
+    std::string
+    describe_parameter_exception(const dealii::ExceptionBase &exception,
+                                 const std::string &          file)
+    {
+      std::ostringstream info;
+      exception.print_info(info);
+      std::string text = info.str();
+      // Collapse the multi-line deal.II message into one paragraph.
+      std::string paragraph;
+      bool        space = false;
+      for (const char c : text)
+        {
+          if (c == '\n' || c == ' ' || c == '\t')
+            space = !paragraph.empty();
+          else
+            {
+              if (space)
+                paragraph += ' ';
+              paragraph += c;
+              space = false;
+            }
+        }
+      return "Error in the parameter file '" + file + "': " + paragraph +
+             " Run 'tribodyn --print-parameters PROBLEM' to see every valid "
+             "parameter with its documentation.";
+    }
+
+
+    void
+    declare_all(dealii::ParameterHandler &prm, const ProblemDescription &p)
+    {
+      GlobalParameters::declare_parameters(prm);
+      p.declare_parameters(prm);
+    }
+
+
+    void
+    print_parameters(std::ostream &out, const std::string &only_problem)
+    {
+      bool found = only_problem.empty();
+      for (const auto &p : registered_problems())
+        {
+          if (!only_problem.empty() && p.name != only_problem)
+            continue;
+          found = true;
+          dealii::ParameterHandler prm;
+          declare_all(prm, p);
+          prm.set("Problem", p.name);
+          out << "# Parameters of 'set Problem = " << p.name << "' ("
+              << p.description << "), tribodyn " << version_string << "\n";
+          prm.print_parameters(out, dealii::ParameterHandler::PRM);
+          out << "\n";
+        }
+      if (!found)
+        find_problem(only_problem); // throws with the list of problems
+    }
+
+
+    void
+    check_readable(const std::string &file)
+    {
+      std::ifstream in(file);
+      if (!in)
+        throw InputError("Cannot read the parameter file '" + file +
+                         "': it does not exist or is not readable. Give the "
+                         "path of a .prm file (examples are in prm/).");
+    }
+
+
+    int
+    run_parameter_file(const std::string &file, const MPI_Comm comm)
+    {
+      check_readable(file);
+
+      // First pass: only the global parameters, to learn which problem's
+      // parameters to declare. Undefined entries are skipped here and
+      // checked strictly in the second pass.
+      std::string problem_name;
+      {
+        dealii::ParameterHandler prm;
+        GlobalParameters::declare_parameters(prm);
+        try
+          {
+            prm.parse_input(file, "", true);
+          }
+        catch (const dealii::ExceptionBase &e)
+          {
+            throw InputError(describe_parameter_exception(e, file));
+          }
+        problem_name = prm.get("Problem");
+      }
+      const ProblemDescription &description = find_problem(problem_name);
+
+      dealii::ParameterHandler prm;
+      declare_all(prm, description);
+      try
+        {
+          prm.parse_input(file);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          throw InputError(describe_parameter_exception(e, file));
+        }
+
+      GlobalParameters global;
+      global.parse_parameters(prm);
+
+      RunContext context;
+      context.mpi_communicator  = comm;
+      context.output_directory  = global.output_directory;
+      context.parameter_file    = file;
+      context.progress_interval = global.progress_interval;
+
+      const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+
+      // Parse (and check) the problem's parameters before touching the disk.
+      std::unique_ptr<Problem> problem = description.create(prm, context);
+
+      if (root)
+        {
+          create_output_directory(global.output_directory);
+          std::ostringstream used;
+          used << "# Parameters used by tribodyn " << version_string
+               << " for '" << file << "'\n";
+          prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
+          write_file_atomically(join_path(global.output_directory,
+                                          "parameters.prm"),
+                                used.str());
+        }
+      MPI_Barrier(comm);
+
+      problem->run();
+      return exit_code::success;
+    }
+  } // namespace
+
+
+  int
+  run_application(int argc, char **argv)
+  {
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    const bool     root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+
+    std::vector<std::string> args(argv + 1, argv + argc);
+    try
+      {
+        if (args.empty() || args[0] == "--help" || args[0] == "-h")
+          {
+            if (root)
+              print_usage(args.empty() ? std::cerr : std::cout);
+            return args.empty() ? exit_code::input_error : exit_code::success;
+          }
+        if (args[0] == "--version")
+          {
+            if (root)
+              std::cout << "tribodyn " << version_string << std::endl;
+            return exit_code::success;
+          }
+        if (args[0] == "--print-parameters")
+          {
+            if (args.size() > 2)
+              throw InputError("'--print-parameters' takes at most one "
+                               "argument, the problem name.");
+            if (root)
+              print_parameters(std::cout, args.size() == 2 ? args[1] : "");
+            return exit_code::success;
+          }
+        if (args[0].size() > 1 && args[0][0] == '-')
+          throw InputError("Unknown option '" + args[0] +
+                           "'. Run 'tribodyn --help' for the usage.");
+        if (args.size() != 1)
+          throw InputError("tribodyn takes one parameter file; got " +
+                           std::to_string(args.size()) +
+                           " arguments. Run 'tribodyn --help' for the usage.");
+        return run_parameter_file(args[0], comm);
+      }
+    catch (const InputError &e)
+      {
+        if (root)
+          std::cerr << "tribodyn: error: " << e.what() << std::endl;
+        return exit_code::input_error;
+      }
+    catch (const RunError &e)
+      {
+        if (root)
+          std::cerr << "tribodyn: the run stopped: " << e.what()
+                    << " The outputs written so far are kept." << std::endl;
+        return exit_code::run_error;
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        std::cerr << "tribodyn: internal error (please report it): ";
+        e.print_info(std::cerr);
+        std::cerr << std::endl;
+        return exit_code::internal_error;
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr << "tribodyn: internal error (please report it): "
+                  << e.what() << std::endl;
+        return exit_code::internal_error;
+      }
+  }
+} // namespace tribodyn

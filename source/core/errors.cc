@@ -1,0 +1,69 @@
+#include <tribodyn/core/errors.h>
+
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace tribodyn
+{
+  InputError::InputError(const std::string &message)
+    : std::runtime_error(message)
+  {}
+
+
+  RunError::RunError(const std::string &message)
+    : std::runtime_error(message)
+  {}
+
+
+  std::string
+  format_number(const double value)
+  {
+    std::ostringstream s;
+    s << std::setprecision(10) << value;
+    return s.str();
+  }
+
+
+  void
+  check_parameter_range(const std::string &name,
+                        const double       value,
+                        const double       lower,
+                        const double       upper,
+                        const bool         lower_open,
+                        const bool         upper_open,
+                        const std::string &hint)
+  {
+    const bool above =
+      lower_open ? (value > lower) : (value >= lower);
+    const bool below =
+      upper_open ? (value < upper) : (value <= upper);
+    if (above && below)
+      return;
+
+    std::ostringstream message;
+    message << "Parameter '" << name << "' = " << format_number(value)
+            << " is out of range: it must lie in " << (lower_open ? "(" : "[")
+            << (lower == -std::numeric_limits<double>::max() ?
+                  std::string("-inf") :
+                  format_number(lower))
+            << ", "
+            << (upper == std::numeric_limits<double>::max() ?
+                  std::string("inf") :
+                  format_number(upper))
+            << (upper_open ? ")" : "]") << ".";
+    if (!hint.empty())
+      message << " " << hint;
+    throw InputError(message.str());
+  }
+
+
+  void
+  check_parameter(const bool         condition,
+                  const std::string &name,
+                  const std::string &what_is_allowed)
+  {
+    if (!condition)
+      throw InputError("Parameter '" + name + "': " + what_is_allowed);
+  }
+} // namespace tribodyn

@@ -1,0 +1,533 @@
+#include <deal.II/grid/grid_generator.h>
+
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/morphology.h>
+#include <tribodyn/core/output.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <sstream>
+
+namespace tribodyn
+{
+  void
+  MorphologyParameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using dealii::Patterns::Double;
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::Selection;
+    prm.enter_subsection("Morphology");
+    {
+      prm.declare_entry(
+        "Generator",
+        "random vertical",
+        Selection("homogeneous|random vertical|laminate|grid file"),
+        "How the material map is made: 'homogeneous' (matrix only), "
+        "'random vertical' (random non-overlapping vertical heterogeneities, "
+        "seed 001 Fig. 1), 'laminate' (layers through the whole rectangle), "
+        "'grid file' (plain-text grid of material ids, see 'Grid file').");
+      prm.declare_entry("Width",
+                        "0.028",
+                        Double(),
+                        "Size of the rectangle along x (the sliding "
+                        "direction), in m.");
+      prm.declare_entry("Height",
+                        "0.008",
+                        Double(),
+                        "Size of the rectangle along y, in m.");
+      prm.declare_entry("Pixels in x",
+                        "280",
+                        Integer(1),
+                        "Number of pixels of the material map along x "
+                        "(generators only; a grid file sets its own).");
+      prm.declare_entry("Pixels in y",
+                        "80",
+                        Integer(1),
+                        "Number of pixels of the material map along y.");
+      prm.declare_entry("Volume fraction",
+                        "0.1",
+                        Double(),
+                        "Target area fraction of heterogeneities, in (0, 1) "
+                        "('random vertical' and 'laminate').");
+      prm.declare_entry("Heterogeneity width",
+                        "0.0001",
+                        Double(),
+                        "Width (along x) of each random vertical "
+                        "heterogeneity, in m; a multiple of the pixel "
+                        "width.");
+      prm.declare_entry("Heterogeneity min height",
+                        "0.0012",
+                        Double(),
+                        "Smallest height of a random vertical "
+                        "heterogeneity, in m (rounded up to whole pixels).");
+      prm.declare_entry("Heterogeneity max height",
+                        "0.0036",
+                        Double(),
+                        "Largest height of a random vertical heterogeneity, "
+                        "in m (rounded down to whole pixels).");
+      prm.declare_entry("Random seed",
+                        "1",
+                        Integer(0),
+                        "Seed of the random number generator: each seed "
+                        "gives one random morphology (the seed 001 study "
+                        "used six: seeds 1 to 6).");
+      prm.declare_entry("Laminate normal",
+                        "x",
+                        Selection("x|y"),
+                        "Stacking direction of a laminate: 'x' gives "
+                        "vertical layers, 'y' horizontal ones.");
+      prm.declare_entry("Laminate periods",
+                        "4",
+                        Integer(1),
+                        "Number of (matrix, heterogeneity) layer pairs of a "
+                        "laminate.");
+      prm.declare_entry("Grid file",
+                        "",
+                        dealii::Patterns::Anything(),
+                        "Plain-text grid of material ids (0 matrix, 1 "
+                        "heterogeneity), one row of pixels per line, top "
+                        "row first; '#' starts a comment line. The grid is "
+                        "stretched over Width x Height.");
+    }
+    prm.leave_subsection();
+  }
+
+
+  void
+  MorphologyParameters::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    const double inf = std::numeric_limits<double>::max();
+    prm.enter_subsection("Morphology");
+    {
+      const std::string g = prm.get("Generator");
+      generator = g == "homogeneous"     ? Generator::homogeneous :
+                  g == "random vertical" ? Generator::random_vertical :
+                  g == "laminate"        ? Generator::laminate :
+                                           Generator::grid_file;
+      width                = prm.get_double("Width");
+      height               = prm.get_double("Height");
+      n_pixels_x           = prm.get_integer("Pixels in x");
+      n_pixels_y           = prm.get_integer("Pixels in y");
+      volume_fraction      = prm.get_double("Volume fraction");
+      inclusion_width      = prm.get_double("Heterogeneity width");
+      inclusion_min_height = prm.get_double("Heterogeneity min height");
+      inclusion_max_height = prm.get_double("Heterogeneity max height");
+      random_seed          = prm.get_integer("Random seed");
+      laminate_normal      = prm.get("Laminate normal") == "x" ?
+                               LaminateNormal::x :
+                               LaminateNormal::y;
+      n_laminate_periods   = prm.get_integer("Laminate periods");
+      grid_file            = prm.get("Grid file");
+    }
+    prm.leave_subsection();
+
+    check_parameter_range("Morphology/Width", width, 0, inf, true, true);
+    check_parameter_range("Morphology/Height", height, 0, inf, true, true);
+    if (generator == Generator::random_vertical ||
+        generator == Generator::laminate)
+      check_parameter_range("Morphology/Volume fraction",
+                            volume_fraction,
+                            0,
+                            1,
+                            true,
+                            true,
+                            "It is the area fraction of heterogeneities; use "
+                            "'Generator = homogeneous' for a single phase.");
+    if (generator == Generator::random_vertical)
+      {
+        check_parameter_range("Morphology/Heterogeneity width",
+                              inclusion_width,
+                              0,
+                              width,
+                              true,
+                              false);
+        check_parameter_range("Morphology/Heterogeneity min height",
+                              inclusion_min_height,
+                              0,
+                              height,
+                              true,
+                              false);
+        check_parameter_range("Morphology/Heterogeneity max height",
+                              inclusion_max_height,
+                              inclusion_min_height,
+                              height,
+                              false,
+                              false,
+                              "It must be at least the min height and at most "
+                              "the rectangle's height.");
+      }
+    if (generator == Generator::grid_file)
+      check_parameter(!grid_file.empty(),
+                      "Morphology/Grid file",
+                      "'Generator = grid file' needs the path of the grid "
+                      "file.");
+  }
+
+
+  Morphology::Morphology(const double                     width,
+                         const double                     height,
+                         const unsigned int               n_x,
+                         const unsigned int               n_y,
+                         const std::vector<unsigned int> &ids)
+    : rectangle_width(width)
+    , rectangle_height(height)
+    , n_x(n_x)
+    , n_y(n_y)
+    , ids(ids)
+    , origin("given")
+  {
+    if (ids.size() != static_cast<std::size_t>(n_x) * n_y)
+      throw std::logic_error("Morphology: ids do not match the grid size");
+  }
+
+
+  namespace
+  {
+    /// Uniform integer in [low, high] from a 32-bit generator (the bias of
+    /// the multiply-shift method is below 1e-9 for the ranges used here).
+    unsigned int
+    uniform_integer(std::mt19937 &rng, const unsigned int low,
+                    const unsigned int high)
+    {
+      const std::uint64_t range = static_cast<std::uint64_t>(high) - low + 1;
+      return low + static_cast<unsigned int>(
+                     (static_cast<std::uint64_t>(rng()) * range) >> 32);
+    }
+
+
+    /// Number of whole pixels of size @p pixel in @p length, checking that
+    /// @p length is a multiple of @p pixel.
+    unsigned int
+    pixels_exact(const double length, const double pixel,
+                 const std::string &name)
+    {
+      const double       ratio = length / pixel;
+      const unsigned int n     = static_cast<unsigned int>(std::lround(ratio));
+      check_parameter(n >= 1 && std::abs(ratio - n) < 1e-6 * ratio,
+                      name,
+                      "the value " + format_number(length) +
+                        " m is not a whole number of pixels of " +
+                        format_number(pixel) +
+                        " m. Change it or the number of pixels so that the "
+                        "heterogeneity boundaries fall on pixel edges.");
+      return n;
+    }
+  } // namespace
+
+
+  Morphology
+  Morphology::create(const MorphologyParameters &p)
+  {
+    using Generator = MorphologyParameters::Generator;
+    if (p.generator == Generator::grid_file)
+      return read_grid_file(p.grid_file, p.width, p.height);
+
+    const unsigned int        nx = p.n_pixels_x, ny = p.n_pixels_y;
+    std::vector<unsigned int> ids(static_cast<std::size_t>(nx) * ny,
+                                  material_id::matrix);
+    Morphology                m(p.width, p.height, nx, ny, ids);
+
+    if (p.generator == Generator::homogeneous)
+      {
+        m.origin = "homogeneous matrix";
+        return m;
+      }
+
+    if (p.generator == Generator::laminate)
+      {
+        const bool         along_x = p.laminate_normal ==
+                             MorphologyParameters::LaminateNormal::x;
+        const unsigned int n       = along_x ? nx : ny;
+        check_parameter(n % p.n_laminate_periods == 0,
+                        "Morphology/Laminate periods",
+                        "the number of pixels along the stacking direction (" +
+                          std::to_string(n) +
+                          ") must be a multiple of the number of periods (" +
+                          std::to_string(p.n_laminate_periods) + ").");
+        const unsigned int period = n / p.n_laminate_periods;
+        const unsigned int layer  = static_cast<unsigned int>(
+          std::lround(p.volume_fraction * period));
+        check_parameter(layer >= 1 && layer < period,
+                        "Morphology/Volume fraction",
+                        "a laminate period of " + std::to_string(period) +
+                          " pixels cannot hold a heterogeneity layer of "
+                          "fraction " +
+                          format_number(p.volume_fraction) +
+                          "; use more pixels or fewer periods.");
+        for (unsigned int j = 0; j < ny; ++j)
+          for (unsigned int i = 0; i < nx; ++i)
+            {
+              const unsigned int k = along_x ? i : j;
+              // The heterogeneity layer sits in the middle of each period.
+              const unsigned int offset = (period - layer) / 2;
+              if (k % period >= offset && k % period < offset + layer)
+                m.ids[j * nx + i] = material_id::heterogeneity;
+            }
+        m.n_placed = p.n_laminate_periods;
+        m.origin   = std::string("laminate, layers normal to ") +
+                   (along_x ? "x" : "y");
+        return m;
+      }
+
+    // Random non-overlapping vertical heterogeneities. Each one is a
+    // rectangle of w pixels by a random number of pixels in
+    // [h_min, h_max]; a candidate is rejected if it touches or overlaps one
+    // already placed (a one-pixel gap keeps them distinct). Placement stops
+    // when the area is closest to the target.
+    const double       hx = p.width / nx, hy = p.height / ny;
+    const unsigned int w =
+      pixels_exact(p.inclusion_width, hx, "Morphology/Heterogeneity width");
+    const unsigned int h_min = static_cast<unsigned int>(
+      std::ceil(p.inclusion_min_height / hy - 1e-9));
+    const unsigned int h_max = static_cast<unsigned int>(
+      std::floor(p.inclusion_max_height / hy + 1e-9));
+    check_parameter(h_min >= 1 && h_min <= h_max && h_max <= ny,
+                    "Morphology/Heterogeneity min height",
+                    "the height range [" +
+                      format_number(p.inclusion_min_height) + ", " +
+                      format_number(p.inclusion_max_height) +
+                      "] m holds no whole number of pixels of height " +
+                      format_number(hy) + " m.");
+    check_parameter(w + 2 <= nx,
+                    "Morphology/Heterogeneity width",
+                    "the heterogeneities are as wide as the rectangle.");
+
+    const double target_area =
+      p.volume_fraction * static_cast<double>(nx) * ny;
+    std::vector<bool> occupied_or_near(static_cast<std::size_t>(nx) * ny,
+                                       false);
+    std::mt19937      rng(p.random_seed);
+    double            area = 0;
+    unsigned long     attempts = 0;
+    const unsigned long max_attempts = 1000000;
+    while (attempts < max_attempts)
+      {
+        ++attempts;
+        const unsigned int h  = uniform_integer(rng, h_min, h_max);
+        const unsigned int x0 = uniform_integer(rng, 0, nx - w);
+        const unsigned int y0 = uniform_integer(rng, 0, ny - h);
+        if (area + w * h > target_area + 0.5 * w * h)
+          {
+            // This one would overshoot more than it helps: stop if even the
+            // smallest one would overshoot, else draw another.
+            if (area + 0.5 * w * h_min >= target_area)
+              break;
+            continue;
+          }
+        bool free = true;
+        for (unsigned int j = y0; j < y0 + h && free; ++j)
+          for (unsigned int i = x0; i < x0 + w && free; ++i)
+            free = !occupied_or_near[j * nx + i];
+        if (!free)
+          continue;
+        for (unsigned int j = y0; j < y0 + h; ++j)
+          for (unsigned int i = x0; i < x0 + w; ++i)
+            m.ids[j * nx + i] = material_id::heterogeneity;
+        // Mark the placed rectangle grown by one pixel as unavailable.
+        for (unsigned int j = (y0 > 0 ? y0 - 1 : 0);
+             j < std::min(ny, y0 + h + 1);
+             ++j)
+          for (unsigned int i = (x0 > 0 ? x0 - 1 : 0);
+               i < std::min(nx, x0 + w + 1);
+               ++i)
+            occupied_or_near[j * nx + i] = true;
+        area += w * h;
+        ++m.n_placed;
+      }
+    if (attempts >= max_attempts &&
+        std::abs(area - target_area) > w * h_max)
+      throw InputError(
+        "Could not place non-overlapping heterogeneities up to the volume "
+        "fraction " +
+        format_number(p.volume_fraction) + " (reached " +
+        format_number(area / (static_cast<double>(nx) * ny)) + " after " +
+        std::to_string(max_attempts) +
+        " attempts). Lower 'Morphology/Volume fraction' or the "
+        "heterogeneity size, or use more pixels.");
+    m.origin = "random vertical heterogeneities, seed " +
+               std::to_string(p.random_seed);
+    return m;
+  }
+
+
+  Morphology
+  Morphology::read_grid_file(const std::string &file_name,
+                             const double       width,
+                             const double       height)
+  {
+    std::ifstream in(file_name);
+    if (!in)
+      throw InputError("Cannot read the morphology grid file '" + file_name +
+                       "' (parameter 'Morphology/Grid file'): it does not "
+                       "exist or is not readable.");
+    std::vector<std::vector<unsigned int>> rows;
+    std::string                            line;
+    unsigned int                           line_number = 0;
+    while (std::getline(in, line))
+      {
+        ++line_number;
+        const auto first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#')
+          continue;
+        std::istringstream        tokens(line);
+        std::string               token;
+        std::vector<unsigned int> row;
+        while (tokens >> token)
+          {
+            if (token != "0" && token != "1")
+              throw InputError("Morphology grid file '" + file_name +
+                               "', line " + std::to_string(line_number) +
+                               ": '" + token +
+                               "' is not a material id. Allowed ids are 0 "
+                               "(matrix) and 1 (heterogeneity).");
+            row.push_back(token == "1" ? material_id::heterogeneity :
+                                         material_id::matrix);
+          }
+        if (!rows.empty() && row.size() != rows.front().size())
+          throw InputError("Morphology grid file '" + file_name + "', line " +
+                           std::to_string(line_number) + " has " +
+                           std::to_string(row.size()) +
+                           " ids where the first row has " +
+                           std::to_string(rows.front().size()) +
+                           ": every row must have the same length.");
+        rows.push_back(row);
+      }
+    if (rows.empty())
+      throw InputError("Morphology grid file '" + file_name +
+                       "' holds no rows of material ids.");
+    const unsigned int        nx = rows.front().size(), ny = rows.size();
+    std::vector<unsigned int> ids(static_cast<std::size_t>(nx) * ny);
+    for (unsigned int r = 0; r < ny; ++r)
+      for (unsigned int i = 0; i < nx; ++i)
+        ids[(ny - 1 - r) * nx + i] = rows[r][i]; // top row first in the file
+    Morphology m(width, height, nx, ny, ids);
+    m.origin = "grid file " + file_name;
+    return m;
+  }
+
+
+  unsigned int
+  Morphology::n_pixels_x() const
+  {
+    return n_x;
+  }
+
+  unsigned int
+  Morphology::n_pixels_y() const
+  {
+    return n_y;
+  }
+
+  double
+  Morphology::width() const
+  {
+    return rectangle_width;
+  }
+
+  double
+  Morphology::height() const
+  {
+    return rectangle_height;
+  }
+
+  double
+  Morphology::pixel_width() const
+  {
+    return rectangle_width / n_x;
+  }
+
+  double
+  Morphology::pixel_height() const
+  {
+    return rectangle_height / n_y;
+  }
+
+  unsigned int
+  Morphology::pixel(const unsigned int i, const unsigned int j) const
+  {
+    return ids[static_cast<std::size_t>(j) * n_x + i];
+  }
+
+
+  unsigned int
+  Morphology::material_at(const dealii::Point<2> &p) const
+  {
+    const auto clamp = [](const double v, const unsigned int n) {
+      const long k = static_cast<long>(std::floor(v));
+      return static_cast<unsigned int>(
+        std::min<long>(std::max<long>(k, 0), static_cast<long>(n) - 1));
+    };
+    return pixel(clamp(p[0] / pixel_width(), n_x),
+                 clamp(p[1] / pixel_height(), n_y));
+  }
+
+
+  double
+  Morphology::heterogeneity_fraction() const
+  {
+    std::size_t count = 0;
+    for (const unsigned int id : ids)
+      count += (id == material_id::heterogeneity);
+    return static_cast<double>(count) / ids.size();
+  }
+
+
+  unsigned int
+  Morphology::n_heterogeneities() const
+  {
+    return n_placed;
+  }
+
+
+  std::string
+  Morphology::description() const
+  {
+    std::ostringstream s;
+    s << origin << "; " << n_x << " x " << n_y << " pixels over "
+      << rectangle_width * 1e3 << " mm x " << rectangle_height * 1e3
+      << " mm; heterogeneity fraction " << heterogeneity_fraction();
+    if (n_placed > 0)
+      s << " (" << n_placed << " heterogeneities)";
+    return s.str();
+  }
+
+
+  void
+  Morphology::write_grid_file(const std::string &file_name) const
+  {
+    std::ostringstream out;
+    out << "# tribodyn morphology: " << description() << "\n"
+        << "# one row of pixels per line, top row first; 0 matrix, 1 "
+           "heterogeneity\n";
+    for (unsigned int r = 0; r < n_y; ++r)
+      {
+        for (unsigned int i = 0; i < n_x; ++i)
+          out << (i > 0 ? " " : "") << pixel(i, n_y - 1 - r);
+        out << "\n";
+      }
+    write_file_atomically(file_name, out.str());
+  }
+
+
+  void
+  create_morphology_mesh(const Morphology &         morphology,
+                         const unsigned int         subdivisions_per_pixel,
+                         dealii::Triangulation<2> &triangulation)
+  {
+    const std::vector<unsigned int> repetitions = {
+      morphology.n_pixels_x() * subdivisions_per_pixel,
+      morphology.n_pixels_y() * subdivisions_per_pixel};
+    dealii::GridGenerator::subdivided_hyper_rectangle(
+      triangulation,
+      repetitions,
+      dealii::Point<2>(0, 0),
+      dealii::Point<2>(morphology.width(), morphology.height()),
+      /*colorize = */ true);
+    // Every coarse cell (including artificial ones of a distributed
+    // triangulation) gets its id, so that all ranks agree.
+    for (const auto &cell : triangulation.cell_iterators_on_level(0))
+      cell->set_material_id(morphology.material_at(cell->center()));
+  }
+} // namespace tribodyn

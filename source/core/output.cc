@@ -1,0 +1,209 @@
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/output.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace tribodyn
+{
+  namespace
+  {
+    double
+    seconds_now()
+    {
+      return std::chrono::duration<double>(
+               std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+    }
+  } // namespace
+
+
+  void
+  write_file_atomically(const std::string &path, const std::string &content)
+  {
+    const std::string temporary =
+      path + ".tmp." + std::to_string(static_cast<long>(getpid()));
+    {
+      std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+      if (!out)
+        throw InputError("Cannot write the output file '" + path +
+                         "' (opening '" + temporary +
+                         "' failed: " + std::strerror(errno) +
+                         "). Check that 'Output directory' is writable and "
+                         "that the disk is not full.");
+      out << content;
+      out.flush();
+      if (!out)
+        throw InputError("Writing the output file '" + path +
+                         "' failed (disk full?).");
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0)
+      {
+        std::remove(temporary.c_str());
+        throw InputError("Cannot rename '" + temporary + "' to '" + path +
+                         "': " + std::strerror(errno) + ".");
+      }
+  }
+
+
+  void
+  create_output_directory(const std::string &directory)
+  {
+    if (directory.empty())
+      throw InputError("Parameter 'Output directory' is empty: give the "
+                       "directory where the results should be written.");
+    // Create every component of the path in turn (mkdir -p).
+    std::string partial;
+    std::size_t position = 0;
+    while (position != std::string::npos)
+      {
+        position = directory.find('/', position + 1);
+        partial  = directory.substr(0, position);
+        if (partial.empty())
+          continue;
+        if (mkdir(partial.c_str(), 0755) != 0 && errno != EEXIST)
+          throw InputError("Cannot create the output directory '" +
+                           directory + "' (at '" + partial +
+                           "': " + std::strerror(errno) +
+                           "). Set 'Output directory' to a writable path.");
+      }
+    struct stat info;
+    if (stat(directory.c_str(), &info) != 0 || !S_ISDIR(info.st_mode))
+      throw InputError("'Output directory' = '" + directory +
+                       "' exists but is not a directory.");
+    if (access(directory.c_str(), W_OK) != 0)
+      throw InputError("The output directory '" + directory +
+                       "' is not writable. Set 'Output directory' to a "
+                       "writable path.");
+  }
+
+
+  std::string
+  join_path(const std::string &directory, const std::string &file)
+  {
+    if (directory.empty() || directory.back() == '/')
+      return directory + file;
+    return directory + "/" + file;
+  }
+
+
+  CsvWriter::CsvWriter(const std::string &             path,
+                       const std::vector<std::string> &columns,
+                       const bool                      active,
+                       const double min_seconds_between_flushes)
+    : path_name(path)
+    , n_columns(columns.size())
+    , is_active(active)
+    , min_interval(min_seconds_between_flushes)
+  {
+    for (unsigned int i = 0; i < columns.size(); ++i)
+      text += (i > 0 ? "," : "") + columns[i];
+    text += "\n";
+    dirty = true;
+    flush(true);
+  }
+
+
+  CsvWriter::~CsvWriter()
+  {
+    try
+      {
+        flush(true);
+      }
+    catch (...)
+      {
+        // A destructor must not throw; the file keeps its last good state.
+      }
+  }
+
+
+  void
+  CsvWriter::add_row(const std::vector<double> &values)
+  {
+    add_row({}, values);
+  }
+
+
+  void
+  CsvWriter::add_row(const std::vector<std::string> &labels,
+                     const std::vector<double> &     values)
+  {
+    if (labels.size() + values.size() != n_columns)
+      throw std::logic_error("CsvWriter: row of " +
+                             std::to_string(labels.size() + values.size()) +
+                             " entries for " + std::to_string(n_columns) +
+                             " columns in " + path_name);
+    if (!is_active)
+      return;
+    std::ostringstream row;
+    row << std::setprecision(10);
+    bool first = true;
+    for (const auto &l : labels)
+      {
+        row << (first ? "" : ",") << l;
+        first = false;
+      }
+    for (const double v : values)
+      {
+        row << (first ? "" : ",") << v;
+        first = false;
+      }
+    row << "\n";
+    text += row.str();
+    dirty = true;
+  }
+
+
+  void
+  CsvWriter::flush(const bool force)
+  {
+    if (!is_active || !dirty || path_name.empty())
+      return;
+    const double now = seconds_now();
+    if (!force && now - last_flush_time < min_interval)
+      return;
+    write_file_atomically(path_name, text);
+    last_flush_time = now;
+    dirty           = false;
+  }
+
+
+  const std::string &
+  CsvWriter::path() const
+  {
+    return path_name;
+  }
+
+
+  PvdWriter::PvdWriter(const std::string &path, const bool active)
+    : path_name(path)
+    , is_active(active)
+  {}
+
+
+  void
+  PvdWriter::add(const double time, const std::string &file_name)
+  {
+    records.emplace_back(time, file_name);
+    if (!is_active)
+      return;
+    std::ostringstream out;
+    out << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"Collection\" version=\"0.1\" "
+           "byte_order=\"LittleEndian\">\n"
+        << "  <Collection>\n";
+    out << std::setprecision(12);
+    for (const auto &r : records)
+      out << "    <DataSet timestep=\"" << r.first
+          << "\" group=\"\" part=\"0\" file=\"" << r.second << "\"/>\n";
+    out << "  </Collection>\n</VTKFile>\n";
+    write_file_atomically(path_name, out.str());
+  }
+} // namespace tribodyn

@@ -1,0 +1,800 @@
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/output.h>
+#include <tribodyn/homogenization/cell_problem.h>
+
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+
+#include <cmath>
+#include <sstream>
+
+namespace tribodyn
+{
+  namespace homogenization
+  {
+    using namespace dealii;
+
+    std::string
+    to_string(const BoundaryCondition bc)
+    {
+      switch (bc)
+        {
+          case BoundaryCondition::kubc:
+            return "KUBC";
+          case BoundaryCondition::subc:
+            return "SUBC";
+          case BoundaryCondition::periodic:
+            return "periodic";
+        }
+      return "unknown";
+    }
+
+
+    void
+    CellProblemParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Cell problem");
+      {
+        prm.declare_entry(
+          "Boundary conditions",
+          "KUBC, SUBC",
+          Patterns::MultipleSelection("KUBC|SUBC|periodic"),
+          "Boundary conditions of the cell problems, a comma-separated list: "
+          "'KUBC' (u = E x on the boundary: apparent stiffness, an upper "
+          "bound), 'SUBC' (t = Sigma n on the boundary: apparent compliance, a "
+          "lower bound), 'periodic' (periodic fluctuation; exact for a "
+          "periodic morphology).");
+        prm.declare_entry("Subdivisions per pixel",
+                          "1",
+                          Patterns::Integer(1),
+                          "Elements per morphology pixel along each axis "
+                          "(coarse mesh).");
+        prm.declare_entry("Global refinements",
+                          "0",
+                          Patterns::Integer(0, 12),
+                          "Number of global refinements of the coarse mesh; "
+                          "each one halves the element size.");
+        prm.declare_entry("Finite element degree",
+                          "1",
+                          Patterns::Integer(1, 4),
+                          "Polynomial degree of the Lagrange elements.");
+        prm.declare_entry("Solver tolerance",
+                          "1e-10",
+                          Patterns::Double(),
+                          "CG stops when the residual is below this fraction "
+                          "of the right-hand side's norm; in (0, 1).");
+        prm.declare_entry("Max iterations",
+                          "2000",
+                          Patterns::Integer(1),
+                          "Maximum number of CG iterations per load case.");
+      }
+      prm.leave_subsection();
+    }
+
+
+    void
+    CellProblemParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Cell problem");
+      {
+        boundary_conditions.clear();
+        for (const auto &name : Utilities::split_string_list(
+               prm.get("Boundary conditions")))
+          {
+            const BoundaryCondition bc =
+              name == "KUBC" ? BoundaryCondition::kubc :
+              name == "SUBC" ? BoundaryCondition::subc :
+                               BoundaryCondition::periodic;
+            if (std::find(boundary_conditions.begin(),
+                          boundary_conditions.end(),
+                          bc) == boundary_conditions.end())
+              boundary_conditions.push_back(bc);
+          }
+        subdivisions_per_pixel = prm.get_integer("Subdivisions per pixel");
+        global_refinements     = prm.get_integer("Global refinements");
+        fe_degree              = prm.get_integer("Finite element degree");
+        solver_tolerance       = prm.get_double("Solver tolerance");
+        max_iterations         = prm.get_integer("Max iterations");
+      }
+      prm.leave_subsection();
+      check_parameter(!boundary_conditions.empty(),
+                      "Cell problem/Boundary conditions",
+                      "give at least one of KUBC, SUBC, periodic.");
+      check_parameter_range("Cell problem/Solver tolerance",
+                            solver_tolerance,
+                            0,
+                            1,
+                            true,
+                            true);
+    }
+
+
+    CellProblem::CellProblem(const MPI_Comm                               comm,
+                             const Morphology &                           morphology,
+                             const std::vector<IsotropicElasticMaterial> &phases,
+                             const CellProblemParameters &parameters,
+                             TimerOutput &                timer)
+      : mpi_communicator(comm)
+      , morphology(morphology)
+      , phases(phases)
+      , parameters(parameters)
+      , timer(timer)
+      , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+      , triangulation(comm)
+      , fe(FE_Q<2>(parameters.fe_degree), 2)
+      , dof_handler(triangulation)
+    {
+      setup_mesh();
+      setup_dofs();
+    }
+
+
+    void
+    CellProblem::setup_mesh()
+    {
+      TimerOutput::Scope scope(timer, "mesh and dofs");
+      create_morphology_mesh(morphology,
+                             parameters.subdivisions_per_pixel,
+                             triangulation);
+      // Periodic constraints on a distributed mesh need the ghost layer to
+      // reach across the periodic faces.
+      if (std::find(parameters.boundary_conditions.begin(),
+                    parameters.boundary_conditions.end(),
+                    BoundaryCondition::periodic) !=
+          parameters.boundary_conditions.end())
+        {
+          std::vector<GridTools::PeriodicFacePair<
+            parallel::distributed::Triangulation<2>::cell_iterator>>
+            pairs;
+          GridTools::collect_periodic_faces(triangulation, 0, 1, 0, pairs);
+          GridTools::collect_periodic_faces(triangulation, 2, 3, 1, pairs);
+          triangulation.add_periodicity(pairs);
+        }
+      triangulation.refine_global(parameters.global_refinements);
+    }
+
+
+    void
+    CellProblem::setup_dofs()
+    {
+      TimerOutput::Scope scope(timer, "mesh and dofs");
+      dof_handler.distribute_dofs(fe);
+      locally_owned_dofs = dof_handler.locally_owned_dofs();
+      DoFTools::extract_locally_relevant_dofs(dof_handler,
+                                              locally_relevant_dofs);
+    }
+
+
+    types::global_dof_index
+    CellProblem::n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+
+
+    types::global_cell_index
+    CellProblem::n_cells() const
+    {
+      return triangulation.n_global_active_cells();
+    }
+
+
+    std::vector<double>
+    CellProblem::phase_fractions() const
+    {
+      std::vector<double> area(phases.size(), 0.);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          area[cell->material_id()] += cell->measure();
+      Utilities::MPI::sum(area, mpi_communicator, area);
+      const double total = morphology.width() * morphology.height();
+      for (double &a : area)
+        a /= total;
+      return area;
+    }
+
+
+    VoigtVector
+    CellProblem::unit_load(const unsigned int load_case)
+    {
+      VoigtVector load;
+      load[load_case] = 1.;
+      return load;
+    }
+
+
+    namespace
+    {
+      /// Constrain component(s) @p components of the vertex at @p point to
+      /// zero, on every rank that sees that vertex.
+      void
+      pin_vertex(const DoFHandler<2> &            dof_handler,
+                 const Point<2> &                 point,
+                 const std::vector<unsigned int> &components,
+                 const double                     tolerance,
+                 const IndexSet &                 locally_relevant_dofs,
+                 AffineConstraints<double> &      constraints)
+      {
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial())
+            for (const unsigned int v : cell->vertex_indices())
+              if (cell->vertex(v).distance(point) < tolerance)
+                for (const unsigned int c : components)
+                  {
+                    const types::global_dof_index dof =
+                      cell->vertex_dof_index(v, c);
+                    if (locally_relevant_dofs.is_element(dof) &&
+                        !constraints.is_constrained(dof))
+                      constraints.add_line(dof);
+                  }
+      }
+
+
+      /// u = E x for the Voigt strain E = (e_xx, e_yy, gamma_xy).
+      class AffineDisplacement : public Function<2>
+      {
+      public:
+        explicit AffineDisplacement(const VoigtVector &strain)
+          : Function<2>(2)
+          , strain(strain)
+        {}
+
+        double
+        value(const Point<2> &p, const unsigned int component) const override
+        {
+          const double e_xy = 0.5 * strain[2];
+          return component == 0 ? strain[0] * p[0] + e_xy * p[1] :
+                                  e_xy * p[0] + strain[1] * p[1];
+        }
+
+      private:
+        const VoigtVector strain;
+      };
+
+
+      /// Voigt strain (xx, yy, gamma_xy) of vector shape function i.
+      inline VoigtVector
+      shape_strain(const FEValues<2> &fe_values,
+                   const FiniteElement<2> &fe,
+                   const unsigned int i,
+                   const unsigned int q)
+      {
+        const unsigned int component = fe.system_to_component_index(i).first;
+        const Tensor<1, 2> &grad      = fe_values.shape_grad(i, q);
+        VoigtVector         B;
+        if (component == 0)
+          {
+            B[0] = grad[0];
+            B[2] = grad[1];
+          }
+        else
+          {
+            B[1] = grad[1];
+            B[2] = grad[0];
+          }
+        return B;
+      }
+    } // namespace
+
+
+    void
+    CellProblem::make_constraints(const BoundaryCondition bc)
+    {
+      constraints.clear();
+      constraints.reinit(locally_relevant_dofs);
+      const unsigned int n_cells_x = morphology.n_pixels_x() *
+                                     parameters.subdivisions_per_pixel
+                                     << parameters.global_refinements;
+      const unsigned int n_cells_y = morphology.n_pixels_y() *
+                                     parameters.subdivisions_per_pixel
+                                     << parameters.global_refinements;
+      const double hx = morphology.width() / n_cells_x;
+      const double hy = morphology.height() / n_cells_y;
+      const double tolerance = 1e-3 * std::min(hx, hy);
+
+      switch (bc)
+        {
+          case BoundaryCondition::kubc:
+            // Fluctuation w = 0 on the whole boundary.
+            for (const types::boundary_id id : {0, 1, 2, 3})
+              VectorTools::interpolate_boundary_values(
+                dof_handler, id, Functions::ZeroFunction<2>(2), constraints);
+            break;
+          case BoundaryCondition::periodic:
+            DoFTools::make_periodicity_constraints(dof_handler,
+                                                   0,
+                                                   1,
+                                                   0,
+                                                   constraints);
+            DoFTools::make_periodicity_constraints(dof_handler,
+                                                   2,
+                                                   3,
+                                                   1,
+                                                   constraints);
+            // Periodic w is defined up to a translation: pin an interior
+            // vertex (the one nearest to the centre).
+            pin_vertex(dof_handler,
+                       Point<2>((n_cells_x / 2) * hx, (n_cells_y / 2) * hy),
+                       {0, 1},
+                       tolerance,
+                       locally_relevant_dofs,
+                       constraints);
+            break;
+          case BoundaryCondition::subc:
+            // Pure traction problem: remove the rigid motions by fixing the
+            // bottom-left corner and the vertical displacement of the
+            // bottom-right one. The load is self-equilibrated, so these
+            // supports carry no force.
+            pin_vertex(dof_handler,
+                       Point<2>(0, 0),
+                       {0, 1},
+                       tolerance,
+                       locally_relevant_dofs,
+                       constraints);
+            pin_vertex(dof_handler,
+                       Point<2>(morphology.width(), 0),
+                       {1},
+                       tolerance,
+                       locally_relevant_dofs,
+                       constraints);
+            break;
+        }
+      constraints.close();
+    }
+
+
+    void
+    CellProblem::assemble(const BoundaryCondition bc)
+    {
+      TimerOutput::Scope scope(timer, "assemble");
+      DynamicSparsityPattern dsp(locally_relevant_dofs);
+      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+      SparsityTools::distribute_sparsity_pattern(dsp,
+                                                 locally_owned_dofs,
+                                                 mpi_communicator,
+                                                 locally_relevant_dofs);
+      system_matrix.reinit(locally_owned_dofs,
+                           locally_owned_dofs,
+                           dsp,
+                           mpi_communicator);
+      for (auto &rhs : system_rhs)
+        rhs.reinit(locally_owned_dofs, mpi_communicator);
+
+      const bool strain_driven = bc != BoundaryCondition::subc;
+      const QGauss<2>    quadrature(parameters.fe_degree + 1);
+      FEValues<2>        fe_values(fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+      const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+      FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+      std::array<Vector<double>, 3> cell_rhs;
+      for (auto &r : cell_rhs)
+        r.reinit(dofs_per_cell);
+      std::vector<VoigtVector>             B(dofs_per_cell);
+      load_scale.fill(0.);
+      std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            cell_matrix = 0;
+            for (auto &r : cell_rhs)
+              r = 0;
+            const VoigtMatrix C =
+              phases[cell->material_id()].plane_strain_voigt_stiffness();
+            // Load per unit macroscopic strain (C E) or stress (Sigma).
+            std::array<VoigtVector, 3> load;
+            for (unsigned int k = 0; k < 3; ++k)
+              load[k] = strain_driven ? -(C * unit_load(k)) : unit_load(k);
+
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              {
+                const double JxW = fe_values.JxW(q);
+                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  B[i] = shape_strain(fe_values, fe, i, q);
+                for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  {
+                    const VoigtVector CB_i = C * B[i];
+                    for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                      cell_matrix(i, j) += (CB_i * B[j]) * JxW;
+                    for (unsigned int k = 0; k < 3; ++k)
+                      cell_rhs[k](i) += (B[i] * load[k]) * JxW;
+                  }
+              }
+            for (unsigned int k = 0; k < 3; ++k)
+              load_scale[k] += cell_rhs[k].norm_sqr();
+            cell->get_dof_indices(dof_indices);
+            constraints.distribute_local_to_global(cell_matrix,
+                                                   cell_rhs[0],
+                                                   dof_indices,
+                                                   system_matrix,
+                                                   system_rhs[0]);
+            // The constraints are homogeneous, so the other right-hand
+            // sides need no matrix.
+            for (unsigned int k = 1; k < 3; ++k)
+              constraints.distribute_local_to_global(cell_rhs[k],
+                                                     dof_indices,
+                                                     system_rhs[k]);
+          }
+      system_matrix.compress(VectorOperation::add);
+      for (auto &rhs : system_rhs)
+        rhs.compress(VectorOperation::add);
+      for (double &scale : load_scale)
+        scale = std::sqrt(Utilities::MPI::sum(scale, mpi_communicator));
+    }
+
+
+    void
+    CellProblem::setup_preconditioner()
+    {
+      TimerOutput::Scope scope(timer, "AMG setup");
+      // Rigid-body modes of 2D elasticity (two translations and the
+      // rotation about the centre) as ML's near-null space: deal.II 9.4's
+      // AdditionalData only takes the translations (constant modes), which
+      // makes AMG on elasticity markedly slower.
+      const Epetra_Map &map =
+        system_matrix.trilinos_matrix().OperatorDomainMap();
+      rigid_body_modes = std::make_unique<Epetra_MultiVector>(map, 3);
+      const Point<2> centre(0.5 * morphology.width(),
+                            0.5 * morphology.height());
+      const double   scale =
+        1. / std::max(morphology.width(), morphology.height());
+
+      const Quadrature<2> support_points(fe.get_unit_support_points());
+      FEValues<2> fe_values(fe, support_points, update_quadrature_points);
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int i = 0; i < dof_indices.size(); ++i)
+              if (locally_owned_dofs.is_element(dof_indices[i]))
+                {
+                  const auto local =
+                    locally_owned_dofs.index_within_set(dof_indices[i]);
+                  const unsigned int c = fe.system_to_component_index(i).first;
+                  const Point<2> &x = fe_values.quadrature_point(i);
+                  (*rigid_body_modes)[0][local] = (c == 0 ? 1. : 0.);
+                  (*rigid_body_modes)[1][local] = (c == 1 ? 1. : 0.);
+                  (*rigid_body_modes)[2][local] =
+                    scale * (c == 0 ? -(x[1] - centre[1]) : (x[0] - centre[0]));
+                }
+          }
+
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic              = true;
+      data.higher_order_elements = parameters.fe_degree > 1;
+      data.smoother_sweeps       = 2;
+      data.aggregation_threshold = 1e-4;
+      Teuchos::ParameterList              ml_parameters;
+      std::unique_ptr<Epetra_MultiVector> unused_constant_modes;
+      data.set_parameters(ml_parameters, unused_constant_modes, system_matrix);
+      ml_parameters.set("null space: type", "pre-computed");
+      ml_parameters.set("null space: dimension", 3);
+      ml_parameters.set("null space: vectors", rigid_body_modes->Values());
+      preconditioner.initialize(system_matrix, ml_parameters);
+    }
+
+
+    CellProblemResult
+    CellProblem::solve(const BoundaryCondition bc,
+                       const std::string &     output_directory)
+    {
+      make_constraints(bc);
+      assemble(bc);
+      setup_preconditioner();
+
+      CellProblemResult result;
+      result.boundary_condition = bc;
+      for (unsigned int load_case = 0; load_case < 3; ++load_case)
+        {
+          TrilinosWrappers::MPI::Vector solution(locally_owned_dofs,
+                                                 mpi_communicator);
+          {
+            TimerOutput::Scope scope(timer, "CG solve");
+            const double rhs_norm = load_scale[load_case];
+            SolverControl control(parameters.max_iterations,
+                                  parameters.solver_tolerance * rhs_norm,
+                                  /*log_history = */ false,
+                                  /*log_result = */ false);
+            TrilinosWrappers::SolverCG cg(control);
+            try
+              {
+                cg.solve(system_matrix,
+                         solution,
+                         system_rhs[load_case],
+                         preconditioner);
+              }
+            catch (const SolverControl::NoConvergence &e)
+              {
+                throw RunError(
+                  "The " + to_string(bc) + " cell problem, load case " +
+                  std::to_string(load_case) +
+                  ", did not converge: CG reached " +
+                  std::to_string(e.last_step) +
+                  " iterations with a relative residual of " +
+                  format_number(e.last_residual / rhs_norm) +
+                  ". Raise 'Cell problem/Max iterations' or 'Cell "
+                  "problem/Solver tolerance'.");
+              }
+            catch (const ExceptionBase &e)
+              {
+                // AztecOO breakdown or loss of precision.
+                std::ostringstream info;
+                e.print_info(info);
+                throw RunError("The " + to_string(bc) +
+                               " cell problem, load case " +
+                               std::to_string(load_case) +
+                               ", failed in CG: " + info.str() +
+                               " This happens when 'Cell problem/Solver "
+                               "tolerance' is below what double precision "
+                               "can reach; raise it (1e-10 is ample).");
+              }
+            result.load_cases[load_case].cg_iterations = control.last_step();
+            constraints.distribute(solution);
+          }
+
+          TrilinosWrappers::MPI::Vector ghosted(locally_owned_dofs,
+                                                locally_relevant_dofs,
+                                                mpi_communicator);
+          ghosted = solution;
+          const unsigned int iterations =
+            result.load_cases[load_case].cg_iterations;
+          result.load_cases[load_case] = postprocess(bc, load_case, ghosted);
+          result.load_cases[load_case].cg_iterations = iterations;
+          if (!output_directory.empty())
+            write_fields(bc, load_case, ghosted, output_directory);
+        }
+
+      // Apparent properties: columns of C (strain-driven) or of S (SUBC).
+      VoigtMatrix M;
+      VoigtVector zz;
+      for (unsigned int j = 0; j < 3; ++j)
+        {
+          const LoadCaseResult &r = result.load_cases[j];
+          for (unsigned int i = 0; i < 3; ++i)
+            M[i][j] = (bc == BoundaryCondition::subc ? r.mean_strain[i] :
+                                                       r.mean_stress[i]);
+          zz[j] = r.mean_stress_zz;
+        }
+      if (bc == BoundaryCondition::subc)
+        {
+          // <sigma_zz> = zz . Sigma and <eps> = S Sigma, so
+          // <sigma_zz> = (C^T zz) . <eps>.
+          const VoigtMatrix C = invert(M);
+          result.properties = properties_from_stiffness(C, transpose(C) * zz);
+        }
+      else
+        result.properties = properties_from_stiffness(M, zz);
+      return result;
+    }
+
+
+    LoadCaseResult
+    CellProblem::postprocess(const BoundaryCondition              bc,
+                             const unsigned int                   load_case,
+                             const TrilinosWrappers::MPI::Vector &solution) const
+    {
+      const bool strain_driven = bc != BoundaryCondition::subc;
+      const VoigtVector macro_strain =
+        strain_driven ? unit_load(load_case) : VoigtVector();
+
+      const QGauss<2> quadrature(parameters.fe_degree + 1);
+      FEValues<2>     fe_values(fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+      const FEValuesExtractors::Vector           displacement(0);
+      std::vector<SymmetricTensor<2, 2>>         strains(quadrature.size());
+      // Sums: stress (3), strain (3), sigma_zz (1).
+      std::vector<double> sums(7, 0.);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values[displacement].get_function_symmetric_gradients(solution,
+                                                                     strains);
+            const IsotropicElasticMaterial &phase = phases[cell->material_id()];
+            const VoigtMatrix C = phase.plane_strain_voigt_stiffness();
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              {
+                const VoigtVector eps =
+                  macro_strain + VoigtVector({strains[q][0][0],
+                                              strains[q][1][1],
+                                              2 * strains[q][0][1]});
+                const VoigtVector sigma = C * eps;
+                const double      JxW   = fe_values.JxW(q);
+                for (unsigned int i = 0; i < 3; ++i)
+                  {
+                    sums[i] += sigma[i] * JxW;
+                    sums[3 + i] += eps[i] * JxW;
+                  }
+                sums[6] += phase.lambda() * (eps[0] + eps[1]) * JxW;
+              }
+          }
+      Utilities::MPI::sum(sums, mpi_communicator, sums);
+      const double   area = morphology.width() * morphology.height();
+      LoadCaseResult r;
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          r.mean_stress[i] = sums[i] / area;
+          r.mean_strain[i] = sums[3 + i] / area;
+        }
+      r.mean_stress_zz = sums[6] / area;
+      return r;
+    }
+
+
+    void
+    CellProblem::write_fields(const BoundaryCondition              bc,
+                              const unsigned int                   load_case,
+                              const TrilinosWrappers::MPI::Vector &solution,
+                              const std::string &output_directory) const
+    {
+      TimerOutput::Scope scope(timer, "output");
+      const bool strain_driven = bc != BoundaryCondition::subc;
+      const VoigtVector macro_strain =
+        strain_driven ? unit_load(load_case) : VoigtVector();
+
+      // Total displacement u = E x + w (strain-driven) or u (SUBC).
+      TrilinosWrappers::MPI::Vector total(locally_owned_dofs, mpi_communicator);
+      if (strain_driven)
+        VectorTools::interpolate(dof_handler,
+                                 AffineDisplacement(macro_strain),
+                                 total);
+      TrilinosWrappers::MPI::Vector owned(locally_owned_dofs, mpi_communicator);
+      owned = solution;
+      total += owned;
+      TrilinosWrappers::MPI::Vector total_ghosted(locally_owned_dofs,
+                                                  locally_relevant_dofs,
+                                                  mpi_communicator);
+      total_ghosted = total;
+
+      // Cell averages of stress and strain.
+      const unsigned int n_cells = triangulation.n_active_cells();
+      std::array<Vector<float>, 9> cell_data;
+      for (auto &v : cell_data)
+        v.reinit(n_cells);
+      const QGauss<2> quadrature(parameters.fe_degree + 1);
+      FEValues<2>     fe_values(fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+      const FEValuesExtractors::Vector   displacement(0);
+      std::vector<SymmetricTensor<2, 2>> strains(quadrature.size());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values[displacement].get_function_symmetric_gradients(solution,
+                                                                     strains);
+            const IsotropicElasticMaterial &phase = phases[cell->material_id()];
+            const VoigtMatrix C = phase.plane_strain_voigt_stiffness();
+            VoigtVector       mean_eps, mean_sigma;
+            double            mean_szz = 0, measure = 0;
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              {
+                const VoigtVector eps =
+                  macro_strain + VoigtVector({strains[q][0][0],
+                                              strains[q][1][1],
+                                              2 * strains[q][0][1]});
+                const double JxW = fe_values.JxW(q);
+                mean_eps += eps * JxW;
+                mean_sigma += (C * eps) * JxW;
+                mean_szz += phase.lambda() * (eps[0] + eps[1]) * JxW;
+                measure += JxW;
+              }
+            mean_eps /= measure;
+            mean_sigma /= measure;
+            mean_szz /= measure;
+            const double sxx = mean_sigma[0], syy = mean_sigma[1],
+                         sxy = mean_sigma[2];
+            const double von_mises =
+              std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) +
+                               (syy - mean_szz) * (syy - mean_szz) +
+                               (mean_szz - sxx) * (mean_szz - sxx)) +
+                        3 * sxy * sxy);
+            const unsigned int k = cell->active_cell_index();
+            cell_data[0][k]      = sxx;
+            cell_data[1][k]      = syy;
+            cell_data[2][k]      = sxy;
+            cell_data[3][k]      = mean_szz;
+            cell_data[4][k]      = von_mises;
+            cell_data[5][k]      = mean_eps[0];
+            cell_data[6][k]      = mean_eps[1];
+            cell_data[7][k]      = mean_eps[2];
+            cell_data[8][k]      = cell->material_id();
+          }
+
+      DataOut<2> data_out;
+      data_out.attach_dof_handler(dof_handler);
+      const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+        interpretation(2,
+                       DataComponentInterpretation::component_is_part_of_vector);
+      data_out.add_data_vector(total_ghosted,
+                               std::vector<std::string>(2, "displacement"),
+                               DataOut<2>::type_dof_data,
+                               interpretation);
+      const char *names[9] = {"stress_xx",
+                              "stress_yy",
+                              "stress_xy",
+                              "stress_zz",
+                              "von_mises",
+                              "strain_xx",
+                              "strain_yy",
+                              "strain_gamma_xy",
+                              "material_id"};
+      for (unsigned int i = 0; i < 9; ++i)
+        data_out.add_data_vector(cell_data[i],
+                                 names[i],
+                                 DataOut<2>::type_cell_data);
+      data_out.build_patches();
+      DataOutBase::VtkFlags flags;
+      flags.time = load_case;
+      data_out.set_flags(flags);
+      // One file per load case, written collectively with MPI I/O, and a
+      // .pvd index of the three load cases (xx, yy, xy) as pseudo-times
+      // 0, 1, 2.
+      const std::string base = "fields_" + to_string(bc);
+      const char *case_names[3] = {"xx", "yy", "xy"};
+      data_out.write_vtu_in_parallel(join_path(output_directory,
+                                               base + "_" +
+                                                 case_names[load_case] +
+                                                 ".vtu"),
+                                     mpi_communicator);
+      if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+        {
+          std::string pvd;
+          pvd += "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
+                 "version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                 "  <!-- load cases: 0 = xx, 1 = yy, 2 = xy -->\n"
+                 "  <Collection>\n";
+          for (unsigned int k = 0; k <= load_case; ++k)
+            pvd += "    <DataSet timestep=\"" + std::to_string(k) +
+                   "\" group=\"\" part=\"0\" file=\"" + base + "_" +
+                   case_names[k] + ".vtu\"/>\n";
+          pvd += "  </Collection>\n</VTKFile>\n";
+          write_file_atomically(join_path(output_directory, base + ".pvd"),
+                                pvd);
+        }
+    }
+
+
+    void
+    CellProblem::write_material_map(const std::string &output_directory) const
+    {
+      TimerOutput::Scope scope(timer, "output");
+      Vector<float> ids(triangulation.n_active_cells());
+      Vector<float> ranks(triangulation.n_active_cells());
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            ids[cell->active_cell_index()]   = cell->material_id();
+            ranks[cell->active_cell_index()] = cell->subdomain_id();
+          }
+      DataOut<2> data_out;
+      data_out.attach_triangulation(triangulation);
+      data_out.add_data_vector(ids, "material_id", DataOut<2>::type_cell_data);
+      data_out.add_data_vector(ranks, "mpi_rank", DataOut<2>::type_cell_data);
+      data_out.build_patches();
+      data_out.write_vtu_in_parallel(join_path(output_directory,
+                                               "morphology.vtu"),
+                                     mpi_communicator);
+    }
+  } // namespace homogenization
+} // namespace tribodyn

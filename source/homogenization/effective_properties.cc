@@ -1,0 +1,186 @@
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <tribodyn/homogenization/effective_properties.h>
+
+#include <stdexcept>
+
+namespace tribodyn
+{
+  namespace homogenization
+  {
+    namespace
+    {
+      /// (1, 1, 0): picks eps_xx + eps_yy from a Voigt strain.
+      const VoigtVector trace_row({1., 1., 0.});
+    } // namespace
+
+
+    ApparentProperties
+    properties_from_stiffness(const VoigtMatrix &C, const VoigtVector &c_z)
+    {
+      ApparentProperties result;
+      result.C   = C;
+      result.S   = dealii::invert(C);
+      result.c_z = c_z;
+
+      const double          C12 = 0.5 * (C[0][1] + C[1][0]);
+      dealii::Tensor<2, 3> normal_block;
+      normal_block[0][0] = C[0][0];
+      normal_block[1][1] = C[1][1];
+      normal_block[2][2] = C[1][1]; // C33 = C22
+      normal_block[0][1] = normal_block[1][0] = C12;
+      normal_block[0][2] = normal_block[2][0] = c_z[0];
+      normal_block[1][2] = normal_block[2][1] = c_z[1];
+      const dealii::Tensor<2, 3> compliance = dealii::invert(normal_block);
+
+      result.constants.E_L   = 1. / compliance[0][0];
+      result.constants.E_T   = 1. / compliance[1][1];
+      result.constants.nu_LT = -compliance[1][0] / compliance[0][0];
+      result.constants.nu_TT = -compliance[2][1] / compliance[1][1];
+      result.constants.G_LT  = C[2][2];
+      return result;
+    }
+
+
+    ApparentProperties
+    voigt_estimate(const std::vector<IsotropicElasticMaterial> &phases,
+                   const std::vector<double> &                  fractions)
+    {
+      VoigtMatrix C;
+      VoigtVector c_z;
+      for (unsigned int k = 0; k < phases.size(); ++k)
+        {
+          C += fractions[k] * phases[k].plane_strain_voigt_stiffness();
+          c_z += fractions[k] * phases[k].lambda() * trace_row;
+        }
+      return properties_from_stiffness(C, c_z);
+    }
+
+
+    ApparentProperties
+    reuss_estimate(const std::vector<IsotropicElasticMaterial> &phases,
+                   const std::vector<double> &                  fractions)
+    {
+      VoigtMatrix S;
+      for (unsigned int k = 0; k < phases.size(); ++k)
+        S += fractions[k] *
+             dealii::invert(phases[k].plane_strain_voigt_stiffness());
+      const VoigtMatrix C = dealii::invert(S);
+      // Uniform stress sigma = C <eps>; sigma_zz^k = lambda_k tr(S_k sigma).
+      VoigtVector c_z;
+      for (unsigned int k = 0; k < phases.size(); ++k)
+        {
+          const VoigtMatrix S_k =
+            dealii::invert(phases[k].plane_strain_voigt_stiffness());
+          c_z += fractions[k] * phases[k].lambda() *
+                 (trace_row * S_k * C);
+        }
+      return properties_from_stiffness(C, c_z);
+    }
+
+
+    ApparentProperties
+    laminate_exact(const std::vector<IsotropicElasticMaterial> &phases,
+                   const std::vector<double> &                  fractions,
+                   const unsigned int                           normal)
+    {
+      if (normal > 1)
+        throw std::logic_error("laminate_exact: normal must be 0 or 1");
+      // Voigt indices of the continuous traction components (n) and of the
+      // continuous in-layer strain (t).
+      const unsigned int n0 = normal, n1 = 2, t = 1 - normal;
+
+      // For a unit mean strain e_j: eps_t = <eps>_t in every layer, and the
+      // uniform traction s = (sigma_n0, sigma_n1) solves
+      // <A_k^{-1}> s = <eps_n> + <A_k^{-1} b_k> eps_t with A_k the (n, n)
+      // block and b_k the (n, t) column of C_k.
+      VoigtMatrix C_eff;
+      VoigtVector c_z;
+      for (unsigned int j = 0; j < 3; ++j)
+        {
+          VoigtVector mean_strain;
+          mean_strain[j] = 1;
+          dealii::Tensor<2, 2> mean_A_inverse;
+          dealii::Tensor<1, 2> mean_A_inverse_b;
+          for (unsigned int k = 0; k < phases.size(); ++k)
+            {
+              const VoigtMatrix    Ck = phases[k].plane_strain_voigt_stiffness();
+              dealii::Tensor<2, 2> A;
+              A[0][0] = Ck[n0][n0];
+              A[0][1] = Ck[n0][n1];
+              A[1][0] = Ck[n1][n0];
+              A[1][1] = Ck[n1][n1];
+              const dealii::Tensor<1, 2> b({Ck[n0][t], Ck[n1][t]});
+              const dealii::Tensor<2, 2> A_inverse = dealii::invert(A);
+              mean_A_inverse += fractions[k] * A_inverse;
+              mean_A_inverse_b += fractions[k] * (A_inverse * b);
+            }
+          const dealii::Tensor<1, 2> mean_eps_n({mean_strain[n0],
+                                                 mean_strain[n1]});
+          const dealii::Tensor<1, 2> traction =
+            dealii::invert(mean_A_inverse) *
+            (mean_eps_n + mean_A_inverse_b * mean_strain[t]);
+
+          for (unsigned int k = 0; k < phases.size(); ++k)
+            {
+              const VoigtMatrix    Ck = phases[k].plane_strain_voigt_stiffness();
+              dealii::Tensor<2, 2> A;
+              A[0][0] = Ck[n0][n0];
+              A[0][1] = Ck[n0][n1];
+              A[1][0] = Ck[n1][n0];
+              A[1][1] = Ck[n1][n1];
+              const dealii::Tensor<1, 2> b({Ck[n0][t], Ck[n1][t]});
+              const dealii::Tensor<1, 2> eps_n =
+                dealii::invert(A) * (traction - b * mean_strain[t]);
+              VoigtVector eps_k;
+              eps_k[n0] = eps_n[0];
+              eps_k[n1] = eps_n[1];
+              eps_k[t]  = mean_strain[t];
+              const VoigtVector sigma_k = Ck * eps_k;
+              for (unsigned int i = 0; i < 3; ++i)
+                C_eff[i][j] += fractions[k] * sigma_k[i];
+              c_z[j] += fractions[k] * phases[k].lambda() * (trace_row * eps_k);
+            }
+        }
+      return properties_from_stiffness(C_eff, c_z);
+    }
+
+
+    double
+    min_eigenvalue_of_symmetric_part(const VoigtMatrix &A)
+    {
+      dealii::SymmetricTensor<2, 3> sym;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = i; j < 3; ++j)
+          sym[i][j] = 0.5 * (A[i][j] + A[j][i]);
+      const auto eigenvalues = dealii::eigenvalues(sym);
+      return eigenvalues[2]; // sorted in descending order
+    }
+
+
+    JsonValue
+    matrix_to_json(const VoigtMatrix &A)
+    {
+      JsonValue rows = JsonValue::array();
+      for (unsigned int i = 0; i < 3; ++i)
+        rows.push_back(json_array({A[i][0], A[i][1], A[i][2]}));
+      return rows;
+    }
+
+
+    JsonValue
+    to_json(const ApparentProperties &p)
+    {
+      JsonValue j      = JsonValue::object();
+      j["C"]           = matrix_to_json(p.C);
+      j["S"]           = matrix_to_json(p.S);
+      j["c_z"]         = json_array({p.c_z[0], p.c_z[1], p.c_z[2]});
+      j["E_L"]         = p.constants.E_L;
+      j["E_T"]         = p.constants.E_T;
+      j["nu_LT"]       = p.constants.nu_LT;
+      j["nu_TT"]       = p.constants.nu_TT;
+      j["G_LT"]        = p.constants.G_LT;
+      return j;
+    }
+  } // namespace homogenization
+} // namespace tribodyn
