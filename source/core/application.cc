@@ -89,7 +89,7 @@ namespace tribodyn
           declare_all(prm, p);
           prm.set("Problem", p.name);
           out << "# Parameters of 'set Problem = " << p.name << "' ("
-              << p.description << "), tribodyn " << version_string << "\n";
+              << p.description << "), tribodyn " << version_number << "\n";
           prm.print_parameters(out, dealii::ParameterHandler::PRM);
           out << "\n";
         }

@@ -746,6 +746,9 @@ namespace tribodyn
       data_out.build_patches();
       DataOutBase::VtkFlags flags;
       flags.time = load_case;
+      // deal.II 9.4 defaults to the best (slowest) zlib compression, which
+      // costs several times the solve here.
+      flags.compression_level = DataOutBase::VtkFlags::best_speed;
       data_out.set_flags(flags);
       // One file per load case, written collectively with MPI I/O, and a
       // .pvd index of the three load cases (xx, yy, xy) as pseudo-times
@@ -792,6 +795,9 @@ namespace tribodyn
       data_out.add_data_vector(ids, "material_id", DataOut<2>::type_cell_data);
       data_out.add_data_vector(ranks, "mpi_rank", DataOut<2>::type_cell_data);
       data_out.build_patches();
+      DataOutBase::VtkFlags flags;
+      flags.compression_level = DataOutBase::VtkFlags::best_speed;
+      data_out.set_flags(flags);
       data_out.write_vtu_in_parallel(join_path(output_directory,
                                                "morphology.vtu"),
                                      mpi_communicator);
