@@ -1,0 +1,220 @@
+#ifndef tribodyn_contact_contact_parameters_h
+#define tribodyn_contact_contact_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+
+#include <tribodyn/core/material.h>
+#include <tribodyn/core/morphology.h>
+
+#include <string>
+#include <vector>
+
+namespace tribodyn
+{
+  namespace contact
+  {
+    /// A 3x3 plane-strain stiffness in Voigt order (xx, yy, xy), engineering
+    /// shear strain gamma_xy = 2 eps_xy, in Pa.
+    using VoigtStiffness = dealii::Tensor<2, 3>;
+
+    /// Subsection "Geometry": the rectangular pin and its structured mesh.
+    struct GeometryParameters
+    {
+      /// Extent along x (sliding direction) and y (m).
+      double width  = 28e-3;
+      double height = 8e-3;
+      /// Target element size h (m): n_x = round(width/h), n_y = round(height/h).
+      double mesh_size = 0.25e-3;
+      /// Meso pins only: elements per morphology pixel along each axis.
+      unsigned int subdivisions_per_pixel = 1;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /// Subsection "Material": the constitutive model of the pin.
+    struct ContactMaterialParameters
+    {
+      enum class Type
+      {
+        isotropic,
+        anisotropic,
+        engineering_constants,
+        homogenization_summary,
+        morphology
+      };
+      enum class Kinematics
+      {
+        small_strain,
+        large_deformation
+      };
+
+      Type       type       = Type::isotropic;
+      Kinematics kinematics = Kinematics::small_strain;
+      /// Density of the homogeneous anisotropic materials (kg/m^3).
+      double density = 1770.;
+
+      IsotropicElasticMaterial isotropic{30e9, 0.2, 1770.};
+
+      /// Type = anisotropic: the 2D stiffness and the out-of-plane row
+      /// (sigma_zz = c_z . eps, used only for the von Mises output).
+      VoigtStiffness                anisotropic_stiffness;
+      dealii::Tensor<1, 3>          anisotropic_c_z;
+
+      /// Type = engineering constants: transversely isotropic, axis L = x.
+      double E_L = 31.9e9, E_T = 34e9, nu_LT = 0.2, nu_TT = 0.2,
+             G_LT = 13.3e9;
+
+      /// Type = homogenization summary: file and key (KUBC, SUBC, periodic).
+      std::string summary_file;
+      std::string summary_key = "KUBC";
+
+      /// Type = morphology: the two phases.
+      IsotropicElasticMaterial matrix{30e9, 0.2, 1770.};
+      IsotropicElasticMaterial heterogeneity{80e9, 0.2, 1770.};
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /// Subsection "Loading".
+    struct LoadingParameters
+    {
+      /// Pressure on the top face (Pa), reached after the ramp.
+      double pressure = 0.5e6;
+      /// Duration of the smooth ramp P(t) = P (1 - cos(pi t / t_r)) / 2 (s).
+      double ramp_time = 10e-6;
+      /// Tangential velocity V of the rigid plane along x (m/s).
+      double plane_velocity = -2.;
+      /// Hold the top face in x (its reaction is the friction force).
+      bool top_held_in_x = true;
+      /// Initial velocity of the whole pin (m/s).
+      dealii::Tensor<1, 2> initial_velocity;
+      /// Initial distance between the pin's bottom face and the plane (m).
+      double initial_gap = 0.;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /// The pressure at time t (smooth ramp).
+      double
+      pressure_at(const double t) const;
+    };
+
+    /// Subsection "Time integration": the beta2 scheme.
+    struct TimeParameters
+    {
+      double time_step = 5e-9;
+      double end_time  = 100e-6;
+      double beta2     = 0.5;
+      /// Stiffness-proportional damping C = beta K (s).
+      double damping = 1.1e-9;
+      /// Take dt = min(Time step, safety factor * critical dt) instead of
+      /// refusing a time step above the critical one.
+      bool   automatic_time_step = false;
+      double safety_factor       = 0.9;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    enum class FrictionLaw
+    {
+      frictionless,
+      coulomb,
+      regularized ///< simplified Prakash-Clifton law, seed 001 eq. (4)
+    };
+
+    enum class ContactAlgorithm
+    {
+      node_wise,            ///< closed form per node (rigid plane, lumped mass)
+      projected_gauss_seidel ///< general path for coupled constraints
+    };
+
+    /// Subsection "Contact".
+    struct ContactLawParameters
+    {
+      ContactAlgorithm algorithm = ContactAlgorithm::node_wise;
+      FrictionLaw      law       = FrictionLaw::regularized;
+      double           friction_coefficient = 0.25;
+      /// L*/|V| of the regularized law (s); 1.5e-6 = 300 x 5 ns.
+      double regularization_time = 1.5e-6;
+      double pgs_tolerance       = 1e-12;
+      unsigned int pgs_max_iterations = 50;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /// Subsection "Output".
+    struct ContactOutputParameters
+    {
+      /// Record the time series every this many steps.
+      unsigned int sample_interval = 20;
+      /// Write VTU fields every this much simulated time (0: never).
+      double field_interval = 10e-6;
+      /// Window [start, end] of the time averages (end < 0: end of run).
+      double average_start = 40e-6;
+      double average_end   = -1;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /// Every parameter of `set Problem = contact`.
+    struct ContactParameters
+    {
+      GeometryParameters        geometry;
+      ContactMaterialParameters material;
+      MorphologyParameters      morphology;
+      LoadingParameters         loading;
+      TimeParameters            time;
+      ContactLawParameters      contact;
+      ContactOutputParameters   output;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /**
+     * Plane-strain stiffness (Voigt, engineering shear) of a transversely
+     * isotropic material with axis L = x and isotropy plane (y, z):
+     * the 3D compliance is built from E_L, E_T, nu_LT, nu_TT, G_LT and
+     * condensed with eps_zz = 0. @p c_z receives the row sigma_zz = c_z.eps.
+     */
+    VoigtStiffness
+    transversely_isotropic_plane_strain(const double          E_L,
+                                        const double          E_T,
+                                        const double          nu_LT,
+                                        const double          nu_TT,
+                                        const double          G_LT,
+                                        dealii::Tensor<1, 3> &c_z);
+
+    /**
+     * Read the apparent stiffness C (and c_z when present) stored under
+     * @p key (KUBC, SUBC or periodic) of a homogenization summary.json.
+     * Throws InputError naming the file and key when it cannot.
+     */
+    VoigtStiffness
+    read_homogenization_stiffness(const std::string &   file,
+                                  const std::string &   key,
+                                  dealii::Tensor<1, 3> &c_z);
+  } // namespace contact
+} // namespace tribodyn
+
+#endif

@@ -1,0 +1,37 @@
+#ifndef tribodyn_contact_contact_problem_h
+#define tribodyn_contact_contact_problem_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <tribodyn/contact/contact_parameters.h>
+#include <tribodyn/core/problem.h>
+
+namespace tribodyn
+{
+  namespace contact
+  {
+    /**
+     * `set Problem = contact`: the explicit dynamic contact-with-friction
+     * model of seed 001, §2.3 (a pin pressed on a rigid plane sliding at
+     * V). Runs the ContactSolver and writes friction.csv, point_M.csv,
+     * contact_status.csv, spectrum.csv, fields.pvd and summary.json.
+     */
+    class ContactProblem : public Problem
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      ContactProblem(dealii::ParameterHandler &prm, const RunContext &context);
+
+      void
+      run() override;
+
+    private:
+      RunContext        context;
+      ContactParameters parameters;
+    };
+  } // namespace contact
+} // namespace tribodyn
+
+#endif

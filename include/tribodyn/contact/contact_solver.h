@@ -1,0 +1,285 @@
+#ifndef tribodyn_contact_contact_solver_h
+#define tribodyn_contact_contact_solver_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <tribodyn/contact/contact_parameters.h>
+#include <tribodyn/contact/friction.h>
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace tribodyn
+{
+  namespace contact
+  {
+    /// One record of the time series (all ranks hold the reduced values).
+    struct Sample
+    {
+      double time = 0;
+      /// Resultant of the applied pressure (N per m of thickness).
+      double normal_force = 0;
+      /// Reaction of the top face along x (the friction force seen there).
+      double tangential_force = 0;
+      /// -sign(V) tangential_force / normal_force.
+      double mu_global = 0;
+      /// Sums of the contact multipliers (forces of the plane on the pin).
+      double contact_tangential_force = 0;
+      double contact_normal_force     = 0;
+      double mu_contact               = 0;
+      /// Energies (J per m of thickness), see doc/theory/contact.md.
+      double kinetic_energy      = 0;
+      double elastic_energy      = 0;
+      double external_work       = 0;
+      double contact_work        = 0;
+      double damping_dissipation = 0;
+      double friction_dissipation = 0;
+      double energy_balance_error = 0;
+      /// Linear momentum of the pin.
+      double momentum_x = 0;
+      double momentum_y = 0;
+      /// Point M (central contact node): displacement, velocity, status.
+      double        M_ux = 0, M_vx = 0, M_uy = 0, M_vy = 0;
+      unsigned int  M_status = 0;
+      /// Fractions of the contact nodes in each status.
+      double stick_fraction = 0, slip_fraction = 0, separation_fraction = 0;
+    };
+
+    /// Headline figures of a run (summary.json).
+    struct RunSummary
+    {
+      double       mu_global_mean       = 0;
+      double       mu_contact_mean      = 0;
+      double       dominant_frequency_hz = 0;
+      double       energy_balance_error = 0;
+      double       stick_fraction = 0, slip_fraction = 0,
+             separation_fraction = 0;
+      double       M_stick_fraction = 0, M_slip_fraction = 0,
+             M_separation_fraction = 0;
+      std::string  regime;
+      unsigned int n_samples_averaged = 0;
+      double       wall_time_s        = 0;
+      double       time_loop_s        = 0;
+      double       dof_steps_per_second = 0;
+    };
+
+    /**
+     * The explicit dynamic contact-with-friction solver of seed 001, §2.3:
+     * a Q1 plane-strain pin with lumped mass on a rigid plane translating
+     * at V, the beta2 scheme with stiffness-proportional damping applied
+     * explicitly, forward-increment Lagrange multipliers for contact and
+     * friction. See doc/theory/contact.md for the equations in the symbols
+     * used here.
+     */
+    class ContactSolver
+    {
+    public:
+      ContactSolver(const MPI_Comm            comm,
+                    const ContactParameters & parameters,
+                    dealii::TimerOutput &     timer);
+
+      /// Mesh, dofs, element matrices, lumped mass, loads, critical dt.
+      /// Throws InputError when the time step is above the critical one
+      /// (unless the automatic time step is on).
+      void
+      setup();
+
+      /**
+       * Integrate to the end time. With a non-empty @p output_directory,
+       * write friction.csv, point_M.csv, contact_status.csv, spectrum.csv,
+       * fields_*.vtu + fields.pvd. @p progress_interval: seconds between
+       * progress lines (negative: none).
+       */
+      void
+      run(const std::string &output_directory,
+          const double       progress_interval = 5.);
+
+      /// Time averages, spectrum peak and regime over the averaging window.
+      RunSummary
+      summarize(const std::string &output_directory);
+
+      const std::vector<Sample> &
+      samples() const
+      {
+        return history;
+      }
+
+      double
+      time_step() const
+      {
+        return dt;
+      }
+      /// Critical dt of the damped beta2 scheme (element eigenvalue bound).
+      double
+      critical_time_step() const
+      {
+        return dt_critical;
+      }
+      /// l_min / c_max (seed eq. (3)), for information.
+      double
+      cfl_time_step() const
+      {
+        return dt_cfl;
+      }
+      /// Largest element eigenfrequency omega_max (rad/s).
+      double
+      omega_max() const
+      {
+        return omega_maximum;
+      }
+      dealii::types::global_dof_index
+      n_dofs() const;
+      unsigned long
+      n_steps_done() const
+      {
+        return step_count;
+      }
+      unsigned int
+      n_contact_nodes() const
+      {
+        return n_contact_nodes_global;
+      }
+      double
+      total_mass() const
+      {
+        return mass_total;
+      }
+      std::string
+      material_description() const
+      {
+        return material_text;
+      }
+
+      /// Testing aid: set the displacement (velocity zero) to @p field.
+      void
+      set_displacement(
+        const std::function<dealii::Tensor<1, 2>(const dealii::Point<2> &)>
+          &field);
+      /// Testing aid: largest |internal force| entry for the current
+      /// displacement (no damping), and the largest von Mises stress of the
+      /// cell-centre stresses.
+      double
+      max_internal_force();
+      double
+      max_von_mises();
+
+    private:
+      void
+      make_mesh();
+      void
+      setup_materials();
+      void
+      setup_element_data();
+      void
+      setup_vectors_and_nodes();
+      void
+      compute_critical_time_step();
+
+      /// r += internal force of w (small strain: K (u + beta p)).
+      void
+      internal_forces_small_strain();
+      /// r += f_int(u) + beta K p (total Lagrangian St Venant-Kirchhoff).
+      void
+      internal_forces_large_deformation();
+      template <FrictionLaw law>
+      void
+      contact_node_wise(const double time_next);
+      template <FrictionLaw law>
+      void
+      contact_gauss_seidel(const double time_next);
+      void
+      solve_contact(const double time_next);
+
+      void
+      record_sample(const double time);
+      void
+      write_fields(const std::string &dir,
+                   const double       time,
+                   const unsigned int index);
+      void
+      cell_stresses(std::vector<std::array<double, 4>> &stress) const;
+
+      MPI_Comm                               comm;
+      const ContactParameters &              prm;
+      dealii::TimerOutput &                  timer;
+      dealii::parallel::distributed::Triangulation<2> triangulation;
+      dealii::FESystem<2>                    fe;
+      dealii::DoFHandler<2>                  dof_handler;
+      dealii::IndexSet                       locally_owned;
+      dealii::IndexSet                       locally_relevant;
+
+      using VectorType = dealii::LinearAlgebra::distributed::Vector<double>;
+      VectorType u, u_prev, u_next, p, w, r, a, scratch, scratch_result;
+
+      // Per owned dof: lumped mass, its inverse (0 on held dofs), the
+      // nodal load of a unit pressure, and the component.
+      std::vector<double>        mass, mass_inverse, unit_load;
+      std::vector<unsigned char> component;
+      std::vector<unsigned int>  top_x_dofs; // held dofs (local indices)
+      std::vector<unsigned int>  top_y_dofs;
+
+      // Cells: 8 local dof indices each, material index, element data.
+      std::vector<unsigned int>          cell_dofs;
+      std::vector<unsigned char>         cell_material;
+      std::vector<dealii::types::global_cell_index> cell_active_index;
+      std::vector<std::array<double, 64>> element_stiffness; // per material
+      std::vector<VoigtStiffness>         stiffness;         // per material
+      std::vector<dealii::Tensor<1, 3>>   stiffness_z;       // per material
+      std::vector<double>                 density;           // per material
+      // Shape data of the (identical) rectangular cells: for local dof i,
+      // node and component; gradients of the node's shape function at the
+      // four Gauss points and at the centre; JxW.
+      std::array<unsigned int, 8>                      dof_node, dof_component;
+      std::array<std::array<dealii::Tensor<1, 2>, 4>, 4> grad_q;
+      std::array<dealii::Tensor<1, 2>, 4>             grad_center;
+      std::array<double, 4>                           JxW;
+      double cell_hx = 0, cell_hy = 0;
+      bool   single_material = true;
+
+      // Contact nodes (owned): local dofs, mass, x coordinate, multipliers,
+      // friction state, status.
+      struct ContactNode
+      {
+        unsigned int  ix, iy;
+        double        m;
+        double        x;
+        double        lambda_n = 0, lambda_t = 0, tau = 0;
+        ContactStatus status = separated;
+      };
+      std::vector<ContactNode> contact_nodes;
+      unsigned int             n_contact_nodes_global = 0;
+      int                      point_M_index          = -1; // local, or -1
+      double                   point_M_x              = 0;
+
+      double dt = 0, h = 0, dt_critical = 0, dt_cfl = 0, omega_maximum = 0;
+      double mass_total = 0;
+      std::string material_text;
+      FrictionStep friction_step;
+      unsigned long step_count = 0;
+      unsigned int  pgs_iterations_max = 0;
+
+      // Energy accumulators (local sums; reduced when sampled).
+      double work_external = 0, work_internal = 0, work_contact = 0,
+             dissipation_friction = 0, energy_initial = 0;
+      double scale_energy = 0; // largest energy seen (for the error)
+
+      std::vector<Sample> history;
+      double              run_wall_time = 0, loop_wall_time = 0;
+    };
+  } // namespace contact
+} // namespace tribodyn
+
+#endif

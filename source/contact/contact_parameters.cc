@@ -1,0 +1,646 @@
+#include <deal.II/base/utilities.h>
+
+#include <tribodyn/contact/contact_parameters.h>
+#include <tribodyn/core/errors.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <cmath>
+#include <fstream>
+
+namespace tribodyn
+{
+  namespace contact
+  {
+    using dealii::ParameterHandler;
+    using dealii::Patterns::Bool;
+    using dealii::Patterns::Double;
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::List;
+    using dealii::Patterns::Selection;
+
+    namespace
+    {
+      std::vector<double>
+      parse_numbers(const std::string &text,
+                    const unsigned int n,
+                    const std::string &name)
+      {
+        std::vector<double> values;
+        try
+          {
+            values = dealii::Utilities::string_to_double(
+              dealii::Utilities::split_string_list(text, ','));
+          }
+        catch (...)
+          {
+            values.clear();
+          }
+        if (values.size() != n)
+          throw InputError("Parameter '" + name + "' must be a list of " +
+                           std::to_string(n) +
+                           " comma-separated numbers; got '" + text + "'.");
+        for (const double v : values)
+          if (!std::isfinite(v))
+            throw InputError("Parameter '" + name +
+                             "' contains a non-finite number: '" + text +
+                             "'.");
+        return values;
+      }
+    } // namespace
+
+
+    void
+    GeometryParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      prm.declare_entry("Width",
+                        "28e-3",
+                        Double(),
+                        "Extent of the pin along x, the sliding direction (m). "
+                        "Ignored for 'Material/Type = morphology', whose pin "
+                        "is the morphology's rectangle.");
+      prm.declare_entry("Height",
+                        "8e-3",
+                        Double(),
+                        "Extent of the pin along y (m). Ignored for "
+                        "'Material/Type = morphology'.");
+      prm.declare_entry("Mesh size",
+                        "0.25e-3",
+                        Double(),
+                        "Target size h of the square Q1 elements (m); the mesh "
+                        "has round(Width/h) x round(Height/h) elements. The "
+                        "seed uses 0.25e-3 (coarse) and 0.1e-3 (fine). "
+                        "Ignored for 'Material/Type = morphology'.");
+      prm.declare_entry("Subdivisions per pixel",
+                        "1",
+                        Integer(1, 64),
+                        "Meso pin ('Material/Type = morphology'): elements per "
+                        "morphology pixel along each axis, so that the phase "
+                        "boundaries lie on element edges.");
+      prm.leave_subsection();
+    }
+
+
+    void
+    GeometryParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      width                  = prm.get_double("Width");
+      height                 = prm.get_double("Height");
+      mesh_size              = prm.get_double("Mesh size");
+      subdivisions_per_pixel = prm.get_integer("Subdivisions per pixel");
+      prm.leave_subsection();
+      check_parameter_range("Geometry/Width", width, 0, 10, true, false);
+      check_parameter_range("Geometry/Height", height, 0, 10, true, false);
+      check_parameter_range("Geometry/Mesh size",
+                            mesh_size,
+                            0,
+                            std::min(width, height),
+                            true,
+                            false,
+                            "The mesh needs at least one element across the "
+                            "pin.");
+      const double n_cells = std::round(width / mesh_size) *
+                             std::round(height / mesh_size);
+      check_parameter(n_cells <= 2e8,
+                      "Geometry/Mesh size",
+                      "a mesh of at most 2e8 elements (this one has " +
+                        format_number(n_cells) + ")");
+    }
+
+
+    void
+    ContactMaterialParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      prm.declare_entry(
+        "Type",
+        "isotropic",
+        Selection("isotropic|anisotropic|engineering constants|"
+                  "homogenization summary|morphology"),
+        "Constitutive model of the pin. 'isotropic': subsection Isotropic. "
+        "'anisotropic': the plane-strain stiffness of subsection "
+        "Anisotropic. 'engineering constants': transversely isotropic with "
+        "axis L = x (subsection Engineering constants, defaults = seed "
+        "Table 1 homogenized values). 'homogenization summary': the apparent "
+        "stiffness C of a homogenization run's summary.json. 'morphology': a "
+        "heterogeneous (meso) pin from subsection Morphology with the phases "
+        "of subsections Matrix and Heterogeneity.");
+      prm.declare_entry("Kinematics",
+                        "small strain",
+                        Selection("small strain|large deformation"),
+                        "'small strain': linear elasticity. 'large "
+                        "deformation': total Lagrangian, St Venant-Kirchhoff "
+                        "(S = C:E with the Green-Lagrange strain E).");
+      prm.declare_entry("Density",
+                        "1770",
+                        Double(),
+                        "Density (kg/m^3) of the homogeneous anisotropic "
+                        "materials (types anisotropic, engineering constants, "
+                        "homogenization summary).");
+      prm.enter_subsection("Isotropic");
+      IsotropicElasticMaterial::declare_parameters(prm, 30e9, 0.2, 1770.);
+      prm.leave_subsection();
+      prm.enter_subsection("Anisotropic");
+      prm.declare_entry("Stiffness",
+                        "33.33e9, 8.33e9, 0, 8.33e9, 33.33e9, 0, 0, 0, 12.5e9",
+                        List(Double(), 9, 9, ","),
+                        "Plane-strain stiffness C (Pa), 9 numbers row by row, "
+                        "Voigt order (xx, yy, xy) with the engineering shear "
+                        "strain: sigma = C (eps_xx, eps_yy, gamma_xy).");
+      prm.declare_entry("Out-of-plane stiffness",
+                        "8.33e9, 8.33e9, 0",
+                        List(Double(), 3, 3, ","),
+                        "Row c_z with sigma_zz = c_z . (eps_xx, eps_yy, "
+                        "gamma_xy) (Pa); used only for the von Mises output.");
+      prm.leave_subsection();
+      prm.enter_subsection("Engineering constants");
+      prm.declare_entry("E_L", "31.9e9", Double(), "Young modulus along x (Pa).");
+      prm.declare_entry("E_T", "34e9", Double(), "Young modulus along y, z (Pa).");
+      prm.declare_entry("nu_LT", "0.2", Double(), "Poisson ratio nu_LT.");
+      prm.declare_entry("nu_TT", "0.2", Double(), "Poisson ratio nu_TT'.");
+      prm.declare_entry("G_LT", "13.3e9", Double(), "Shear modulus G_LT (Pa).");
+      prm.leave_subsection();
+      prm.enter_subsection("Homogenization summary");
+      prm.declare_entry("File",
+                        "",
+                        dealii::Patterns::Anything(),
+                        "summary.json written by a 'set Problem = "
+                        "homogenization' run.");
+      prm.declare_entry("Boundary condition",
+                        "KUBC",
+                        Selection("KUBC|SUBC|periodic"),
+                        "Which apparent stiffness of the file to use.");
+      prm.leave_subsection();
+      prm.enter_subsection("Matrix");
+      IsotropicElasticMaterial::declare_parameters(prm, 30e9, 0.2, 1770.);
+      prm.leave_subsection();
+      prm.enter_subsection("Heterogeneity");
+      IsotropicElasticMaterial::declare_parameters(prm, 80e9, 0.2, 1770.);
+      prm.leave_subsection();
+      prm.leave_subsection();
+    }
+
+
+    void
+    ContactMaterialParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      const std::string t = prm.get("Type");
+      type = t == "isotropic"             ? Type::isotropic :
+             t == "anisotropic"           ? Type::anisotropic :
+             t == "engineering constants" ? Type::engineering_constants :
+             t == "homogenization summary" ? Type::homogenization_summary :
+                                             Type::morphology;
+      kinematics = prm.get("Kinematics") == "small strain" ?
+                     Kinematics::small_strain :
+                     Kinematics::large_deformation;
+      density = prm.get_double("Density");
+      check_parameter_range("Material/Density", density, 0, 1e6, true, false);
+      prm.enter_subsection("Isotropic");
+      isotropic.parse_parameters(prm, "Material/Isotropic");
+      prm.leave_subsection();
+      prm.enter_subsection("Anisotropic");
+      {
+        const auto c = parse_numbers(prm.get("Stiffness"),
+                                     9,
+                                     "Material/Anisotropic/Stiffness");
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            anisotropic_stiffness[i][j] = c[3 * i + j];
+        const auto z = parse_numbers(prm.get("Out-of-plane stiffness"),
+                                     3,
+                                     "Material/Anisotropic/Out-of-plane "
+                                     "stiffness");
+        for (unsigned int i = 0; i < 3; ++i)
+          anisotropic_c_z[i] = z[i];
+      }
+      prm.leave_subsection();
+      prm.enter_subsection("Engineering constants");
+      E_L   = prm.get_double("E_L");
+      E_T   = prm.get_double("E_T");
+      nu_LT = prm.get_double("nu_LT");
+      nu_TT = prm.get_double("nu_TT");
+      G_LT  = prm.get_double("G_LT");
+      prm.leave_subsection();
+      prm.enter_subsection("Homogenization summary");
+      summary_file = prm.get("File");
+      summary_key  = prm.get("Boundary condition");
+      prm.leave_subsection();
+      prm.enter_subsection("Matrix");
+      matrix.parse_parameters(prm, "Material/Matrix");
+      prm.leave_subsection();
+      prm.enter_subsection("Heterogeneity");
+      heterogeneity.parse_parameters(prm, "Material/Heterogeneity");
+      prm.leave_subsection();
+      prm.leave_subsection();
+
+      if (type == Type::engineering_constants)
+        {
+          const std::string s = "Material/Engineering constants/";
+          check_parameter_range(s + "E_L", E_L, 0, 1e15, true, false);
+          check_parameter_range(s + "E_T", E_T, 0, 1e15, true, false);
+          check_parameter_range(s + "G_LT", G_LT, 0, 1e15, true, false);
+          check_parameter_range(s + "nu_TT", nu_TT, -1, 1, true, true);
+          check_parameter_range(s + "nu_LT", nu_LT, -1, 1, true, true);
+        }
+      if (type == Type::homogenization_summary)
+        check_parameter(!summary_file.empty(),
+                        "Material/Homogenization summary/File",
+                        "the path of a homogenization summary.json when "
+                        "'Material/Type = homogenization summary'");
+    }
+
+
+    void
+    LoadingParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Loading");
+      prm.declare_entry("Pressure",
+                        "0.5e6",
+                        Double(),
+                        "Pressure P on the top face (Pa), reached at the end "
+                        "of the ramp. The seed uses 0.5e6, 2.5e6 and 5e6.");
+      prm.declare_entry("Ramp time",
+                        "10e-6",
+                        Double(0),
+                        "Duration t_r of the smooth ramp P(t) = P (1 - "
+                        "cos(pi t/t_r))/2 (s); 0 applies P at once.");
+      prm.declare_entry("Plane velocity",
+                        "-2",
+                        Double(),
+                        "Velocity V of the rigid plane along x (m/s).");
+      prm.declare_entry("Top face held in x",
+                        "true",
+                        Bool(),
+                        "Hold the top face in x; its reaction is the "
+                        "friction force. 'false' leaves it free (a block "
+                        "dragged by the plane).");
+      prm.declare_entry("Initial velocity",
+                        "0, 0",
+                        List(Double(), 2, 2, ","),
+                        "Initial velocity of the whole pin (m/s), x then y "
+                        "(e.g. '0, -1' for an impact on the plane).");
+      prm.declare_entry("Initial gap",
+                        "0",
+                        Double(0),
+                        "Initial distance between the bottom face and the "
+                        "plane (m).");
+      prm.leave_subsection();
+    }
+
+
+    void
+    LoadingParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Loading");
+      pressure       = prm.get_double("Pressure");
+      ramp_time      = prm.get_double("Ramp time");
+      plane_velocity = prm.get_double("Plane velocity");
+      top_held_in_x  = prm.get_bool("Top face held in x");
+      const auto v   = parse_numbers(prm.get("Initial velocity"),
+                                   2,
+                                   "Loading/Initial velocity");
+      initial_velocity[0] = v[0];
+      initial_velocity[1] = v[1];
+      initial_gap         = prm.get_double("Initial gap");
+      prm.leave_subsection();
+      check_parameter_range("Loading/Pressure", pressure, 0, 1e11, false, false,
+                            "The pressure pushes the pin on the plane; it "
+                            "must not be negative.");
+      check_parameter_range("Loading/Plane velocity",
+                            plane_velocity,
+                            -1e4,
+                            1e4,
+                            false,
+                            false);
+    }
+
+
+    double
+    LoadingParameters::pressure_at(const double t) const
+    {
+      if (t >= ramp_time)
+        return pressure;
+      if (t <= 0)
+        return 0.;
+      return 0.5 * pressure * (1. - std::cos(M_PI * t / ramp_time));
+    }
+
+
+    void
+    TimeParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time integration");
+      prm.declare_entry("Time step",
+                        "5e-9",
+                        Double(),
+                        "Time step dt (s). A dt above the critical time step "
+                        "of the mesh is refused unless 'Automatic time step = "
+                        "true'.");
+      prm.declare_entry("End time", "100e-6", Double(), "Simulated time (s).");
+      prm.declare_entry("Beta2",
+                        "0.5",
+                        Double(),
+                        "Parameter beta2 of the explicit beta2 (Newmark beta "
+                        "= 0, gamma = beta2) scheme, in [0.5, 1]; 0.5 is "
+                        "central differences, larger values add numerical "
+                        "dissipation.");
+      prm.declare_entry("Damping coefficient",
+                        "1.1e-9",
+                        Double(),
+                        "beta of the stiffness-proportional damping C = beta "
+                        "K (s); 0 switches damping off.");
+      prm.declare_entry("Automatic time step",
+                        "false",
+                        Bool(),
+                        "If true, use dt = min(Time step, safety factor x "
+                        "critical dt) instead of refusing an unstable dt.");
+      prm.declare_entry("Safety factor",
+                        "0.9",
+                        Double(),
+                        "Fraction of the critical time step used by the "
+                        "automatic time step, in (0, 1].");
+      prm.leave_subsection();
+    }
+
+
+    void
+    TimeParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time integration");
+      time_step           = prm.get_double("Time step");
+      end_time            = prm.get_double("End time");
+      beta2               = prm.get_double("Beta2");
+      damping             = prm.get_double("Damping coefficient");
+      automatic_time_step = prm.get_bool("Automatic time step");
+      safety_factor       = prm.get_double("Safety factor");
+      prm.leave_subsection();
+      check_parameter_range("Time integration/Time step",
+                            time_step, 0, 1, true, false);
+      check_parameter_range("Time integration/End time",
+                            end_time, 0, 1e3, true, false);
+      check_parameter_range("Time integration/Beta2", beta2, 0.5, 1, false,
+                            false,
+                            "The beta2 scheme is stable and at least first "
+                            "order accurate only for beta2 in [0.5, 1].");
+      check_parameter_range("Time integration/Damping coefficient",
+                            damping, 0, 1, false, false);
+      check_parameter_range("Time integration/Safety factor",
+                            safety_factor, 0, 1, true, false);
+      const double n_steps = end_time / time_step;
+      check_parameter(n_steps < 4e9,
+                      "Time integration/End time",
+                      "fewer than 4e9 time steps (End time / Time step = " +
+                        format_number(n_steps) + ")");
+    }
+
+
+    void
+    ContactLawParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      prm.declare_entry("Algorithm",
+                        "node-wise",
+                        Selection("node-wise|projected Gauss-Seidel"),
+                        "How the forward-increment Lagrange multipliers are "
+                        "found: 'node-wise' closed form (rigid plane, lumped "
+                        "mass: the constraints decouple), or the general "
+                        "projected Gauss-Seidel iteration over constraint "
+                        "rows (for coupled constraints; gives the same result "
+                        "here).");
+      prm.declare_entry("Friction law",
+                        "regularized",
+                        Selection("frictionless|Coulomb|regularized"),
+                        "'Coulomb': |tau| <= mu |sigma|, slip at mu |sigma|. "
+                        "'regularized': the simplified Prakash-Clifton law "
+                        "of seed 001 eq. (4): during slip tau relaxes towards "
+                        "alpha mu |sigma| with time constant L*/|V|.");
+      prm.declare_entry("Friction coefficient",
+                        "0.25",
+                        Double(),
+                        "Friction coefficient mu.");
+      prm.declare_entry("Regularization time",
+                        "1.5e-6",
+                        Double(),
+                        "L*/|V| of the regularized law (s). The seed uses 300 "
+                        "time steps, 1.5e-6 s at dt = 5 ns; keep it fixed "
+                        "when refining dt to study convergence.");
+      prm.declare_entry("Gauss-Seidel tolerance",
+                        "1e-12",
+                        Double(),
+                        "Projected Gauss-Seidel: stop when the largest change "
+                        "of a multiplier, relative to the largest multiplier, "
+                        "is below this.");
+      prm.declare_entry("Gauss-Seidel max iterations",
+                        "50",
+                        Integer(1, 100000),
+                        "Projected Gauss-Seidel: iteration limit per step.");
+      prm.leave_subsection();
+    }
+
+
+    void
+    ContactLawParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      algorithm = prm.get("Algorithm") == "node-wise" ?
+                    ContactAlgorithm::node_wise :
+                    ContactAlgorithm::projected_gauss_seidel;
+      const std::string l = prm.get("Friction law");
+      law = l == "frictionless" ? FrictionLaw::frictionless :
+            l == "Coulomb"      ? FrictionLaw::coulomb :
+                                  FrictionLaw::regularized;
+      friction_coefficient = prm.get_double("Friction coefficient");
+      regularization_time  = prm.get_double("Regularization time");
+      pgs_tolerance        = prm.get_double("Gauss-Seidel tolerance");
+      pgs_max_iterations   = prm.get_integer("Gauss-Seidel max iterations");
+      prm.leave_subsection();
+      check_parameter_range("Contact/Friction coefficient",
+                            friction_coefficient, 0, 10, false, false);
+      check_parameter_range("Contact/Regularization time",
+                            regularization_time, 0, 1, true, false);
+      check_parameter_range("Contact/Gauss-Seidel tolerance",
+                            pgs_tolerance, 0, 1, true, true);
+    }
+
+
+    void
+    ContactOutputParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Sample interval",
+                        "20",
+                        Integer(1),
+                        "Record friction.csv, point_M.csv and "
+                        "contact_status.csv every this many time steps; the "
+                        "time averages and the spectrum use these samples.");
+      prm.declare_entry("Field interval",
+                        "10e-6",
+                        Double(0),
+                        "Write the VTU fields every this much simulated time "
+                        "(s); 0 writes none.");
+      prm.declare_entry("Averaging start time",
+                        "40e-6",
+                        Double(0),
+                        "Start of the window of the time averages "
+                        "(mu_global_mean, status fractions) and of the "
+                        "spectrum (s), after the transient.");
+      prm.declare_entry("Averaging end time",
+                        "-1",
+                        Double(),
+                        "End of that window (s); negative: the end of the "
+                        "run.");
+      prm.leave_subsection();
+    }
+
+
+    void
+    ContactOutputParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      sample_interval = prm.get_integer("Sample interval");
+      field_interval  = prm.get_double("Field interval");
+      average_start   = prm.get_double("Averaging start time");
+      average_end     = prm.get_double("Averaging end time");
+      prm.leave_subsection();
+      if (average_end >= 0)
+        check_parameter(average_end > average_start,
+                        "Output/Averaging end time",
+                        "a time after 'Averaging start time' (or a negative "
+                        "value for the end of the run)");
+    }
+
+
+    void
+    ContactParameters::declare_parameters(ParameterHandler &prm)
+    {
+      GeometryParameters::declare_parameters(prm);
+      ContactMaterialParameters::declare_parameters(prm);
+      MorphologyParameters::declare_parameters(prm);
+      LoadingParameters::declare_parameters(prm);
+      TimeParameters::declare_parameters(prm);
+      ContactLawParameters::declare_parameters(prm);
+      ContactOutputParameters::declare_parameters(prm);
+    }
+
+
+    void
+    ContactParameters::parse_parameters(ParameterHandler &prm)
+    {
+      geometry.parse_parameters(prm);
+      material.parse_parameters(prm);
+      morphology.parse_parameters(prm);
+      loading.parse_parameters(prm);
+      time.parse_parameters(prm);
+      contact.parse_parameters(prm);
+      output.parse_parameters(prm);
+      check_parameter(output.average_start < time.end_time,
+                      "Output/Averaging start time",
+                      "a time before 'Time integration/End time' (" +
+                        format_number(time.end_time) + " s)");
+    }
+
+
+    VoigtStiffness
+    transversely_isotropic_plane_strain(const double          E_L,
+                                        const double          E_T,
+                                        const double          nu_LT,
+                                        const double          nu_TT,
+                                        const double          G_LT,
+                                        dealii::Tensor<1, 3> &c_z)
+    {
+      // Normal part of the 3D compliance, axes (x = L, y = T, z = T').
+      double S[3][3] = {{1. / E_L, -nu_LT / E_L, -nu_LT / E_L},
+                        {-nu_LT / E_L, 1. / E_T, -nu_TT / E_T},
+                        {-nu_LT / E_L, -nu_TT / E_T, 1. / E_T}};
+      // Plane strain: eps_zz = 0 gives sigma_zz = -(S31 s_xx + S32 s_yy)/S33,
+      // so the in-plane compliance is S_ij - S_i3 S_3j / S33.
+      const double a  = S[0][0] - S[0][2] * S[2][0] / S[2][2];
+      const double b  = S[0][1] - S[0][2] * S[2][1] / S[2][2];
+      const double d  = S[1][1] - S[1][2] * S[2][1] / S[2][2];
+      const double det = a * d - b * b;
+      if (!(det > 0) || !(a > 0))
+        throw InputError("The engineering constants (E_L, E_T, nu_LT, nu_TT, "
+                         "G_LT) do not give a positive definite plane-strain "
+                         "stiffness; check 'Material/Engineering "
+                         "constants'.");
+      VoigtStiffness C;
+      C[0][0] = d / det;
+      C[0][1] = C[1][0] = -b / det;
+      C[1][1]           = a / det;
+      C[2][2]           = G_LT;
+      for (unsigned int j = 0; j < 2; ++j)
+        c_z[j] = -(S[2][0] * C[0][j] + S[2][1] * C[1][j]) / S[2][2];
+      c_z[2] = 0;
+      return C;
+    }
+
+
+    VoigtStiffness
+    read_homogenization_stiffness(const std::string &   file,
+                                  const std::string &   key,
+                                  dealii::Tensor<1, 3> &c_z)
+    {
+      namespace pt = boost::property_tree;
+      pt::ptree tree;
+      {
+        std::ifstream in(file);
+        if (!in)
+          throw InputError("Cannot read the homogenization summary '" + file +
+                           "' ('Material/Homogenization summary/File'): it "
+                           "does not exist or is not readable. Run 'set "
+                           "Problem = homogenization' first; it writes "
+                           "OUTPUT_DIRECTORY/summary.json.");
+        try
+          {
+            pt::read_json(in, tree);
+          }
+        catch (const std::exception &e)
+          {
+            throw InputError("The homogenization summary '" + file +
+                             "' is not valid JSON: " + e.what());
+          }
+      }
+      const auto entry = tree.get_child_optional(key);
+      if (!entry || !entry->get_child_optional("C"))
+        throw InputError("The homogenization summary '" + file +
+                         "' has no stiffness '" + key +
+                         ".C'; was it computed with that boundary "
+                         "condition? Choose another 'Material/"
+                         "Homogenization summary/Boundary condition'.");
+      VoigtStiffness C;
+      unsigned int   i = 0;
+      for (const auto &row : entry->get_child("C"))
+        {
+          unsigned int j = 0;
+          for (const auto &value : row.second)
+            {
+              if (i < 3 && j < 3)
+                C[i][j] = value.second.get_value<double>();
+              ++j;
+            }
+          if (j != 3)
+            i = 99;
+          ++i;
+        }
+      if (i != 3)
+        throw InputError("The stiffness '" + key + ".C' of '" + file +
+                         "' is not a 3x3 array.");
+      c_z = dealii::Tensor<1, 3>();
+      if (const auto z = entry->get_child_optional("c_z"))
+        {
+          unsigned int k = 0;
+          for (const auto &value : *z)
+            if (k < 3)
+              c_z[k++] = value.second.get_value<double>();
+        }
+      if (!(C[0][0] > 0 && C[1][1] > 0 && C[2][2] > 0))
+        throw InputError("The stiffness '" + key + ".C' of '" + file +
+                         "' is not positive definite.");
+      return C;
+    }
+  } // namespace contact
+} // namespace tribodyn
