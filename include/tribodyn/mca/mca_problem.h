@@ -1,0 +1,37 @@
+#ifndef tribodyn_mca_mca_problem_h
+#define tribodyn_mca_mca_problem_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <tribodyn/core/problem.h>
+#include <tribodyn/mca/parameters.h>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    /**
+     * `set Problem = mca`: pack the automata, integrate the MCA equations
+     * (velocity Verlet) to the end time, write series.csv, particle VTU and
+     * summary.json, and the headline figures of the chosen analysis
+     * (uniaxial: E, nu, sigma_y; pulse: c_p; friction: mu).
+     */
+    class McaProblem : public Problem
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      McaProblem(dealii::ParameterHandler &prm, const RunContext &context);
+
+      void
+      run() override;
+
+    private:
+      RunContext context;
+      Parameters parameters;
+    };
+  } // namespace mca
+} // namespace tribodyn
+
+#endif

@@ -1,0 +1,318 @@
+#ifndef tribodyn_mca_parameters_h
+#define tribodyn_mca_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace tribodyn
+{
+  /**
+   * The 3D movable cellular automaton (MCA) method of seed 000 (see
+   * doc/theory/mca.md for the equations as implemented).
+   */
+  namespace mca
+  {
+    using Point3 = dealii::Point<3>;
+
+    /// Response function of a material beyond the elastic range.
+    enum class Hardening
+    {
+      elastic,  ///< no plasticity
+      linear,   ///< sigma_y = sigma_y0 + H1 eps_p
+      bilinear  ///< slope H1 up to eps_p = onset, H2 beyond
+    };
+
+    /**
+     * One MCA material (subsections "Materials/Steel", "Materials/Carbon").
+     * Defaults: seed 000 Tables 1 and 2.
+     */
+    struct MaterialParameters
+    {
+      std::string name;
+      double      density        = 7800;
+      double      youngs_modulus = 206e9;
+      double      poisson_ratio  = 0.28;
+      Hardening   hardening      = Hardening::linear;
+      double      yield_stress   = 800e6;
+      /// dsigma_y / deps_p of the first (or only) hardening branch.
+      double hardening_modulus = 2e9;
+      /// dsigma_y / deps_p beyond the onset (bilinear only).
+      double second_hardening_modulus = 0;
+      /// Plastic strain where the second branch starts (bilinear only).
+      double second_hardening_onset = 0.05;
+      /// Von Mises stress of a bonded pair at which the bond breaks.
+      double bond_breaking_stress = 1.2e9;
+      /// Energy per unit volume of a pair (S_ij r_ij) to break a bond.
+      double bond_energy_density = 3.5e6;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm,
+                         const MaterialParameters &defaults);
+      void
+      parse_parameters(dealii::ParameterHandler &prm,
+                       const std::string &       section);
+
+      double
+      shear_modulus() const
+      {
+        return youngs_modulus / (2 * (1 + poisson_ratio));
+      }
+      double
+      bulk_modulus() const
+      {
+        return youngs_modulus / (3 * (1 - 2 * poisson_ratio));
+      }
+      /// Many-body coefficient D = 1 - 2G/(3K) = lambda/K of the pair law.
+      double
+      many_body_coefficient() const
+      {
+        return 1 - 2 * shear_modulus() / (3 * bulk_modulus());
+      }
+      /// Longitudinal wave speed sqrt((K + 4G/3)/rho).
+      double
+      p_wave_speed() const;
+      /// Current yield stress after accumulated plastic strain @p eps_p.
+      double
+      yield_stress_at(const double eps_p) const;
+      bool
+      is_plastic() const
+      {
+        return hardening != Hardening::elastic;
+      }
+
+      static MaterialParameters
+      steel();
+      static MaterialParameters
+      carbon();
+    };
+
+
+    /// A region of the packing: a shape that sets the material or removes
+    /// automata ("void").
+    struct Region
+    {
+      enum class Shape
+      {
+        box,
+        sphere,
+        cylinder
+      };
+      Shape shape = Shape::box;
+      /// box: two corners; sphere: centre in a; cylinder: axis from a to b.
+      Point3 a, b;
+      double radius = 0;
+      /// Index into the material list, or -1 for a void.
+      int material = -1;
+
+      bool
+      contains(const Point3 &p) const;
+    };
+
+
+    /// A body: FCC automata filling a box, with a material.
+    struct Body
+    {
+      Point3 lower, upper;
+      int    material = 0;
+    };
+
+
+    /**
+     * Subsection "Geometry": automaton size, periodicity, bodies, regions,
+     * optional rough interface between two bodies.
+     */
+    struct GeometryParameters
+    {
+      /// Automaton size d (distance between neighbours in the FCC packing).
+      double automaton_size = 1e-3;
+      /// The simulation box; in periodic directions it is the period.
+      Point3 domain_lower, domain_upper;
+      std::array<bool, 3> periodic = {{false, false, false}};
+      std::vector<Body>   bodies;
+      std::vector<Region> regions;
+      /// Rough interface: sites of all bodies are assigned to body 0 below
+      /// the surface z = height + amplitude * f(x, y) and to body 1 above.
+      bool   rough_interface    = false;
+      double interface_height   = 0;
+      double roughness_amplitude = 0;
+      double roughness_wavelength = 1;
+      unsigned int roughness_seed = 1;
+      /// Initial gap added between the two bodies of a rough interface
+      /// (body 1 is shifted up by it).
+      double interface_gap = 0;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &          prm,
+                       const std::vector<std::string> &material_names);
+    };
+
+
+    /// Subsection "Interaction": what the pair law includes.
+    struct InteractionParameters
+    {
+      bool   rotations            = true;
+      bool   plasticity           = true;
+      bool   bond_breaking        = false;
+      bool   bond_formation       = false;
+      double friction_coefficient = 0.3;
+      /// Fraction of the bond-breaking energy the plastic heat of an
+      /// unbonded pair must reach to bond (seed: one half).
+      double bond_formation_heat_fraction = 0.5;
+      /// Pair-list skin as a fraction of the automaton size.
+      double skin = 0.2;
+      /// Slots per automaton for pair states carried by the particles
+      /// under MPI (upper bound on pairs in which an automaton has the
+      /// smaller id).
+      unsigned int pair_slots = 16;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+
+    /// A group of automata selected by a box, with a boundary condition.
+    struct BoundaryGroup
+    {
+      enum class Type
+      {
+        fixed,
+        velocity,
+        force,
+        damping
+      };
+      std::string name;
+      Type        type = Type::fixed;
+      Point3      lower, upper;
+      /// velocity: prescribed components (NaN = free); force: total force
+      /// on the group; damping: coefficient per component (1/s).
+      std::array<double, 3> value = {{0, 0, 0}};
+      /// Time at which a second value starts to ramp in (velocity/force),
+      /// to chain e.g. approach then sliding; negative = none.
+      double                switch_time = -1;
+      std::array<double, 3> second_value = {{0, 0, 0}};
+    };
+
+
+    /// Subsection "Boundary conditions".
+    struct BoundaryParameters
+    {
+      std::vector<BoundaryGroup> groups;
+      /// Duration of the smooth (C1) ramp of velocities and forces.
+      double ramp_time = 0;
+      /// Viscous damping of every automaton, F = -c m v (1/s).
+      double global_damping = 0;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+
+    /// Subsection "Time".
+    struct TimeParameters
+    {
+      double end_time = 1e-6;
+      /// 0: dt = courant * d_min / c_p,max.
+      double time_step = 0;
+      double courant   = 0.2;
+      /// Largest accepted dt / (d_min / c_p,max).
+      static constexpr double max_courant = 0.5;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+
+    /// Subsection "Output".
+    struct McaOutputParameters
+    {
+      double output_interval = 0; ///< 0 = only at the end
+      double series_interval = 0; ///< 0 = every 100 steps
+      bool   write_particles = true;
+      bool   write_stress    = true;
+      bool   cross_section   = false;
+      unsigned int cross_section_axis = 0;
+      double       cross_section_position  = 0;
+      double       cross_section_thickness = 0;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+
+    /// Subsection "Analysis": headline figures of standard scenes.
+    struct AnalysisParameters
+    {
+      enum class Type
+      {
+        none,
+        uniaxial,
+        pulse,
+        friction
+      };
+      Type type = Type::none;
+      /// uniaxial: loading axis; pulse: propagation axis; friction: normal.
+      unsigned int axis = 2;
+      /// uniaxial: groups whose reaction and displacement define stress and
+      /// strain (the loaded group and the fixed one).
+      std::string loaded_group = "top";
+      std::string support_group = "bottom";
+      /// uniaxial: fit E over this fraction of the yield strain (upper).
+      double elastic_fit_fraction = 0.5;
+      /// pulse: positions of the two probe planes along the axis.
+      double probe_1 = 0, probe_2 = 0;
+      /// friction: time from which the mean mu is taken.
+      double averaging_start = 0;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+
+    /// Every parameter of `set Problem = mca`.
+    struct Parameters
+    {
+      std::vector<MaterialParameters> materials; ///< steel, carbon
+      GeometryParameters              geometry;
+      InteractionParameters           interaction;
+      BoundaryParameters              boundary;
+      TimeParameters                  time;
+      McaOutputParameters             output;
+      AnalysisParameters              analysis;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /// Defaults for programmatic use (tests): steel and carbon.
+      Parameters();
+
+      bool
+      any_plastic() const;
+    };
+
+    /// Index of material @p name ("steel", "carbon"); throws InputError.
+    int
+    material_index(const std::vector<std::string> &names,
+                   const std::string &             name,
+                   const std::string &             parameter);
+  } // namespace mca
+} // namespace tribodyn
+
+#endif

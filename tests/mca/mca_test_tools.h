@@ -1,0 +1,67 @@
+#ifndef tribodyn_tests_mca_test_tools_h
+#define tribodyn_tests_mca_test_tools_h
+
+#include <deal.II/base/mpi.h>
+
+#include <tribodyn/mca/automaton_system.h>
+#include <tribodyn/mca/parameters.h>
+
+#include "../test_utilities.h"
+
+#include <cmath>
+#include <map>
+
+namespace tribodyn_test
+{
+  using namespace tribodyn::mca;
+
+  /// A block of n x n x n FCC cells of automata of size d (one body).
+  inline Parameters
+  block_parameters(const unsigned int n,
+                   const double       d,
+                   const int          material = 0,
+                   const bool         periodic_xy = false)
+  {
+    Parameters   p;
+    const double a = d * std::sqrt(2.);
+    auto        &g = p.geometry;
+    g.automaton_size = d;
+    g.domain_lower   = Point3(0, 0, 0);
+    g.domain_upper   = Point3(n * a, n * a, n * a);
+    g.periodic       = {{periodic_xy, periodic_xy, false}};
+    Body b;
+    b.lower    = g.domain_lower;
+    b.upper    = g.domain_upper;
+    b.material = material;
+    g.bodies   = {b};
+    p.interaction.rotations      = true;
+    p.interaction.plasticity     = false;
+    p.interaction.bond_breaking  = false;
+    p.interaction.bond_formation = false;
+    return p;
+  }
+
+  /// Hooke's stress (xx yy zz yz xz xy) for strain eps.
+  inline Sym3
+  hooke(const MaterialParameters &m, const double eps[3][3])
+  {
+    const double G      = m.shear_modulus();
+    const double lambda = m.bulk_modulus() - 2 * G / 3;
+    const double tr     = eps[0][0] + eps[1][1] + eps[2][2];
+    return {{lambda * tr + 2 * G * eps[0][0],
+             lambda * tr + 2 * G * eps[1][1],
+             lambda * tr + 2 * G * eps[2][2],
+             2 * G * eps[1][2],
+             2 * G * eps[0][2],
+             2 * G * eps[0][1]}};
+  }
+
+  inline double
+  sym_norm(const Sym3 &s)
+  {
+    return std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2] +
+                     2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+  }
+} // namespace tribodyn_test
+
+#endif
