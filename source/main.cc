@@ -1,5 +1,4 @@
 #include <deal.II/base/mpi.h>
-
 #include <tribodyn/core/application.h>
 
 int

@@ -5,9 +5,8 @@
 // line (on rank 0) with the measured value, the reference and the
 // tolerance, and the test program returns the number of failed checks.
 
-#include <deal.II/base/mpi.h>
-
 #include <cmath>
+#include <deal.II/base/mpi.h>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -47,13 +46,13 @@ namespace tribodyn_test
                  const std::string &what,
                  const double       scale = 0)
   {
-    const double denominator =
-      scale > 0 ? scale : std::max(std::abs(reference), 1e-300);
-    const double error = std::abs(value - reference) / denominator;
+    const double denominator
+      = scale > 0 ? scale : std::max(std::abs(reference), 1e-300);
+    const double       error = std::abs(value - reference) / denominator;
     std::ostringstream s;
     s << std::setprecision(12) << what << ": " << value << " vs " << reference
-      << " (relative error " << std::setprecision(3) << error
-      << ", tolerance " << tolerance << ")";
+      << " (relative error " << std::setprecision(3) << error << ", tolerance "
+      << tolerance << ")";
     check(error <= tolerance, s.str());
   }
 
@@ -62,9 +61,9 @@ namespace tribodyn_test
   result()
   {
     if (is_root())
-      std::cout << (failure_count() == 0 ? "All checks passed." :
-                                           std::to_string(failure_count()) +
-                                             " check(s) failed.")
+      std::cout << (failure_count() == 0
+                      ? "All checks passed."
+                      : std::to_string(failure_count()) + " check(s) failed.")
                 << std::endl;
     return failure_count() == 0 ? 0 : 1;
   }

@@ -1,17 +1,15 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
-
+#include <fstream>
+#include <iostream>
+#include <sstream>
 #include <tribodyn/core/application.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/global_parameters.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/problem.h>
 #include <tribodyn/core/version.h>
-
-#include <fstream>
-#include <iostream>
-#include <sstream>
 
 namespace tribodyn
 {
@@ -42,7 +40,7 @@ namespace tribodyn
     /// one-paragraph message of an InputError.
     std::string
     describe_parameter_exception(const dealii::ExceptionBase &exception,
-                                 const std::string &          file)
+                                 const std::string           &file)
     {
       std::ostringstream info;
       exception.print_info(info);
@@ -62,9 +60,9 @@ namespace tribodyn
               space = false;
             }
         }
-      return "Error in the parameter file '" + file + "': " + paragraph +
-             " Run 'tribodyn --print-parameters PROBLEM' to see every valid "
-             "parameter with its documentation.";
+      return "Error in the parameter file '" + file + "': " + paragraph
+             + " Run 'tribodyn --print-parameters PROBLEM' to see every valid "
+               "parameter with its documentation.";
     }
 
 
@@ -103,9 +101,9 @@ namespace tribodyn
     {
       std::ifstream in(file);
       if (!in)
-        throw InputError("Cannot read the parameter file '" + file +
-                         "': it does not exist or is not readable. Give the "
-                         "path of a .prm file (examples are in prm/).");
+        throw InputError("Cannot read the parameter file '" + file
+                         + "': it does not exist or is not readable. Give the "
+                           "path of a .prm file (examples are in prm/).");
     }
 
 
@@ -162,8 +160,8 @@ namespace tribodyn
         {
           create_output_directory(global.output_directory);
           std::ostringstream used;
-          used << "# Parameters used by tribodyn " << version_string
-               << " for '" << file << "'\n";
+          used << "# Parameters used by tribodyn " << version_string << " for '"
+               << file << "'\n";
           prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
           write_file_atomically(join_path(global.output_directory,
                                           "parameters.prm"),
@@ -208,12 +206,13 @@ namespace tribodyn
             return exit_code::success;
           }
         if (args[0].size() > 1 && args[0][0] == '-')
-          throw InputError("Unknown option '" + args[0] +
-                           "'. Run 'tribodyn --help' for the usage.");
+          throw InputError("Unknown option '" + args[0]
+                           + "'. Run 'tribodyn --help' for the usage.");
         if (args.size() != 1)
-          throw InputError("tribodyn takes one parameter file; got " +
-                           std::to_string(args.size()) +
-                           " arguments. Run 'tribodyn --help' for the usage.");
+          throw InputError(
+            "tribodyn takes one parameter file; got "
+            + std::to_string(args.size())
+            + " arguments. Run 'tribodyn --help' for the usage.");
         return run_parameter_file(args[0], comm);
       }
     catch (const InputError &e)
@@ -238,8 +237,8 @@ namespace tribodyn
       }
     catch (const std::exception &e)
       {
-        std::cerr << "tribodyn: internal error (please report it): "
-                  << e.what() << std::endl;
+        std::cerr << "tribodyn: internal error (please report it): " << e.what()
+                  << std::endl;
         return exit_code::internal_error;
       }
   }

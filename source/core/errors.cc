@@ -1,19 +1,20 @@
-#include <tribodyn/core/errors.h>
-
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <tribodyn/core/errors.h>
 
 namespace tribodyn
 {
   InputError::InputError(const std::string &message)
-    : std::runtime_error(message)
-  {}
+      : std::runtime_error(message)
+  {
+  }
 
 
   RunError::RunError(const std::string &message)
-    : std::runtime_error(message)
-  {}
+      : std::runtime_error(message)
+  {
+  }
 
 
   std::string
@@ -34,23 +35,21 @@ namespace tribodyn
                         const bool         upper_open,
                         const std::string &hint)
   {
-    const bool above =
-      lower_open ? (value > lower) : (value >= lower);
-    const bool below =
-      upper_open ? (value < upper) : (value <= upper);
+    const bool above = lower_open ? (value > lower) : (value >= lower);
+    const bool below = upper_open ? (value < upper) : (value <= upper);
     if (above && below)
       return;
 
     std::ostringstream message;
     message << "Parameter '" << name << "' = " << format_number(value)
             << " is out of range: it must lie in " << (lower_open ? "(" : "[")
-            << (lower == -std::numeric_limits<double>::max() ?
-                  std::string("-inf") :
-                  format_number(lower))
+            << (lower == -std::numeric_limits<double>::max()
+                  ? std::string("-inf")
+                  : format_number(lower))
             << ", "
-            << (upper == std::numeric_limits<double>::max() ?
-                  std::string("inf") :
-                  format_number(upper))
+            << (upper == std::numeric_limits<double>::max()
+                  ? std::string("inf")
+                  : format_number(upper))
             << (upper_open ? ")" : "]") << ".";
     if (!hint.empty())
       message << " " << hint;

@@ -7,9 +7,9 @@ namespace tribodyn
   GlobalParameters::declare_parameters(dealii::ParameterHandler &prm)
   {
     std::string names;
-    std::string documentation =
-      "The problem to solve. Each problem reads the subsections documented "
-      "under its name:";
+    std::string documentation
+      = "The problem to solve. Each problem reads the subsections documented "
+        "under its name:";
     for (const auto &p : registered_problems())
       {
         names += (names.empty() ? "" : "|") + p.name;
@@ -17,8 +17,8 @@ namespace tribodyn
       }
     // homogenization is the default when this build has it.
     std::string default_problem = "homogenization";
-    if (names.find(default_problem) == std::string::npos &&
-        !registered_problems().empty())
+    if (names.find(default_problem) == std::string::npos
+        && !registered_problems().empty())
       default_problem = registered_problems().front().name;
     prm.declare_entry("Problem",
                       default_problem,

@@ -1,54 +1,63 @@
-#include <tribodyn/core/json.h>
-
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <tribodyn/core/json.h>
 
 namespace tribodyn
 {
   JsonValue::JsonValue()
-    : value_type(Type::null)
-  {}
+      : value_type(Type::null)
+  {
+  }
 
   JsonValue::JsonValue(const double value)
-    : value_type(Type::number)
-    , number_value(value)
-  {}
+      : value_type(Type::number)
+      , number_value(value)
+  {
+  }
 
   JsonValue::JsonValue(const int value)
-    : JsonValue(static_cast<double>(value))
-  {}
+      : JsonValue(static_cast<double>(value))
+  {
+  }
 
   JsonValue::JsonValue(const unsigned int value)
-    : JsonValue(static_cast<double>(value))
-  {}
+      : JsonValue(static_cast<double>(value))
+  {
+  }
 
   JsonValue::JsonValue(const long value)
-    : JsonValue(static_cast<double>(value))
-  {}
+      : JsonValue(static_cast<double>(value))
+  {
+  }
 
   JsonValue::JsonValue(const unsigned long value)
-    : JsonValue(static_cast<double>(value))
-  {}
+      : JsonValue(static_cast<double>(value))
+  {
+  }
 
   JsonValue::JsonValue(const unsigned long long value)
-    : JsonValue(static_cast<double>(value))
-  {}
+      : JsonValue(static_cast<double>(value))
+  {
+  }
 
   JsonValue::JsonValue(const bool value)
-    : value_type(Type::boolean)
-    , bool_value(value)
-  {}
+      : value_type(Type::boolean)
+      , bool_value(value)
+  {
+  }
 
   JsonValue::JsonValue(const char *value)
-    : value_type(Type::string)
-    , string_value(value)
-  {}
+      : value_type(Type::string)
+      , string_value(value)
+  {
+  }
 
   JsonValue::JsonValue(const std::string &value)
-    : value_type(Type::string)
-    , string_value(value)
-  {}
+      : value_type(Type::string)
+      , string_value(value)
+  {
+  }
 
 
   JsonValue
@@ -152,8 +161,8 @@ namespace tribodyn
         case Type::number:
           if (std::isfinite(number_value))
             {
-              if (number_value == std::round(number_value) &&
-                  std::abs(number_value) < 1e15)
+              if (number_value == std::round(number_value)
+                  && std::abs(number_value) < 1e15)
                 out << static_cast<long long>(number_value);
               else
                 out << std::setprecision(17) << number_value;
@@ -169,8 +178,9 @@ namespace tribodyn
             // Arrays of numbers stay on one line (matrices read well).
             bool all_numbers = true;
             for (const auto &v : array_values)
-              all_numbers = all_numbers && (v.value_type == Type::number ||
-                                            v.value_type == Type::null);
+              all_numbers = all_numbers
+                            && (v.value_type == Type::number
+                                || v.value_type == Type::null);
             if (array_values.empty())
               out << "[]";
             else if (all_numbers)

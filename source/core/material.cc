@@ -1,10 +1,8 @@
+#include <cmath>
 #include <deal.II/base/patterns.h>
-
+#include <limits>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/material.h>
-
-#include <cmath>
-#include <limits>
 
 namespace tribodyn
 {
@@ -32,11 +30,11 @@ namespace tribodyn
 
   void
   IsotropicElasticMaterial::parse_parameters(dealii::ParameterHandler &prm,
-                                             const std::string &section)
+                                             const std::string        &section)
   {
-    youngs_modulus = prm.get_double("Young modulus");
-    poisson_ratio  = prm.get_double("Poisson ratio");
-    density        = prm.get_double("Density");
+    youngs_modulus   = prm.get_double("Young modulus");
+    poisson_ratio    = prm.get_double("Poisson ratio");
+    density          = prm.get_double("Density");
     const double inf = std::numeric_limits<double>::max();
     check_parameter_range(section + "/Young modulus",
                           youngs_modulus,
@@ -66,8 +64,8 @@ namespace tribodyn
   double
   IsotropicElasticMaterial::lambda() const
   {
-    return youngs_modulus * poisson_ratio /
-           ((1 + poisson_ratio) * (1 - 2 * poisson_ratio));
+    return youngs_modulus * poisson_ratio
+           / ((1 + poisson_ratio) * (1 - 2 * poisson_ratio));
   }
 
 

@@ -1,14 +1,12 @@
-#include <deal.II/grid/grid_generator.h>
-
-#include <tribodyn/core/errors.h>
-#include <tribodyn/core/morphology.h>
-#include <tribodyn/core/output.h>
-
 #include <cmath>
+#include <deal.II/grid/grid_generator.h>
 #include <fstream>
 #include <limits>
 #include <random>
 #include <sstream>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/morphology.h>
+#include <tribodyn/core/output.h>
 
 namespace tribodyn
 {
@@ -101,11 +99,11 @@ namespace tribodyn
     const double inf = std::numeric_limits<double>::max();
     prm.enter_subsection("Morphology");
     {
-      const std::string g = prm.get("Generator");
-      generator = g == "homogeneous"     ? Generator::homogeneous :
-                  g == "random vertical" ? Generator::random_vertical :
-                  g == "laminate"        ? Generator::laminate :
-                                           Generator::grid_file;
+      const std::string g  = prm.get("Generator");
+      generator            = g == "homogeneous"       ? Generator::homogeneous
+                             : g == "random vertical" ? Generator::random_vertical
+                             : g == "laminate"        ? Generator::laminate
+                                                      : Generator::grid_file;
       width                = prm.get_double("Width");
       height               = prm.get_double("Height");
       n_pixels_x           = prm.get_integer("Pixels in x");
@@ -115,18 +113,17 @@ namespace tribodyn
       inclusion_min_height = prm.get_double("Heterogeneity min height");
       inclusion_max_height = prm.get_double("Heterogeneity max height");
       random_seed          = prm.get_integer("Random seed");
-      laminate_normal      = prm.get("Laminate normal") == "x" ?
-                               LaminateNormal::x :
-                               LaminateNormal::y;
-      n_laminate_periods   = prm.get_integer("Laminate periods");
-      grid_file            = prm.get("Grid file");
+      laminate_normal    = prm.get("Laminate normal") == "x" ? LaminateNormal::x
+                                                             : LaminateNormal::y;
+      n_laminate_periods = prm.get_integer("Laminate periods");
+      grid_file          = prm.get("Grid file");
     }
     prm.leave_subsection();
 
     check_parameter_range("Morphology/Width", width, 0, inf, true, true);
     check_parameter_range("Morphology/Height", height, 0, inf, true, true);
-    if (generator == Generator::random_vertical ||
-        generator == Generator::laminate)
+    if (generator == Generator::random_vertical
+        || generator == Generator::laminate)
       check_parameter_range("Morphology/Volume fraction",
                             volume_fraction,
                             0,
@@ -171,12 +168,12 @@ namespace tribodyn
                          const unsigned int               n_x,
                          const unsigned int               n_y,
                          const std::vector<unsigned int> &ids)
-    : rectangle_width(width)
-    , rectangle_height(height)
-    , n_x(n_x)
-    , n_y(n_y)
-    , ids(ids)
-    , origin("given")
+      : rectangle_width(width)
+      , rectangle_height(height)
+      , n_x(n_x)
+      , n_y(n_y)
+      , ids(ids)
+      , origin("given")
   {
     if (ids.size() != static_cast<std::size_t>(n_x) * n_y)
       throw std::logic_error("Morphology: ids do not match the grid size");
@@ -188,30 +185,33 @@ namespace tribodyn
     /// Uniform integer in [low, high] from a 32-bit generator (the bias of
     /// the multiply-shift method is below 1e-9 for the ranges used here).
     unsigned int
-    uniform_integer(std::mt19937 &rng, const unsigned int low,
+    uniform_integer(std::mt19937      &rng,
+                    const unsigned int low,
                     const unsigned int high)
     {
       const std::uint64_t range = static_cast<std::uint64_t>(high) - low + 1;
-      return low + static_cast<unsigned int>(
-                     (static_cast<std::uint64_t>(rng()) * range) >> 32);
+      return low
+             + static_cast<unsigned int>(
+               (static_cast<std::uint64_t>(rng()) * range) >> 32);
     }
 
 
     /// Number of whole pixels of size @p pixel in @p length, checking that
     /// @p length is a multiple of @p pixel.
     unsigned int
-    pixels_exact(const double length, const double pixel,
+    pixels_exact(const double       length,
+                 const double       pixel,
                  const std::string &name)
     {
       const double       ratio = length / pixel;
       const unsigned int n     = static_cast<unsigned int>(std::lround(ratio));
       check_parameter(n >= 1 && std::abs(ratio - n) < 1e-6 * ratio,
                       name,
-                      "the value " + format_number(length) +
-                        " m is not a whole number of pixels of " +
-                        format_number(pixel) +
-                        " m. Change it or the number of pixels so that the "
-                        "heterogeneity boundaries fall on pixel edges.");
+                      "the value " + format_number(length)
+                        + " m is not a whole number of pixels of "
+                        + format_number(pixel)
+                        + " m. Change it or the number of pixels so that the "
+                          "heterogeneity boundaries fall on pixel edges.");
       return n;
     }
   } // namespace
@@ -237,25 +237,25 @@ namespace tribodyn
 
     if (p.generator == Generator::laminate)
       {
-        const bool         along_x = p.laminate_normal ==
-                             MorphologyParameters::LaminateNormal::x;
-        const unsigned int n       = along_x ? nx : ny;
+        const bool along_x
+          = p.laminate_normal == MorphologyParameters::LaminateNormal::x;
+        const unsigned int n = along_x ? nx : ny;
         check_parameter(n % p.n_laminate_periods == 0,
                         "Morphology/Laminate periods",
-                        "the number of pixels along the stacking direction (" +
-                          std::to_string(n) +
-                          ") must be a multiple of the number of periods (" +
-                          std::to_string(p.n_laminate_periods) + ").");
+                        "the number of pixels along the stacking direction ("
+                          + std::to_string(n)
+                          + ") must be a multiple of the number of periods ("
+                          + std::to_string(p.n_laminate_periods) + ").");
         const unsigned int period = n / p.n_laminate_periods;
-        const unsigned int layer  = static_cast<unsigned int>(
-          std::lround(p.volume_fraction * period));
+        const unsigned int layer
+          = static_cast<unsigned int>(std::lround(p.volume_fraction * period));
         check_parameter(layer >= 1 && layer < period,
                         "Morphology/Volume fraction",
-                        "a laminate period of " + std::to_string(period) +
-                          " pixels cannot hold a heterogeneity layer of "
-                          "fraction " +
-                          format_number(p.volume_fraction) +
-                          "; use more pixels or fewer periods.");
+                        "a laminate period of " + std::to_string(period)
+                          + " pixels cannot hold a heterogeneity layer of "
+                            "fraction "
+                          + format_number(p.volume_fraction)
+                          + "; use more pixels or fewer periods.");
         for (unsigned int j = 0; j < ny; ++j)
           for (unsigned int i = 0; i < nx; ++i)
             {
@@ -266,8 +266,8 @@ namespace tribodyn
                 m.ids[j * nx + i] = material_id::heterogeneity;
             }
         m.n_placed = p.n_laminate_periods;
-        m.origin   = std::string("laminate, layers normal to ") +
-                   (along_x ? "x" : "y");
+        m.origin
+          = std::string("laminate, layers normal to ") + (along_x ? "x" : "y");
         return m;
       }
 
@@ -277,30 +277,28 @@ namespace tribodyn
     // already placed (a one-pixel gap keeps them distinct). Placement stops
     // when the area is closest to the target.
     const double       hx = p.width / nx, hy = p.height / ny;
-    const unsigned int w =
-      pixels_exact(p.inclusion_width, hx, "Morphology/Heterogeneity width");
+    const unsigned int w
+      = pixels_exact(p.inclusion_width, hx, "Morphology/Heterogeneity width");
     const unsigned int h_min = static_cast<unsigned int>(
       std::ceil(p.inclusion_min_height / hy - 1e-9));
     const unsigned int h_max = static_cast<unsigned int>(
       std::floor(p.inclusion_max_height / hy + 1e-9));
     check_parameter(h_min >= 1 && h_min <= h_max && h_max <= ny,
                     "Morphology/Heterogeneity min height",
-                    "the height range [" +
-                      format_number(p.inclusion_min_height) + ", " +
-                      format_number(p.inclusion_max_height) +
-                      "] m holds no whole number of pixels of height " +
-                      format_number(hy) + " m.");
+                    "the height range [" + format_number(p.inclusion_min_height)
+                      + ", " + format_number(p.inclusion_max_height)
+                      + "] m holds no whole number of pixels of height "
+                      + format_number(hy) + " m.");
     check_parameter(w + 2 <= nx,
                     "Morphology/Heterogeneity width",
                     "the heterogeneities are as wide as the rectangle.");
 
-    const double target_area =
-      p.volume_fraction * static_cast<double>(nx) * ny;
-    std::vector<bool> occupied_or_near(static_cast<std::size_t>(nx) * ny,
+    const double target_area = p.volume_fraction * static_cast<double>(nx) * ny;
+    std::vector<bool>   occupied_or_near(static_cast<std::size_t>(nx) * ny,
                                        false);
-    std::mt19937      rng(p.random_seed);
-    double            area = 0;
-    unsigned long     attempts = 0;
+    std::mt19937        rng(p.random_seed);
+    double              area         = 0;
+    unsigned long       attempts     = 0;
     const unsigned long max_attempts = 1000000;
     while (attempts < max_attempts)
       {
@@ -336,18 +334,17 @@ namespace tribodyn
         area += w * h;
         ++m.n_placed;
       }
-    if (attempts >= max_attempts &&
-        std::abs(area - target_area) > w * h_max)
+    if (attempts >= max_attempts && std::abs(area - target_area) > w * h_max)
       throw InputError(
         "Could not place non-overlapping heterogeneities up to the volume "
-        "fraction " +
-        format_number(p.volume_fraction) + " (reached " +
-        format_number(area / (static_cast<double>(nx) * ny)) + " after " +
-        std::to_string(max_attempts) +
-        " attempts). Lower 'Morphology/Volume fraction' or the "
-        "heterogeneity size, or use more pixels.");
-    m.origin = "random vertical heterogeneities, seed " +
-               std::to_string(p.random_seed);
+        "fraction "
+        + format_number(p.volume_fraction) + " (reached "
+        + format_number(area / (static_cast<double>(nx) * ny)) + " after "
+        + std::to_string(max_attempts)
+        + " attempts). Lower 'Morphology/Volume fraction' or the "
+          "heterogeneity size, or use more pixels.");
+    m.origin = "random vertical heterogeneities, seed "
+               + std::to_string(p.random_seed);
     return m;
   }
 
@@ -359,9 +356,9 @@ namespace tribodyn
   {
     std::ifstream in(file_name);
     if (!in)
-      throw InputError("Cannot read the morphology grid file '" + file_name +
-                       "' (parameter 'Morphology/Grid file'): it does not "
-                       "exist or is not readable.");
+      throw InputError("Cannot read the morphology grid file '" + file_name
+                       + "' (parameter 'Morphology/Grid file'): it does not "
+                         "exist or is not readable.");
     std::vector<std::vector<unsigned int>> rows;
     std::string                            line;
     unsigned int                           line_number = 0;
@@ -377,26 +374,25 @@ namespace tribodyn
         while (tokens >> token)
           {
             if (token != "0" && token != "1")
-              throw InputError("Morphology grid file '" + file_name +
-                               "', line " + std::to_string(line_number) +
-                               ": '" + token +
-                               "' is not a material id. Allowed ids are 0 "
-                               "(matrix) and 1 (heterogeneity).");
-            row.push_back(token == "1" ? material_id::heterogeneity :
-                                         material_id::matrix);
+              throw InputError("Morphology grid file '" + file_name + "', line "
+                               + std::to_string(line_number) + ": '" + token
+                               + "' is not a material id. Allowed ids are 0 "
+                                 "(matrix) and 1 (heterogeneity).");
+            row.push_back(token == "1" ? material_id::heterogeneity
+                                       : material_id::matrix);
           }
         if (!rows.empty() && row.size() != rows.front().size())
-          throw InputError("Morphology grid file '" + file_name + "', line " +
-                           std::to_string(line_number) + " has " +
-                           std::to_string(row.size()) +
-                           " ids where the first row has " +
-                           std::to_string(rows.front().size()) +
-                           ": every row must have the same length.");
+          throw InputError("Morphology grid file '" + file_name + "', line "
+                           + std::to_string(line_number) + " has "
+                           + std::to_string(row.size())
+                           + " ids where the first row has "
+                           + std::to_string(rows.front().size())
+                           + ": every row must have the same length.");
         rows.push_back(row);
       }
     if (rows.empty())
-      throw InputError("Morphology grid file '" + file_name +
-                       "' holds no rows of material ids.");
+      throw InputError("Morphology grid file '" + file_name
+                       + "' holds no rows of material ids.");
     const unsigned int        nx = rows.front().size(), ny = rows.size();
     std::vector<unsigned int> ids(static_cast<std::size_t>(nx) * ny);
     for (unsigned int r = 0; r < ny; ++r)
@@ -512,13 +508,13 @@ namespace tribodyn
 
 
   void
-  create_morphology_mesh(const Morphology &         morphology,
-                         const unsigned int         subdivisions_per_pixel,
+  create_morphology_mesh(const Morphology         &morphology,
+                         const unsigned int        subdivisions_per_pixel,
                          dealii::Triangulation<2> &triangulation)
   {
-    const std::vector<unsigned int> repetitions = {
-      morphology.n_pixels_x() * subdivisions_per_pixel,
-      morphology.n_pixels_y() * subdivisions_per_pixel};
+    const std::vector<unsigned int> repetitions
+      = {morphology.n_pixels_x() * subdivisions_per_pixel,
+         morphology.n_pixels_y() * subdivisions_per_pixel};
     dealii::GridGenerator::subdivided_hyper_rectangle(
       triangulation,
       repetitions,

@@ -1,6 +1,3 @@
-#include <tribodyn/core/errors.h>
-#include <tribodyn/core/output.h>
-
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -9,6 +6,8 @@
 #include <iomanip>
 #include <sstream>
 #include <sys/stat.h>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/output.h>
 #include <unistd.h>
 
 namespace tribodyn
@@ -28,27 +27,27 @@ namespace tribodyn
   void
   write_file_atomically(const std::string &path, const std::string &content)
   {
-    const std::string temporary =
-      path + ".tmp." + std::to_string(static_cast<long>(getpid()));
+    const std::string temporary
+      = path + ".tmp." + std::to_string(static_cast<long>(getpid()));
     {
       std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
       if (!out)
-        throw InputError("Cannot write the output file '" + path +
-                         "' (opening '" + temporary +
-                         "' failed: " + std::strerror(errno) +
-                         "). Check that 'Output directory' is writable and "
-                         "that the disk is not full.");
+        throw InputError("Cannot write the output file '" + path
+                         + "' (opening '" + temporary
+                         + "' failed: " + std::strerror(errno)
+                         + "). Check that 'Output directory' is writable and "
+                           "that the disk is not full.");
       out << content;
       out.flush();
       if (!out)
-        throw InputError("Writing the output file '" + path +
-                         "' failed (disk full?).");
+        throw InputError("Writing the output file '" + path
+                         + "' failed (disk full?).");
     }
     if (std::rename(temporary.c_str(), path.c_str()) != 0)
       {
         std::remove(temporary.c_str());
-        throw InputError("Cannot rename '" + temporary + "' to '" + path +
-                         "': " + std::strerror(errno) + ".");
+        throw InputError("Cannot rename '" + temporary + "' to '" + path
+                         + "': " + std::strerror(errno) + ".");
       }
   }
 
@@ -69,19 +68,18 @@ namespace tribodyn
         if (partial.empty())
           continue;
         if (mkdir(partial.c_str(), 0755) != 0 && errno != EEXIST)
-          throw InputError("Cannot create the output directory '" +
-                           directory + "' (at '" + partial +
-                           "': " + std::strerror(errno) +
-                           "). Set 'Output directory' to a writable path.");
+          throw InputError("Cannot create the output directory '" + directory
+                           + "' (at '" + partial + "': " + std::strerror(errno)
+                           + "). Set 'Output directory' to a writable path.");
       }
     struct stat info;
     if (stat(directory.c_str(), &info) != 0 || !S_ISDIR(info.st_mode))
-      throw InputError("'Output directory' = '" + directory +
-                       "' exists but is not a directory.");
+      throw InputError("'Output directory' = '" + directory
+                       + "' exists but is not a directory.");
     if (access(directory.c_str(), W_OK) != 0)
-      throw InputError("The output directory '" + directory +
-                       "' is not writable. Set 'Output directory' to a "
-                       "writable path.");
+      throw InputError("The output directory '" + directory
+                       + "' is not writable. Set 'Output directory' to a "
+                         "writable path.");
   }
 
 
@@ -94,14 +92,14 @@ namespace tribodyn
   }
 
 
-  CsvWriter::CsvWriter(const std::string &             path,
+  CsvWriter::CsvWriter(const std::string              &path,
                        const std::vector<std::string> &columns,
                        const bool                      active,
                        const double min_seconds_between_flushes)
-    : path_name(path)
-    , n_columns(columns.size())
-    , is_active(active)
-    , min_interval(min_seconds_between_flushes)
+      : path_name(path)
+      , n_columns(columns.size())
+      , is_active(active)
+      , min_interval(min_seconds_between_flushes)
   {
     for (unsigned int i = 0; i < columns.size(); ++i)
       text += (i > 0 ? "," : "") + columns[i];
@@ -133,13 +131,13 @@ namespace tribodyn
 
   void
   CsvWriter::add_row(const std::vector<std::string> &labels,
-                     const std::vector<double> &     values)
+                     const std::vector<double>      &values)
   {
     if (labels.size() + values.size() != n_columns)
-      throw std::logic_error("CsvWriter: row of " +
-                             std::to_string(labels.size() + values.size()) +
-                             " entries for " + std::to_string(n_columns) +
-                             " columns in " + path_name);
+      throw std::logic_error("CsvWriter: row of "
+                             + std::to_string(labels.size() + values.size())
+                             + " entries for " + std::to_string(n_columns)
+                             + " columns in " + path_name);
     if (!is_active)
       return;
     std::ostringstream row;
@@ -183,9 +181,10 @@ namespace tribodyn
 
 
   PvdWriter::PvdWriter(const std::string &path, const bool active)
-    : path_name(path)
-    , is_active(active)
-  {}
+      : path_name(path)
+      , is_active(active)
+  {
+  }
 
 
   void

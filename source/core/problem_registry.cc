@@ -1,7 +1,6 @@
+#include <algorithm>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/problem.h>
-
-#include <algorithm>
 
 namespace tribodyn
 {
@@ -49,7 +48,7 @@ namespace tribodyn
           return p;
         known += (known.empty() ? "" : ", ") + p.name;
       }
-    throw InputError("Unknown problem '" + name +
-                     "'. The problems this build knows are: " + known + ".");
+    throw InputError("Unknown problem '" + name
+                     + "'. The problems this build knows are: " + known + ".");
   }
 } // namespace tribodyn

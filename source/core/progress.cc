@@ -1,30 +1,30 @@
-#include <tribodyn/core/progress.h>
-
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <tribodyn/core/progress.h>
 
 namespace tribodyn
 {
-  ProgressReporter::ProgressReporter(std::ostream &     out,
+  ProgressReporter::ProgressReporter(std::ostream      &out,
                                      const bool         active,
                                      const double       end_time,
                                      const double       interval_seconds,
                                      const std::string &label)
-    : out(out)
-    , is_active(active)
-    , end_time(end_time)
-    , interval(interval_seconds)
-    , label(label)
-    , start(std::chrono::steady_clock::now())
-  {}
+      : out(out)
+      , is_active(active)
+      , end_time(end_time)
+      , interval(interval_seconds)
+      , label(label)
+      , start(std::chrono::steady_clock::now())
+  {
+  }
 
 
   double
   ProgressReporter::elapsed_seconds() const
   {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                         start)
+    return std::chrono::duration<double>(std::chrono::steady_clock::now()
+                                         - start)
       .count();
   }
 
@@ -32,7 +32,7 @@ namespace tribodyn
   void
   ProgressReporter::update(const unsigned long step,
                            const double        time,
-                           const std::string & key_figure,
+                           const std::string  &key_figure,
                            const bool          force)
   {
     if (!is_active)
@@ -42,8 +42,8 @@ namespace tribodyn
       return;
     last_report = elapsed;
 
-    const double fraction =
-      end_time > 0 ? std::min(1.0, std::max(0.0, time / end_time)) : 1.0;
+    const double fraction
+      = end_time > 0 ? std::min(1.0, std::max(0.0, time / end_time)) : 1.0;
     std::ostringstream line;
     line << label << ": step " << step << "  t = " << std::setprecision(4)
          << std::scientific << time << " s  " << std::fixed
@@ -68,8 +68,8 @@ namespace tribodyn
         << static_cast<int>(std::fmod(seconds, 60.)) << " s";
     else
       s << static_cast<int>(seconds / 3600) << " h " << std::setw(2)
-        << std::setfill('0')
-        << static_cast<int>(std::fmod(seconds, 3600.) / 60) << " min";
+        << std::setfill('0') << static_cast<int>(std::fmod(seconds, 3600.) / 60)
+        << " min";
     return s.str();
   }
 } // namespace tribodyn

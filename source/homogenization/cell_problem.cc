@@ -1,3 +1,6 @@
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+#include <cmath>
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -12,16 +15,10 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/numerics/vector_tools.h>
-
+#include <sstream>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/homogenization/cell_problem.h>
-
-#include <Epetra_MultiVector.h>
-#include <Teuchos_ParameterList.hpp>
-
-#include <cmath>
-#include <sstream>
 
 namespace tribodyn
 {
@@ -93,16 +90,17 @@ namespace tribodyn
       prm.enter_subsection("Cell problem");
       {
         boundary_conditions.clear();
-        for (const auto &name : Utilities::split_string_list(
-               prm.get("Boundary conditions")))
+        for (const auto &name :
+             Utilities::split_string_list(prm.get("Boundary conditions")))
           {
-            const BoundaryCondition bc =
-              name == "KUBC" ? BoundaryCondition::kubc :
-              name == "SUBC" ? BoundaryCondition::subc :
-                               BoundaryCondition::periodic;
+            const BoundaryCondition bc
+              = name == "KUBC"   ? BoundaryCondition::kubc
+                : name == "SUBC" ? BoundaryCondition::subc
+                                 : BoundaryCondition::periodic;
             if (std::find(boundary_conditions.begin(),
                           boundary_conditions.end(),
-                          bc) == boundary_conditions.end())
+                          bc)
+                == boundary_conditions.end())
               boundary_conditions.push_back(bc);
           }
         subdivisions_per_pixel = prm.get_integer("Subdivisions per pixel");
@@ -115,29 +113,26 @@ namespace tribodyn
       check_parameter(!boundary_conditions.empty(),
                       "Cell problem/Boundary conditions",
                       "give at least one of KUBC, SUBC, periodic.");
-      check_parameter_range("Cell problem/Solver tolerance",
-                            solver_tolerance,
-                            0,
-                            1,
-                            true,
-                            true);
+      check_parameter_range(
+        "Cell problem/Solver tolerance", solver_tolerance, 0, 1, true, true);
     }
 
 
-    CellProblem::CellProblem(const MPI_Comm                               comm,
-                             const Morphology &                           morphology,
-                             const std::vector<IsotropicElasticMaterial> &phases,
-                             const CellProblemParameters &parameters,
-                             TimerOutput &                timer)
-      : mpi_communicator(comm)
-      , morphology(morphology)
-      , phases(phases)
-      , parameters(parameters)
-      , timer(timer)
-      , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-      , triangulation(comm)
-      , fe(FE_Q<2>(parameters.fe_degree), 2)
-      , dof_handler(triangulation)
+    CellProblem::CellProblem(
+      const MPI_Comm                               comm,
+      const Morphology                            &morphology,
+      const std::vector<IsotropicElasticMaterial> &phases,
+      const CellProblemParameters                 &parameters,
+      TimerOutput                                 &timer)
+        : mpi_communicator(comm)
+        , morphology(morphology)
+        , phases(phases)
+        , parameters(parameters)
+        , timer(timer)
+        , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+        , triangulation(comm)
+        , fe(FE_Q<2>(parameters.fe_degree), 2)
+        , dof_handler(triangulation)
     {
       setup_mesh();
       setup_dofs();
@@ -155,8 +150,8 @@ namespace tribodyn
       // reach across the periodic faces.
       if (std::find(parameters.boundary_conditions.begin(),
                     parameters.boundary_conditions.end(),
-                    BoundaryCondition::periodic) !=
-          parameters.boundary_conditions.end())
+                    BoundaryCondition::periodic)
+          != parameters.boundary_conditions.end())
         {
           std::vector<GridTools::PeriodicFacePair<
             parallel::distributed::Triangulation<2>::cell_iterator>>
@@ -223,12 +218,12 @@ namespace tribodyn
       /// Constrain component(s) @p components of the vertex at @p point to
       /// zero, on every rank that sees that vertex.
       void
-      pin_vertex(const DoFHandler<2> &            dof_handler,
-                 const Point<2> &                 point,
+      pin_vertex(const DoFHandler<2>             &dof_handler,
+                 const Point<2>                  &point,
                  const std::vector<unsigned int> &components,
                  const double                     tolerance,
-                 const IndexSet &                 locally_relevant_dofs,
-                 AffineConstraints<double> &      constraints)
+                 const IndexSet                  &locally_relevant_dofs,
+                 AffineConstraints<double>       &constraints)
       {
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (!cell->is_artificial())
@@ -236,10 +231,10 @@ namespace tribodyn
               if (cell->vertex(v).distance(point) < tolerance)
                 for (const unsigned int c : components)
                   {
-                    const types::global_dof_index dof =
-                      cell->vertex_dof_index(v, c);
-                    if (locally_relevant_dofs.is_element(dof) &&
-                        !constraints.is_constrained(dof))
+                    const types::global_dof_index dof
+                      = cell->vertex_dof_index(v, c);
+                    if (locally_relevant_dofs.is_element(dof)
+                        && !constraints.is_constrained(dof))
                       constraints.add_line(dof);
                   }
       }
@@ -250,16 +245,17 @@ namespace tribodyn
       {
       public:
         explicit AffineDisplacement(const VoigtVector &strain)
-          : Function<2>(2)
-          , strain(strain)
-        {}
+            : Function<2>(2)
+            , strain(strain)
+        {
+        }
 
         double
         value(const Point<2> &p, const unsigned int component) const override
         {
           const double e_xy = 0.5 * strain[2];
-          return component == 0 ? strain[0] * p[0] + e_xy * p[1] :
-                                  e_xy * p[0] + strain[1] * p[1];
+          return component == 0 ? strain[0] * p[0] + e_xy * p[1]
+                                : e_xy * p[0] + strain[1] * p[1];
         }
 
       private:
@@ -269,12 +265,12 @@ namespace tribodyn
 
       /// Voigt strain (xx, yy, gamma_xy) of vector shape function i.
       inline VoigtVector
-      shape_strain(const FEValues<2> &fe_values,
+      shape_strain(const FEValues<2>      &fe_values,
                    const FiniteElement<2> &fe,
-                   const unsigned int i,
-                   const unsigned int q)
+                   const unsigned int      i,
+                   const unsigned int      q)
       {
-        const unsigned int component = fe.system_to_component_index(i).first;
+        const unsigned int  component = fe.system_to_component_index(i).first;
         const Tensor<1, 2> &grad      = fe_values.shape_grad(i, q);
         VoigtVector         B;
         if (component == 0)
@@ -289,6 +285,47 @@ namespace tribodyn
           }
         return B;
       }
+
+
+      /// Integrals over one cell of the strain, the stress and sigma_zz.
+      struct CellIntegrals
+      {
+        VoigtVector strain;
+        VoigtVector stress;
+        double      stress_zz = 0;
+        double      measure   = 0;
+      };
+
+
+      /// Integrate eps = E + eps(solution) (E = 0 for SUBC), sigma = C eps
+      /// and sigma_zz = lambda (eps_xx + eps_yy) over the cell @p fe_values
+      /// was reinitialized on. @p strains is scratch space.
+      CellIntegrals
+      integrate_cell(const FEValues<2>                   &fe_values,
+                     const TrilinosWrappers::MPI::Vector &solution,
+                     const VoigtVector                   &macro_strain,
+                     const IsotropicElasticMaterial      &phase,
+                     std::vector<SymmetricTensor<2, 2>>  &strains)
+      {
+        const FEValuesExtractors::Vector displacement(0);
+        fe_values[displacement].get_function_symmetric_gradients(solution,
+                                                                 strains);
+        const VoigtMatrix C = phase.plane_strain_voigt_stiffness();
+        CellIntegrals     integrals;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const VoigtVector eps
+              = macro_strain
+                + VoigtVector(
+                  {strains[q][0][0], strains[q][1][1], 2 * strains[q][0][1]});
+            const double JxW = fe_values.JxW(q);
+            integrals.strain += eps * JxW;
+            integrals.stress += (C * eps) * JxW;
+            integrals.stress_zz += phase.lambda() * (eps[0] + eps[1]) * JxW;
+            integrals.measure += JxW;
+          }
+        return integrals;
+      }
     } // namespace
 
 
@@ -297,14 +334,14 @@ namespace tribodyn
     {
       constraints.clear();
       constraints.reinit(locally_relevant_dofs);
-      const unsigned int n_cells_x = morphology.n_pixels_x() *
-                                     parameters.subdivisions_per_pixel
-                                     << parameters.global_refinements;
-      const unsigned int n_cells_y = morphology.n_pixels_y() *
-                                     parameters.subdivisions_per_pixel
-                                     << parameters.global_refinements;
-      const double hx = morphology.width() / n_cells_x;
-      const double hy = morphology.height() / n_cells_y;
+      const unsigned int n_cells_x
+        = morphology.n_pixels_x() * parameters.subdivisions_per_pixel
+          << parameters.global_refinements;
+      const unsigned int n_cells_y
+        = morphology.n_pixels_y() * parameters.subdivisions_per_pixel
+          << parameters.global_refinements;
+      const double hx        = morphology.width() / n_cells_x;
+      const double hy        = morphology.height() / n_cells_y;
       const double tolerance = 1e-3 * std::min(hx, hy);
 
       switch (bc)
@@ -316,16 +353,10 @@ namespace tribodyn
                 dof_handler, id, Functions::ZeroFunction<2>(2), constraints);
             break;
           case BoundaryCondition::periodic:
-            DoFTools::make_periodicity_constraints(dof_handler,
-                                                   0,
-                                                   1,
-                                                   0,
-                                                   constraints);
-            DoFTools::make_periodicity_constraints(dof_handler,
-                                                   2,
-                                                   3,
-                                                   1,
-                                                   constraints);
+            DoFTools::make_periodicity_constraints(
+              dof_handler, 0, 1, 0, constraints);
+            DoFTools::make_periodicity_constraints(
+              dof_handler, 2, 3, 1, constraints);
             // Periodic w is defined up to a translation: pin an interior
             // vertex (the one nearest to the centre).
             pin_vertex(dof_handler,
@@ -361,7 +392,7 @@ namespace tribodyn
     void
     CellProblem::assemble(const BoundaryCondition bc)
     {
-      TimerOutput::Scope scope(timer, "assemble");
+      TimerOutput::Scope     scope(timer, "assemble");
       DynamicSparsityPattern dsp(locally_relevant_dofs);
       DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
       SparsityTools::distribute_sparsity_pattern(dsp,
@@ -375,7 +406,7 @@ namespace tribodyn
       for (auto &rhs : system_rhs)
         rhs.reinit(locally_owned_dofs, mpi_communicator);
 
-      const bool strain_driven = bc != BoundaryCondition::subc;
+      const bool         strain_driven = bc != BoundaryCondition::subc;
       const QGauss<2>    quadrature(parameters.fe_degree + 1);
       FEValues<2>        fe_values(fe,
                             quadrature,
@@ -385,7 +416,7 @@ namespace tribodyn
       std::array<Vector<double>, 3> cell_rhs;
       for (auto &r : cell_rhs)
         r.reinit(dofs_per_cell);
-      std::vector<VoigtVector>             B(dofs_per_cell);
+      std::vector<VoigtVector> B(dofs_per_cell);
       load_scale.fill(0.);
       std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
 
@@ -396,8 +427,8 @@ namespace tribodyn
             cell_matrix = 0;
             for (auto &r : cell_rhs)
               r = 0;
-            const VoigtMatrix C =
-              phases[cell->material_id()].plane_strain_voigt_stiffness();
+            const VoigtMatrix C
+              = phases[cell->material_id()].plane_strain_voigt_stiffness();
             // Load per unit macroscopic strain (C E) or stress (Sigma).
             std::array<VoigtVector, 3> load;
             for (unsigned int k = 0; k < 3; ++k)
@@ -448,13 +479,13 @@ namespace tribodyn
       // rotation about the centre) as ML's near-null space: deal.II 9.4's
       // AdditionalData only takes the translations (constant modes), which
       // makes AMG on elasticity markedly slower.
-      const Epetra_Map &map =
-        system_matrix.trilinos_matrix().OperatorDomainMap();
+      const Epetra_Map &map
+        = system_matrix.trilinos_matrix().OperatorDomainMap();
       rigid_body_modes = std::make_unique<Epetra_MultiVector>(map, 3);
       const Point<2> centre(0.5 * morphology.width(),
                             0.5 * morphology.height());
-      const double   scale =
-        1. / std::max(morphology.width(), morphology.height());
+      const double   scale
+        = 1. / std::max(morphology.width(), morphology.height());
 
       const Quadrature<2> support_points(fe.get_unit_support_points());
       FEValues<2> fe_values(fe, support_points, update_quadrature_points);
@@ -467,14 +498,15 @@ namespace tribodyn
             for (unsigned int i = 0; i < dof_indices.size(); ++i)
               if (locally_owned_dofs.is_element(dof_indices[i]))
                 {
-                  const auto local =
-                    locally_owned_dofs.index_within_set(dof_indices[i]);
+                  const auto local
+                    = locally_owned_dofs.index_within_set(dof_indices[i]);
                   const unsigned int c = fe.system_to_component_index(i).first;
-                  const Point<2> &x = fe_values.quadrature_point(i);
+                  const Point<2>    &x = fe_values.quadrature_point(i);
                   (*rigid_body_modes)[0][local] = (c == 0 ? 1. : 0.);
                   (*rigid_body_modes)[1][local] = (c == 1 ? 1. : 0.);
-                  (*rigid_body_modes)[2][local] =
-                    scale * (c == 0 ? -(x[1] - centre[1]) : (x[0] - centre[0]));
+                  (*rigid_body_modes)[2][local]
+                    = scale
+                      * (c == 0 ? -(x[1] - centre[1]) : (x[0] - centre[0]));
                 }
           }
 
@@ -495,7 +527,7 @@ namespace tribodyn
 
     CellProblemResult
     CellProblem::solve(const BoundaryCondition bc,
-                       const std::string &     output_directory)
+                       const std::string      &output_directory)
     {
       make_constraints(bc);
       assemble(bc);
@@ -508,9 +540,9 @@ namespace tribodyn
           TrilinosWrappers::MPI::Vector solution(locally_owned_dofs,
                                                  mpi_communicator);
           {
-            TimerOutput::Scope scope(timer, "CG solve");
-            const double rhs_norm = load_scale[load_case];
-            SolverControl control(parameters.max_iterations,
+            TimerOutput::Scope         scope(timer, "CG solve");
+            const double               rhs_norm = load_scale[load_case];
+            SolverControl              control(parameters.max_iterations,
                                   parameters.solver_tolerance * rhs_norm,
                                   /*log_history = */ false,
                                   /*log_result = */ false);
@@ -525,27 +557,26 @@ namespace tribodyn
             catch (const SolverControl::NoConvergence &e)
               {
                 throw RunError(
-                  "The " + to_string(bc) + " cell problem, load case " +
-                  std::to_string(load_case) +
-                  ", did not converge: CG reached " +
-                  std::to_string(e.last_step) +
-                  " iterations with a relative residual of " +
-                  format_number(e.last_residual / rhs_norm) +
-                  ". Raise 'Cell problem/Max iterations' or 'Cell "
-                  "problem/Solver tolerance'.");
+                  "The " + to_string(bc) + " cell problem, load case "
+                  + std::to_string(load_case)
+                  + ", did not converge: CG reached "
+                  + std::to_string(e.last_step)
+                  + " iterations with a relative residual of "
+                  + format_number(e.last_residual / rhs_norm)
+                  + ". Raise 'Cell problem/Max iterations' or 'Cell "
+                    "problem/Solver tolerance'.");
               }
             catch (const ExceptionBase &e)
               {
                 // AztecOO breakdown or loss of precision.
                 std::ostringstream info;
                 e.print_info(info);
-                throw RunError("The " + to_string(bc) +
-                               " cell problem, load case " +
-                               std::to_string(load_case) +
-                               ", failed in CG: " + info.str() +
-                               " This happens when 'Cell problem/Solver "
-                               "tolerance' is below what double precision "
-                               "can reach; raise it (1e-10 is ample).");
+                throw RunError(
+                  "The " + to_string(bc) + " cell problem, load case "
+                  + std::to_string(load_case) + ", failed in CG: " + info.str()
+                  + " This happens when 'Cell problem/Solver "
+                    "tolerance' is below what double precision "
+                    "can reach; raise it (1e-10 is ample).");
               }
             result.load_cases[load_case].cg_iterations = control.last_step();
             constraints.distribute(solution);
@@ -555,8 +586,8 @@ namespace tribodyn
                                                 locally_relevant_dofs,
                                                 mpi_communicator);
           ghosted = solution;
-          const unsigned int iterations =
-            result.load_cases[load_case].cg_iterations;
+          const unsigned int iterations
+            = result.load_cases[load_case].cg_iterations;
           result.load_cases[load_case] = postprocess(bc, load_case, ghosted);
           result.load_cases[load_case].cg_iterations = iterations;
           if (!output_directory.empty())
@@ -570,8 +601,8 @@ namespace tribodyn
         {
           const LoadCaseResult &r = result.load_cases[j];
           for (unsigned int i = 0; i < 3; ++i)
-            M[i][j] = (bc == BoundaryCondition::subc ? r.mean_strain[i] :
-                                                       r.mean_stress[i]);
+            M[i][j] = (bc == BoundaryCondition::subc ? r.mean_strain[i]
+                                                     : r.mean_stress[i]);
           zz[j] = r.mean_stress_zz;
         }
       if (bc == BoundaryCondition::subc)
@@ -579,7 +610,7 @@ namespace tribodyn
           // <sigma_zz> = zz . Sigma and <eps> = S Sigma, so
           // <sigma_zz> = (C^T zz) . <eps>.
           const VoigtMatrix C = invert(M);
-          result.properties = properties_from_stiffness(C, transpose(C) * zz);
+          result.properties   = properties_from_stiffness(C, transpose(C) * zz);
         }
       else
         result.properties = properties_from_stiffness(M, zz);
@@ -588,45 +619,38 @@ namespace tribodyn
 
 
     LoadCaseResult
-    CellProblem::postprocess(const BoundaryCondition              bc,
-                             const unsigned int                   load_case,
-                             const TrilinosWrappers::MPI::Vector &solution) const
+    CellProblem::postprocess(
+      const BoundaryCondition              bc,
+      const unsigned int                   load_case,
+      const TrilinosWrappers::MPI::Vector &solution) const
     {
-      const bool strain_driven = bc != BoundaryCondition::subc;
-      const VoigtVector macro_strain =
-        strain_driven ? unit_load(load_case) : VoigtVector();
+      const bool        strain_driven = bc != BoundaryCondition::subc;
+      const VoigtVector macro_strain
+        = strain_driven ? unit_load(load_case) : VoigtVector();
 
-      const QGauss<2> quadrature(parameters.fe_degree + 1);
-      FEValues<2>     fe_values(fe,
+      const QGauss<2>                    quadrature(parameters.fe_degree + 1);
+      FEValues<2>                        fe_values(fe,
                             quadrature,
                             update_gradients | update_JxW_values);
-      const FEValuesExtractors::Vector           displacement(0);
-      std::vector<SymmetricTensor<2, 2>>         strains(quadrature.size());
+      std::vector<SymmetricTensor<2, 2>> strains(quadrature.size());
       // Sums: stress (3), strain (3), sigma_zz (1).
       std::vector<double> sums(7, 0.);
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             fe_values.reinit(cell);
-            fe_values[displacement].get_function_symmetric_gradients(solution,
-                                                                     strains);
-            const IsotropicElasticMaterial &phase = phases[cell->material_id()];
-            const VoigtMatrix C = phase.plane_strain_voigt_stiffness();
-            for (const unsigned int q : fe_values.quadrature_point_indices())
+            const CellIntegrals integrals
+              = integrate_cell(fe_values,
+                               solution,
+                               macro_strain,
+                               phases[cell->material_id()],
+                               strains);
+            for (unsigned int i = 0; i < 3; ++i)
               {
-                const VoigtVector eps =
-                  macro_strain + VoigtVector({strains[q][0][0],
-                                              strains[q][1][1],
-                                              2 * strains[q][0][1]});
-                const VoigtVector sigma = C * eps;
-                const double      JxW   = fe_values.JxW(q);
-                for (unsigned int i = 0; i < 3; ++i)
-                  {
-                    sums[i] += sigma[i] * JxW;
-                    sums[3 + i] += eps[i] * JxW;
-                  }
-                sums[6] += phase.lambda() * (eps[0] + eps[1]) * JxW;
+                sums[i] += integrals.stress[i];
+                sums[3 + i] += integrals.strain[i];
               }
+            sums[6] += integrals.stress_zz;
           }
       Utilities::MPI::sum(sums, mpi_communicator, sums);
       const double   area = morphology.width() * morphology.height();
@@ -648,9 +672,9 @@ namespace tribodyn
                               const std::string &output_directory) const
     {
       TimerOutput::Scope scope(timer, "output");
-      const bool strain_driven = bc != BoundaryCondition::subc;
-      const VoigtVector macro_strain =
-        strain_driven ? unit_load(load_case) : VoigtVector();
+      const bool         strain_driven = bc != BoundaryCondition::subc;
+      const VoigtVector  macro_strain
+        = strain_driven ? unit_load(load_case) : VoigtVector();
 
       // Total displacement u = E x + w (strain-driven) or u (SUBC).
       TrilinosWrappers::MPI::Vector total(locally_owned_dofs, mpi_communicator);
@@ -667,48 +691,36 @@ namespace tribodyn
       total_ghosted = total;
 
       // Cell averages of stress and strain.
-      const unsigned int n_cells = triangulation.n_active_cells();
+      const unsigned int           n_cells = triangulation.n_active_cells();
       std::array<Vector<float>, 9> cell_data;
       for (auto &v : cell_data)
         v.reinit(n_cells);
-      const QGauss<2> quadrature(parameters.fe_degree + 1);
-      FEValues<2>     fe_values(fe,
+      const QGauss<2>                    quadrature(parameters.fe_degree + 1);
+      FEValues<2>                        fe_values(fe,
                             quadrature,
                             update_gradients | update_JxW_values);
-      const FEValuesExtractors::Vector   displacement(0);
       std::vector<SymmetricTensor<2, 2>> strains(quadrature.size());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             fe_values.reinit(cell);
-            fe_values[displacement].get_function_symmetric_gradients(solution,
-                                                                     strains);
-            const IsotropicElasticMaterial &phase = phases[cell->material_id()];
-            const VoigtMatrix C = phase.plane_strain_voigt_stiffness();
-            VoigtVector       mean_eps, mean_sigma;
-            double            mean_szz = 0, measure = 0;
-            for (const unsigned int q : fe_values.quadrature_point_indices())
-              {
-                const VoigtVector eps =
-                  macro_strain + VoigtVector({strains[q][0][0],
-                                              strains[q][1][1],
-                                              2 * strains[q][0][1]});
-                const double JxW = fe_values.JxW(q);
-                mean_eps += eps * JxW;
-                mean_sigma += (C * eps) * JxW;
-                mean_szz += phase.lambda() * (eps[0] + eps[1]) * JxW;
-                measure += JxW;
-              }
-            mean_eps /= measure;
-            mean_sigma /= measure;
-            mean_szz /= measure;
+            const CellIntegrals integrals
+              = integrate_cell(fe_values,
+                               solution,
+                               macro_strain,
+                               phases[cell->material_id()],
+                               strains);
+            const VoigtVector mean_eps   = integrals.strain / integrals.measure;
+            const VoigtVector mean_sigma = integrals.stress / integrals.measure;
+            const double mean_szz = integrals.stress_zz / integrals.measure;
             const double sxx = mean_sigma[0], syy = mean_sigma[1],
                          sxy = mean_sigma[2];
-            const double von_mises =
-              std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) +
-                               (syy - mean_szz) * (syy - mean_szz) +
-                               (mean_szz - sxx) * (mean_szz - sxx)) +
-                        3 * sxy * sxy);
+            const double von_mises
+              = std::sqrt(0.5
+                            * ((sxx - syy) * (sxx - syy)
+                               + (syy - mean_szz) * (syy - mean_szz)
+                               + (mean_szz - sxx) * (mean_szz - sxx))
+                          + 3 * sxy * sxy);
             const unsigned int k = cell->active_cell_index();
             cell_data[0][k]      = sxx;
             cell_data[1][k]      = syy;
@@ -723,9 +735,10 @@ namespace tribodyn
 
       DataOut<2> data_out;
       data_out.attach_dof_handler(dof_handler);
-      const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-        interpretation(2,
-                       DataComponentInterpretation::component_is_part_of_vector);
+      const std::vector<
+        DataComponentInterpretation::DataComponentInterpretation>
+        interpretation(
+          2, DataComponentInterpretation::component_is_part_of_vector);
       data_out.add_data_vector(total_ghosted,
                                std::vector<std::string>(2, "displacement"),
                                DataOut<2>::type_dof_data,
@@ -753,13 +766,12 @@ namespace tribodyn
       // One file per load case, written collectively with MPI I/O, and a
       // .pvd index of the three load cases (xx, yy, xy) as pseudo-times
       // 0, 1, 2.
-      const std::string base = "fields_" + to_string(bc);
-      const char *case_names[3] = {"xx", "yy", "xy"};
-      data_out.write_vtu_in_parallel(join_path(output_directory,
-                                               base + "_" +
-                                                 case_names[load_case] +
-                                                 ".vtu"),
-                                     mpi_communicator);
+      const std::string base          = "fields_" + to_string(bc);
+      const char       *case_names[3] = {"xx", "yy", "xy"};
+      data_out.write_vtu_in_parallel(
+        join_path(output_directory,
+                  base + "_" + case_names[load_case] + ".vtu"),
+        mpi_communicator);
       if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
         {
           std::string pvd;
@@ -768,9 +780,9 @@ namespace tribodyn
                  "  <!-- load cases: 0 = xx, 1 = yy, 2 = xy -->\n"
                  "  <Collection>\n";
           for (unsigned int k = 0; k <= load_case; ++k)
-            pvd += "    <DataSet timestep=\"" + std::to_string(k) +
-                   "\" group=\"\" part=\"0\" file=\"" + base + "_" +
-                   case_names[k] + ".vtu\"/>\n";
+            pvd += "    <DataSet timestep=\"" + std::to_string(k)
+                   + "\" group=\"\" part=\"0\" file=\"" + base + "_"
+                   + case_names[k] + ".vtu\"/>\n";
           pvd += "  </Collection>\n</VTKFile>\n";
           write_file_atomically(join_path(output_directory, base + ".pvd"),
                                 pvd);
@@ -782,8 +794,8 @@ namespace tribodyn
     CellProblem::write_material_map(const std::string &output_directory) const
     {
       TimerOutput::Scope scope(timer, "output");
-      Vector<float> ids(triangulation.n_active_cells());
-      Vector<float> ranks(triangulation.n_active_cells());
+      Vector<float>      ids(triangulation.n_active_cells());
+      Vector<float>      ranks(triangulation.n_active_cells());
       for (const auto &cell : triangulation.active_cell_iterators())
         if (cell->is_locally_owned())
           {

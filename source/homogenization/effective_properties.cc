@@ -1,8 +1,6 @@
 #include <deal.II/base/symmetric_tensor.h>
-
-#include <tribodyn/homogenization/effective_properties.h>
-
 #include <stdexcept>
+#include <tribodyn/homogenization/effective_properties.h>
 
 namespace tribodyn
 {
@@ -12,6 +10,22 @@ namespace tribodyn
     {
       /// (1, 1, 0): picks eps_xx + eps_yy from a Voigt strain.
       const VoigtVector trace_row({1., 1., 0.});
+
+      /// The (n, n) block A and the (n, t) column b of a Voigt stiffness,
+      /// for the index sets n = (n0, n1) and t.
+      std::pair<dealii::Tensor<2, 2>, dealii::Tensor<1, 2>>
+      split_blocks(const VoigtMatrix &C,
+                   const unsigned int n0,
+                   const unsigned int n1,
+                   const unsigned int t)
+      {
+        dealii::Tensor<2, 2> A;
+        A[0][0] = C[n0][n0];
+        A[0][1] = C[n0][n1];
+        A[1][0] = C[n1][n0];
+        A[1][1] = C[n1][n1];
+        return {A, dealii::Tensor<1, 2>({C[n0][t], C[n1][t]})};
+      }
     } // namespace
 
 
@@ -23,7 +37,7 @@ namespace tribodyn
       result.S   = dealii::invert(C);
       result.c_z = c_z;
 
-      const double          C12 = 0.5 * (C[0][1] + C[1][0]);
+      const double         C12 = 0.5 * (C[0][1] + C[1][0]);
       dealii::Tensor<2, 3> normal_block;
       normal_block[0][0] = C[0][0];
       normal_block[1][1] = C[1][1];
@@ -31,7 +45,7 @@ namespace tribodyn
       normal_block[0][1] = normal_block[1][0] = C12;
       normal_block[0][2] = normal_block[2][0] = c_z[0];
       normal_block[1][2] = normal_block[2][1] = c_z[1];
-      const dealii::Tensor<2, 3> compliance = dealii::invert(normal_block);
+      const dealii::Tensor<2, 3> compliance   = dealii::invert(normal_block);
 
       result.constants.E_L   = 1. / compliance[0][0];
       result.constants.E_T   = 1. / compliance[1][1];
@@ -44,7 +58,7 @@ namespace tribodyn
 
     ApparentProperties
     voigt_estimate(const std::vector<IsotropicElasticMaterial> &phases,
-                   const std::vector<double> &                  fractions)
+                   const std::vector<double>                   &fractions)
     {
       VoigtMatrix C;
       VoigtVector c_z;
@@ -59,21 +73,20 @@ namespace tribodyn
 
     ApparentProperties
     reuss_estimate(const std::vector<IsotropicElasticMaterial> &phases,
-                   const std::vector<double> &                  fractions)
+                   const std::vector<double>                   &fractions)
     {
       VoigtMatrix S;
       for (unsigned int k = 0; k < phases.size(); ++k)
-        S += fractions[k] *
-             dealii::invert(phases[k].plane_strain_voigt_stiffness());
+        S += fractions[k]
+             * dealii::invert(phases[k].plane_strain_voigt_stiffness());
       const VoigtMatrix C = dealii::invert(S);
       // Uniform stress sigma = C <eps>; sigma_zz^k = lambda_k tr(S_k sigma).
       VoigtVector c_z;
       for (unsigned int k = 0; k < phases.size(); ++k)
         {
-          const VoigtMatrix S_k =
-            dealii::invert(phases[k].plane_strain_voigt_stiffness());
-          c_z += fractions[k] * phases[k].lambda() *
-                 (trace_row * S_k * C);
+          const VoigtMatrix S_k
+            = dealii::invert(phases[k].plane_strain_voigt_stiffness());
+          c_z += fractions[k] * phases[k].lambda() * (trace_row * S_k * C);
         }
       return properties_from_stiffness(C, c_z);
     }
@@ -81,7 +94,7 @@ namespace tribodyn
 
     ApparentProperties
     laminate_exact(const std::vector<IsotropicElasticMaterial> &phases,
-                   const std::vector<double> &                  fractions,
+                   const std::vector<double>                   &fractions,
                    const unsigned int                           normal)
     {
       if (normal > 1)
@@ -104,38 +117,28 @@ namespace tribodyn
           dealii::Tensor<1, 2> mean_A_inverse_b;
           for (unsigned int k = 0; k < phases.size(); ++k)
             {
-              const VoigtMatrix    Ck = phases[k].plane_strain_voigt_stiffness();
-              dealii::Tensor<2, 2> A;
-              A[0][0] = Ck[n0][n0];
-              A[0][1] = Ck[n0][n1];
-              A[1][0] = Ck[n1][n0];
-              A[1][1] = Ck[n1][n1];
-              const dealii::Tensor<1, 2> b({Ck[n0][t], Ck[n1][t]});
+              const auto [A, b] = split_blocks(
+                phases[k].plane_strain_voigt_stiffness(), n0, n1, t);
               const dealii::Tensor<2, 2> A_inverse = dealii::invert(A);
               mean_A_inverse += fractions[k] * A_inverse;
               mean_A_inverse_b += fractions[k] * (A_inverse * b);
             }
-          const dealii::Tensor<1, 2> mean_eps_n({mean_strain[n0],
-                                                 mean_strain[n1]});
-          const dealii::Tensor<1, 2> traction =
-            dealii::invert(mean_A_inverse) *
-            (mean_eps_n + mean_A_inverse_b * mean_strain[t]);
+          const dealii::Tensor<1, 2> mean_eps_n(
+            {mean_strain[n0], mean_strain[n1]});
+          const dealii::Tensor<1, 2> traction
+            = dealii::invert(mean_A_inverse)
+              * (mean_eps_n + mean_A_inverse_b * mean_strain[t]);
 
           for (unsigned int k = 0; k < phases.size(); ++k)
             {
-              const VoigtMatrix    Ck = phases[k].plane_strain_voigt_stiffness();
-              dealii::Tensor<2, 2> A;
-              A[0][0] = Ck[n0][n0];
-              A[0][1] = Ck[n0][n1];
-              A[1][0] = Ck[n1][n0];
-              A[1][1] = Ck[n1][n1];
-              const dealii::Tensor<1, 2> b({Ck[n0][t], Ck[n1][t]});
-              const dealii::Tensor<1, 2> eps_n =
-                dealii::invert(A) * (traction - b * mean_strain[t]);
+              const VoigtMatrix Ck = phases[k].plane_strain_voigt_stiffness();
+              const auto [A, b]    = split_blocks(Ck, n0, n1, t);
+              const dealii::Tensor<1, 2> eps_n
+                = dealii::invert(A) * (traction - b * mean_strain[t]);
               VoigtVector eps_k;
-              eps_k[n0] = eps_n[0];
-              eps_k[n1] = eps_n[1];
-              eps_k[t]  = mean_strain[t];
+              eps_k[n0]                 = eps_n[0];
+              eps_k[n1]                 = eps_n[1];
+              eps_k[t]                  = mean_strain[t];
               const VoigtVector sigma_k = Ck * eps_k;
               for (unsigned int i = 0; i < 3; ++i)
                 C_eff[i][j] += fractions[k] * sigma_k[i];
@@ -171,15 +174,15 @@ namespace tribodyn
     JsonValue
     to_json(const ApparentProperties &p)
     {
-      JsonValue j      = JsonValue::object();
-      j["C"]           = matrix_to_json(p.C);
-      j["S"]           = matrix_to_json(p.S);
-      j["c_z"]         = json_array({p.c_z[0], p.c_z[1], p.c_z[2]});
-      j["E_L"]         = p.constants.E_L;
-      j["E_T"]         = p.constants.E_T;
-      j["nu_LT"]       = p.constants.nu_LT;
-      j["nu_TT"]       = p.constants.nu_TT;
-      j["G_LT"]        = p.constants.G_LT;
+      JsonValue j = JsonValue::object();
+      j["C"]      = matrix_to_json(p.C);
+      j["S"]      = matrix_to_json(p.S);
+      j["c_z"]    = json_array({p.c_z[0], p.c_z[1], p.c_z[2]});
+      j["E_L"]    = p.constants.E_L;
+      j["E_T"]    = p.constants.E_T;
+      j["nu_LT"]  = p.constants.nu_LT;
+      j["nu_TT"]  = p.constants.nu_TT;
+      j["G_LT"]   = p.constants.G_LT;
       return j;
     }
   } // namespace homogenization

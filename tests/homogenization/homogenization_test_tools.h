@@ -1,12 +1,11 @@
 #ifndef tribodyn_tests_homogenization_tools_h
 #define tribodyn_tests_homogenization_tools_h
 
-#include <deal.II/base/timer.h>
+#include "../test_utilities.h"
 
+#include <deal.II/base/timer.h>
 #include <tribodyn/core/morphology.h>
 #include <tribodyn/homogenization/cell_problem.h>
-
-#include "../test_utilities.h"
 
 namespace tribodyn_test
 {
@@ -22,12 +21,12 @@ namespace tribodyn_test
 
   /// Solve one boundary condition on @p morphology, silently.
   inline CellProblemResult
-  solve_cell(const Morphology &                           morphology,
+  solve_cell(const Morphology                            &morphology,
              const std::vector<IsotropicElasticMaterial> &phases,
              const BoundaryCondition                      bc,
-             const unsigned int subdivisions = 1,
-             const double       tolerance    = 1e-12,
-             const MPI_Comm     comm         = MPI_COMM_WORLD)
+             const unsigned int                           subdivisions = 1,
+             const double                                 tolerance    = 1e-12,
+             const MPI_Comm                               comm = MPI_COMM_WORLD)
   {
     CellProblemParameters parameters;
     parameters.boundary_conditions    = {bc};
@@ -37,7 +36,7 @@ namespace tribodyn_test
                               std::cout,
                               dealii::TimerOutput::never,
                               dealii::TimerOutput::wall_times);
-    CellProblem problem(comm, morphology, phases, parameters, timer);
+    CellProblem         problem(comm, morphology, phases, parameters, timer);
     return problem.solve(bc);
   }
 

@@ -16,33 +16,32 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using namespace tribodyn_test;
 
-  const std::vector<IsotropicElasticMaterial> phases = {
-    IsotropicElasticMaterial{30e9, 0.2, 1770.},
-    IsotropicElasticMaterial{80e9, 0.35, 1770.}};
+  const std::vector<IsotropicElasticMaterial> phases
+    = {IsotropicElasticMaterial{30e9, 0.2, 1770.},
+       IsotropicElasticMaterial{80e9, 0.35, 1770.}};
 
   for (const auto normal : {MorphologyParameters::LaminateNormal::x,
                             MorphologyParameters::LaminateNormal::y})
     {
       MorphologyParameters p;
-      p.generator          = MorphologyParameters::Generator::laminate;
-      p.laminate_normal    = normal;
-      p.n_pixels_x         = 40;
-      p.n_pixels_y         = 20;
-      p.width              = 0.02;
-      p.height             = 0.01;
-      p.volume_fraction    = 0.3;
-      p.n_laminate_periods = 2;
-      const Morphology morphology = Morphology::create(p);
-      const double     f          = morphology.heterogeneity_fraction();
-      const unsigned int axis =
-        normal == MorphologyParameters::LaminateNormal::x ? 0 : 1;
-      const std::string name = std::string("layers normal to ") +
-                               (axis == 0 ? "x" : "y") + ": ";
-      const ApparentProperties exact =
-        laminate_exact(phases, {1 - f, f}, axis);
+      p.generator                   = MorphologyParameters::Generator::laminate;
+      p.laminate_normal             = normal;
+      p.n_pixels_x                  = 40;
+      p.n_pixels_y                  = 20;
+      p.width                       = 0.02;
+      p.height                      = 0.01;
+      p.volume_fraction             = 0.3;
+      p.n_laminate_periods          = 2;
+      const Morphology   morphology = Morphology::create(p);
+      const double       f          = morphology.heterogeneity_fraction();
+      const unsigned int axis
+        = normal == MorphologyParameters::LaminateNormal::x ? 0 : 1;
+      const std::string name
+        = std::string("layers normal to ") + (axis == 0 ? "x" : "y") + ": ";
+      const ApparentProperties exact = laminate_exact(phases, {1 - f, f}, axis);
 
-      const CellProblemResult periodic =
-        solve_cell(morphology, phases, BoundaryCondition::periodic);
+      const CellProblemResult periodic
+        = solve_cell(morphology, phases, BoundaryCondition::periodic);
       check_relative(matrix_relative_difference(periodic.properties.C, exact.C),
                      0,
                      1e-6,
@@ -61,23 +60,25 @@ main(int argc, char **argv)
       check_relative(c.nu_LT, e.nu_LT, 1e-6, name + "nu_LT");
       check_relative(c.nu_TT, e.nu_TT, 1e-6, name + "nu_TT");
 
-      const CellProblemResult kubc =
-        solve_cell(morphology, phases, BoundaryCondition::kubc);
-      const CellProblemResult subc =
-        solve_cell(morphology, phases, BoundaryCondition::subc);
+      const CellProblemResult kubc
+        = solve_cell(morphology, phases, BoundaryCondition::kubc);
+      const CellProblemResult subc
+        = solve_cell(morphology, phases, BoundaryCondition::subc);
       const double scale = exact.C.norm();
-      const double lower =
-        min_eigenvalue_of_symmetric_part(kubc.properties.C - exact.C) / scale;
-      const double upper =
-        min_eigenvalue_of_symmetric_part(exact.C - subc.properties.C) / scale;
+      const double lower
+        = min_eigenvalue_of_symmetric_part(kubc.properties.C - exact.C) / scale;
+      const double upper
+        = min_eigenvalue_of_symmetric_part(exact.C - subc.properties.C) / scale;
       check(lower >= -1e-9,
-            name + "C^KUBC - C_exact is positive semi-definite (min "
-                   "eigenvalue / |C| = " +
-              std::to_string(lower) + ")");
+            name
+              + "C^KUBC - C_exact is positive semi-definite (min "
+                "eigenvalue / |C| = "
+              + std::to_string(lower) + ")");
       check(upper >= -1e-9,
-            name + "C_exact - C^SUBC is positive semi-definite (min "
-                   "eigenvalue / |C| = " +
-              std::to_string(upper) + ")");
+            name
+              + "C_exact - C^SUBC is positive semi-definite (min "
+                "eigenvalue / |C| = "
+              + std::to_string(upper) + ")");
     }
   return result();
 }

@@ -7,11 +7,10 @@
 // - a grid file written and read back gives the same pixels;
 // - a laminate has exactly the requested layer fraction.
 
-#include <tribodyn/core/morphology.h>
-
 #include "../test_utilities.h"
 
 #include <cstdio>
+#include <tribodyn/core/morphology.h>
 
 int
 main(int argc, char **argv)
@@ -21,12 +20,12 @@ main(int argc, char **argv)
   using namespace tribodyn_test;
 
   MorphologyParameters p; // the seed's defaults: 280 x 80 pixels of 0.1 mm
-  const Morphology m = Morphology::create(p);
-  const double     max_area_fraction =
-    1 * 36. / (280. * 80.); // one 1 x 36 pixel heterogeneity
+  const Morphology     m = Morphology::create(p);
+  const double         max_area_fraction
+    = 1 * 36. / (280. * 80.); // one 1 x 36 pixel heterogeneity
   check(std::abs(m.heterogeneity_fraction() - 0.1) <= max_area_fraction,
-        "random fraction " + std::to_string(m.heterogeneity_fraction()) +
-          " is within one heterogeneity of 0.1");
+        "random fraction " + std::to_string(m.heterogeneity_fraction())
+          + " is within one heterogeneity of 0.1");
 
   // Horizontal runs of heterogeneity pixels have width exactly 1 pixel
   // (0.1 mm), vertical runs have heights in [12, 36] pixels: this fails if
@@ -38,7 +37,7 @@ main(int argc, char **argv)
         {
           const bool left  = i > 0 && m.pixel(i - 1, j) != 0;
           const bool right = i + 1 < m.n_pixels_x() && m.pixel(i + 1, j) != 0;
-          widths_ok = widths_ok && !left && !right;
+          widths_ok        = widths_ok && !left && !right;
         }
   for (unsigned int i = 0; i < m.n_pixels_x(); ++i)
     {
@@ -76,9 +75,10 @@ main(int argc, char **argv)
 
   const std::string file = "morphology_roundtrip.txt";
   m.write_grid_file(file);
-  const Morphology read = Morphology::read_grid_file(file, m.width(), m.height());
-  bool             equal = read.n_pixels_x() == m.n_pixels_x() &&
-                           read.n_pixels_y() == m.n_pixels_y();
+  const Morphology read
+    = Morphology::read_grid_file(file, m.width(), m.height());
+  bool equal = read.n_pixels_x() == m.n_pixels_x()
+               && read.n_pixels_y() == m.n_pixels_y();
   for (unsigned int j = 0; equal && j < m.n_pixels_y(); ++j)
     for (unsigned int i = 0; i < m.n_pixels_x(); ++i)
       equal = equal && m.pixel(i, j) == read.pixel(i, j);

@@ -12,9 +12,10 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using namespace tribodyn_test;
 
-  const unsigned int n_ranks =
-    dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-  check(n_ranks == 2, "runs on 2 MPI ranks (got " + std::to_string(n_ranks) + ")");
+  const unsigned int n_ranks
+    = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  check(n_ranks == 2,
+        "runs on 2 MPI ranks (got " + std::to_string(n_ranks) + ")");
 
   MorphologyParameters p;
   p.generator       = MorphologyParameters::Generator::random_vertical;
@@ -29,14 +30,14 @@ main(int argc, char **argv)
                                      BoundaryCondition::subc,
                                      BoundaryCondition::periodic})
     {
-      const CellProblemResult parallel = solve_cell(
-        morphology, seed_phases(), bc, 1, 1e-12, MPI_COMM_WORLD);
+      const CellProblemResult parallel
+        = solve_cell(morphology, seed_phases(), bc, 1, 1e-12, MPI_COMM_WORLD);
       // Rank 0 alone solves the serial problem and broadcasts its C.
       VoigtMatrix serial_C;
       if (is_root())
-        serial_C = solve_cell(morphology, seed_phases(), bc, 1, 1e-12,
-                              MPI_COMM_SELF)
-                     .properties.C;
+        serial_C
+          = solve_cell(morphology, seed_phases(), bc, 1, 1e-12, MPI_COMM_SELF)
+              .properties.C;
       serial_C = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, serial_C, 0);
       check_relative(matrix_relative_difference(parallel.properties.C,
                                                 serial_C),

@@ -16,7 +16,7 @@ main(int argc, char **argv)
   using namespace tribodyn_test;
 
   const std::vector<IsotropicElasticMaterial> phases = seed_phases();
-  MorphologyParameters p;
+  MorphologyParameters                        p;
   p.generator       = MorphologyParameters::Generator::random_vertical;
   p.width           = 0.014;
   p.height          = 0.004;
@@ -27,15 +27,15 @@ main(int argc, char **argv)
   const Morphology morphology = Morphology::create(p);
   const double     f          = morphology.heterogeneity_fraction();
   check(std::abs(f - 0.15) < 0.01,
-        "random morphology reaches its target fraction (" +
-          std::to_string(f) + " vs 0.15 +- 0.01)");
+        "random morphology reaches its target fraction (" + std::to_string(f)
+          + " vs 0.15 +- 0.01)");
 
-  const CellProblemResult kubc =
-    solve_cell(morphology, phases, BoundaryCondition::kubc);
-  const CellProblemResult periodic =
-    solve_cell(morphology, phases, BoundaryCondition::periodic);
-  const CellProblemResult subc =
-    solve_cell(morphology, phases, BoundaryCondition::subc);
+  const CellProblemResult kubc
+    = solve_cell(morphology, phases, BoundaryCondition::kubc);
+  const CellProblemResult periodic
+    = solve_cell(morphology, phases, BoundaryCondition::periodic);
+  const CellProblemResult subc
+    = solve_cell(morphology, phases, BoundaryCondition::subc);
   const ApparentProperties voigt = voigt_estimate(phases, {1 - f, f});
   const ApparentProperties reuss = reuss_estimate(phases, {1 - f, f});
 
@@ -48,17 +48,17 @@ main(int argc, char **argv)
                    1.);
 
   const double scale = kubc.properties.C.norm();
-  const std::vector<std::pair<std::string, VoigtMatrix>> differences = {
-    {"Voigt - KUBC", voigt.C - kubc.properties.C},
-    {"KUBC - periodic", kubc.properties.C - periodic.properties.C},
-    {"periodic - SUBC", periodic.properties.C - subc.properties.C},
-    {"SUBC - Reuss", subc.properties.C - reuss.C}};
+  const std::vector<std::pair<std::string, VoigtMatrix>> differences
+    = {{"Voigt - KUBC", voigt.C - kubc.properties.C},
+       {"KUBC - periodic", kubc.properties.C - periodic.properties.C},
+       {"periodic - SUBC", periodic.properties.C - subc.properties.C},
+       {"SUBC - Reuss", subc.properties.C - reuss.C}};
   for (const auto &d : differences)
     {
       const double m = min_eigenvalue_of_symmetric_part(d.second) / scale;
       check(m >= -1e-9,
-            d.first + " is positive semi-definite (min eigenvalue / |C| = " +
-              std::to_string(m) + ")");
+            d.first + " is positive semi-definite (min eigenvalue / |C| = "
+              + std::to_string(m) + ")");
     }
 
   for (unsigned int k = 0; k < 3; ++k)
@@ -68,20 +68,20 @@ main(int argc, char **argv)
         check_relative(kubc.load_cases[k].mean_strain[i],
                        unit,
                        1e-9,
-                       "KUBC <eps>[" + std::to_string(i) + "] case " +
-                         std::to_string(k),
+                       "KUBC <eps>[" + std::to_string(i) + "] case "
+                         + std::to_string(k),
                        1.);
         check_relative(periodic.load_cases[k].mean_strain[i],
                        unit,
                        1e-9,
-                       "periodic <eps>[" + std::to_string(i) + "] case " +
-                         std::to_string(k),
+                       "periodic <eps>[" + std::to_string(i) + "] case "
+                         + std::to_string(k),
                        1.);
         check_relative(subc.load_cases[k].mean_stress[i],
                        unit,
                        1e-9,
-                       "SUBC <sigma>[" + std::to_string(i) + "] case " +
-                         std::to_string(k),
+                       "SUBC <sigma>[" + std::to_string(i) + "] case "
+                         + std::to_string(k),
                        1.);
       }
   return result();

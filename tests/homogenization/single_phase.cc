@@ -11,12 +11,12 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using namespace tribodyn_test;
 
-  const IsotropicElasticMaterial material{30e9, 0.2, 1770.};
+  const IsotropicElasticMaterial              material{30e9, 0.2, 1770.};
   const std::vector<IsotropicElasticMaterial> phases = {material, material};
-  MorphologyParameters p;
-  p.generator  = MorphologyParameters::Generator::homogeneous;
-  p.n_pixels_x = 28;
-  p.n_pixels_y = 8;
+  MorphologyParameters                        p;
+  p.generator                 = MorphologyParameters::Generator::homogeneous;
+  p.n_pixels_x                = 28;
+  p.n_pixels_y                = 8;
   const Morphology morphology = Morphology::create(p);
 
   const double G = material.youngs_modulus / (2 * (1 + material.poisson_ratio));
@@ -24,9 +24,9 @@ main(int argc, char **argv)
                                      BoundaryCondition::subc,
                                      BoundaryCondition::periodic})
     {
-      const CellProblemResult r = solve_cell(morphology, phases, bc);
-      const auto &c = r.properties.constants;
-      const std::string name = to_string(bc);
+      const CellProblemResult r    = solve_cell(morphology, phases, bc);
+      const auto             &c    = r.properties.constants;
+      const std::string       name = to_string(bc);
       check_relative(c.E_L, material.youngs_modulus, 1e-8, name + " E_L");
       check_relative(c.E_T, material.youngs_modulus, 1e-8, name + " E_T");
       check_relative(c.nu_LT, material.poisson_ratio, 1e-8, name + " nu_LT");
@@ -43,16 +43,16 @@ main(int argc, char **argv)
   // And with a second phase of the same constants but a random layout:
   // the result must not depend on the morphology.
   MorphologyParameters random = p;
-  random.generator            = MorphologyParameters::Generator::random_vertical;
-  random.n_pixels_x           = 56; // pixels of 0.1 mm
-  random.n_pixels_y           = 16;
-  random.width                = 0.0056;
-  random.height               = 0.0016;
-  random.inclusion_min_height = 0.0004;
-  random.inclusion_max_height = 0.0012;
-  const Morphology random_morphology = Morphology::create(random);
-  const CellProblemResult r =
-    solve_cell(random_morphology, phases, BoundaryCondition::kubc);
+  random.generator  = MorphologyParameters::Generator::random_vertical;
+  random.n_pixels_x = 56; // pixels of 0.1 mm
+  random.n_pixels_y = 16;
+  random.width      = 0.0056;
+  random.height     = 0.0016;
+  random.inclusion_min_height               = 0.0004;
+  random.inclusion_max_height               = 0.0012;
+  const Morphology        random_morphology = Morphology::create(random);
+  const CellProblemResult r
+    = solve_cell(random_morphology, phases, BoundaryCondition::kubc);
   check_relative(r.properties.constants.E_L,
                  material.youngs_modulus,
                  1e-8,

@@ -2,7 +2,6 @@
 #define tribodyn_core_global_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <string>
 
 namespace tribodyn

@@ -3,7 +3,6 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
-
 #include <string>
 
 namespace tribodyn

@@ -4,7 +4,6 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
-
 #include <string>
 #include <vector>
 
@@ -151,9 +150,9 @@ namespace tribodyn
    * refinement afterwards keeps the ids (children inherit them).
    */
   void
-  create_morphology_mesh(const Morphology &          morphology,
-                         const unsigned int          subdivisions_per_pixel,
-                         dealii::Triangulation<2> &  triangulation);
+  create_morphology_mesh(const Morphology         &morphology,
+                         const unsigned int        subdivisions_per_pixel,
+                         dealii::Triangulation<2> &triangulation);
 } // namespace tribodyn
 
 #endif

@@ -2,7 +2,6 @@
 #define tribodyn_core_output_h
 
 #include <deal.II/base/mpi.h>
-
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,7 +38,7 @@ namespace tribodyn
   {
   public:
     CsvWriter() = default;
-    CsvWriter(const std::string &             path,
+    CsvWriter(const std::string              &path,
               const std::vector<std::string> &columns,
               const bool                      active,
               const double min_seconds_between_flushes = 2.0);
@@ -47,7 +46,8 @@ namespace tribodyn
 
     CsvWriter(const CsvWriter &) = delete;
     CsvWriter &
-    operator=(const CsvWriter &) = delete;
+    operator=(const CsvWriter &)
+      = delete;
 
     /// Append a row; its size must equal the number of columns.
     void
@@ -56,7 +56,7 @@ namespace tribodyn
     /// Append a row whose first entries are strings (e.g. labels).
     void
     add_row(const std::vector<std::string> &labels,
-            const std::vector<double> &     values);
+            const std::vector<double>      &values);
 
     /// Rewrite the file if enough time has passed since the last flush (or
     /// always when @p force).
@@ -68,11 +68,11 @@ namespace tribodyn
 
   private:
     std::string path_name;
-    std::size_t n_columns = 0;
-    bool        is_active = false;
-    double      min_interval = 2.0;
+    std::size_t n_columns       = 0;
+    bool        is_active       = false;
+    double      min_interval    = 2.0;
     double      last_flush_time = -1e300;
-    bool        dirty = false;
+    bool        dirty           = false;
     std::string text;
   };
 
@@ -92,9 +92,9 @@ namespace tribodyn
     add(const double time, const std::string &file_name);
 
   private:
-    std::string                                  path_name;
-    bool                                         is_active = false;
-    std::vector<std::pair<double, std::string>>  records;
+    std::string                                 path_name;
+    bool                                        is_active = false;
+    std::vector<std::pair<double, std::string>> records;
   };
 } // namespace tribodyn
 

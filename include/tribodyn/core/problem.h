@@ -3,7 +3,6 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
-
 #include <functional>
 #include <memory>
 #include <string>
@@ -37,7 +36,8 @@ namespace tribodyn
     virtual ~Problem() = default;
 
     virtual void
-    run() = 0;
+    run()
+      = 0;
   };
 
   /**
@@ -47,8 +47,8 @@ namespace tribodyn
    */
   struct ProblemDescription
   {
-    std::string name;
-    std::string description;
+    std::string                                     name;
+    std::string                                     description;
     std::function<void(dealii::ParameterHandler &)> declare_parameters;
     std::function<std::unique_ptr<Problem>(dealii::ParameterHandler &,
                                            const RunContext &)>

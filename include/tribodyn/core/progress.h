@@ -16,7 +16,7 @@ namespace tribodyn
   class ProgressReporter
   {
   public:
-    ProgressReporter(std::ostream &     out,
+    ProgressReporter(std::ostream      &out,
                      const bool         active,
                      const double       end_time,
                      const double       interval_seconds,
@@ -27,7 +27,7 @@ namespace tribodyn
     void
     update(const unsigned long step,
            const double        time,
-           const std::string & key_figure = "",
+           const std::string  &key_figure = "",
            const bool          force      = false);
 
     /// Wall time since construction, in seconds.
@@ -35,13 +35,13 @@ namespace tribodyn
     elapsed_seconds() const;
 
   private:
-    std::ostream &                                     out;
-    const bool                                         is_active;
-    const double                                       end_time;
-    const double                                       interval;
-    const std::string                                  label;
-    const std::chrono::steady_clock::time_point        start;
-    double                                             last_report = -1e300;
+    std::ostream                               &out;
+    const bool                                  is_active;
+    const double                                end_time;
+    const double                                interval;
+    const std::string                           label;
+    const std::chrono::steady_clock::time_point start;
+    double                                      last_report = -1e300;
   };
 
   /// "1 h 02 min", "3 min 12 s", "4.2 s".

@@ -1,6 +1,7 @@
 #ifndef tribodyn_homogenization_cell_problem_h
 #define tribodyn_homogenization_cell_problem_h
 
+#include <array>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
@@ -13,14 +14,11 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/numerics/data_out.h>
-
+#include <memory>
+#include <string>
 #include <tribodyn/core/material.h>
 #include <tribodyn/core/morphology.h>
 #include <tribodyn/homogenization/effective_properties.h>
-
-#include <array>
-#include <memory>
-#include <string>
 #include <vector>
 
 namespace tribodyn
@@ -42,9 +40,8 @@ namespace tribodyn
     /// Parameters of the subsection "Cell problem".
     struct CellProblemParameters
     {
-      std::vector<BoundaryCondition> boundary_conditions = {
-        BoundaryCondition::kubc,
-        BoundaryCondition::subc};
+      std::vector<BoundaryCondition> boundary_conditions
+        = {BoundaryCondition::kubc, BoundaryCondition::subc};
       /// Finite elements per pixel of the morphology along each axis.
       unsigned int subdivisions_per_pixel = 1;
       /// Global refinements of that mesh.
@@ -65,8 +62,8 @@ namespace tribodyn
     /// Volume averages of one load case.
     struct LoadCaseResult
     {
-      VoigtVector  mean_stress; ///< <sigma> (Pa), (xx, yy, xy)
-      VoigtVector  mean_strain; ///< <eps>, (xx, yy, gamma_xy)
+      VoigtVector  mean_stress;        ///< <sigma> (Pa), (xx, yy, xy)
+      VoigtVector  mean_strain;        ///< <eps>, (xx, yy, gamma_xy)
       double       mean_stress_zz = 0; ///< <sigma_zz> (Pa), plane strain
       unsigned int cg_iterations  = 0;
     };
@@ -93,17 +90,17 @@ namespace tribodyn
     {
     public:
       CellProblem(const MPI_Comm                               comm,
-                  const Morphology &                           morphology,
+                  const Morphology                            &morphology,
                   const std::vector<IsotropicElasticMaterial> &phases,
-                  const CellProblemParameters &                parameters,
-                  dealii::TimerOutput &                        timer);
+                  const CellProblemParameters                 &parameters,
+                  dealii::TimerOutput                         &timer);
 
       /// Solve the three load cases of @p bc. When @p output_directory is
       /// not empty, write the fields of each load case there
       /// (fields_<BC>.pvd indexing fields_<BC>_<case>.vtu).
       CellProblemResult
       solve(const BoundaryCondition bc,
-            const std::string &     output_directory = "");
+            const std::string      &output_directory = "");
 
       /// Write the material map (morphology.vtu).
       void
@@ -129,12 +126,12 @@ namespace tribodyn
       void
       setup_preconditioner();
       LoadCaseResult
-      postprocess(const BoundaryCondition                     bc,
-                  const unsigned int                          load_case,
+      postprocess(const BoundaryCondition                      bc,
+                  const unsigned int                           load_case,
                   const dealii::TrilinosWrappers::MPI::Vector &solution) const;
       void
-      write_fields(const BoundaryCondition                     bc,
-                   const unsigned int                          load_case,
+      write_fields(const BoundaryCondition                      bc,
+                   const unsigned int                           load_case,
                    const dealii::TrilinosWrappers::MPI::Vector &solution,
                    const std::string &output_directory) const;
 
@@ -143,10 +140,10 @@ namespace tribodyn
       unit_load(const unsigned int load_case);
 
       MPI_Comm                                     mpi_communicator;
-      const Morphology &                           morphology;
+      const Morphology                            &morphology;
       const std::vector<IsotropicElasticMaterial> &phases;
       const CellProblemParameters                  parameters;
-      dealii::TimerOutput &                        timer;
+      dealii::TimerOutput                         &timer;
       dealii::ConditionalOStream                   pcout;
 
       dealii::parallel::distributed::Triangulation<2> triangulation;
@@ -155,15 +152,15 @@ namespace tribodyn
       dealii::IndexSet                                locally_owned_dofs;
       dealii::IndexSet                                locally_relevant_dofs;
 
-      dealii::AffineConstraints<double>             constraints;
-      dealii::TrilinosWrappers::SparseMatrix        system_matrix;
+      dealii::AffineConstraints<double>                    constraints;
+      dealii::TrilinosWrappers::SparseMatrix               system_matrix;
       std::array<dealii::TrilinosWrappers::MPI::Vector, 3> system_rhs;
       /// Norm of the unassembled element loads of each load case: the
       /// scale of the CG tolerance. The assembled right-hand side cancels
       /// between elements (to round-off for a single phase), so it is no
       /// scale for the accuracy of the averages.
-      std::array<double, 3> load_scale;
-      dealii::TrilinosWrappers::PreconditionAMG     preconditioner;
+      std::array<double, 3>                     load_scale;
+      dealii::TrilinosWrappers::PreconditionAMG preconditioner;
       /// Near-null space of the AMG; must outlive the preconditioner setup.
       std::unique_ptr<Epetra_MultiVector> rigid_body_modes;
     };

@@ -2,10 +2,8 @@
 #define tribodyn_homogenization_effective_properties_h
 
 #include <deal.II/base/tensor.h>
-
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/material.h>
-
 #include <vector>
 
 namespace tribodyn
@@ -63,12 +61,12 @@ namespace tribodyn
     /// Voigt estimate: uniform strain, C = sum_k f_k C_k.
     ApparentProperties
     voigt_estimate(const std::vector<IsotropicElasticMaterial> &phases,
-                   const std::vector<double> &                  fractions);
+                   const std::vector<double>                   &fractions);
 
     /// Reuss estimate: uniform stress, S = sum_k f_k S_k.
     ApparentProperties
     reuss_estimate(const std::vector<IsotropicElasticMaterial> &phases,
-                   const std::vector<double> &                  fractions);
+                   const std::vector<double>                   &fractions);
 
     /**
      * Exact effective properties of a laminate (layers through the whole
@@ -78,7 +76,7 @@ namespace tribodyn
      */
     ApparentProperties
     laminate_exact(const std::vector<IsotropicElasticMaterial> &phases,
-                   const std::vector<double> &                  fractions,
+                   const std::vector<double>                   &fractions,
                    const unsigned int                           normal);
 
     /// Smallest eigenvalue of the symmetric part of @p A.

@@ -2,12 +2,10 @@
 #define tribodyn_homogenization_homogenization_problem_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <tribodyn/core/material.h>
 #include <tribodyn/core/morphology.h>
 #include <tribodyn/core/problem.h>
 #include <tribodyn/homogenization/cell_problem.h>
-
 #include <vector>
 
 namespace tribodyn
@@ -57,7 +55,7 @@ namespace tribodyn
       declare_parameters(dealii::ParameterHandler &prm);
 
       HomogenizationProblem(dealii::ParameterHandler &prm,
-                            const RunContext &        context);
+                            const RunContext         &context);
 
       void
       run() override;
