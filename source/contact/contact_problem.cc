@@ -9,6 +9,7 @@
 #include <tribodyn/core/version.h>
 
 #include <chrono>
+#include <memory>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -59,10 +60,32 @@ namespace tribodyn
       const MPI_Comm comm  = context.mpi_communicator;
       const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
       dealii::ConditionalOStream pcout(std::cout, root);
-      dealii::TimerOutput        timer(comm,
-                                pcout,
-                                dealii::TimerOutput::summary,
-                                dealii::TimerOutput::wall_times);
+      auto timer = std::make_unique<dealii::TimerOutput>(
+        comm, pcout, dealii::TimerOutput::summary,
+        dealii::TimerOutput::wall_times);
+      try
+        {
+          run_with_timer(*timer, start);
+        }
+      catch (...)
+        {
+          // No timing table (and no MPI exchange in its destructor while an
+          // exception is in flight) for a run that failed.
+          timer->disable_output();
+          timer.reset();
+          throw;
+        }
+    }
+
+
+    void
+    ContactProblem::run_with_timer(
+      dealii::TimerOutput &                                 timer,
+      const std::chrono::steady_clock::time_point &start)
+    {
+      const MPI_Comm comm = context.mpi_communicator;
+      const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      dealii::ConditionalOStream pcout(std::cout, root);
 
       ContactSolver solver(comm, parameters, timer);
       solver.setup();

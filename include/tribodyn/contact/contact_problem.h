@@ -2,9 +2,12 @@
 #define tribodyn_contact_contact_problem_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/core/problem.h>
+
+#include <chrono>
 
 namespace tribodyn
 {
@@ -28,6 +31,10 @@ namespace tribodyn
       run() override;
 
     private:
+      void
+      run_with_timer(dealii::TimerOutput &                        timer,
+                     const std::chrono::steady_clock::time_point &start);
+
       RunContext        context;
       ContactParameters parameters;
     };
