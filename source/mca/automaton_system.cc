@@ -689,6 +689,7 @@ namespace tribodyn
                   }
             }
         }
+      update_neighbourhood_weights();
       ++rebuild_count;
     }
 
@@ -987,6 +988,8 @@ namespace tribodyn
                 w[k][c]  = kin[9 * k + 6 + c];
               }
         }
+      if (weights_stale)
+        update_neighbourhood_weights();
       const bool rot = rotations;
       if (rot && plastic_scene && bond_scene)
         pair_kernel<true, true, true>(step_dt);
@@ -1052,6 +1055,8 @@ namespace tribodyn
               if (r >= d)
                 {
                   // separated: no interaction
+                  if (in_contact[p])
+                    weights_stale = true;
                   in_contact[p] = 0;
                   sig_i[p] = sig_j[p] = 0;
                   tau_i[p] = tau_j[p] = {{0, 0, 0}};
@@ -1063,6 +1068,7 @@ namespace tribodyn
                 {
                   // touching now: only the overlap counts, from r = d
                   in_contact[p] = 1;
+                  weights_stale = true;
                   q_i[p]        = d / 2;
                   r_prev        = d;
                   dr            = r - d;
@@ -1096,7 +1102,8 @@ namespace tribodyn
                   const double tn = dot(t, n);
                   for (unsigned int c = 0; c < 3; ++c)
                     t[c] -= tn * n[c];
-                  const double s = std::sqrt(t2 / std::max(dot(t, t), 1e-300 * t2));
+                  const double p2 = dot(t, t);
+                  const double s  = p2 > 1e-12 * t2 ? std::sqrt(t2 / p2) : 0.;
                   for (unsigned int c = 0; c < 3; ++c)
                     t[c] *= s;
                 }
@@ -1113,9 +1120,10 @@ namespace tribodyn
           }
           // Normal split: equal stresses from both sides (many-body term of
           // the previous step as predictor).
-          const double Xi = mc[mi].D * dsm_prev[i], Xj = mc[mj].D * dsm_prev[j];
-          const double dqi =
-            (sig_j[p] - sig_i[p] + Xj - Xi + kj * dr) / (ki + kj);
+          // Normal split: equal elastic increments 2G de from both sides
+          // (series springs); the many-body parts D dsm of the two sides
+          // differ and the force uses the mean of the two sides.
+          const double dqi = kj * dr / (ki + kj);
           const double dei = dqi * inv_r0, dej = (dr - dqi) * inv_r0;
           deps_i[p]       = dei;
           deps_j[p]       = dej;
@@ -1124,22 +1132,23 @@ namespace tribodyn
           if (owned_i[p])
             {
               sum_qs[i] += qin * S;
-              acc_qse[i] += qin * S * dei;
+              acc_qse[i] += beta_i[p] * dei;
             }
           if (owned_j[p])
             {
               sum_qs[j] += qjn * S;
-              acc_qse[j] += qjn * S * dej;
+              acc_qse[j] += beta_j[p] * dej;
             }
         }
 
-      // Mean-stress increment of each automaton, solved with its own pairs:
-      // dsm = (2G/3V) sum qS deps + D c dsm, c = sum qS / 3V.
+      // Mean-stress increment of each automaton: K times its volumetric
+      // strain increment, the trace of the strain tensor fitted (least
+      // squares) to its pairs' normal strains: dtheta = sum_j beta_ij
+      // deps_ij (beta = 1/4 in a complete FCC neighbourhood).
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           const auto  &m = mc[mat[k]];
-          const double c = sum_qs[k] / (3 * V);
-          dsm[k] = m.two_G / (3 * V) * acc_qse[k] / (1 - m.D * c);
+          dsm[k] = m.K * acc_qse[k];
         }
       if (ghosts.active())
         ghosts.update(dsm.data(), 1);
@@ -1182,7 +1191,7 @@ namespace tribodyn
           for (unsigned int k = 0; k < n_owned; ++k)
             {
               const auto  &m  = mc[mat[k]];
-              const Sym3  &s  = trial[k];
+              const Sym3   s  = fabric_corrected(k, trial[k]);
               const double sm = (s[0] + s[1] + s[2]) / 3;
               const double q  = von_mises(s);
               double       M  = 1, share = 0;
@@ -1316,6 +1325,7 @@ namespace tribodyn
           std::vector<double> ex(static_cast<std::size_t>(n_local) * 7, 0.);
           for (unsigned int k = 0; k < n_owned; ++k)
             {
+              stress[k] = fabric_corrected(k, stress[k]);
               for (unsigned int c = 0; c < 6; ++c)
                 ex[7 * k + c] = stress[k][c];
               ex[7 * k + 6] = sigma_y[k];
@@ -1352,6 +1362,7 @@ namespace tribodyn
                     std::min(mc[mat[i]].sigma_b, mc[mat[j]].sigma_b);
                   if (von_mises(s) >= limit)
                     {
+                      weights_stale = true;
                       bonded[p]     = 0;
                       in_contact[p] = r_now[p] < d;
                     }
@@ -1363,7 +1374,10 @@ namespace tribodyn
                   const double Eb = std::min(mc[mat[i]].w_b, mc[mat[j]].w_b) *
                                     S * r_now[p];
                   if (sn <= -sy && heat[p] >= heat_fraction * Eb)
-                    bonded[p] = 1;
+                    {
+                      bonded[p]     = 1;
+                      weights_stale = true;
+                    }
                 }
             }
         }
@@ -1395,6 +1409,153 @@ namespace tribodyn
               add_sym(stress[j], (r_now[p] - q_i[p]) * S / V, n, t);
             }
         }
+      for (unsigned int k = 0; k < n_owned; ++k)
+        stress[k] = fabric_corrected(k, stress[k]);
+    }
+
+
+    Sym3
+    AutomatonSystem::fabric_corrected(const unsigned int k, const Sym3 &t) const
+    {
+      // sym(B^-1 T), B^-1 stored as xx yy zz yz xz xy
+      const Sym3 &b = fabric_inverse[k];
+      const double B[3][3] = {{b[0], b[5], b[4]}, {b[5], b[1], b[3]},
+                              {b[4], b[3], b[2]}};
+      const double T[3][3] = {{t[0], t[5], t[4]}, {t[5], t[1], t[3]},
+                              {t[4], t[3], t[2]}};
+      double P[3][3];
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          {
+            P[i][j] = 0;
+            for (unsigned int l = 0; l < 3; ++l)
+              P[i][j] += B[i][l] * T[l][j];
+          }
+      return {{P[0][0], P[1][1], P[2][2], 0.5 * (P[1][2] + P[2][1]),
+               0.5 * (P[0][2] + P[2][0]), 0.5 * (P[0][1] + P[1][0])}};
+    }
+
+
+    void
+    AutomatonSystem::update_neighbourhood_weights()
+    {
+      // Per owned automaton: A = sum_j N_j N_j^T (N_j = Voigt of n n with
+      // doubled shear entries) for the least-squares strain fit, and the
+      // fabric B = sum_j (q S / V) n n.
+      const unsigned int n_pairs = pi.size();
+      std::vector<std::array<double, 21>> A(n_owned);
+      std::vector<Sym3>                   B(n_owned, Sym3{{0, 0, 0, 0, 0, 0}});
+      std::vector<unsigned int>           count(n_owned, 0);
+      for (auto &a : A)
+        a.fill(0);
+      auto voigt = [](const Vec3 &n) {
+        return std::array<double, 6>{{n[0] * n[0], n[1] * n[1], n[2] * n[2],
+                                      2 * n[1] * n[2], 2 * n[0] * n[2],
+                                      2 * n[0] * n[1]}};
+      };
+      std::vector<Vec3> nvec(n_pairs);
+      for (unsigned int p = 0; p < n_pairs; ++p)
+        {
+          const Tensor<1, 3> dn = min_image(x[pi[p]], x[pj[p]]);
+          const double       r  = dn.norm();
+          nvec[p] = {{dn[0] / r, dn[1] / r, dn[2] / r}};
+          if (!bonded[p] && !in_contact[p])
+            continue;
+          const auto N = voigt(nvec[p]);
+          for (const unsigned int k : {pi[p], pj[p]})
+            if (k < n_owned)
+              {
+                unsigned int e = 0;
+                for (unsigned int a = 0; a < 6; ++a)
+                  for (unsigned int b = a; b < 6; ++b)
+                    A[k][e++] += N[a] * N[b];
+                const double q = k == pi[p] ? q_i[p] : r - q_i[p];
+                add_sym(B[k], q * S / V, nvec[p], nvec[p]);
+                ++count[k];
+              }
+        }
+      std::vector<std::array<double, 6>> g(n_owned);
+      std::vector<bool>                  full_rank(n_owned, false);
+      for (unsigned int k = 0; k < n_owned; ++k)
+        {
+          // solve A g = (1 1 1 0 0 0) by Gaussian elimination
+          double       M[6][7];
+          unsigned int e = 0;
+          for (unsigned int a = 0; a < 6; ++a)
+            for (unsigned int b = a; b < 6; ++b, ++e)
+              M[a][b] = M[b][a] = A[k][e];
+          double scale = 0;
+          for (unsigned int a = 0; a < 6; ++a)
+            {
+              M[a][6] = a < 3 ? 1 : 0;
+              scale   = std::max(scale, std::abs(M[a][a]));
+            }
+          bool ok = scale > 0;
+          for (unsigned int c = 0; c < 6 && ok; ++c)
+            {
+              unsigned int piv = c;
+              for (unsigned int r = c + 1; r < 6; ++r)
+                if (std::abs(M[r][c]) > std::abs(M[piv][c]))
+                  piv = r;
+              if (std::abs(M[piv][c]) < 1e-8 * scale)
+                {
+                  ok = false;
+                  break;
+                }
+              for (unsigned int l = 0; l < 7; ++l)
+                std::swap(M[c][l], M[piv][l]);
+              for (unsigned int r = 0; r < 6; ++r)
+                if (r != c)
+                  {
+                    const double fct = M[r][c] / M[c][c];
+                    for (unsigned int l = c; l < 7; ++l)
+                      M[r][l] -= fct * M[c][l];
+                  }
+            }
+          full_rank[k] = ok;
+          if (ok)
+            for (unsigned int a = 0; a < 6; ++a)
+              g[k][a] = M[a][6] / M[a][a];
+        }
+      beta_i.assign(n_pairs, 0);
+      beta_j.assign(n_pairs, 0);
+      for (unsigned int p = 0; p < n_pairs; ++p)
+        {
+          if (!bonded[p] && !in_contact[p])
+            continue;
+          const auto N = voigt(nvec[p]);
+          for (const int side : {0, 1})
+            {
+              const unsigned int k = side == 0 ? pi[p] : pj[p];
+              if (k >= n_owned)
+                continue;
+              double beta = 0;
+              if (full_rank[k])
+                for (unsigned int a = 0; a < 6; ++a)
+                  beta += g[k][a] * N[a];
+              else
+                beta = 3. / count[k];
+              (side == 0 ? beta_i : beta_j)[p] = beta;
+            }
+        }
+      // inverse fabric (identity if B is singular)
+      fabric_inverse.assign(n_local, Sym3{{1, 1, 1, 0, 0, 0}});
+      for (unsigned int k = 0; k < n_owned; ++k)
+        {
+          const Sym3  &b   = B[k];
+          const double det = b[0] * (b[1] * b[2] - b[3] * b[3]) -
+                             b[5] * (b[5] * b[2] - b[3] * b[4]) +
+                             b[4] * (b[5] * b[3] - b[1] * b[4]);
+          if (std::abs(det) < 1e-6)
+            continue;
+          fabric_inverse[k] = {{(b[1] * b[2] - b[3] * b[3]) / det,
+                                (b[0] * b[2] - b[4] * b[4]) / det,
+                                (b[0] * b[1] - b[5] * b[5]) / det,
+                                (b[4] * b[5] - b[0] * b[3]) / det,
+                                (b[5] * b[3] - b[1] * b[4]) / det,
+                                (b[4] * b[3] - b[5] * b[2]) / det}};
+        }
+      weights_stale = false;
     }
 
 

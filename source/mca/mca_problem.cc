@@ -196,8 +196,28 @@ namespace tribodyn
           MPI_Allreduce(MPI_IN_PLACE, s, 4, MPI_DOUBLE, MPI_SUM, comm);
           const double lateral_strain =
             (s[2] / std::max(s[3], 1.) - s[0] / std::max(s[1], 1.)) / width;
+          // interior stress: automata of the central part, one FCC cell
+          // away from the lateral faces
+          const unsigned int third = 3 - axis - lateral;
+          const auto        &st    = system.stresses();
+          double             in[2] = {0, 0};
+          for (unsigned int k = 0; k < system.n_owned_automata(); ++k)
+            {
+              const double ya = x[k][axis] - u[k][axis];
+              const double yl = x[k][lateral] - u[k][lateral];
+              const double yt = x[k][third] - u[k][third];
+              if (std::abs(ya - mid) > height / 4 ||
+                  yl < lower[lateral] + 2 * layer ||
+                  yl > upper[lateral] - 2 * layer ||
+                  yt < lower[third] + 2 * layer || yt > upper[third] - 2 * layer)
+                continue;
+              in[0] += -st[k][axis];
+              in[1] += 1;
+            }
+          MPI_Allreduce(MPI_IN_PLACE, in, 2, MPI_DOUBLE, MPI_SUM, comm);
           strains.push_back(strain);
-          stresses.push_back(stress);
+          stresses.push_back(in[1] > 0 ? in[0] / in[1] : stress);
+          nominal_stresses.push_back(stress);
           lateral_strains.push_back(lateral_strain);
         }
 
@@ -224,9 +244,18 @@ namespace tribodyn
                 {
                   ex.push_back(strains[k]);
                   sx.push_back(stresses[k]);
-                  lx.push_back(-lateral_strains[k]);
+                  lx.push_back(lateral_strains[k]);
                 }
             }
+          std::vector<double> nx, ns;
+          for (std::size_t k = 0; k < strains.size(); ++k)
+            if (nominal_stresses[k] > 0.05 * sy0 &&
+                nominal_stresses[k] < prm.analysis.elastic_fit_fraction * sy0)
+              {
+                nx.push_back(strains[k]);
+                ns.push_back(nominal_stresses[k]);
+              }
+          summary["youngs_modulus_nominal"] = fit_line(nx, ns).first;
           const auto   elastic = fit_line(ex, sx);
           const auto   nu_fit  = fit_line(ex, lx);
           const double E       = elastic.first;
@@ -234,7 +263,9 @@ namespace tribodyn
           summary["youngs_modulus"] = E;
           summary["poisson_ratio"]  = nu;
           summary["elastic_fit_points"] = static_cast<unsigned long>(ex.size());
-          out << "Uniaxial test: E = " << E / 1e9 << " GPa, nu = " << nu;
+          out << "Uniaxial test (stress of the interior automata, strain "
+                 "between the loading layers): E = "
+              << E / 1e9 << " GPa, nu = " << nu;
           // hardening branch: the last 40 % of the strain range, if plastic
           std::vector<double> ep, sp;
           for (std::size_t k = 0; k < strains.size(); ++k)
@@ -264,13 +295,16 @@ namespace tribodyn
             }
           else
             summary["yield_stress"] = JsonValue();
-          out << std::endl;
+          out << "\n  nominal E (reaction / nominal cross-section, lower by "
+                 "the surface layer) = "
+              << fit_line(nx, ns).first / 1e9 << " GPa" << std::endl;
           summary["max_strain"] = max_strain;
           summary["cross_section_area"] = area;
           summary["gauge_length"] = length;
         }
 
-        std::vector<double> strains, stresses, lateral_strains;
+        std::vector<double> strains, stresses, nominal_stresses,
+          lateral_strains;
 
       private:
         const AutomatonSystem &system;

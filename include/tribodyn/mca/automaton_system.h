@@ -314,6 +314,13 @@ namespace tribodyn
       pair_kernel(const double step);
       void
       apply_boundary_forces(const double t);
+      /// Least-squares weights beta of the volumetric strain and inverse
+      /// fabric tensors of the owned automata (after rebuilds and changes
+      /// of the neighbourhoods).
+      void
+      update_neighbourhood_weights();
+      Sym3
+      fabric_corrected(const unsigned int k, const Sym3 &t) const;
       void
       apply_kinematic_constraints(const double t);
       double
@@ -375,7 +382,9 @@ namespace tribodyn
       std::vector<unsigned char> bonded, owned_i, owned_j;
       std::vector<double>        q_i, sig_i, sig_j, heat, r_now;
       std::vector<Vec3>          tau_i, tau_j, normal;
-      std::vector<double>        deps_i, deps_j;
+      std::vector<double>        deps_i, deps_j, beta_i, beta_j;
+      std::vector<Sym3>          fabric_inverse;
+      bool                       weights_stale = true;
       std::vector<unsigned char> in_contact;
 
       double plastic_work = 0, friction_work = 0;
