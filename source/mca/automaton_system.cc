@@ -7,6 +7,8 @@
 #include <tribodyn/mca/automaton_system.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <iostream>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -266,30 +268,46 @@ namespace tribodyn
       const auto  &g      = prm.geometry;
       const double h_min  = d * (1 + prm.interaction.skin);
       std::array<double, 3> L;
-      double       total  = 1;
       for (unsigned int c = 0; c < 3; ++c)
-        {
-          L[c] = g.domain_upper[c] - g.domain_lower[c];
-          total *= std::max(1., std::floor(L[c] / h_min));
-        }
-      // Few coarse cells (p4est trees), refined globally to the cell size.
+        L[c] = g.domain_upper[c] - g.domain_lower[c];
+      // Coarse mesh: one cell across x and y and slabs along z (p4est
+      // trees), refined globally `level` times to cells of at least the
+      // interaction range h_min (and not too many: about 40 000 at most).
+      // Under MPI each rank owns whole trees (see below), i.e. slabs along
+      // z spanning the periodic directions x and y.
+      const double h_target =
+        std::max(h_min, std::cbrt(L[0] * L[1] * L[2] / 40000.));
+      for (unsigned int c = 0; c < 3; ++c)
+        if (periodic[c] && L[c] < 2 * h_min * 1.0000001)
+          throw InputError(
+            std::string("The periodic length in ") + "xyz"[c] + " (" +
+            format_number(L[c]) +
+            " m) must exceed twice the interaction range (automaton size "
+            "times 1 + Interaction/Skin = " +
+            format_number(h_min) + " m).");
       unsigned int level = 0;
-      while (level < 5 && total / std::pow(8., level) > 4096)
+      while (std::min(L[0], L[1]) / std::pow(2., level + 1) >= h_target &&
+             L[2] / std::pow(2., level + 1) >= h_target * 2 &&
+             level < 10)
         ++level;
-      std::vector<unsigned int> repetitions(3);
-      for (unsigned int c = 0; c < 3; ++c)
-        {
-          repetitions[c] = std::max(
-            1u,
-            static_cast<unsigned int>(std::floor(L[c] / (h_min * (1 << level)))));
-          if (periodic[c] && L[c] < 2 * h_min * 1.0000001)
-            throw InputError(
-              std::string("The periodic length in ") + "xyz"[c] + " (" +
-              format_number(L[c]) +
-              " m) must exceed twice the interaction range (automaton size "
-              "times 1 + Interaction/Skin = " +
-              format_number(h_min) + " m).");
-        }
+      const double scale = std::pow(2., level);
+      std::vector<unsigned int> repetitions = {
+        1, 1,
+        std::max(1u, static_cast<unsigned int>(
+                       std::floor(L[2] / (h_target * scale))))};
+      if (n_ranks > 1 && periodic[2])
+        throw InputError(
+          "Parameter 'Geometry/Periodic z': periodicity in z is not "
+          "supported on several MPI ranks (the ranks own slabs along z, and "
+          "deal.II 9.4's particle ghost exchange does not follow periodic "
+          "faces). Run on one rank or make z non-periodic.");
+      if (n_ranks > repetitions[2])
+        throw InputError(
+          "The MCA domain is split into slabs along z, at least one per MPI "
+          "rank; this domain (height " + format_number(L[2]) +
+          " m) has " + std::to_string(repetitions[2]) + " slab(s) for " +
+          std::to_string(n_ranks) + " ranks. Use fewer ranks or a taller "
+          "domain.");
       dealii::GridGenerator::subdivided_hyper_rectangle(
         tria, repetitions, g.domain_lower, g.domain_upper, true);
       std::vector<dealii::GridTools::PeriodicFacePair<
@@ -303,6 +321,37 @@ namespace tribodyn
         tria.add_periodicity(faces);
       if (level > 0)
         tria.refine_global(level);
+      if (n_ranks > 1)
+        {
+          // The first cell (in p4est's Morton order: the lowest corner) of
+          // each tree carries nearly all the weight, so the partition cuts
+          // fall at tree boundaries: every rank owns whole slabs. Periodic
+          // neighbours in x and y are then also vertex neighbours of cells
+          // of the same slab, as deal.II 9.4's (vertex based, periodicity
+          // unaware) ghost exchange needs, and automata wrapped across a
+          // periodic face stay on their rank.
+          const double n_per_tree = std::pow(8., level);
+          const unsigned int tree_weight = static_cast<unsigned int>(
+            std::min(4.0e9 / repetitions[2], 20000. * n_per_tree + 1));
+          const double hx = L[0] / scale, hy = L[1] / scale,
+                       hz = L[2] / (repetitions[2] * scale);
+          const auto connection = tria.signals.weight.connect(
+            [&](const dealii::parallel::distributed::Triangulation<
+                  3>::cell_iterator &cell,
+                const dealii::parallel::distributed::Triangulation<
+                  3>::CellStatus) -> unsigned int {
+              const Point3 c  = cell->center();
+              const long   iz = static_cast<long>(
+                std::floor((c[2] - g.domain_lower[2]) / hz));
+              return (c[0] < g.domain_lower[0] + hx &&
+                      c[1] < g.domain_lower[1] + hy &&
+                      iz % static_cast<long>(scale) == 0) ?
+                       tree_weight :
+                       1u;
+            });
+          tria.repartition();
+          connection.disconnect();
+        }
     }
 
 
@@ -514,8 +563,8 @@ namespace tribodyn
     AutomatonSystem::read_state_from_particles(const bool initial)
     {
       n_owned = particles->n_locally_owned_particles();
-      const unsigned int n_ghost =
-        std::distance(particles->begin_ghost(), particles->end_ghost());
+      const unsigned int width   = 4 + n_automaton_properties;
+      const unsigned int n_ghost = ghost_records.size() / width;
       n_local = n_owned + n_ghost;
       id.resize(n_local);
       x.resize(n_local);
@@ -534,10 +583,12 @@ namespace tribodyn
       std::vector<unsigned int>  ghost_owner(n_ghost);
       std::vector<std::uint64_t> ghost_ids(n_ghost), owned_ids(n_owned);
 
-      auto read = [&](const auto &it, const unsigned int k) {
-        id[k] = it->get_id();
-        x[k]  = it->get_location();
-        const auto props = it->get_properties();
+      auto read = [&](const std::uint64_t  the_id,
+                      const Point3 &       location,
+                      const double *       props,
+                      const unsigned int   k) {
+        id[k] = the_id;
+        x[k]  = location;
         for (unsigned int c = 0; c < 3; ++c)
           {
             v[k][c]      = props[prop::v + c];
@@ -559,19 +610,101 @@ namespace tribodyn
       unsigned int k = 0;
       for (auto it = particles->begin(); it != particles->end(); ++it, ++k)
         {
-          read(it, k);
+          read(it->get_id(), it->get_location(),
+               it->get_properties().data(), k);
           owned_ids[k] = id[k];
         }
-      for (auto it = particles->begin_ghost(); it != particles->end_ghost();
-           ++it, ++k)
+      for (unsigned int g = 0; g < n_ghost; ++g, ++k)
         {
-          read(it, k);
-          ghost_ids[k - n_owned]   = id[k];
-          ghost_owner[k - n_owned] = it->get_surrounding_cell()->subdomain_id();
+          const double *r = ghost_records.data() +
+                            static_cast<std::size_t>(g) * width;
+          read(static_cast<std::uint64_t>(r[0]), Point3(r[1], r[2], r[3]),
+               r + 4, k);
+          ghost_ids[g]   = id[k];
+          ghost_owner[g] = ghost_record_owner[g];
+        }
+      if (std::getenv("TRIBODYN_MCA_DEBUG"))
+        {
+          double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+          for (unsigned int k = 0; k < n_owned; ++k)
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                lo[c] = std::min(lo[c], x[k][c]);
+                hi[c] = std::max(hi[c], x[k][c]);
+              }
+          std::cout << "rank " << rank << " owned " << n_owned << " ghosts "
+                    << n_local - n_owned << " box " << lo[0] << " " << lo[1]
+                    << " " << lo[2] << " .. " << hi[0] << " " << hi[1] << " "
+                    << hi[2] << " cells " << tria.n_locally_owned_active_cells()
+                    << std::endl;
         }
       x_at_rebuild = x;
       ghosts.setup(comm, ghost_owner, ghost_ids, owned_ids, n_owned);
       (void)initial;
+    }
+
+
+    void
+    AutomatonSystem::exchange_ghosts()
+    {
+      // deal.II 9.4's exchange_ghost_particles() does not follow periodic
+      // faces; the ranks own slabs along z (see make_background_mesh()), so
+      // the ghosts of a rank are the automata of the other slabs within the
+      // interaction range of its slab: sent here with all their properties.
+      const double range = d * (1 + prm.interaction.skin);
+      double       bounds[2] = {std::numeric_limits<double>::max(),
+                          -std::numeric_limits<double>::max()};
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            bounds[0] = std::min(bounds[0], cell->vertex(0)[2]);
+            bounds[1] = std::max(bounds[1], cell->vertex(7)[2]);
+          }
+      std::vector<double> all(2 * n_ranks);
+      MPI_Allgather(bounds, 2, MPI_DOUBLE, all.data(), 2, MPI_DOUBLE, comm);
+      const unsigned int width = 4 + n_automaton_properties;
+      std::vector<std::vector<double>> out(n_ranks);
+      for (auto it = particles->begin(); it != particles->end(); ++it)
+        {
+          const Point3 p = it->get_location();
+          for (unsigned int r = 0; r < n_ranks; ++r)
+            {
+              if (r == rank)
+                continue;
+              const double gap =
+                std::max({0., all[2 * r] - p[2], p[2] - all[2 * r + 1]});
+              if (gap >= range)
+                continue;
+              auto &buf = out[r];
+              buf.push_back(static_cast<double>(it->get_id()));
+              for (unsigned int c = 0; c < 3; ++c)
+                buf.push_back(p[c]);
+              const auto props = it->get_properties();
+              buf.insert(buf.end(), props.begin(), props.end());
+            }
+        }
+      std::vector<int> send_count(n_ranks), recv_count(n_ranks);
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        send_count[r] = out[r].size();
+      MPI_Alltoall(send_count.data(), 1, MPI_INT, recv_count.data(), 1,
+                   MPI_INT, comm);
+      std::vector<int> sd(n_ranks + 1, 0), rd(n_ranks + 1, 0);
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        {
+          sd[r + 1] = sd[r] + send_count[r];
+          rd[r + 1] = rd[r] + recv_count[r];
+        }
+      std::vector<double> flat(sd[n_ranks]);
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        std::copy(out[r].begin(), out[r].end(), flat.begin() + sd[r]);
+      ghost_records.resize(rd[n_ranks]);
+      MPI_Alltoallv(flat.data(), send_count.data(), sd.data(), MPI_DOUBLE,
+                    ghost_records.data(), recv_count.data(), rd.data(),
+                    MPI_DOUBLE, comm);
+      ghost_record_owner.clear();
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        for (int k = rd[r]; k < rd[r + 1]; k += width)
+          ghost_record_owner.push_back(r);
     }
 
 
@@ -591,16 +724,31 @@ namespace tribodyn
             for (unsigned int p = 0; p < pi.size(); ++p)
               old_index[pair_key(id[pi[p]], id[pj[p]])] = p;
           write_state_to_particles();
+          std::string lost;
+          auto        connection = particles->signals.particle_lost.connect(
+            [&](const auto &particle, const auto &) {
+              if (lost.size() < 400)
+                {
+                  std::ostringstream s;
+                  s << " (" << particle->get_location() << ")";
+                  for (unsigned int k = 0; k < n_owned; ++k)
+                    if (id[k] == particle->get_id())
+                      s << " [id " << id[k] << " x " << x[k] << " at rebuild " << x_at_rebuild[k] << "]";
+                  lost += s.str();
+                }
+            });
           particles->sort_particles_into_subdomains_and_cells();
+          connection.disconnect();
           if (particles->n_global_particles() != n_global)
             throw RunError(
               std::to_string(n_global - particles->n_global_particles()) +
               " automata left the simulation box (Geometry/Domain lower and "
-              "upper) through a non-periodic side. Enlarge the box to leave "
-              "room for the motion.");
+              "upper) through a non-periodic side" +
+              (lost.empty() ? std::string() : ", e.g. at" + lost) +
+              ". Enlarge the box to leave room for the motion.");
         }
       if (n_ranks > 1)
-        particles->exchange_ghost_particles();
+        exchange_ghosts();
       read_state_from_particles(initial);
 
       // Slots of every local automaton (owned and ghost) under MPI.
@@ -618,9 +766,13 @@ namespace tribodyn
           };
           for (auto it = particles->begin(); it != particles->end(); ++it)
             copy(it);
-          for (auto it = particles->begin_ghost(); it != particles->end_ghost();
-               ++it)
-            copy(it);
+          const unsigned int width = 4 + n_automaton_properties;
+          for (std::size_t g = 0; g < ghost_records.size() / width; ++g)
+            std::copy(ghost_records.begin() + g * width + 4 +
+                        prop::n_automaton,
+                      ghost_records.begin() + (g + 1) * width,
+                      slots.begin() + static_cast<std::size_t>(n_owned + g) *
+                                        n_slot_fields);
         }
 
       build_pair_list(initial);
@@ -901,6 +1053,28 @@ namespace tribodyn
                     f_tot[k][c] -= values[gi][c] * mass[k] * v[k][c];
               }
         }
+      // A force group is a rigid loading plate: its automata share the
+      // acceleration of the group's total force over its total mass.
+      for (unsigned int gi = 0; gi < grp.size(); ++gi)
+        {
+          if (grp[gi].type != BoundaryGroup::Type::force)
+            continue;
+          double sums[4] = {0, 0, 0, 0};
+          for (unsigned int k = 0; k < n_owned; ++k)
+            if (groups[k] & (1u << gi))
+              {
+                for (unsigned int c = 0; c < 3; ++c)
+                  sums[c] += f_tot[k][c];
+                sums[3] += mass[k];
+              }
+          MPI_Allreduce(MPI_IN_PLACE, sums, 4, MPI_DOUBLE, MPI_SUM, comm);
+          if (sums[3] == 0)
+            continue;
+          for (unsigned int k = 0; k < n_owned; ++k)
+            if (groups[k] & (1u << gi))
+              for (unsigned int c = 0; c < 3; ++c)
+                f_tot[k][c] = mass[k] * sums[c] / sums[3];
+        }
     }
 
 
@@ -988,6 +1162,11 @@ namespace tribodyn
                 w[k][c]  = kin[9 * k + 6 + c];
               }
         }
+      // Neighbourhoods changed (contacts, bonds): recompute the weights on
+      // every rank at the same step (results independent of the partition).
+      if (n_ranks > 1)
+        weights_stale =
+          dealii::Utilities::MPI::max(weights_stale ? 1 : 0, comm) > 0;
       if (weights_stale)
         update_neighbourhood_weights();
       const bool rot = rotations;
@@ -1497,7 +1676,7 @@ namespace tribodyn
               for (unsigned int r = c + 1; r < 6; ++r)
                 if (std::abs(M[r][c]) > std::abs(M[piv][c]))
                   piv = r;
-              if (std::abs(M[piv][c]) < 1e-8 * scale)
+              if (std::abs(M[piv][c]) < 1e-3 * scale)
                 {
                   ok = false;
                   break;
@@ -1512,10 +1691,15 @@ namespace tribodyn
                       M[r][l] -= fct * M[c][l];
                   }
             }
-          full_rank[k] = ok;
           if (ok)
             for (unsigned int a = 0; a < 6; ++a)
-              g[k][a] = M[a][6] / M[a][a];
+              {
+                g[k][a] = M[a][6] / M[a][a];
+                // well-conditioned neighbourhoods only (bulk: |g| ~ 1)
+                if (!(std::abs(g[k][a]) < 8))
+                  ok = false;
+              }
+          full_rank[k] = ok;
         }
       beta_i.assign(n_pairs, 0);
       beta_j.assign(n_pairs, 0);

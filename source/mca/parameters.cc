@@ -611,8 +611,8 @@ namespace tribodyn
           "Automata whose centre lies in the box belong to the group (an "
           "automaton may belong to several). TYPE: fixed (velocity zero), "
           "velocity (prescribed velocity components v, '*' leaves one "
-          "free), force (total force v on the group, shared equally), "
-          "damping (F = -v_k m u_k per component, coefficients in 1/s). "
+          "free), force (total force v on the group; the group moves as a "
+          "rigid loading plate under it and its reaction), damping (F = -v_k m u_k per component, coefficients in 1/s). "
           "'then T w' switches to the value w at time T (ramped smoothly "
           "over the ramp time).");
         prm.declare_entry("Ramp time", "0", Double(),

@@ -303,6 +303,12 @@ namespace tribodyn
       write_state_to_particles();
       void
       read_state_from_particles(const bool initial);
+      /// MPI: receive the automata of other ranks within the interaction
+      /// range of this rank's slab as ghosts (ghost_records).
+      void
+      exchange_ghosts();
+      std::vector<double>       ghost_records;
+      std::vector<unsigned int> ghost_record_owner;
       void
       build_pair_list(const bool initial);
 
