@@ -140,6 +140,16 @@ namespace tribodyn
     }
 
 
+    double
+    ContactSolver::heterogeneity_area_fraction() const
+    {
+      double n1 = 0;
+      for (const unsigned char m : cell_material)
+        n1 += (m == 1);
+      return Utilities::MPI::sum(n1, comm) / triangulation.n_global_active_cells();
+    }
+
+
     void
     ContactSolver::setup()
     {

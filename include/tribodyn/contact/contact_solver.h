@@ -157,6 +157,10 @@ namespace tribodyn
       {
         return mass_total;
       }
+      /// Area fraction of the cells with material index 1 (meso pins:
+      /// the heterogeneities), over all ranks.
+      double
+      heterogeneity_area_fraction() const;
       std::string
       material_description() const
       {
