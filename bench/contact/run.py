@@ -4,10 +4,11 @@
     python3 bench/contact/run.py throughput  --tribodyn build/tribodyn [--ranks 1,2]
     python3 bench/contact/run.py convergence --tribodyn build/tribodyn [--ranks 1]
 
-throughput: DoF-steps per second (per rank) of the small-strain pin (matrix
-  material, regularized friction, P = 0.5 MPa, default sample interval 20,
-  no field output) at h = 0.1 mm (45 522 DoFs) and h = 0.02 mm (1 123 602
-  DoFs), from summary.json (time loop only, setup excluded).
+throughput: DoF-steps per second (per rank) of the pin (matrix material,
+  regularized friction, P = 0.5 MPa, default sample interval 20, no field
+  output): small strain at h = 0.1 mm (45 522 DoFs) and h = 0.02 mm
+  (1 123 602 DoFs), large deformation at h = 0.1 mm; from summary.json (time
+  loop only, setup excluded).
 convergence: run time against error for the elastic bar hitting the rigid
   plane (tests/contact/bar_impact.cc set-up: nu = 0, 1 mm x 8 mm, v0 = 1
   m/s, frictionless, no damping) as h and dt are refined. Errors of the
@@ -51,13 +52,19 @@ def run(tribodyn, ranks, name, text):
 
 
 def throughput(args):
-    print("| h (mm) | DoFs | ranks | steps | time loop (s) | DoF-steps/s | per rank |")
-    print("|---|---|---|---|---|---|---|")
-    for h, dt, end in [(0.1e-3, 5e-9, 50e-6), (0.02e-3, 2e-9, 2e-6)]:
+    print("| kinematics | h (mm) | DoFs | ranks | steps | time loop (s) | DoF-steps/s | per rank |")
+    print("|---|---|---|---|---|---|---|---|")
+    for kinematics, h, dt, end in [("small strain", 0.1e-3, 5e-9, 50e-6),
+                                   ("small strain", 0.02e-3, 2e-9, 2e-6),
+                                   ("large deformation", 0.1e-3, 5e-9, 20e-6)]:
         for ranks in [int(r) for r in args.ranks.split(",")]:
-            s, _, _ = run(args.tribodyn, ranks, "throughput_h%g_np%d" % (h, ranks), """
+            s, _, _ = run(args.tribodyn, ranks, "throughput_%s_h%g_np%d" % (
+                kinematics.replace(" ", "_"), h, ranks), """
 subsection Geometry
   set Mesh size = %g
+end
+subsection Material
+  set Kinematics = %s
 end
 subsection Time integration
   set Time step = %g
@@ -66,9 +73,9 @@ end
 subsection Output
   set Averaging start time = 0
   set Field interval = 0
-end""" % (h, dt, end))
-            print("| %g | %d | %d | %d | %.2f | %.3g | %.3g |" % (
-                h * 1e3, s["n_dofs"], ranks, s["n_steps"], s["time_loop_s"],
+end""" % (h, kinematics, dt, end))
+            print("| %s | %g | %d | %d | %d | %.2f | %.3g | %.3g |" % (
+                kinematics, h * 1e3, s["n_dofs"], ranks, s["n_steps"], s["time_loop_s"],
                 s["dof_steps_per_second"], s["dof_steps_per_second_per_rank"]))
             sys.stdout.flush()
 
