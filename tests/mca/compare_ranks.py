@@ -1,0 +1,29 @@
+"""2 ranks equal 1 rank (prm friction_small.prm: periodic x and y,
+contacts, plasticity, bond breaking and formation, pair-list rebuilds with
+automata crossing periodic faces and rank boundaries). Every number of
+series.csv must agree to 1e-9 relative to its column's largest magnitude
+(the pair loop runs in the same id order on any partition, so the runs
+agree to round-off of the MPI reductions)."""
+import csv
+import os
+import sys
+
+build = os.path.dirname(sys.argv[1])
+rows = []
+for test in ["mca_ranks_1", "mca_ranks_2"]:
+    with open(os.path.join(build, test, "output-mca-friction-small", "series.csv")) as f:
+        rows.append(list(csv.reader(f)))
+a, b = rows
+ok = len(a) == len(b) and len(a) > 5 and a[0] == b[0]
+print(("PASS  " if ok else "FAIL  ") + "same rows and columns (%d, %d)" % (len(a), len(b)))
+worst = 0
+for c in range(len(a[0])):
+    col_a = [float(r[c]) for r in a[1:]]
+    col_b = [float(r[c]) for r in b[1:]]
+    scale = max(max(abs(x) for x in col_a), 1e-300)
+    d = max(abs(x - y) for x, y in zip(col_a, col_b)) / scale
+    if d > worst:
+        worst, name = d, a[0][c]
+good = worst <= 1e-9
+print(("PASS  " if good else "FAIL  ") + "largest relative difference %.3g (tolerance 1e-9)" % worst)
+sys.exit(0 if ok and good else 1)
