@@ -299,7 +299,16 @@ namespace tribodyn
           grad_center[ci.second] = fe_center.shape_grad_component(i, 0, ci.first);
         }
       for (unsigned int q = 0; q < 4; ++q)
-        JxW[q] = fe_values.JxW(q);
+        {
+          JxW[q] = fe_values.JxW(q);
+          for (unsigned int i = 0; i < 8; ++i)
+            {
+              grad_x[q][i]   = grad_q[q][dof_node[i]][0];
+              grad_y[q][i]   = grad_q[q][dof_node[i]][1];
+              grad_x_w[q][i] = grad_x[q][i] * JxW[q];
+              grad_y_w[q][i] = grad_y[q][i] * JxW[q];
+            }
+        }
 
       // Element stiffness K_e = sum_q B^T C B JxW per material.
       element_stiffness.assign(stiffness.size(), {});
@@ -578,18 +587,24 @@ namespace tribodyn
     void
     ContactSolver::internal_forces_large_deformation()
     {
-      const double *    uv = u.begin();
-      const double *    pv = p.begin();
-      double *          rv = r.begin();
-      const double      beta = prm.time.damping;
+      const double *    uv      = u.begin();
+      const double *    pv      = p.begin();
+      double *          rv      = r.begin();
+      const double      beta    = prm.time.damping;
       const std::size_t n_cells = cell_material.size();
+      // Component of each local dof as a 0/1 mask (no branches below).
+      double is_y[8];
+      for (unsigned int i = 0; i < 8; ++i)
+        is_y[i] = dof_component[i];
       for (std::size_t c = 0; c < n_cells; ++c)
         {
-          const unsigned int *  idx = &cell_dofs[8 * c];
-          const unsigned int    mat = cell_material[c];
-          const VoigtStiffness &C   = stiffness[mat];
-          const double *        K   = element_stiffness[mat].data();
-          double                ue[8], pe[8], fe_[8] = {};
+          const unsigned int *idx = &cell_dofs[8 * c];
+          const unsigned int  mat = cell_material[c];
+          const double        C00 = stiffness[mat][0][0], C01 = stiffness[mat][0][1],
+                       C02 = stiffness[mat][0][2], C11 = stiffness[mat][1][1],
+                       C12 = stiffness[mat][1][2], C22 = stiffness[mat][2][2];
+          const double *K = element_stiffness[mat].data();
+          double        ue[8], pe[8], fe_[8] = {};
           for (unsigned int j = 0; j < 8; ++j)
             {
               ue[j] = uv[idx[j]];
@@ -597,34 +612,32 @@ namespace tribodyn
             }
           for (unsigned int q = 0; q < 4; ++q)
             {
-              double H[2][2] = {{0, 0}, {0, 0}};
+              // Displacement gradient H[c][d] = sum_i u_i delta(c_i, c) dN/dx_d.
+              double Hx0 = 0, Hx1 = 0, Hy0 = 0, Hy1 = 0;
               for (unsigned int i = 0; i < 8; ++i)
                 {
-                  const Tensor<1, 2> &g = grad_q[q][dof_node[i]];
-                  H[dof_component[i]][0] += ue[i] * g[0];
-                  H[dof_component[i]][1] += ue[i] * g[1];
+                  const double ux = ue[i] * (1. - is_y[i]), uy = ue[i] * is_y[i];
+                  Hx0 += ux * grad_x[q][i];
+                  Hx1 += ux * grad_y[q][i];
+                  Hy0 += uy * grad_x[q][i];
+                  Hy1 += uy * grad_y[q][i];
                 }
-              const double F[2][2] = {{1 + H[0][0], H[0][1]},
-                                      {H[1][0], 1 + H[1][1]}};
-              // Green-Lagrange strain E = (F^T F - I)/2, Voigt with 2 E_xy.
-              const double E00 =
-                0.5 * (F[0][0] * F[0][0] + F[1][0] * F[1][0] - 1.);
-              const double E11 =
-                0.5 * (F[0][1] * F[0][1] + F[1][1] * F[1][1] - 1.);
-              const double G01 = F[0][0] * F[0][1] + F[1][0] * F[1][1];
-              double       S[3];
-              for (unsigned int k = 0; k < 3; ++k)
-                S[k] = C[k][0] * E00 + C[k][1] * E11 + C[k][2] * G01;
+              const double F00 = 1 + Hx0, F01 = Hx1, F10 = Hy0, F11 = 1 + Hy1;
+              // Green-Lagrange strain (Voigt, 2 E_xy) and S = C E.
+              const double E00 = 0.5 * (F00 * F00 + F10 * F10 - 1.);
+              const double E11 = 0.5 * (F01 * F01 + F11 * F11 - 1.);
+              const double G01 = F00 * F01 + F10 * F11;
+              const double S0  = C00 * E00 + C01 * E11 + C02 * G01;
+              const double S1  = C01 * E00 + C11 * E11 + C12 * G01;
+              const double S2  = C02 * E00 + C12 * E11 + C22 * G01;
               // First Piola-Kirchhoff P = F S.
-              const double P[2][2] = {
-                {F[0][0] * S[0] + F[0][1] * S[2], F[0][0] * S[2] + F[0][1] * S[1]},
-                {F[1][0] * S[0] + F[1][1] * S[2],
-                 F[1][0] * S[2] + F[1][1] * S[1]}};
+              const double P00 = F00 * S0 + F01 * S2, P01 = F00 * S2 + F01 * S1;
+              const double P10 = F10 * S0 + F11 * S2, P11 = F10 * S2 + F11 * S1;
               for (unsigned int i = 0; i < 8; ++i)
                 {
-                  const Tensor<1, 2> &g = grad_q[q][dof_node[i]];
-                  const unsigned int  ci = dof_component[i];
-                  fe_[i] += (P[ci][0] * g[0] + P[ci][1] * g[1]) * JxW[q];
+                  const double fx = P00 * grad_x_w[q][i] + P01 * grad_y_w[q][i];
+                  const double fy = P10 * grad_x_w[q][i] + P11 * grad_y_w[q][i];
+                  fe_[i] += fx + is_y[i] * (fy - fx);
                 }
             }
           for (unsigned int i = 0; i < 8; ++i)

@@ -250,6 +250,9 @@ namespace tribodyn
       std::array<std::array<dealii::Tensor<1, 2>, 4>, 4> grad_q;
       std::array<dealii::Tensor<1, 2>, 4>             grad_center;
       std::array<double, 4>                           JxW;
+      // The same gradients per local dof and Gauss point as plain arrays,
+      // pre-multiplied by JxW for the force (large-deformation loop).
+      double grad_x[4][8], grad_y[4][8], grad_x_w[4][8], grad_y_w[4][8];
       double cell_hx = 0, cell_hy = 0;
       bool   single_material = true;
 
