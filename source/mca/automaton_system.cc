@@ -7,8 +7,6 @@
 #include <tribodyn/mca/automaton_system.h>
 
 #include <algorithm>
-#include <cstdlib>
-#include <iostream>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -622,21 +620,6 @@ namespace tribodyn
                r + 4, k);
           ghost_ids[g]   = id[k];
           ghost_owner[g] = ghost_record_owner[g];
-        }
-      if (std::getenv("TRIBODYN_MCA_DEBUG"))
-        {
-          double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-          for (unsigned int k = 0; k < n_owned; ++k)
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                lo[c] = std::min(lo[c], x[k][c]);
-                hi[c] = std::max(hi[c], x[k][c]);
-              }
-          std::cout << "rank " << rank << " owned " << n_owned << " ghosts "
-                    << n_local - n_owned << " box " << lo[0] << " " << lo[1]
-                    << " " << lo[2] << " .. " << hi[0] << " " << hi[1] << " "
-                    << hi[2] << " cells " << tria.n_locally_owned_active_cells()
-                    << std::endl;
         }
       x_at_rebuild = x;
       ghosts.setup(comm, ghost_owner, ghost_ids, owned_ids, n_owned);
