@@ -1686,6 +1686,7 @@ namespace tribodyn
         }
       beta_i.assign(n_pairs, 0);
       beta_j.assign(n_pairs, 0);
+      std::vector<double> beta_sum(n_owned, 0.);
       for (unsigned int p = 0; p < n_pairs; ++p)
         {
           if (!bonded[p] && !in_contact[p])
@@ -1703,7 +1704,19 @@ namespace tribodyn
               else
                 beta = 3. / count[k];
               (side == 0 ? beta_i : beta_j)[p] = beta;
+              beta_sum[k] += std::abs(beta);
             }
+        }
+      // Bound the many-body stiffness by its bulk value (sum of |beta| = 3
+      // in a complete FCC neighbourhood): sparse, nearly degenerate
+      // neighbourhoods (e.g. around broken bonds) could otherwise make an
+      // automaton far stiffer than the bulk and the explicit step unstable.
+      for (unsigned int p = 0; p < n_pairs; ++p)
+        {
+          if (pi[p] < n_owned && beta_sum[pi[p]] > 3)
+            beta_i[p] *= 3 / beta_sum[pi[p]];
+          if (pj[p] < n_owned && beta_sum[pj[p]] > 3)
+            beta_j[p] *= 3 / beta_sum[pj[p]];
         }
       // inverse fabric (identity if B is singular)
       fabric_inverse.assign(n_local, Sym3{{1, 1, 1, 0, 0, 0}});
@@ -1713,7 +1726,11 @@ namespace tribodyn
           const double det = b[0] * (b[1] * b[2] - b[3] * b[3]) -
                              b[5] * (b[5] * b[2] - b[3] * b[4]) +
                              b[4] * (b[5] * b[3] - b[1] * b[4]);
-          if (std::abs(det) < 1e-6)
+          // well-conditioned fabrics only (complete FCC: B = I); otherwise
+          // keep eq. (4) as is: B^-1 of a nearly planar neighbourhood would
+          // blow the stress (and the radial return's mean stress) up
+          const double tr3 = (b[0] + b[1] + b[2]) / 3;
+          if (!(det > 0.1 * tr3 * tr3 * tr3))
             continue;
           fabric_inverse[k] = {{(b[1] * b[2] - b[3] * b[3]) / det,
                                 (b[0] * b[2] - b[4] * b[4]) / det,
