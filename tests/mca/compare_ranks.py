@@ -1,4 +1,5 @@
-"""2 ranks equal 1 rank (prm friction_small.prm: periodic x and y,
+"""2 ranks equal 1 rank (friction_small.prm, or the tests and output folder
+given as arguments 2-4, e.g. friction_carbon_small.prm: periodic x and y,
 contacts, plasticity, bond breaking and formation, pair-list rebuilds with
 automata crossing periodic faces and rank boundaries). Every number of
 series.csv must agree to 1e-9 relative to its column's largest magnitude
@@ -9,9 +10,11 @@ import os
 import sys
 
 build = os.path.dirname(sys.argv[1])
+tests = sys.argv[2:4] if len(sys.argv) > 4 else ["mca_ranks_1", "mca_ranks_2"]
+folder = sys.argv[4] if len(sys.argv) > 4 else "output-mca-friction-small"
 rows = []
-for test in ["mca_ranks_1", "mca_ranks_2"]:
-    with open(os.path.join(build, test, "output-mca-friction-small", "series.csv")) as f:
+for test in tests:
+    with open(os.path.join(build, test, folder, "series.csv")) as f:
         rows.append(list(csv.reader(f)))
 a, b = rows
 ok = len(a) == len(b) and len(a) > 5 and a[0] == b[0]
