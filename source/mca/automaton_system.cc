@@ -1070,7 +1070,13 @@ namespace tribodyn
         for (unsigned int k = 0; k < n_owned; ++k)
           max_disp2 = std::max(max_disp2, x[k].distance_square(x_at_rebuild[k]));
         const double limit = 0.5 * prm.interaction.skin * d;
-        if (dealii::Utilities::MPI::max(max_disp2, comm) > limit * limit)
+        // one all-reduction for the rebuild test and the neighbourhood
+        // flag of the last step
+        double flags[2] = {max_disp2, weights_stale ? 1. : 0.};
+        if (n_ranks > 1)
+          MPI_Allreduce(MPI_IN_PLACE, flags, 2, MPI_DOUBLE, MPI_MAX, comm);
+        weights_stale = flags[1] > 0;
+        if (flags[0] > limit * limit)
           rebuild(false);
       }
       const double t = current_time;
@@ -1124,7 +1130,6 @@ namespace tribodyn
     void
     AutomatonSystem::evaluate_pairs(const double step_dt, const bool integrate)
     {
-      (void)integrate;
       // Ghost kinematics: x, dx, w.
       if (ghosts.active())
         {
@@ -1147,7 +1152,7 @@ namespace tribodyn
         }
       // Neighbourhoods changed (contacts, bonds): recompute the weights on
       // every rank at the same step (results independent of the partition).
-      if (n_ranks > 1)
+      if (n_ranks > 1 && !integrate)
         weights_stale =
           dealii::Utilities::MPI::max(weights_stale ? 1 : 0, comm) > 0;
       if (weights_stale)
