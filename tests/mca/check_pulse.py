@@ -13,7 +13,7 @@ import sys
 build = os.path.dirname(sys.argv[1])
 errors = []
 ok = True
-for test, folder, tol in [("mca_wave_pulse", "output-mca-wave-pulse", 0.02),
+for test, folder, tol in [("mca_wave_pulse", "output/mca/wave_pulse", 0.02),
                           ("mca_wave_pulse_long", "output-mca-wave-pulse-long", 0.008)]:
     with open(os.path.join(build, test, folder, "summary.json")) as f:
         s = json.load(f)

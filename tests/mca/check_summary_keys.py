@@ -1,12 +1,13 @@
 """Check that an MCA run wrote summary.json with the documented keys
 (n_automata, n_steps, dt, critical_dt, wall_time_s,
 automaton_steps_per_second, tribodyn_version, n_mpi_ranks) and series.csv."""
-import glob
 import json
 import os
 import sys
 
-dirs = [d for d in glob.glob(os.path.join(sys.argv[1], "output-*")) if os.path.isdir(d)]
+# The run's output directory is wherever its summary.json is (the prm
+# chooses it, relative to the test's working directory).
+dirs = sorted(root for root, _, files in os.walk(sys.argv[1]) if "summary.json" in files)
 ok = len(dirs) == 1
 print(("PASS  " if ok else "FAIL  ") + "one output directory: %s" % dirs)
 if ok:

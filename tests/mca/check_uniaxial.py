@@ -12,7 +12,7 @@ import json
 import os
 import sys
 
-out = os.path.join(sys.argv[1], "output-mca-uniaxial-steel")
+out = os.path.join(sys.argv[1], "output", "mca", "uniaxial_steel")
 with open(os.path.join(out, "summary.json")) as f:
     s = json.load(f)
 failures = []

@@ -10,7 +10,7 @@ import sys
 build = os.path.dirname(sys.argv[1])
 res = {}
 for test, folder in [("mca_uniaxial_coarse", "output-mca-uniaxial-coarse"),
-                     ("mca_uniaxial_steel", "output-mca-uniaxial-steel")]:
+                     ("mca_uniaxial_steel", "output/mca/uniaxial_steel")]:
     with open(os.path.join(build, test, folder, "summary.json")) as f:
         res[test] = json.load(f)
 E = 206e9
