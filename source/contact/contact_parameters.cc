@@ -1,13 +1,10 @@
-#include <deal.II/base/utilities.h>
-
-#include <tribodyn/contact/contact_parameters.h>
-#include <tribodyn/core/errors.h>
-
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
-
 #include <cmath>
+#include <deal.II/base/utilities.h>
 #include <fstream>
+#include <tribodyn/contact/contact_parameters.h>
+#include <tribodyn/core/errors.h>
 
 namespace tribodyn
 {
@@ -38,14 +35,14 @@ namespace tribodyn
             values.clear();
           }
         if (values.size() != n)
-          throw InputError("Parameter '" + name + "' must be a list of " +
-                           std::to_string(n) +
-                           " comma-separated numbers; got '" + text + "'.");
+          throw InputError("Parameter '" + name + "' must be a list of "
+                           + std::to_string(n)
+                           + " comma-separated numbers; got '" + text + "'.");
         for (const double v : values)
           if (!std::isfinite(v))
-            throw InputError("Parameter '" + name +
-                             "' contains a non-finite number: '" + text +
-                             "'.");
+            throw InputError("Parameter '" + name
+                             + "' contains a non-finite number: '" + text
+                             + "'.");
         return values;
       }
     } // namespace
@@ -102,12 +99,12 @@ namespace tribodyn
                             false,
                             "The mesh needs at least one element across the "
                             "pin.");
-      const double n_cells = std::round(width / mesh_size) *
-                             std::round(height / mesh_size);
+      const double n_cells
+        = std::round(width / mesh_size) * std::round(height / mesh_size);
       check_parameter(n_cells <= 2e8,
                       "Geometry/Mesh size",
-                      "a mesh of at most 2e8 elements (this one has " +
-                        format_number(n_cells) + ")");
+                      "a mesh of at most 2e8 elements (this one has "
+                        + format_number(n_cells) + ")");
     }
 
 
@@ -157,8 +154,14 @@ namespace tribodyn
                         "gamma_xy) (Pa); used only for the von Mises output.");
       prm.leave_subsection();
       prm.enter_subsection("Engineering constants");
-      prm.declare_entry("E_L", "31.9e9", Double(), "Young modulus along x (Pa).");
-      prm.declare_entry("E_T", "34e9", Double(), "Young modulus along y, z (Pa).");
+      prm.declare_entry("E_L",
+                        "31.9e9",
+                        Double(),
+                        "Young modulus along x (Pa).");
+      prm.declare_entry("E_T",
+                        "34e9",
+                        Double(),
+                        "Young modulus along y, z (Pa).");
       prm.declare_entry("nu_LT", "0.2", Double(), "Poisson ratio nu_LT.");
       prm.declare_entry("nu_TT", "0.2", Double(), "Poisson ratio nu_TT'.");
       prm.declare_entry("G_LT", "13.3e9", Double(), "Shear modulus G_LT (Pa).");
@@ -189,15 +192,15 @@ namespace tribodyn
     {
       prm.enter_subsection("Material");
       const std::string t = prm.get("Type");
-      type = t == "isotropic"             ? Type::isotropic :
-             t == "anisotropic"           ? Type::anisotropic :
-             t == "engineering constants" ? Type::engineering_constants :
-             t == "homogenization summary" ? Type::homogenization_summary :
-                                             Type::morphology;
-      kinematics = prm.get("Kinematics") == "small strain" ?
-                     Kinematics::small_strain :
-                     Kinematics::large_deformation;
-      density = prm.get_double("Density");
+      type                = t == "isotropic"               ? Type::isotropic
+                            : t == "anisotropic"           ? Type::anisotropic
+                            : t == "engineering constants" ? Type::engineering_constants
+                            : t == "homogenization summary" ? Type::homogenization_summary
+                                                            : Type::morphology;
+      kinematics          = prm.get("Kinematics") == "small strain"
+                              ? Kinematics::small_strain
+                              : Kinematics::large_deformation;
+      density             = prm.get_double("Density");
       check_parameter_range("Material/Density", density, 0, 1e6, true, false);
       prm.enter_subsection("Isotropic");
       isotropic.parse_parameters(prm, "Material/Isotropic");
@@ -296,26 +299,27 @@ namespace tribodyn
     LoadingParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Loading");
-      pressure       = prm.get_double("Pressure");
-      ramp_time      = prm.get_double("Ramp time");
-      plane_velocity = prm.get_double("Plane velocity");
-      top_held_in_x  = prm.get_bool("Top face held in x");
-      const auto v   = parse_numbers(prm.get("Initial velocity"),
+      pressure            = prm.get_double("Pressure");
+      ramp_time           = prm.get_double("Ramp time");
+      plane_velocity      = prm.get_double("Plane velocity");
+      top_held_in_x       = prm.get_bool("Top face held in x");
+      const auto v        = parse_numbers(prm.get("Initial velocity"),
                                    2,
                                    "Loading/Initial velocity");
       initial_velocity[0] = v[0];
       initial_velocity[1] = v[1];
       initial_gap         = prm.get_double("Initial gap");
       prm.leave_subsection();
-      check_parameter_range("Loading/Pressure", pressure, 0, 1e11, false, false,
+      check_parameter_range("Loading/Pressure",
+                            pressure,
+                            0,
+                            1e11,
+                            false,
+                            false,
                             "The pressure pushes the pin on the plane; it "
                             "must not be negative.");
-      check_parameter_range("Loading/Plane velocity",
-                            plane_velocity,
-                            -1e4,
-                            1e4,
-                            false,
-                            false);
+      check_parameter_range(
+        "Loading/Plane velocity", plane_velocity, -1e4, 1e4, false, false);
     }
 
 
@@ -378,23 +382,27 @@ namespace tribodyn
       automatic_time_step = prm.get_bool("Automatic time step");
       safety_factor       = prm.get_double("Safety factor");
       prm.leave_subsection();
-      check_parameter_range("Time integration/Time step",
-                            time_step, 0, 1, true, false);
-      check_parameter_range("Time integration/End time",
-                            end_time, 0, 1e3, true, false);
-      check_parameter_range("Time integration/Beta2", beta2, 0.5, 1, false,
+      check_parameter_range(
+        "Time integration/Time step", time_step, 0, 1, true, false);
+      check_parameter_range(
+        "Time integration/End time", end_time, 0, 1e3, true, false);
+      check_parameter_range("Time integration/Beta2",
+                            beta2,
+                            0.5,
+                            1,
+                            false,
                             false,
                             "The beta2 scheme is stable and at least first "
                             "order accurate only for beta2 in [0.5, 1].");
-      check_parameter_range("Time integration/Damping coefficient",
-                            damping, 0, 1, false, false);
-      check_parameter_range("Time integration/Safety factor",
-                            safety_factor, 0, 1, true, false);
+      check_parameter_range(
+        "Time integration/Damping coefficient", damping, 0, 1, false, false);
+      check_parameter_range(
+        "Time integration/Safety factor", safety_factor, 0, 1, true, false);
       const double n_steps = end_time / time_step;
       check_parameter(n_steps < 4e9,
                       "Time integration/End time",
-                      "fewer than 4e9 time steps (End time / Time step = " +
-                        format_number(n_steps) + ")");
+                      "fewer than 4e9 time steps (End time / Time step = "
+                        + format_number(n_steps) + ")");
     }
 
 
@@ -446,24 +454,28 @@ namespace tribodyn
     ContactLawParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
-      algorithm = prm.get("Algorithm") == "node-wise" ?
-                    ContactAlgorithm::node_wise :
-                    ContactAlgorithm::projected_gauss_seidel;
-      const std::string l = prm.get("Friction law");
-      law = l == "frictionless" ? FrictionLaw::frictionless :
-            l == "Coulomb"      ? FrictionLaw::coulomb :
-                                  FrictionLaw::regularized;
+      algorithm            = prm.get("Algorithm") == "node-wise"
+                               ? ContactAlgorithm::node_wise
+                               : ContactAlgorithm::projected_gauss_seidel;
+      const std::string l  = prm.get("Friction law");
+      law                  = l == "frictionless" ? FrictionLaw::frictionless
+                             : l == "Coulomb"    ? FrictionLaw::coulomb
+                                                 : FrictionLaw::regularized;
       friction_coefficient = prm.get_double("Friction coefficient");
       regularization_time  = prm.get_double("Regularization time");
       pgs_tolerance        = prm.get_double("Gauss-Seidel tolerance");
       pgs_max_iterations   = prm.get_integer("Gauss-Seidel max iterations");
       prm.leave_subsection();
       check_parameter_range("Contact/Friction coefficient",
-                            friction_coefficient, 0, 10, false, false);
-      check_parameter_range("Contact/Regularization time",
-                            regularization_time, 0, 1, true, false);
-      check_parameter_range("Contact/Gauss-Seidel tolerance",
-                            pgs_tolerance, 0, 1, true, true);
+                            friction_coefficient,
+                            0,
+                            10,
+                            false,
+                            false);
+      check_parameter_range(
+        "Contact/Regularization time", regularization_time, 0, 1, true, false);
+      check_parameter_range(
+        "Contact/Gauss-Seidel tolerance", pgs_tolerance, 0, 1, true, true);
     }
 
 
@@ -539,8 +551,8 @@ namespace tribodyn
       output.parse_parameters(prm);
       check_parameter(output.average_start < time.end_time,
                       "Output/Averaging start time",
-                      "a time before 'Time integration/End time' (" +
-                        format_number(time.end_time) + " s)");
+                      "a time before 'Time integration/End time' ("
+                        + format_number(time.end_time) + " s)");
     }
 
 
@@ -558,9 +570,9 @@ namespace tribodyn
                         {-nu_LT / E_L, -nu_TT / E_T, 1. / E_T}};
       // Plane strain: eps_zz = 0 gives sigma_zz = -(S31 s_xx + S32 s_yy)/S33,
       // so the in-plane compliance is S_ij - S_i3 S_3j / S33.
-      const double a  = S[0][0] - S[0][2] * S[2][0] / S[2][2];
-      const double b  = S[0][1] - S[0][2] * S[2][1] / S[2][2];
-      const double d  = S[1][1] - S[1][2] * S[2][1] / S[2][2];
+      const double a   = S[0][0] - S[0][2] * S[2][0] / S[2][2];
+      const double b   = S[0][1] - S[0][2] * S[2][1] / S[2][2];
+      const double d   = S[1][1] - S[1][2] * S[2][1] / S[2][2];
       const double det = a * d - b * b;
       if (!(det > 0) || !(a > 0))
         throw InputError("The engineering constants (E_L, E_T, nu_LT, nu_TT, "
@@ -580,8 +592,8 @@ namespace tribodyn
 
 
     VoigtStiffness
-    read_homogenization_stiffness(const std::string &   file,
-                                  const std::string &   key,
+    read_homogenization_stiffness(const std::string    &file,
+                                  const std::string    &key,
                                   dealii::Tensor<1, 3> &c_z)
     {
       namespace pt = boost::property_tree;
@@ -589,28 +601,28 @@ namespace tribodyn
       {
         std::ifstream in(file);
         if (!in)
-          throw InputError("Cannot read the homogenization summary '" + file +
-                           "' ('Material/Homogenization summary/File'): it "
-                           "does not exist or is not readable. Run 'set "
-                           "Problem = homogenization' first; it writes "
-                           "OUTPUT_DIRECTORY/summary.json.");
+          throw InputError("Cannot read the homogenization summary '" + file
+                           + "' ('Material/Homogenization summary/File'): it "
+                             "does not exist or is not readable. Run 'set "
+                             "Problem = homogenization' first; it writes "
+                             "OUTPUT_DIRECTORY/summary.json.");
         try
           {
             pt::read_json(in, tree);
           }
         catch (const std::exception &e)
           {
-            throw InputError("The homogenization summary '" + file +
-                             "' is not valid JSON: " + e.what());
+            throw InputError("The homogenization summary '" + file
+                             + "' is not valid JSON: " + e.what());
           }
       }
       const auto entry = tree.get_child_optional(key);
       if (!entry || !entry->get_child_optional("C"))
-        throw InputError("The homogenization summary '" + file +
-                         "' has no stiffness '" + key +
-                         ".C'; was it computed with that boundary "
-                         "condition? Choose another 'Material/"
-                         "Homogenization summary/Boundary condition'.");
+        throw InputError("The homogenization summary '" + file
+                         + "' has no stiffness '" + key
+                         + ".C'; was it computed with that boundary "
+                           "condition? Choose another 'Material/"
+                           "Homogenization summary/Boundary condition'.");
       VoigtStiffness C;
       unsigned int   i = 0;
       for (const auto &row : entry->get_child("C"))
@@ -627,8 +639,8 @@ namespace tribodyn
           ++i;
         }
       if (i != 3)
-        throw InputError("The stiffness '" + key + ".C' of '" + file +
-                         "' is not a 3x3 array.");
+        throw InputError("The stiffness '" + key + ".C' of '" + file
+                         + "' is not a 3x3 array.");
       c_z = dealii::Tensor<1, 3>();
       if (const auto z = entry->get_child_optional("c_z"))
         {
@@ -638,8 +650,8 @@ namespace tribodyn
               c_z[k++] = value.second.get_value<double>();
         }
       if (!(C[0][0] > 0 && C[1][1] > 0 && C[2][2] > 0))
-        throw InputError("The stiffness '" + key + ".C' of '" + file +
-                         "' is not positive definite.");
+        throw InputError("The stiffness '" + key + ".C' of '" + file
+                         + "' is not positive definite.");
       return C;
     }
   } // namespace contact

@@ -1,18 +1,16 @@
+#include <chrono>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
-
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
 #include <tribodyn/contact/contact_problem.h>
 #include <tribodyn/contact/contact_solver.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/version.h>
-
-#include <chrono>
-#include <memory>
-#include <iomanip>
-#include <iostream>
-#include <sstream>
 
 namespace tribodyn
 {
@@ -29,7 +27,7 @@ namespace tribodyn
 
     ContactProblem::ContactProblem(ParameterHandler &prm,
                                    const RunContext &context)
-      : context(context)
+        : context(context)
     {
       parameters.parse_parameters(prm);
     }
@@ -58,10 +56,12 @@ namespace tribodyn
     {
       const auto     start = std::chrono::steady_clock::now();
       const MPI_Comm comm  = context.mpi_communicator;
-      const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      const bool     root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
       dealii::ConditionalOStream pcout(std::cout, root);
-      auto timer = std::make_unique<dealii::TimerOutput>(
-        comm, pcout, dealii::TimerOutput::summary,
+      auto                       timer = std::make_unique<dealii::TimerOutput>(
+        comm,
+        pcout,
+        dealii::TimerOutput::summary,
         dealii::TimerOutput::wall_times);
       try
         {
@@ -80,11 +80,11 @@ namespace tribodyn
 
     void
     ContactProblem::run_with_timer(
-      dealii::TimerOutput &                                 timer,
+      dealii::TimerOutput                         &timer,
       const std::chrono::steady_clock::time_point &start)
     {
       const MPI_Comm comm = context.mpi_communicator;
-      const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      const bool     root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
       dealii::ConditionalOStream pcout(std::cout, root);
 
       ContactSolver solver(comm, parameters, timer);
@@ -94,8 +94,7 @@ namespace tribodyn
       pcout << "Pin: " << solver.material_description() << "\n"
             << "Mesh: " << solver.n_dofs() << " degrees of freedom, "
             << solver.n_contact_nodes() << " contact nodes, "
-            << dealii::Utilities::MPI::n_mpi_processes(comm)
-            << " MPI rank(s)\n"
+            << dealii::Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)\n"
             << "Time step " << solver.time_step() << " s (critical "
             << solver.critical_time_step() << " s, CFL l_min/c_max "
             << solver.cfl_time_step() << " s), " << n_steps << " steps, "
@@ -112,24 +111,24 @@ namespace tribodyn
         dealii::TimerOutput::Scope scope(timer, "summary");
         s = solver.summarize(context.output_directory);
       }
-      const double wall_time =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-          .count();
+      const double wall_time = std::chrono::duration<double>(
+                                 std::chrono::steady_clock::now() - start)
+                                 .count();
 
-      JsonValue summary          = JsonValue::object();
-      summary["problem"]         = "contact";
+      JsonValue summary           = JsonValue::object();
+      summary["problem"]          = "contact";
       summary["tribodyn_version"] = version_string;
-      summary["n_mpi_ranks"] = dealii::Utilities::MPI::n_mpi_processes(comm);
-      summary["material"]        = solver.material_description();
-      summary["friction_law"]    = law_name(parameters.contact.law);
-      summary["pressure"]        = parameters.loading.pressure;
-      summary["plane_velocity"]  = parameters.loading.plane_velocity;
-      summary["mu_global_mean"]  = s.mu_global_mean;
-      summary["mu_contact_mean"] = s.mu_contact_mean;
+      summary["n_mpi_ranks"]    = dealii::Utilities::MPI::n_mpi_processes(comm);
+      summary["material"]       = solver.material_description();
+      summary["friction_law"]   = law_name(parameters.contact.law);
+      summary["pressure"]       = parameters.loading.pressure;
+      summary["plane_velocity"] = parameters.loading.plane_velocity;
+      summary["mu_global_mean"] = s.mu_global_mean;
+      summary["mu_contact_mean"]  = s.mu_contact_mean;
       summary["averaging_window"] = json_array(
         {parameters.output.average_start,
-         parameters.output.average_end < 0 ? parameters.time.end_time :
-                                              parameters.output.average_end});
+         parameters.output.average_end < 0 ? parameters.time.end_time
+                                           : parameters.output.average_end});
       summary["n_samples_averaged"]    = s.n_samples_averaged;
       summary["dominant_frequency_hz"] = s.dominant_frequency_hz;
       summary["energy_balance_error"]  = s.energy_balance_error;
@@ -143,18 +142,18 @@ namespace tribodyn
       summary["point_M"]               = M;
       summary["regime"]                = s.regime;
       summary["n_dofs"] = static_cast<unsigned long long>(solver.n_dofs());
-      summary["n_contact_nodes"] = solver.n_contact_nodes();
-      summary["n_steps"]         = solver.n_steps_done();
-      summary["dt"]              = solver.time_step();
-      summary["critical_dt"]     = solver.critical_time_step();
-      summary["cfl_dt"]          = solver.cfl_time_step();
-      summary["omega_max"]       = solver.omega_max();
-      summary["end_time"]        = parameters.time.end_time;
-      summary["time_loop_s"]     = s.time_loop_s;
+      summary["n_contact_nodes"]      = solver.n_contact_nodes();
+      summary["n_steps"]              = solver.n_steps_done();
+      summary["dt"]                   = solver.time_step();
+      summary["critical_dt"]          = solver.critical_time_step();
+      summary["cfl_dt"]               = solver.cfl_time_step();
+      summary["omega_max"]            = solver.omega_max();
+      summary["end_time"]             = parameters.time.end_time;
+      summary["time_loop_s"]          = s.time_loop_s;
       summary["dof_steps_per_second"] = s.dof_steps_per_second;
-      summary["dof_steps_per_second_per_rank"] =
-        s.dof_steps_per_second /
-        dealii::Utilities::MPI::n_mpi_processes(comm);
+      summary["dof_steps_per_second_per_rank"]
+        = s.dof_steps_per_second
+          / dealii::Utilities::MPI::n_mpi_processes(comm);
       summary["wall_time_s"] = wall_time;
       if (root)
         write_file_atomically(join_path(context.output_directory,
@@ -171,9 +170,9 @@ namespace tribodyn
             << std::scientific << std::setprecision(3)
             << "dominant frequency of mu_global " << s.dominant_frequency_hz
             << " Hz, energy balance error " << s.energy_balance_error << "\n"
-            << "performance: " << s.dof_steps_per_second
-            << " DoF-steps/s (" << s.dof_steps_per_second /
-                 dealii::Utilities::MPI::n_mpi_processes(comm)
+            << "performance: " << s.dof_steps_per_second << " DoF-steps/s ("
+            << s.dof_steps_per_second
+                 / dealii::Utilities::MPI::n_mpi_processes(comm)
             << " per rank)\n"
             << "Results written to " << context.output_directory
             << "/ (summary.json, friction.csv, point_M.csv, "
@@ -192,5 +191,5 @@ namespace tribodyn
            return std::unique_ptr<Problem>(new ContactProblem(prm, context));
          }});
     } // namespace
-  } // namespace contact
+  }   // namespace contact
 } // namespace tribodyn

@@ -1,6 +1,5 @@
-#include <tribodyn/contact/spectrum.h>
-
 #include <cmath>
+#include <tribodyn/contact/spectrum.h>
 
 namespace tribodyn
 {
@@ -30,8 +29,8 @@ namespace tribodyn
               for (std::size_t k = 0; k < length / 2; ++k)
                 {
                   const std::complex<double> even = data[start + k];
-                  const std::complex<double> odd =
-                    data[start + k + length / 2] * w;
+                  const std::complex<double> odd
+                    = data[start + k + length / 2] * w;
                   data[start + k]              = even + odd;
                   data[start + k + length / 2] = even - odd;
                   w *= root;
@@ -60,8 +59,8 @@ namespace tribodyn
       double                            window_sum = 0;
       for (std::size_t i = 0; i < m; ++i)
         {
-          const double hann =
-            0.5 * (1. - std::cos(2. * M_PI * i / static_cast<double>(m - 1)));
+          const double hann
+            = 0.5 * (1. - std::cos(2. * M_PI * i / static_cast<double>(m - 1)));
           window_sum += hann;
           data[i] = (samples[i] - mean) * hann;
         }

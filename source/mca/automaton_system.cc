@@ -1,16 +1,14 @@
-#include <deal.II/base/mpi.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
-
-#include <tribodyn/core/errors.h>
-#include <tribodyn/core/output.h>
-#include <tribodyn/mca/automaton_system.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <limits>
 #include <sstream>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/output.h>
+#include <tribodyn/mca/automaton_system.h>
 #include <unordered_map>
 
 namespace tribodyn
@@ -25,9 +23,8 @@ namespace tribodyn
       namespace prop
       {
         constexpr unsigned int v = 0, w = 3, f = 6, torque = 9, mat = 12,
-                               body = 13, groups = 14, eps_p = 15,
-                               sigma_y = 16, dsm_prev = 17, u = 18,
-                               n_automaton = 21;
+                               body = 13, groups = 14, eps_p = 15, sigma_y = 16,
+                               dsm_prev = 17, u = 18, n_automaton = 21;
       } // namespace prop
       // Fields of one pair slot (MPI runs).
       namespace slot
@@ -72,10 +69,10 @@ namespace tribodyn
       inline double
       von_mises(const Sym3 &s)
       {
-        const double m  = (s[0] + s[1] + s[2]) / 3;
-        const double a  = s[0] - m, b = s[1] - m, c = s[2] - m;
-        const double j2 = 0.5 * (a * a + b * b + c * c) + s[3] * s[3] +
-                          s[4] * s[4] + s[5] * s[5];
+        const double m = (s[0] + s[1] + s[2]) / 3;
+        const double a = s[0] - m, b = s[1] - m, c = s[2] - m;
+        const double j2 = 0.5 * (a * a + b * b + c * c) + s[3] * s[3]
+                          + s[4] * s[4] + s[5] * s[5];
         return std::sqrt(3 * j2);
       }
 
@@ -88,17 +85,17 @@ namespace tribodyn
                         const double              q_trial)
       {
         double s0 = m.yield_stress, e0 = 0, H = m.hardening_modulus;
-        if (m.hardening == Hardening::bilinear &&
-            eps_p >= m.second_hardening_onset)
+        if (m.hardening == Hardening::bilinear
+            && eps_p >= m.second_hardening_onset)
           {
             s0 = m.yield_stress_at(m.second_hardening_onset);
             e0 = m.second_hardening_onset;
             H  = m.second_hardening_modulus;
           }
         double de = (q_trial - s0 - H * (eps_p - e0)) / (3 * G + H);
-        if (m.hardening == Hardening::bilinear &&
-            eps_p < m.second_hardening_onset &&
-            eps_p + de > m.second_hardening_onset)
+        if (m.hardening == Hardening::bilinear
+            && eps_p < m.second_hardening_onset
+            && eps_p + de > m.second_hardening_onset)
           {
             s0 = m.yield_stress_at(m.second_hardening_onset);
             e0 = m.second_hardening_onset;
@@ -113,7 +110,7 @@ namespace tribodyn
     // ------------------------------------------------------------------
     void
     GhostExchange::setup(const MPI_Comm                    communicator,
-                         const std::vector<unsigned int> & ghost_owner,
+                         const std::vector<unsigned int>  &ghost_owner,
                          const std::vector<std::uint64_t> &ghost_ids,
                          const std::vector<std::uint64_t> &owned_ids,
                          const unsigned int                n_owned_automata)
@@ -123,7 +120,8 @@ namespace tribodyn
       neighbors.clear();
       send_indices.clear();
       recv_indices.clear();
-      const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+      const unsigned int n_ranks
+        = dealii::Utilities::MPI::n_mpi_processes(comm);
       if (n_ranks == 1)
         return;
       // Requests: the ids I need from each owner.
@@ -137,8 +135,8 @@ namespace tribodyn
       std::vector<int> send_count(n_ranks), recv_count(n_ranks);
       for (unsigned int r = 0; r < n_ranks; ++r)
         send_count[r] = request[r].size();
-      MPI_Alltoall(send_count.data(), 1, MPI_INT, recv_count.data(), 1,
-                   MPI_INT, comm);
+      MPI_Alltoall(
+        send_count.data(), 1, MPI_INT, recv_count.data(), 1, MPI_INT, comm);
       std::vector<int> sdispl(n_ranks + 1, 0), rdispl(n_ranks + 1, 0);
       for (unsigned int r = 0; r < n_ranks; ++r)
         {
@@ -147,12 +145,19 @@ namespace tribodyn
         }
       std::vector<std::uint64_t> flat_requests(sdispl[n_ranks]);
       for (unsigned int r = 0; r < n_ranks; ++r)
-        std::copy(request[r].begin(), request[r].end(),
+        std::copy(request[r].begin(),
+                  request[r].end(),
                   flat_requests.begin() + sdispl[r]);
       std::vector<std::uint64_t> asked(rdispl[n_ranks]);
-      MPI_Alltoallv(flat_requests.data(), send_count.data(), sdispl.data(),
-                    MPI_UINT64_T, asked.data(), recv_count.data(),
-                    rdispl.data(), MPI_UINT64_T, comm);
+      MPI_Alltoallv(flat_requests.data(),
+                    send_count.data(),
+                    sdispl.data(),
+                    MPI_UINT64_T,
+                    asked.data(),
+                    recv_count.data(),
+                    rdispl.data(),
+                    MPI_UINT64_T,
+                    comm);
       std::unordered_map<std::uint64_t, unsigned int> owned_index;
       owned_index.reserve(owned_ids.size());
       for (unsigned int k = 0; k < owned_ids.size(); ++k)
@@ -167,10 +172,10 @@ namespace tribodyn
             {
               const auto it = owned_index.find(asked[k]);
               if (it == owned_index.end())
-                throw RunError("Internal inconsistency: rank " +
-                               std::to_string(r) +
-                               " asked for an automaton this rank does "
-                               "not own.");
+                throw RunError("Internal inconsistency: rank "
+                               + std::to_string(r)
+                               + " asked for an automaton this rank does "
+                                 "not own.");
               s.push_back(it->second);
             }
           send_indices.push_back(s);
@@ -190,8 +195,13 @@ namespace tribodyn
       for (unsigned int n = 0; n < neighbors.size(); ++n)
         {
           recv_buffers[n].resize(recv_indices[n].size() * width);
-          MPI_Irecv(recv_buffers[n].data(), recv_buffers[n].size(),
-                    MPI_DOUBLE, neighbors[n], 77, comm, &requests[n]);
+          MPI_Irecv(recv_buffers[n].data(),
+                    recv_buffers[n].size(),
+                    MPI_DOUBLE,
+                    neighbors[n],
+                    77,
+                    comm,
+                    &requests[n]);
         }
       for (unsigned int n = 0; n < neighbors.size(); ++n)
         {
@@ -201,7 +211,12 @@ namespace tribodyn
             std::copy(data + send_indices[n][k] * width,
                       data + (send_indices[n][k] + 1) * width,
                       buf.data() + k * width);
-          MPI_Isend(buf.data(), buf.size(), MPI_DOUBLE, neighbors[n], 77, comm,
+          MPI_Isend(buf.data(),
+                    buf.size(),
+                    MPI_DOUBLE,
+                    neighbors[n],
+                    77,
+                    comm,
                     &requests[neighbors.size() + n]);
         }
       MPI_Waitall(requests.size(), requests.data(), MPI_STATUSES_IGNORE);
@@ -216,32 +231,32 @@ namespace tribodyn
     // ------------------------------------------------------------------
     AutomatonSystem::AutomatonSystem(const Parameters &parameters,
                                      const MPI_Comm    communicator)
-      : prm(parameters)
-      , comm(communicator)
-      , n_ranks(dealii::Utilities::MPI::n_mpi_processes(communicator))
-      , rank(dealii::Utilities::MPI::this_mpi_process(communicator))
-      , tria(communicator)
+        : prm(parameters)
+        , comm(communicator)
+        , n_ranks(dealii::Utilities::MPI::n_mpi_processes(communicator))
+        , rank(dealii::Utilities::MPI::this_mpi_process(communicator))
+        , tria(communicator)
     {
       const auto &g = prm.geometry;
-      d        = g.automaton_size;
-      r0       = d / 2;
-      S        = d * d / (2 * std::sqrt(2.));
-      V        = d * d * d / std::sqrt(2.);
-      periodic = g.periodic;
+      d             = g.automaton_size;
+      r0            = d / 2;
+      S             = d * d / (2 * std::sqrt(2.));
+      V             = d * d * d / std::sqrt(2.);
+      periodic      = g.periodic;
       for (unsigned int c = 0; c < 3; ++c)
         period[c] = g.domain_upper[c] - g.domain_lower[c];
       rotations = prm.interaction.rotations;
       for (const auto &m : prm.materials)
         {
           MaterialConstants k;
-          k.m      = m;
-          k.rho    = m.density;
-          k.G      = m.shear_modulus();
-          k.K      = m.bulk_modulus();
-          k.D      = m.many_body_coefficient();
-          k.two_G  = 2 * k.G;
-          k.yield0 = m.is_plastic() ? m.yield_stress :
-                                      std::numeric_limits<double>::max();
+          k.m       = m;
+          k.rho     = m.density;
+          k.G       = m.shear_modulus();
+          k.K       = m.bulk_modulus();
+          k.D       = m.many_body_coefficient();
+          k.two_G   = 2 * k.G;
+          k.yield0  = m.is_plastic() ? m.yield_stress
+                                     : std::numeric_limits<double>::max();
           k.sigma_b = m.bond_breaking_stress;
           k.w_b     = m.bond_energy_density;
           mc.push_back(k);
@@ -263,8 +278,8 @@ namespace tribodyn
     void
     AutomatonSystem::make_background_mesh()
     {
-      const auto  &g      = prm.geometry;
-      const double h_min  = d * (1 + prm.interaction.skin);
+      const auto           &g     = prm.geometry;
+      const double          h_min = d * (1 + prm.interaction.skin);
       std::array<double, 3> L;
       for (unsigned int c = 0; c < 3; ++c)
         L[c] = g.domain_upper[c] - g.domain_lower[c];
@@ -273,26 +288,27 @@ namespace tribodyn
       // interaction range h_min (and not too many: about 40 000 at most).
       // Under MPI each rank owns whole trees (see below), i.e. slabs along
       // z spanning the periodic directions x and y.
-      const double h_target =
-        std::max(h_min, std::cbrt(L[0] * L[1] * L[2] / 40000.));
+      const double h_target
+        = std::max(h_min, std::cbrt(L[0] * L[1] * L[2] / 40000.));
       for (unsigned int c = 0; c < 3; ++c)
         if (periodic[c] && L[c] < 2 * h_min * 1.0000001)
           throw InputError(
-            std::string("The periodic length in ") + "xyz"[c] + " (" +
-            format_number(L[c]) +
-            " m) must exceed twice the interaction range (automaton size "
-            "times 1 + Interaction/Skin = " +
-            format_number(h_min) + " m).");
+            std::string("The periodic length in ") + "xyz"[c] + " ("
+            + format_number(L[c])
+            + " m) must exceed twice the interaction range (automaton size "
+              "times 1 + Interaction/Skin = "
+            + format_number(h_min) + " m).");
       unsigned int level = 0;
-      while (std::min(L[0], L[1]) / std::pow(2., level + 1) >= h_target &&
-             L[2] / std::pow(2., level + 1) >= h_target * 2 &&
-             level < 10)
+      while (std::min(L[0], L[1]) / std::pow(2., level + 1) >= h_target
+             && L[2] / std::pow(2., level + 1) >= h_target * 2 && level < 10)
         ++level;
-      const double scale = std::pow(2., level);
-      std::vector<unsigned int> repetitions = {
-        1, 1,
-        std::max(1u, static_cast<unsigned int>(
-                       std::floor(L[2] / (h_target * scale))))};
+      const double              scale = std::pow(2., level);
+      std::vector<unsigned int> repetitions
+        = {1,
+           1,
+           std::max(1u,
+                    static_cast<unsigned int>(
+                      std::floor(L[2] / (h_target * scale))))};
       if (n_ranks > 1 && periodic[2])
         throw InputError(
           "Parameter 'Geometry/Periodic z': periodicity in z is not "
@@ -302,10 +318,11 @@ namespace tribodyn
       if (n_ranks > repetitions[2])
         throw InputError(
           "The MCA domain is split into slabs along z, at least one per MPI "
-          "rank; this domain (height " + format_number(L[2]) +
-          " m) has " + std::to_string(repetitions[2]) + " slab(s) for " +
-          std::to_string(n_ranks) + " ranks. Use fewer ranks or a taller "
-          "domain.");
+          "rank; this domain (height "
+          + format_number(L[2]) + " m) has " + std::to_string(repetitions[2])
+          + " slab(s) for " + std::to_string(n_ranks)
+          + " ranks. Use fewer ranks or a taller "
+            "domain.");
       dealii::GridGenerator::subdivided_hyper_rectangle(
         tria, repetitions, g.domain_lower, g.domain_upper, true);
       std::vector<dealii::GridTools::PeriodicFacePair<
@@ -313,8 +330,8 @@ namespace tribodyn
         faces;
       for (unsigned int c = 0; c < 3; ++c)
         if (periodic[c])
-          dealii::GridTools::collect_periodic_faces(tria, 2 * c, 2 * c + 1, c,
-                                                    faces);
+          dealii::GridTools::collect_periodic_faces(
+            tria, 2 * c, 2 * c + 1, c, faces);
       if (!faces.empty())
         tria.add_periodicity(faces);
       if (level > 0)
@@ -328,24 +345,25 @@ namespace tribodyn
           // of the same slab, as deal.II 9.4's (vertex based, periodicity
           // unaware) ghost exchange needs, and automata wrapped across a
           // periodic face stay on their rank.
-          const double n_per_tree = std::pow(8., level);
+          const double       n_per_tree  = std::pow(8., level);
           const unsigned int tree_weight = static_cast<unsigned int>(
             std::min(4.0e9 / repetitions[2], 20000. * n_per_tree + 1));
           const double hx = L[0] / scale, hy = L[1] / scale,
-                       hz = L[2] / (repetitions[2] * scale);
+                       hz       = L[2] / (repetitions[2] * scale);
           const auto connection = tria.signals.weight.connect(
-            [&](const dealii::parallel::distributed::Triangulation<
-                  3>::cell_iterator &cell,
-                const dealii::parallel::distributed::Triangulation<
-                  3>::CellStatus) -> unsigned int {
+            [&](
+              const dealii::parallel::distributed::Triangulation<
+                3>::cell_iterator &cell,
+              const dealii::parallel::distributed::Triangulation<3>::CellStatus)
+              -> unsigned int {
               const Point3 c  = cell->center();
               const long   iz = static_cast<long>(
                 std::floor((c[2] - g.domain_lower[2]) / hz));
-              return (c[0] < g.domain_lower[0] + hx &&
-                      c[1] < g.domain_lower[1] + hy &&
-                      iz % static_cast<long>(scale) == 0) ?
-                       tree_weight :
-                       1u;
+              return (c[0] < g.domain_lower[0] + hx
+                      && c[1] < g.domain_lower[1] + hy
+                      && iz % static_cast<long>(scale) == 0)
+                       ? tree_weight
+                       : 1u;
             });
           tria.repartition();
           connection.disconnect();
@@ -360,13 +378,13 @@ namespace tribodyn
       make_background_mesh();
 
       // Which features does the scene need?
-      const std::vector<PackedAutomaton> packed =
-        pack_automata(g, prm.materials.size());
+      const std::vector<PackedAutomaton> packed
+        = pack_automata(g, prm.materials.size());
       n_global = packed.size();
       std::vector<bool> used(prm.materials.size(), false);
       for (const auto &a : packed)
         used[a.material] = true;
-      double c_max = 0;
+      double c_max  = 0;
       plastic_scene = false;
       for (unsigned int m = 0; m < prm.materials.size(); ++m)
         if (used[m])
@@ -375,8 +393,8 @@ namespace tribodyn
             if (prm.interaction.plasticity && prm.materials[m].is_plastic())
               plastic_scene = true;
           }
-      bond_scene =
-        prm.interaction.bond_breaking || prm.interaction.bond_formation;
+      bond_scene
+        = prm.interaction.bond_breaking || prm.interaction.bond_formation;
       critical_dt = d / c_max;
       if (prm.time.time_step == 0)
         dt = prm.time.courant * critical_dt;
@@ -385,16 +403,17 @@ namespace tribodyn
           dt = prm.time.time_step;
           if (dt > TimeParameters::max_courant * critical_dt)
             throw InputError(
-              "Parameter 'Time/Time step' = " + format_number(dt) +
-              " s is too large: the limit is " +
-              format_number(TimeParameters::max_courant * critical_dt) +
-              " s, half the sound-crossing time d_min / c_p,max = " +
-              format_number(critical_dt) +
-              " s of the smallest automaton. Use a smaller step or 0 "
-              "(automatic).");
+              "Parameter 'Time/Time step' = " + format_number(dt)
+              + " s is too large: the limit is "
+              + format_number(TimeParameters::max_courant * critical_dt)
+              + " s, half the sound-crossing time d_min / c_p,max = "
+              + format_number(critical_dt)
+              + " s of the smallest automaton. Use a smaller step or 0 "
+                "(automatic).");
         }
 
-      n_slot_fields = n_ranks > 1 ? prm.interaction.pair_slots * slot::n_fields : 0;
+      n_slot_fields
+        = n_ranks > 1 ? prm.interaction.pair_slots * slot::n_fields : 0;
       n_automaton_properties = prop::n_automaton + n_slot_fields;
       particles = std::make_unique<dealii::Particles::ParticleHandler<3>>(
         tria, mapping, n_automaton_properties);
@@ -413,23 +432,24 @@ namespace tribodyn
               std::round((g.domain_upper[c] - g.domain_lower[c]) / h[c]));
           }
       }
-      std::vector<dealii::parallel::distributed::Triangulation<3>::active_cell_iterator>
+      std::vector<
+        dealii::parallel::distributed::Triangulation<3>::active_cell_iterator>
         cell_of(static_cast<std::size_t>(nc[0]) * nc[1] * nc[2]);
       std::vector<bool> owned_cell(cell_of.size(), false);
-      auto cell_index = [&](const Point3 &p) {
+      auto              cell_index = [&](const Point3 &p) {
         std::array<long, 3> i;
         for (unsigned int c = 0; c < 3; ++c)
-          i[c] = std::min<long>(nc[c] - 1,
-                                std::max<long>(0,
-                                               static_cast<long>(std::floor(
-                                                 (p[c] - g.domain_lower[c]) /
-                                                 h[c]))));
+          i[c] = std::min<long>(
+            nc[c] - 1,
+            std::max<long>(0,
+                           static_cast<long>(
+                             std::floor((p[c] - g.domain_lower[c]) / h[c]))));
         return (i[2] * nc[1] + i[1]) * nc[0] + i[0];
       };
       for (const auto &cell : tria.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            const long k = cell_index(cell->center());
+            const long k  = cell_index(cell->center());
             cell_of[k]    = cell;
             owned_cell[k] = true;
           }
@@ -447,9 +467,9 @@ namespace tribodyn
           for (unsigned int c = 0; c < 3; ++c)
             ref[c] = std::min(1., std::max(0., (p[c] - lower[c]) / h[c]));
           std::fill(props.begin(), props.end(), 0.);
-          props[prop::mat]     = packed[k].material;
-          props[prop::body]    = packed[k].body;
-          std::uint32_t mask   = 0;
+          props[prop::mat]   = packed[k].material;
+          props[prop::body]  = packed[k].body;
+          std::uint32_t mask = 0;
           for (unsigned int gi = 0; gi < prm.boundary.groups.size(); ++gi)
             {
               const auto &grp = prm.boundary.groups[gi];
@@ -463,15 +483,18 @@ namespace tribodyn
           props[prop::groups]  = mask;
           props[prop::sigma_y] = mc[packed[k].material].yield0;
           particles->insert_particle(
-            p, ref, k, cell,
+            p,
+            ref,
+            k,
+            cell,
             dealii::ArrayView<const double>(props.data(), props.size()));
         }
       particles->update_cached_numbers();
       if (particles->n_global_particles() != n_global)
-        throw RunError("Internal error: " +
-                       std::to_string(particles->n_global_particles()) +
-                       " of " + std::to_string(n_global) +
-                       " automata were placed in the background mesh.");
+        throw RunError("Internal error: "
+                       + std::to_string(particles->n_global_particles())
+                       + " of " + std::to_string(n_global)
+                       + " automata were placed in the background mesh.");
       group_force_local.assign(prm.boundary.groups.size(), {{0, 0, 0}});
       rebuild(true);
     }
@@ -495,13 +518,13 @@ namespace tribodyn
               const unsigned int a = pi[p];
               if (n_used[a] == max_slots)
                 throw RunError(
-                  "An automaton has more than Interaction/Pair slots = " +
-                  std::to_string(max_slots) +
-                  " pairs in which it has the smaller id; raise the "
-                  "parameter.");
-              double *s = slots.data() +
-                          static_cast<std::size_t>(a) * n_slot_fields +
-                          n_used[a] * slot::n_fields;
+                  "An automaton has more than Interaction/Pair slots = "
+                  + std::to_string(max_slots)
+                  + " pairs in which it has the smaller id; raise the "
+                    "parameter.");
+              double *s = slots.data()
+                          + static_cast<std::size_t>(a) * n_slot_fields
+                          + n_used[a] * slot::n_fields;
               ++n_used[a];
               s[slot::partner] = id[pj[p]];
               s[slot::bonded]  = bonded[p];
@@ -526,9 +549,9 @@ namespace tribodyn
             if (periodic[c])
               {
                 const double lo = prm.geometry.domain_lower[c];
-                p[c] = lo + std::fmod(std::fmod(p[c] - lo, period[c]) +
-                                        period[c],
-                                      period[c]);
+                p[c]            = lo
+                       + std::fmod(std::fmod(p[c] - lo, period[c]) + period[c],
+                                   period[c]);
                 if (p[c] >= lo + period[c])
                   p[c] = lo;
               }
@@ -549,9 +572,10 @@ namespace tribodyn
           props[prop::sigma_y]  = sigma_y[k];
           props[prop::dsm_prev] = dsm_prev[k];
           if (n_slot_fields > 0)
-            std::copy(slots.begin() + static_cast<std::size_t>(k) * n_slot_fields,
-                      slots.begin() +
-                        static_cast<std::size_t>(k + 1) * n_slot_fields,
+            std::copy(slots.begin()
+                        + static_cast<std::size_t>(k) * n_slot_fields,
+                      slots.begin()
+                        + static_cast<std::size_t>(k + 1) * n_slot_fields,
                       props.begin() + prop::n_automaton);
         }
     }
@@ -560,10 +584,10 @@ namespace tribodyn
     void
     AutomatonSystem::read_state_from_particles(const bool initial)
     {
-      n_owned = particles->n_locally_owned_particles();
+      n_owned                    = particles->n_locally_owned_particles();
       const unsigned int width   = 4 + n_automaton_properties;
       const unsigned int n_ghost = ghost_records.size() / width;
-      n_local = n_owned + n_ghost;
+      n_local                    = n_owned + n_ghost;
       id.resize(n_local);
       x.resize(n_local);
       x_at_rebuild.resize(n_local);
@@ -581,10 +605,10 @@ namespace tribodyn
       std::vector<unsigned int>  ghost_owner(n_ghost);
       std::vector<std::uint64_t> ghost_ids(n_ghost), owned_ids(n_owned);
 
-      auto read = [&](const std::uint64_t  the_id,
-                      const Point3 &       location,
-                      const double *       props,
-                      const unsigned int   k) {
+      auto read = [&](const std::uint64_t the_id,
+                      const Point3       &location,
+                      const double       *props,
+                      const unsigned int  k) {
         id[k] = the_id;
         x[k]  = location;
         for (unsigned int c = 0; c < 3; ++c)
@@ -608,16 +632,20 @@ namespace tribodyn
       unsigned int k = 0;
       for (auto it = particles->begin(); it != particles->end(); ++it, ++k)
         {
-          read(it->get_id(), it->get_location(),
-               it->get_properties().data(), k);
+          read(it->get_id(),
+               it->get_location(),
+               it->get_properties().data(),
+               k);
           owned_ids[k] = id[k];
         }
       for (unsigned int g = 0; g < n_ghost; ++g, ++k)
         {
-          const double *r = ghost_records.data() +
-                            static_cast<std::size_t>(g) * width;
-          read(static_cast<std::uint64_t>(r[0]), Point3(r[1], r[2], r[3]),
-               r + 4, k);
+          const double *r
+            = ghost_records.data() + static_cast<std::size_t>(g) * width;
+          read(static_cast<std::uint64_t>(r[0]),
+               Point3(r[1], r[2], r[3]),
+               r + 4,
+               k);
           ghost_ids[g]   = id[k];
           ghost_owner[g] = ghost_record_owner[g];
         }
@@ -634,9 +662,9 @@ namespace tribodyn
       // faces; the ranks own slabs along z (see make_background_mesh()), so
       // the ghosts of a rank are the automata of the other slabs within the
       // interaction range of its slab: sent here with all their properties.
-      const double range = d * (1 + prm.interaction.skin);
+      const double range     = d * (1 + prm.interaction.skin);
       double       bounds[2] = {std::numeric_limits<double>::max(),
-                          -std::numeric_limits<double>::max()};
+                                -std::numeric_limits<double>::max()};
       for (const auto &cell : tria.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -645,7 +673,7 @@ namespace tribodyn
           }
       std::vector<double> all(2 * n_ranks);
       MPI_Allgather(bounds, 2, MPI_DOUBLE, all.data(), 2, MPI_DOUBLE, comm);
-      const unsigned int width = 4 + n_automaton_properties;
+      const unsigned int               width = 4 + n_automaton_properties;
       std::vector<std::vector<double>> out(n_ranks);
       for (auto it = particles->begin(); it != particles->end(); ++it)
         {
@@ -654,8 +682,8 @@ namespace tribodyn
             {
               if (r == rank)
                 continue;
-              const double gap =
-                std::max({0., all[2 * r] - p[2], p[2] - all[2 * r + 1]});
+              const double gap
+                = std::max({0., all[2 * r] - p[2], p[2] - all[2 * r + 1]});
               if (gap >= range)
                 continue;
               auto &buf = out[r];
@@ -669,8 +697,8 @@ namespace tribodyn
       std::vector<int> send_count(n_ranks), recv_count(n_ranks);
       for (unsigned int r = 0; r < n_ranks; ++r)
         send_count[r] = out[r].size();
-      MPI_Alltoall(send_count.data(), 1, MPI_INT, recv_count.data(), 1,
-                   MPI_INT, comm);
+      MPI_Alltoall(
+        send_count.data(), 1, MPI_INT, recv_count.data(), 1, MPI_INT, comm);
       std::vector<int> sd(n_ranks + 1, 0), rd(n_ranks + 1, 0);
       for (unsigned int r = 0; r < n_ranks; ++r)
         {
@@ -681,9 +709,15 @@ namespace tribodyn
       for (unsigned int r = 0; r < n_ranks; ++r)
         std::copy(out[r].begin(), out[r].end(), flat.begin() + sd[r]);
       ghost_records.resize(rd[n_ranks]);
-      MPI_Alltoallv(flat.data(), send_count.data(), sd.data(), MPI_DOUBLE,
-                    ghost_records.data(), recv_count.data(), rd.data(),
-                    MPI_DOUBLE, comm);
+      MPI_Alltoallv(flat.data(),
+                    send_count.data(),
+                    sd.data(),
+                    MPI_DOUBLE,
+                    ghost_records.data(),
+                    recv_count.data(),
+                    rd.data(),
+                    MPI_DOUBLE,
+                    comm);
       ghost_record_owner.clear();
       for (unsigned int r = 0; r < n_ranks; ++r)
         for (int k = rd[r]; k < rd[r + 1]; k += width)
@@ -698,9 +732,8 @@ namespace tribodyn
       // MPI they travel in the particle slots).
       std::unordered_map<std::uint64_t, unsigned int> old_index;
       std::vector<unsigned char> o_bonded = bonded, o_contact = in_contact;
-      std::vector<double>        o_q = q_i, o_si = sig_i, o_sj = sig_j,
-                          o_heat = heat;
-      std::vector<Vec3> o_ti = tau_i, o_tj = tau_j;
+      std::vector<double> o_q = q_i, o_si = sig_i, o_sj = sig_j, o_heat = heat;
+      std::vector<Vec3>   o_ti = tau_i, o_tj = tau_j;
       if (!initial)
         {
           if (n_slot_fields == 0)
@@ -716,7 +749,8 @@ namespace tribodyn
                   s << " (" << particle->get_location() << ")";
                   for (unsigned int k = 0; k < n_owned; ++k)
                     if (id[k] == particle->get_id())
-                      s << " [id " << id[k] << " x " << x[k] << " at rebuild " << x_at_rebuild[k] << "]";
+                      s << " [id " << id[k] << " x " << x[k] << " at rebuild "
+                        << x_at_rebuild[k] << "]";
                   lost += s.str();
                 }
             });
@@ -724,11 +758,11 @@ namespace tribodyn
           connection.disconnect();
           if (particles->n_global_particles() != n_global)
             throw RunError(
-              std::to_string(n_global - particles->n_global_particles()) +
-              " automata left the simulation box (Geometry/Domain lower and "
-              "upper) through a non-periodic side" +
-              (lost.empty() ? std::string() : ", e.g. at" + lost) +
-              ". Enlarge the box to leave room for the motion.");
+              std::to_string(n_global - particles->n_global_particles())
+              + " automata left the simulation box (Geometry/Domain lower and "
+                "upper) through a non-periodic side"
+              + (lost.empty() ? std::string() : ", e.g. at" + lost)
+              + ". Enlarge the box to leave room for the motion.");
         }
       if (n_ranks > 1)
         exchange_ghosts();
@@ -739,23 +773,24 @@ namespace tribodyn
       if (!initial && n_slot_fields > 0)
         {
           slots.resize(static_cast<std::size_t>(n_local) * n_slot_fields);
-          unsigned int k = 0;
-          auto copy = [&](const auto &it) {
+          unsigned int k    = 0;
+          auto         copy = [&](const auto &it) {
             const auto props = it->get_properties();
-            std::copy(props.begin() + prop::n_automaton, props.end(),
-                      slots.begin() +
-                        static_cast<std::size_t>(k) * n_slot_fields);
+            std::copy(props.begin() + prop::n_automaton,
+                      props.end(),
+                      slots.begin()
+                        + static_cast<std::size_t>(k) * n_slot_fields);
             ++k;
           };
           for (auto it = particles->begin(); it != particles->end(); ++it)
             copy(it);
           const unsigned int width = 4 + n_automaton_properties;
           for (std::size_t g = 0; g < ghost_records.size() / width; ++g)
-            std::copy(ghost_records.begin() + g * width + 4 +
-                        prop::n_automaton,
+            std::copy(ghost_records.begin() + g * width + 4 + prop::n_automaton,
                       ghost_records.begin() + (g + 1) * width,
-                      slots.begin() + static_cast<std::size_t>(n_owned + g) *
-                                        n_slot_fields);
+                      slots.begin()
+                        + static_cast<std::size_t>(n_owned + g)
+                            * n_slot_fields);
         }
 
       build_pair_list(initial);
@@ -792,19 +827,19 @@ namespace tribodyn
               if (it == old_index.end())
                 continue;
               const unsigned int o = it->second;
-              bonded[p]     = o_bonded[o];
-              in_contact[p] = o_contact[o];
-              q_i[p]        = o_q[o];
-              sig_i[p]      = o_si[o];
-              sig_j[p]      = o_sj[o];
-              tau_i[p]      = o_ti[o];
-              tau_j[p]      = o_tj[o];
-              heat[p]       = o_heat[o];
+              bonded[p]            = o_bonded[o];
+              in_contact[p]        = o_contact[o];
+              q_i[p]               = o_q[o];
+              sig_i[p]             = o_si[o];
+              sig_j[p]             = o_sj[o];
+              tau_i[p]             = o_ti[o];
+              tau_j[p]             = o_tj[o];
+              heat[p]              = o_heat[o];
             }
           else
             {
-              const double *s =
-                slots.data() + static_cast<std::size_t>(i) * n_slot_fields;
+              const double *s
+                = slots.data() + static_cast<std::size_t>(i) * n_slot_fields;
               for (unsigned int sl = 0; sl < prm.interaction.pair_slots;
                    ++sl, s += slot::n_fields)
                 if (s[slot::partner] == static_cast<double>(id[j]))
@@ -833,8 +868,8 @@ namespace tribodyn
     AutomatonSystem::build_pair_list(const bool initial)
     {
       (void)initial;
-      const auto  &g     = prm.geometry;
-      const double range = d * (1 + prm.interaction.skin);
+      const auto           &g     = prm.geometry;
+      const double          range = d * (1 + prm.interaction.skin);
       std::array<int, 3>    nb;
       std::array<double, 3> bs;
       for (unsigned int c = 0; c < 3; ++c)
@@ -849,19 +884,22 @@ namespace tribodyn
         int b = static_cast<int>(std::floor(y / bs[c]));
         return std::min(nb[c] - 1, std::max(0, b));
       };
-      const std::size_t n_bins = static_cast<std::size_t>(nb[0]) * nb[1] * nb[2];
-      std::vector<unsigned int> count(n_bins + 1, 0), bin_of(n_local);
+      const std::size_t n_bins
+        = static_cast<std::size_t>(nb[0]) * nb[1] * nb[2];
+      std::vector<unsigned int>       count(n_bins + 1, 0), bin_of(n_local);
       std::vector<std::array<int, 3>> coords(n_local);
       for (unsigned int k = 0; k < n_local; ++k)
         {
           for (unsigned int c = 0; c < 3; ++c)
             coords[k][c] = bin_coord(x[k], c);
-          bin_of[k] = (coords[k][2] * nb[1] + coords[k][1]) * nb[0] + coords[k][0];
+          bin_of[k]
+            = (coords[k][2] * nb[1] + coords[k][1]) * nb[0] + coords[k][0];
           ++count[bin_of[k] + 1];
         }
       for (std::size_t b = 0; b < n_bins; ++b)
         count[b + 1] += count[b];
-      std::vector<unsigned int> sorted(n_local), fill(count.begin(), count.end() - 1);
+      std::vector<unsigned int> sorted(n_local),
+        fill(count.begin(), count.end() - 1);
       for (unsigned int k = 0; k < n_local; ++k)
         sorted[fill[bin_of[k]]++] = k;
 
@@ -893,8 +931,8 @@ namespace tribodyn
                     }
                   if (valid)
                     neighbour_bins.push_back(
-                      (static_cast<std::size_t>(b[2]) * nb[1] + b[1]) * nb[0] +
-                      b[0]);
+                      (static_cast<std::size_t>(b[2]) * nb[1] + b[1]) * nb[0]
+                      + b[0]);
                 }
           std::sort(neighbour_bins.begin(), neighbour_bins.end());
           neighbour_bins.erase(std::unique(neighbour_bins.begin(),
@@ -924,8 +962,8 @@ namespace tribodyn
       for (unsigned int p = 0; p < order.size(); ++p)
         order[p] = p;
       std::sort(order.begin(), order.end(), [&](unsigned a, unsigned b) {
-        return std::make_pair(id[pi[a]], id[pj[a]]) <
-               std::make_pair(id[pi[b]], id[pj[b]]);
+        return std::make_pair(id[pi[a]], id[pj[a]])
+               < std::make_pair(id[pi[b]], id[pj[b]]);
       });
       auto permute = [&](auto &vec) {
         auto copy = vec;
@@ -960,9 +998,8 @@ namespace tribodyn
       if (g.switch_time < 0 || t <= g.switch_time)
         {
           for (unsigned int c = 0; c < 3; ++c)
-            value[c] = g.value[c] * (g.type == BoundaryGroup::Type::damping ?
-                                       1 :
-                                       ramp(t));
+            value[c] = g.value[c]
+                       * (g.type == BoundaryGroup::Type::damping ? 1 : ramp(t));
           return value;
         }
       const double s = ramp(t - g.switch_time);
@@ -1004,11 +1041,11 @@ namespace tribodyn
     {
       // Adds external and damping forces to f (after the reaction has been
       // recorded by the caller).
-      const auto &grp = prm.boundary.groups;
-      const double c_global = prm.boundary.global_damping;
-      std::vector<Vec3> values(grp.size());
+      const auto                     &grp      = prm.boundary.groups;
+      const double                    c_global = prm.boundary.global_damping;
+      std::vector<Vec3>               values(grp.size());
       std::vector<unsigned long long> sizes;
-      bool any_force = false;
+      bool                            any_force = false;
       for (unsigned int gi = 0; gi < grp.size(); ++gi)
         {
           values[gi] = group_value(grp[gi], t);
@@ -1068,7 +1105,8 @@ namespace tribodyn
       {
         double max_disp2 = 0;
         for (unsigned int k = 0; k < n_owned; ++k)
-          max_disp2 = std::max(max_disp2, x[k].distance_square(x_at_rebuild[k]));
+          max_disp2
+            = std::max(max_disp2, x[k].distance_square(x_at_rebuild[k]));
         const double limit = 0.5 * prm.interaction.skin * d;
         // one all-reduction for the rebuild test and the neighbourhood
         // flag of the last step
@@ -1121,9 +1159,9 @@ namespace tribodyn
       apply_kinematic_constraints(current_time);
       ++n_steps_done;
       if (!std::isfinite(v[0][0] + x[0][0]) && n_owned > 0)
-        throw RunError("The velocities became NaN at step " +
-                       std::to_string(n_steps_done) +
-                       "; the time step is probably too large.");
+        throw RunError("The velocities became NaN at step "
+                       + std::to_string(n_steps_done)
+                       + "; the time step is probably too large.");
     }
 
 
@@ -1153,8 +1191,8 @@ namespace tribodyn
       // Neighbourhoods changed (contacts, bonds): recompute the weights on
       // every rank at the same step (results independent of the partition).
       if (n_ranks > 1 && !integrate)
-        weights_stale =
-          dealii::Utilities::MPI::max(weights_stale ? 1 : 0, comm) > 0;
+        weights_stale
+          = dealii::Utilities::MPI::max(weights_stale ? 1 : 0, comm) > 0;
       if (weights_stale)
         update_neighbourhood_weights();
       const bool rot = rotations;
@@ -1212,8 +1250,8 @@ namespace tribodyn
           for (unsigned int c = 0; c < 3; ++c)
             nm[c] /= nmn;
           double dr = dot(diff, sum) / (r + ro), r_prev = ro;
-          normal[p] = n;
-          r_now[p]  = r;
+          normal[p]              = n;
+          r_now[p]               = r;
           const unsigned char mi = mat[i], mj = mat[j];
           const double ki = mc[mi].two_G * inv_r0, kj = mc[mj].two_G * inv_r0;
 
@@ -1279,8 +1317,9 @@ namespace tribodyn
             const double inv = 1. / (ki + kj);
             for (unsigned int c = 0; c < 3; ++c)
               {
-                const double tn =
-                  (kj * tau_i[p][c] + ki * tau_j[p][c] + ki * kj * du[c]) * inv;
+                const double tn
+                  = (kj * tau_i[p][c] + ki * tau_j[p][c] + ki * kj * du[c])
+                    * inv;
                 tau_i[p][c] = tn;
                 tau_j[p][c] = tn;
               }
@@ -1292,9 +1331,9 @@ namespace tribodyn
           // differ and the force uses the mean of the two sides.
           const double dqi = kj * dr / (ki + kj);
           const double dei = dqi * inv_r0, dej = (dr - dqi) * inv_r0;
-          deps_i[p]       = dei;
-          deps_j[p]       = dej;
-          q_i[p]          = qi + dqi;
+          deps_i[p]        = dei;
+          deps_j[p]        = dej;
+          q_i[p]           = qi + dqi;
           const double qin = qi + dqi, qjn = r - qin;
           if (owned_i[p])
             {
@@ -1314,8 +1353,8 @@ namespace tribodyn
       // deps_ij (beta = 1/4 in a complete FCC neighbourhood).
       for (unsigned int k = 0; k < n_owned; ++k)
         {
-          const auto  &m = mc[mat[k]];
-          dsm[k] = m.K * acc_qse[k];
+          const auto &m = mc[mat[k]];
+          dsm[k]        = m.K * acc_qse[k];
         }
       if (ghosts.active())
         ghosts.update(dsm.data(), 1);
@@ -1361,13 +1400,13 @@ namespace tribodyn
               const Sym3   s  = fabric_corrected(k, trial[k]);
               const double sm = (s[0] + s[1] + s[2]) / 3;
               const double q  = von_mises(s);
-              double       M  = 1, share = 0;
+              double       M = 1, share = 0;
               if (m.m.is_plastic() && q > sigma_y[k])
                 {
                   const double de = plastic_increment(m.m, m.G, eps_p[k], q);
                   const double sy_new = m.m.yield_stress_at(eps_p[k] + de);
-                  M = sy_new / q;
-                  const double work = V * 0.5 * (sigma_y[k] + sy_new) * de;
+                  M                   = sy_new / q;
+                  const double work   = V * 0.5 * (sigma_y[k] + sy_new) * de;
                   eps_p[k] += de;
                   sigma_y[k] = sy_new;
                   plastic_work += work;
@@ -1430,8 +1469,8 @@ namespace tribodyn
                         {
                           const double ki = mc[mat[i]].two_G * inv_r0,
                                        kj = mc[mat[j]].two_G * inv_r0;
-                          friction_work +=
-                            S * limit * (tn - limit) * (ki + kj) / (ki * kj);
+                          friction_work
+                            += S * limit * (tn - limit) * (ki + kj) / (ki * kj);
                         }
                       for (unsigned int c = 0; c < 3; ++c)
                         t[c] *= s;
@@ -1499,13 +1538,13 @@ namespace tribodyn
             }
           if (ghosts.active())
             ghosts.update(ex.data(), 7);
-          const double heat_fraction =
-            prm.interaction.bond_formation_heat_fraction;
+          const double heat_fraction
+            = prm.interaction.bond_formation_heat_fraction;
           for (unsigned int p = 0; p < n_pairs; ++p)
             {
               const unsigned int i = pi[p], j = pj[p];
-              const Vec3        &n = normal[p];
-              const double sn = 0.5 * (sig_i[p] + sig_j[p]);
+              const Vec3        &n  = normal[p];
+              const double       sn = 0.5 * (sig_i[p] + sig_j[p]);
               if (bonded[p] && prm.interaction.bond_breaking)
                 {
                   Sym3 s;
@@ -1514,19 +1553,19 @@ namespace tribodyn
                   // replace the normal and shear parts by the pair's own
                   const double sxx = s[0], syy = s[1], szz = s[2], syz = s[3],
                                sxz = s[4], sxy = s[5];
-                  Vec3 sn_vec{{sxx * n[0] + sxy * n[1] + sxz * n[2],
-                               sxy * n[0] + syy * n[1] + syz * n[2],
-                               sxz * n[0] + syz * n[1] + szz * n[2]}};
+                  Vec3         sn_vec{{sxx * n[0] + sxy * n[1] + sxz * n[2],
+                                       sxy * n[0] + syy * n[1] + syz * n[2],
+                                       sxz * n[0] + syz * n[1] + szz * n[2]}};
                   const double snn = dot(sn_vec, n);
                   Vec3         corr;
                   for (unsigned int c = 0; c < 3; ++c)
-                    corr[c] = 0.5 * (tau_i[p][c] + tau_j[p][c]) -
-                              (sn_vec[c] - snn * n[c]);
+                    corr[c] = 0.5 * (tau_i[p][c] + tau_j[p][c])
+                              - (sn_vec[c] - snn * n[c]);
                   add_sym(s, sn - snn, n, n);
                   add_sym(s, 1, n, corr);
                   add_sym(s, 1, corr, n);
-                  const double limit =
-                    std::min(mc[mat[i]].sigma_b, mc[mat[j]].sigma_b);
+                  const double limit
+                    = std::min(mc[mat[i]].sigma_b, mc[mat[j]].sigma_b);
                   if (von_mises(s) >= limit)
                     {
                       weights_stale = true;
@@ -1534,12 +1573,12 @@ namespace tribodyn
                       in_contact[p] = r_now[p] < d;
                     }
                 }
-              else if (!bonded[p] && in_contact[p] &&
-                       prm.interaction.bond_formation)
+              else if (!bonded[p] && in_contact[p]
+                       && prm.interaction.bond_formation)
                 {
                   const double sy = std::min(ex[7 * i + 6], ex[7 * j + 6]);
-                  const double Eb = std::min(mc[mat[i]].w_b, mc[mat[j]].w_b) *
-                                    S * r_now[p];
+                  const double Eb
+                    = std::min(mc[mat[i]].w_b, mc[mat[j]].w_b) * S * r_now[p];
                   if (sn <= -sy && heat[p] >= heat_fraction * Eb)
                     {
                       bonded[p]     = 1;
@@ -1585,11 +1624,11 @@ namespace tribodyn
     AutomatonSystem::fabric_corrected(const unsigned int k, const Sym3 &t) const
     {
       // sym(B^-1 T), B^-1 stored as xx yy zz yz xz xy
-      const Sym3 &b = fabric_inverse[k];
-      const double B[3][3] = {{b[0], b[5], b[4]}, {b[5], b[1], b[3]},
-                              {b[4], b[3], b[2]}};
-      const double T[3][3] = {{t[0], t[5], t[4]}, {t[5], t[1], t[3]},
-                              {t[4], t[3], t[2]}};
+      const Sym3  &b = fabric_inverse[k];
+      const double B[3][3]
+        = {{b[0], b[5], b[4]}, {b[5], b[1], b[3]}, {b[4], b[3], b[2]}};
+      const double T[3][3]
+        = {{t[0], t[5], t[4]}, {t[5], t[1], t[3]}, {t[4], t[3], t[2]}};
       double P[3][3];
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
@@ -1598,8 +1637,12 @@ namespace tribodyn
             for (unsigned int l = 0; l < 3; ++l)
               P[i][j] += B[i][l] * T[l][j];
           }
-      return {{P[0][0], P[1][1], P[2][2], 0.5 * (P[1][2] + P[2][1]),
-               0.5 * (P[0][2] + P[2][0]), 0.5 * (P[0][1] + P[1][0])}};
+      return {{P[0][0],
+               P[1][1],
+               P[2][2],
+               0.5 * (P[1][2] + P[2][1]),
+               0.5 * (P[0][2] + P[2][0]),
+               0.5 * (P[0][1] + P[1][0])}};
     }
 
 
@@ -1609,15 +1652,18 @@ namespace tribodyn
       // Per owned automaton: A = sum_j N_j N_j^T (N_j = Voigt of n n with
       // doubled shear entries) for the least-squares strain fit, and the
       // fabric B = sum_j (q S / V) n n.
-      const unsigned int n_pairs = pi.size();
+      const unsigned int                  n_pairs = pi.size();
       std::vector<std::array<double, 21>> A(n_owned);
       std::vector<Sym3>                   B(n_owned, Sym3{{0, 0, 0, 0, 0, 0}});
       std::vector<unsigned int>           count(n_owned, 0);
       for (auto &a : A)
         a.fill(0);
       auto voigt = [](const Vec3 &n) {
-        return std::array<double, 6>{{n[0] * n[0], n[1] * n[1], n[2] * n[2],
-                                      2 * n[1] * n[2], 2 * n[0] * n[2],
+        return std::array<double, 6>{{n[0] * n[0],
+                                      n[1] * n[1],
+                                      n[2] * n[2],
+                                      2 * n[1] * n[2],
+                                      2 * n[0] * n[2],
                                       2 * n[0] * n[1]}};
       };
       std::vector<Vec3> nvec(n_pairs);
@@ -1625,7 +1671,7 @@ namespace tribodyn
         {
           const Tensor<1, 3> dn = min_image(x[pi[p]], x[pj[p]]);
           const double       r  = dn.norm();
-          nvec[p] = {{dn[0] / r, dn[1] / r, dn[2] / r}};
+          nvec[p]               = {{dn[0] / r, dn[1] / r, dn[2] / r}};
           if (!bonded[p] && !in_contact[p])
             continue;
           const auto N = voigt(nvec[p]);
@@ -1728,9 +1774,9 @@ namespace tribodyn
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           const Sym3  &b   = B[k];
-          const double det = b[0] * (b[1] * b[2] - b[3] * b[3]) -
-                             b[5] * (b[5] * b[2] - b[3] * b[4]) +
-                             b[4] * (b[5] * b[3] - b[1] * b[4]);
+          const double det = b[0] * (b[1] * b[2] - b[3] * b[3])
+                             - b[5] * (b[5] * b[2] - b[3] * b[4])
+                             + b[4] * (b[5] * b[3] - b[1] * b[4]);
           // well-conditioned fabrics only (complete FCC: B = I); otherwise
           // keep eq. (4) as is: B^-1 of a nearly planar neighbourhood would
           // blow the stress (and the radial return's mean stress) up
@@ -1755,14 +1801,15 @@ namespace tribodyn
       double         kinetic = 0, elastic = 0;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
-          kinetic += 0.5 * mass[k] * dot(v[k], v[k]) +
-                     0.5 * inertia[k] * dot(w[k], w[k]);
+          kinetic += 0.5 * mass[k] * dot(v[k], v[k])
+                     + 0.5 * inertia[k] * dot(w[k], w[k]);
           const Sym3  &s  = stress[k];
           const double sm = (s[0] + s[1] + s[2]) / 3;
           const double a = s[0] - sm, b = s[1] - sm, c = s[2] - sm;
-          const double ss = a * a + b * b + c * c +
-                            2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-          elastic += V * (sm * sm / (2 * mc[mat[k]].K) + ss / (4 * mc[mat[k]].G));
+          const double ss = a * a + b * b + c * c
+                            + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+          elastic
+            += V * (sm * sm / (2 * mc[mat[k]].K) + ss / (4 * mc[mat[k]].G));
         }
       unsigned long long nb = 0, nu = 0;
       for (unsigned int p = 0; p < pi.size(); ++p)
@@ -1773,11 +1820,11 @@ namespace tribodyn
             else if (in_contact[p])
               ++nu;
           }
-      e.kinetic       = dealii::Utilities::MPI::sum(kinetic, comm);
-      e.elastic       = dealii::Utilities::MPI::sum(elastic, comm);
-      e.plastic_work  = dealii::Utilities::MPI::sum(plastic_work, comm);
-      e.friction_work = dealii::Utilities::MPI::sum(friction_work, comm);
-      e.n_bonded      = dealii::Utilities::MPI::sum(nb, comm);
+      e.kinetic             = dealii::Utilities::MPI::sum(kinetic, comm);
+      e.elastic             = dealii::Utilities::MPI::sum(elastic, comm);
+      e.plastic_work        = dealii::Utilities::MPI::sum(plastic_work, comm);
+      e.friction_work       = dealii::Utilities::MPI::sum(friction_work, comm);
+      e.n_bonded            = dealii::Utilities::MPI::sum(nb, comm);
       e.n_unbonded_contacts = dealii::Utilities::MPI::sum(nu, comm);
       return e;
     }
@@ -1796,7 +1843,7 @@ namespace tribodyn
     std::vector<Vec3>
     AutomatonSystem::group_forces() const
     {
-      const unsigned int n_groups = prm.boundary.groups.size();
+      const unsigned int  n_groups = prm.boundary.groups.size();
       std::vector<double> sums(3 * n_groups, 0.);
       // f holds the pair forces only (the reaction of the group).
       for (unsigned int k = 0; k < n_owned; ++k)
@@ -1870,10 +1917,10 @@ namespace tribodyn
       for (unsigned int p = 0; p < pi.size(); ++p)
         {
           PairView pv;
-          pv.id_i     = id[pi[p]];
-          pv.id_j     = id[pj[p]];
-          pv.bonded   = bonded[p];
-          pv.sigma    = 0.5 * (sig_i[p] + sig_j[p]);
+          pv.id_i   = id[pi[p]];
+          pv.id_j   = id[pj[p]];
+          pv.bonded = bonded[p];
+          pv.sigma  = 0.5 * (sig_i[p] + sig_j[p]);
           for (unsigned int c = 0; c < 3; ++c)
             pv.tau[c] = 0.5 * (tau_i[p][c] + tau_j[p][c]);
           pv.heat     = heat[p];
@@ -1903,8 +1950,8 @@ namespace tribodyn
     {
       char tag[32];
       std::snprintf(tag, sizeof(tag), "%s_%04u", base.c_str(), number);
-      const std::string name = tag;
-      const auto        nbonded = bonded_neighbour_counts();
+      const std::string         name    = tag;
+      const auto                nbonded = bonded_neighbour_counts();
       std::vector<unsigned int> selected;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
@@ -1914,9 +1961,10 @@ namespace tribodyn
               if (periodic[axis])
                 {
                   const double lo = prm.geometry.domain_lower[axis];
-                  y = lo + std::fmod(std::fmod(y - lo, period[axis]) +
-                                       period[axis],
-                                     period[axis]);
+                  y               = lo
+                      + std::fmod(std::fmod(y - lo, period[axis])
+                                    + period[axis],
+                                  period[axis]);
                 }
               if (y < slab_lo || y > slab_hi)
                 continue;
@@ -1950,7 +1998,8 @@ namespace tribodyn
       scalar("id", [&](unsigned k) { return static_cast<double>(id[k]); });
       scalar("material", [&](unsigned k) { return double(mat[k]); });
       scalar("body", [&](unsigned k) { return double(body[k]); });
-      scalar("bonded_neighbours", [&](unsigned k) { return double(nbonded[k]); });
+      scalar("bonded_neighbours",
+             [&](unsigned k) { return double(nbonded[k]); });
       scalar("plastic_strain", [&](unsigned k) { return eps_p[k]; });
       vector("velocity", [&](unsigned k) { return v[k]; });
       vector("displacement", [&](unsigned k) { return u[k]; });
@@ -1988,10 +2037,11 @@ namespace tribodyn
            "format=\"ascii\">\n";
       for (std::size_t k = 0; k < selected.size(); ++k)
         o << "1\n";
-      o << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-      write_file_atomically(join_path(directory, name + "." +
-                                                   std::to_string(rank) + ".vtu"),
-                            o.str());
+      o << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</"
+           "VTKFile>\n";
+      write_file_atomically(
+        join_path(directory, name + "." + std::to_string(rank) + ".vtu"),
+        o.str());
       if (rank == 0)
         {
           std::ostringstream pv;
@@ -1999,7 +2049,10 @@ namespace tribodyn
                 "version=\"0.1\" byte_order=\"LittleEndian\">\n"
                 "<PUnstructuredGrid GhostLevel=\"0\">\n<PPointData "
                 "Scalars=\"material\">\n";
-          for (const char *s : {"id", "material", "body", "bonded_neighbours",
+          for (const char *s : {"id",
+                                "material",
+                                "body",
+                                "bonded_neighbours",
                                 "plastic_strain"})
             pv << "<PDataArray type=\"Float64\" Name=\"" << s << "\"/>\n";
           for (const char *s : {"velocity", "displacement", "angular_velocity"})

@@ -1,8 +1,7 @@
-#include <tribodyn/core/errors.h>
-#include <tribodyn/mca/automaton_system.h>
-
 #include <cmath>
 #include <random>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/mca/automaton_system.h>
 
 namespace tribodyn
 {
@@ -20,14 +19,14 @@ namespace tribodyn
         {
           std::mt19937                           rng(g.roughness_seed);
           std::uniform_real_distribution<double> uni(0, 1);
-          const double Lx = g.domain_upper[0] - g.domain_lower[0];
-          const double Ly = g.domain_upper[1] - g.domain_lower[1];
-          const double k  = 2 * M_PI / g.roughness_wavelength;
+          const double Lx  = g.domain_upper[0] - g.domain_lower[0];
+          const double Ly  = g.domain_upper[1] - g.domain_lower[1];
+          const double k   = 2 * M_PI / g.roughness_wavelength;
           double       sum = 0;
           for (unsigned int s = 0; s < 6; ++s)
             {
               const double angle = M_PI * uni(rng);
-              double kx = k * std::cos(angle), ky = k * std::sin(angle);
+              double       kx = k * std::cos(angle), ky = k * std::sin(angle);
               if (g.periodic[0])
                 kx = 2 * M_PI / Lx * std::round(kx * Lx / (2 * M_PI));
               if (g.periodic[1])
@@ -55,10 +54,10 @@ namespace tribodyn
     std::vector<PackedAutomaton>
     pack_automata(const GeometryParameters &g, const unsigned int n_materials)
     {
-      const double d = g.automaton_size;
-      const double a = d * std::sqrt(2.);
-      const std::array<std::array<double, 3>, 4> basis = {
-        {{{0, 0, 0}}, {{0.5, 0.5, 0}}, {{0.5, 0, 0.5}}, {{0, 0.5, 0.5}}}};
+      const double                               d = g.automaton_size;
+      const double                               a = d * std::sqrt(2.);
+      const std::array<std::array<double, 3>, 4> basis
+        = {{{{0, 0, 0}}, {{0.5, 0.5, 0}}, {{0.5, 0, 0.5}}, {{0, 0.5, 0.5}}}};
       std::array<long, 3> n;
       for (unsigned int c = 0; c < 3; ++c)
         n[c] = static_cast<long>(
@@ -71,9 +70,9 @@ namespace tribodyn
           for (long i = 0; i < n[0] + 1; ++i)
             for (const auto &b : basis)
               {
-                Point3 p;
+                Point3     p;
                 const long ijk[3] = {i, j, k};
-                bool inside = true;
+                bool       inside = true;
                 for (unsigned int c = 0; c < 3; ++c)
                   {
                     p[c] = g.domain_lower[c] + a / 4 + a * (ijk[c] + b[c]);
@@ -87,8 +86,8 @@ namespace tribodyn
                   {
                     bool in = true;
                     for (unsigned int c = 0; c < 3; ++c)
-                      if (p[c] < g.bodies[m].lower[c] ||
-                          p[c] >= g.bodies[m].upper[c])
+                      if (p[c] < g.bodies[m].lower[c]
+                          || p[c] >= g.bodies[m].upper[c])
                         in = false;
                     if (in)
                       {
@@ -104,9 +103,9 @@ namespace tribodyn
                 automaton.body     = std::min(body, 255);
                 if (g.rough_interface)
                   {
-                    const double h =
-                      g.interface_height +
-                      g.roughness_amplitude * surface(p[0], p[1]);
+                    const double h
+                      = g.interface_height
+                        + g.roughness_amplitude * surface(p[0], p[1]);
                     automaton.body = p[2] < h ? 0 : 1;
                     if (automaton.body == 1)
                       automaton.position[2] += g.interface_gap;

@@ -17,7 +17,7 @@ main(int argc, char **argv)
   using namespace tribodyn_test;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const double E = 30e9, rho = 1770, v0 = 1., L = 8e-3, W = 1e-3;
-  ContactRun run(R"(
+  ContactRun   run(R"(
     subsection Geometry
       set Width = 1e-3
       set Height = 8e-3
@@ -48,7 +48,7 @@ main(int argc, char **argv)
       set Sample interval = 1
       set Averaging start time = 0
     end)");
-  const auto & samples = run.run();
+  const auto  &samples = run.run();
   const double c = std::sqrt(E / rho), duration = 2 * L / c;
   const double force = rho * c * v0 * W;
   const double mass  = run.solver->total_mass();
@@ -65,7 +65,10 @@ main(int argc, char **argv)
         last_contact = s.time + run.solver->time_step();
     }
   plateau /= n_plateau;
-  check_relative(plateau, force, 0.01, "plateau contact force rho c v0 W (N/m)");
+  check_relative(plateau,
+                 force,
+                 0.01,
+                 "plateau contact force rho c v0 W (N/m)");
   check_relative(last_contact, duration, 0.02, "contact duration 2L/c (s)");
   const Sample &end = samples.back();
   check_relative(end.momentum_y / mass, v0, 0.02, "rebound velocity (m/s)");
@@ -73,14 +76,16 @@ main(int argc, char **argv)
   for (const auto &s : samples)
     balance = std::max(balance, s.energy_balance_error);
   check(balance < 1e-10,
-        "energy balance KE + W_int = E0 + W_ext + W_contact to 1e-10 (" +
-          std::to_string(balance) + ")");
+        "energy balance KE + W_int = E0 + W_ext + W_contact to 1e-10 ("
+          + std::to_string(balance) + ")");
   const double e0   = 0.5 * mass * v0 * v0;
   const double lost = -end.contact_work / e0;
   check(lost >= 0 && lost < 0.03,
-        "energy absorbed by the forward-increment contact: " +
-          std::to_string(100 * lost) + " % of the impact energy (< 3 %)");
-  check_relative(end.kinetic_energy + end.elastic_energy, e0 * (1 - lost),
-                 1e-9, "energy after rebound = E0 + contact work");
+        "energy absorbed by the forward-increment contact: "
+          + std::to_string(100 * lost) + " % of the impact energy (< 3 %)");
+  check_relative(end.kinetic_energy + end.elastic_energy,
+                 e0 * (1 - lost),
+                 1e-9,
+                 "energy after rebound = E0 + contact work");
   return result();
 }

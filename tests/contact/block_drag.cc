@@ -22,7 +22,7 @@ main(int argc, char **argv)
 {
   using namespace tribodyn_test;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const double P = 5e6, W = 4e-3, H = 2e-3, rho = 1770, mu = 0.25, V = -2;
+  const double      P = 5e6, W = 4e-3, H = 2e-3, rho = 1770, mu = 0.25, V = -2;
   const std::string common = R"(
     subsection Geometry
       set Width = 4e-3
@@ -43,7 +43,7 @@ main(int argc, char **argv)
     end
   )";
   {
-    ContactRun run(common + R"(
+    ContactRun  run(common + R"(
       subsection Loading
         set Ramp time = 5e-6
       end
@@ -61,22 +61,25 @@ main(int argc, char **argv)
           mean += s.mu_global;
           n += 1;
           worst = std::max(worst,
-                           std::abs(std::abs(s.contact_tangential_force) -
-                                    mu * s.contact_normal_force) /
-                             s.contact_normal_force);
-          slip = std::min(slip, s.slip_fraction);
+                           std::abs(std::abs(s.contact_tangential_force)
+                                    - mu * s.contact_normal_force)
+                             / s.contact_normal_force);
+          slip  = std::min(slip, s.slip_fraction);
           stick = std::max(stick, s.stick_fraction);
         }
-    check_relative(mean / n, mu, 0.01,
+    check_relative(mean / n,
+                   mu,
+                   0.01,
                    "held block: top reaction / (P W) averaged over 15-30 us");
-    check(worst < 1e-12, "held block: |sum lambda_T| = mu sum lambda_N (" +
-                           std::to_string(worst) + ")");
+    check(worst < 1e-12,
+          "held block: |sum lambda_T| = mu sum lambda_N ("
+            + std::to_string(worst) + ")");
     check(stick == 0. && slip > 0.9,
           "held block: no node sticks after 15 us, >= 90 % slip (the "
           "trailing corner node separates at times)");
   }
   {
-    ContactRun run(common + R"(
+    ContactRun   run(common + R"(
       subsection Loading
         set Ramp time = 2e-6
         set Top face held in x = false
@@ -89,14 +92,14 @@ main(int argc, char **argv)
       subsection Output
         set Sample interval = 1
       end)");
-    const auto & samples = run.run();
+    const auto  &samples = run.run();
     const double m       = run.solver->total_mass();
     const double dt      = run.solver->time_step();
     const double b2      = run.parameters.time.beta2;
     check_relative(m, rho * W * H, 1e-12, "block mass (kg/m)");
     // Exact momentum identity while every node slides or is separated:
     // m v_x = -mu (m v_y + W [dt sum_{k<n} P(t_k) + dt beta2 P(t_n)]).
-    double impulse = 0, worst = 0, t_first_stick = -1;
+    double       impulse = 0, worst = 0, t_first_stick = -1;
     unsigned int n_checked = 0;
     for (const auto &s : samples)
       {
@@ -105,40 +108,45 @@ main(int argc, char **argv)
           t_first_stick = s.time;
         if (t_first_stick < 0)
           {
-            const double expected =
-              -mu * (s.momentum_y +
-                     W * (load + dt * b2 * run.parameters.loading.pressure_at(
-                                             s.time)));
-            worst = std::max(worst, std::abs(s.momentum_x - expected) /
-                                      (mu * P * W * 1e-6));
+            const double expected
+              = -mu
+                * (s.momentum_y
+                   + W
+                       * (load
+                          + dt * b2
+                              * run.parameters.loading.pressure_at(s.time)));
+            worst = std::max(worst,
+                             std::abs(s.momentum_x - expected)
+                               / (mu * P * W * 1e-6));
             ++n_checked;
           }
         impulse += dt * run.parameters.loading.pressure_at(s.time);
       }
     check(worst < 1e-9 && n_checked > 100,
           "free block, all nodes sliding: m v_x = -mu (m v_y + impulse of P W) "
-          "to 1e-9 over " + std::to_string(n_checked) + " steps (" +
-            std::to_string(worst) + ")");
+          "to 1e-9 over "
+            + std::to_string(n_checked) + " steps (" + std::to_string(worst)
+            + ")");
     // Rigid-body reference (N = P W): v(t) = -mu W int_0^t P / m until
     // it reaches V at t_s = t_r/2 + |V| m / (mu P W). The elastic block's
     // normal force oscillates around P W, so v_x follows it within 4 % of
     // |V| up to the first stick.
-    const double t_s = 1e-6 + std::abs(V) * m / (mu * P * W);
+    const double t_s         = 1e-6 + std::abs(V) * m / (mu * P * W);
     double       rigid_error = 0, rigid_impulse = 0;
     for (const auto &s : samples)
       {
         if (s.time <= t_first_stick)
-          rigid_error =
-            std::max(rigid_error,
-                     std::abs(s.momentum_x / m + mu * W * rigid_impulse / m) /
-                       std::abs(V));
+          rigid_error
+            = std::max(rigid_error,
+                       std::abs(s.momentum_x / m + mu * W * rigid_impulse / m)
+                         / std::abs(V));
         rigid_impulse += dt * run.parameters.loading.pressure_at(s.time);
       }
     check(rigid_error < 0.04 && t_first_stick > 0.5 * t_s,
           "free block: v_x follows the rigid-body solution within 4 % of |V| "
-          "up to the first stick at " + std::to_string(t_first_stick) +
-            " s (t_s = " + std::to_string(t_s) + " s; error " +
-            std::to_string(rigid_error) + ")");
+          "up to the first stick at "
+            + std::to_string(t_first_stick) + " s (t_s = " + std::to_string(t_s)
+            + " s; error " + std::to_string(rigid_error) + ")");
     double mean_after = 0, n_after = 0;
     for (const auto &s : samples)
       if (s.time > t_s + 2e-6)
@@ -146,7 +154,9 @@ main(int argc, char **argv)
           mean_after += s.momentum_x / m;
           n_after += 1;
         }
-    check_relative(mean_after / n_after, V, 0.02,
+    check_relative(mean_after / n_after,
+                   V,
+                   0.02,
                    "free block then moves with the plane (mean v_x, m/s)");
   }
   return result();

@@ -1,16 +1,14 @@
 #ifndef tribodyn_tests_contact_tools_h
 #define tribodyn_tests_contact_tools_h
 
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/timer.h>
-
-#include <tribodyn/contact/contact_parameters.h>
-#include <tribodyn/contact/contact_solver.h>
-
 #include "../test_utilities.h"
 
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 #include <memory>
 #include <string>
+#include <tribodyn/contact/contact_parameters.h>
+#include <tribodyn/contact/contact_solver.h>
 
 namespace tribodyn_test
 {
@@ -37,12 +35,15 @@ namespace tribodyn_test
     std::unique_ptr<dealii::TimerOutput> timer;
     std::unique_ptr<ContactSolver>       solver;
 
-    ContactRun(const std::string &prm_text, const MPI_Comm comm = MPI_COMM_WORLD)
-      : parameters(contact_parameters(prm_text))
-      , timer(std::make_unique<dealii::TimerOutput>(
-          comm, std::cout, dealii::TimerOutput::never,
-          dealii::TimerOutput::wall_times))
-      , solver(std::make_unique<ContactSolver>(comm, parameters, *timer))
+    ContactRun(const std::string &prm_text,
+               const MPI_Comm     comm = MPI_COMM_WORLD)
+        : parameters(contact_parameters(prm_text))
+        , timer(std::make_unique<dealii::TimerOutput>(
+            comm,
+            std::cout,
+            dealii::TimerOutput::never,
+            dealii::TimerOutput::wall_times))
+        , solver(std::make_unique<ContactSolver>(comm, parameters, *timer))
     {
       solver->setup();
     }

@@ -35,8 +35,10 @@ namespace
         set Automatic time step = true
         set Safety factor = 0.999
         set End time = 1e-3
-        set Beta2 = )" + beta2 + R"(
-        set Damping coefficient = )" + beta + R"(
+        set Beta2 = )"
+           + beta2 + R"(
+        set Damping coefficient = )"
+           + beta + R"(
       end
       subsection Output
         set Sample interval = 100
@@ -49,43 +51,48 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  double undamped = 0;
+  double                                   undamped = 0;
   for (const auto &c : std::vector<std::pair<std::string, std::string>>{
          {"0.5", "0"}, {"0.5", "2e-8"}, {"0.75", "0"}, {"1", "1e-8"}})
     {
-      ContactRun run(parameters(c.first, c.second));
+      ContactRun   run(parameters(c.first, c.second));
       const double dt_crit = run.solver->critical_time_step();
       const double omega   = run.solver->omega_max();
       if (c.first == "0.5" && c.second == "0")
         {
           undamped = dt_crit;
-          check_relative(dt_crit * omega, 2., 1e-12,
+          check_relative(dt_crit * omega,
+                         2.,
+                         1e-12,
                          "beta2 = 0.5, no damping: omega_max dt_crit = 2");
         }
       else
-        check(dt_crit < undamped, "beta2 = " + c.first + ", beta = " +
-                                    c.second + " lowers dt_crit");
+        check(dt_crit < undamped,
+              "beta2 = " + c.first + ", beta = " + c.second
+                + " lowers dt_crit");
       // 20 000 steps at 0.999 dt_crit.
       run.parameters.time.end_time = 20000 * run.solver->time_step();
-      const auto & samples = run.run();
-      const Sample &end    = samples.back();
+      const auto   &samples        = run.run();
+      const Sample &end            = samples.back();
       // Energy in the frame of the centre of mass (the load accelerates
       // the block as a whole): subtract the rigid kinetic energy.
-      const double m = run.solver->total_mass();
-      double worst = 0, work = 0;
+      const double m     = run.solver->total_mass();
+      double       worst = 0, work = 0;
       for (const auto &s : samples)
         {
-          const double internal =
-            s.kinetic_energy -
-            0.5 * (s.momentum_x * s.momentum_x + s.momentum_y * s.momentum_y) / m +
-            s.elastic_energy;
+          const double internal
+            = s.kinetic_energy
+              - 0.5
+                  * (s.momentum_x * s.momentum_x + s.momentum_y * s.momentum_y)
+                  / m
+              + s.elastic_energy;
           worst = std::max(worst, std::abs(internal));
           work  = std::max(work, s.external_work);
         }
       check(std::isfinite(end.kinetic_energy) && worst < 10 * work,
-            "beta2 = " + c.first + ", beta = " + c.second +
-              ": bounded at 0.999 dt_crit = " + std::to_string(dt_crit * 1e9) +
-              " ns over 20000 steps");
+            "beta2 = " + c.first + ", beta = " + c.second
+              + ": bounded at 0.999 dt_crit = " + std::to_string(dt_crit * 1e9)
+              + " ns over 20000 steps");
     }
   return result();
 }

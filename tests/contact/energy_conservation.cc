@@ -45,15 +45,15 @@ namespace
         set Ramp time = 0
         set Top face held in x = false
         set Initial velocity = 0.5, -3
-        set Initial gap = )" +
-           gap + R"(
+        set Initial gap = )"
+           + gap + R"(
       end
       subsection Time integration
         set Time step = 20e-9
         set End time = 200e-6
         set Damping coefficient = 0
-        set Beta2 = )" +
-           beta2 + R"(
+        set Beta2 = )"
+           + beta2 + R"(
       end
       subsection Contact
         set Friction law = frictionless
@@ -70,11 +70,11 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   {
-    ContactRun run(parameters("0.5", "1"));
+    ContactRun  run(parameters("0.5", "1"));
     const auto &samples = run.run();
     check(worst_balance(samples) < 1e-10,
-          "beta2 = 0.5, free flight: energy balance to 1e-10 (" +
-            std::to_string(worst_balance(samples)) + ")");
+          "beta2 = 0.5, free flight: energy balance to 1e-10 ("
+            + std::to_string(worst_balance(samples)) + ")");
     double damping = 0, scale = 0;
     for (const auto &s : samples)
       {
@@ -82,25 +82,28 @@ main(int argc, char **argv)
         scale   = std::max(scale, s.kinetic_energy + s.elastic_energy);
       }
     std::printf("damping dissipation %.3e J/m, energy scale %.3e J/m\n",
-                damping, scale);
+                damping,
+                scale);
     check(damping < 1e-9 * scale,
           "no damping: W_int - elastic energy = 0 to 1e-9 of the energy");
-    check(samples.back().contact_normal_force == 0 &&
-            samples.back().external_work > 0,
+    check(samples.back().contact_normal_force == 0
+            && samples.back().external_work > 0,
           "free flight: no contact, the pressure did work");
   }
   {
-    ContactRun run(parameters("0.75", "1"));
+    ContactRun   run(parameters("0.75", "1"));
     const double worst = worst_balance(run.run());
-    check(worst > 1e-6, "beta2 = 0.75 dissipates numerically (balance error " +
-                          std::to_string(worst) + " > 1e-6)");
+    check(worst > 1e-6,
+          "beta2 = 0.75 dissipates numerically (balance error "
+            + std::to_string(worst) + " > 1e-6)");
   }
   {
-    ContactRun run(parameters("0.5", "0"));
+    ContactRun  run(parameters("0.5", "0"));
     const auto &samples = run.run();
     check(worst_balance(samples) < 1e-10,
           "beta2 = 0.5, impacts on the plane: energy balance with the contact "
-          "work to 1e-10 (" + std::to_string(worst_balance(samples)) + ")");
+          "work to 1e-10 ("
+            + std::to_string(worst_balance(samples)) + ")");
     check(samples.back().contact_work != 0,
           "the contact did work during the impacts");
   }

@@ -12,42 +12,44 @@
 //     homogenization module (Morphology::create): the heterogeneity area
 //     fraction of the mesh equals the morphology's pixel fraction.
 
-#include <tribodyn/contact/friction.h>
-#include <tribodyn/core/morphology.h>
-
 #include "contact_test_tools.h"
 
 #include <cmath>
+#include <tribodyn/contact/friction.h>
+#include <tribodyn/core/morphology.h>
 
 int
 main(int argc, char **argv)
 {
   using namespace tribodyn_test;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  FrictionStep f;
+  FrictionStep                             f;
   f.mu = 0.25;
   ContactStatus status;
   {
-    const double t = tangential_multiplier<FrictionLaw::coulomb>(
-      0.2, 1., 0., f, status);
+    const double t
+      = tangential_multiplier<FrictionLaw::coulomb>(0.2, 1., 0., f, status);
     check(t == 0.2 && status == stick, "Coulomb: inside the cone sticks");
-    const double s = tangential_multiplier<FrictionLaw::coulomb>(
-      -0.3, 1., 0., f, status);
+    const double s
+      = tangential_multiplier<FrictionLaw::coulomb>(-0.3, 1., 0., f, status);
     check(s == -0.25 && status == slip, "Coulomb: outside slips at -mu N");
   }
   {
     const double dt = 5e-9, t_star = 1.5e-6, lambda_n = 2.;
-    f.decay         = std::exp(-dt / t_star);
-    double tau      = 0;
+    f.decay    = std::exp(-dt / t_star);
+    double tau = 0;
     for (unsigned int n = 1; n <= 1000; ++n)
       tau = tangential_multiplier<FrictionLaw::regularized>(
         -10., lambda_n, tau, f, status);
-    check_relative(tau, -0.25 * lambda_n * (1 - std::exp(-1000 * dt / t_star)),
-                   1e-14, "regularized: exact relaxation over 1000 steps");
+    check_relative(tau,
+                   -0.25 * lambda_n * (1 - std::exp(-1000 * dt / t_star)),
+                   1e-14,
+                   "regularized: exact relaxation over 1000 steps");
     check(status == slip, "regularized: status slip");
     const double inside = tangential_multiplier<FrictionLaw::regularized>(
       0.4, lambda_n, tau, f, status);
-    check(inside == 0.4 && status == stick, "regularized: inside the cone sticks");
+    check(inside == 0.4 && status == stick,
+          "regularized: inside the cone sticks");
     // tau_old above the cone (normal force dropped): relaxation would give
     // more than the stick trial, so the point sticks instead.
     const double capped = tangential_multiplier<FrictionLaw::regularized>(
@@ -56,7 +58,7 @@ main(int argc, char **argv)
           "regularized: never more than the stick trial");
   }
   {
-    const std::string prm = R"(
+    const std::string       prm = R"(
       subsection Material
         set Type = morphology
       end
@@ -66,13 +68,15 @@ main(int argc, char **argv)
       subsection Output
         set Averaging start time = 0
       end)";
-    ContactRun run(prm);
+    ContactRun              run(prm);
     const ContactParameters p = contact_parameters(prm);
     const Morphology        m = Morphology::create(p.morphology);
     check_relative(run.solver->heterogeneity_area_fraction(),
-                   m.heterogeneity_fraction(), 1e-12,
+                   m.heterogeneity_fraction(),
+                   1e-12,
                    "meso pin: heterogeneity area fraction = morphology's");
-    check(m.heterogeneity_fraction() > 0.05, "the morphology has heterogeneities");
+    check(m.heterogeneity_fraction() > 0.05,
+          "the morphology has heterogeneities");
   }
   return result();
 }

@@ -7,13 +7,12 @@
 //     has the critical time step of the same stiffness given directly as
 //     'anisotropic' (1e-12).
 
-#include <tribodyn/core/errors.h>
-#include <tribodyn/core/material.h>
-
 #include "contact_test_tools.h"
 
 #include <cmath>
 #include <sstream>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/material.h>
 
 int
 main(int argc, char **argv)
@@ -35,13 +34,13 @@ main(int argc, char **argv)
     check_relative(cz[0], iso.lambda(), 1e-12, "sigma_zz row c_z[0] = lambda");
     check_relative(cz[1], iso.lambda(), 1e-12, "sigma_zz row c_z[1] = lambda");
   }
-  const std::string file = std::string(TRIBODYN_CONTACT_TEST_DIR) +
-                           "/homogenization_summary.json";
+  const std::string file
+    = std::string(TRIBODYN_CONTACT_TEST_DIR) + "/homogenization_summary.json";
   {
     dealii::Tensor<1, 3> cz;
-    const auto C = read_homogenization_stiffness(file, "KUBC", cz);
-    check(C[0][0] == 3.6e10 && C[0][2] == 1.0e7 && C[2][1] == -2.0e7 &&
-            C[2][2] == 1.33e10 && cz[1] == 9.0e9,
+    const auto           C = read_homogenization_stiffness(file, "KUBC", cz);
+    check(C[0][0] == 3.6e10 && C[0][2] == 1.0e7 && C[2][1] == -2.0e7
+            && C[2][2] == 1.33e10 && cz[1] == 9.0e9,
           "KUBC stiffness and c_z read from summary.json");
     const auto S = read_homogenization_stiffness(file, "SUBC", cz);
     check(S[1][1] == 3.6e10 && cz[0] == 0, "SUBC stiffness read (no c_z)");
@@ -66,14 +65,15 @@ main(int argc, char **argv)
         set Averaging start time = 0
       end
     )";
-    ContactRun from_file(common + R"(
+    ContactRun        from_file(common + R"(
       subsection Material
         set Type = homogenization summary
         subsection Homogenization summary
-          set File = )" + file + R"(
+          set File = )" + file
+                         + R"(
         end
       end)");
-    ContactRun given(common + R"(
+    ContactRun        given(common + R"(
       subsection Material
         set Type = anisotropic
         subsection Anisotropic

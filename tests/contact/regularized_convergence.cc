@@ -22,10 +22,12 @@ namespace
   {
     ContactRun run(R"(
       subsection Geometry
-        set Mesh size = )" + h + R"(
+        set Mesh size = )"
+                   + h + R"(
       end
       subsection Time integration
-        set Time step = )" + dt + R"(
+        set Time step = )"
+                   + dt + R"(
         set End time = 100e-6
       end
       subsection Output
@@ -45,9 +47,9 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto coarse      = averages("5e-9", "0.25e-3");
-  const auto small_step  = averages("2.5e-9", "0.25e-3");
-  const auto fine_mesh   = averages("5e-9", "0.125e-3");
+  const auto                               coarse = averages("5e-9", "0.25e-3");
+  const auto small_step = averages("2.5e-9", "0.25e-3");
+  const auto fine_mesh  = averages("5e-9", "0.125e-3");
   check(std::abs(coarse.first - small_step.first) < 0.002,
         "mu_global mean: dt = 5 ns vs 2.5 ns within 0.002");
   check(std::abs(coarse.first - fine_mesh.first) < 0.002,

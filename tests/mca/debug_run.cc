@@ -1,7 +1,8 @@
+#include <deal.II/base/mpi.h>
 #include <fenv.h>
 #include <tribodyn/core/application.h>
-#include <deal.II/base/mpi.h>
-int main(int argc, char **argv)
+int
+main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   feenableexcept(FE_INVALID | FE_DIVBYZERO);

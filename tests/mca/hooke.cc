@@ -19,8 +19,10 @@ namespace
 {
   /// Stresses of the interior automata after imposing eps (sign s).
   std::vector<Sym3>
-  interior_stresses(const int material, const double eps[3][3],
-                    const double sign, unsigned int &n_interior)
+  interior_stresses(const int     material,
+                    const double  eps[3][3],
+                    const double  sign,
+                    unsigned int &n_interior)
   {
     const Parameters p = block_parameters(6, 1e-3, material);
     AutomatonSystem  system(p, MPI_COMM_WORLD);
@@ -72,10 +74,10 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const double amplitude = 1e-6;
+  const double                             amplitude = 1e-6;
   // a general strain with all six components
-  const double shape[3][3] = {{1.0, 0.3, -0.2}, {0.3, -0.7, 0.5},
-                              {-0.2, 0.5, 0.4}};
+  const double shape[3][3]
+    = {{1.0, 0.3, -0.2}, {0.3, -0.7, 0.5}, {-0.2, 0.5, 0.4}};
   double eps[3][3];
   for (unsigned int i = 0; i < 3; ++i)
     for (unsigned int j = 0; j < 3; ++j)
@@ -84,11 +86,11 @@ main(int argc, char **argv)
   const Parameters defaults;
   for (const int material : {0, 1})
     {
-      const auto &m   = defaults.materials[material];
-      const Sym3  ref = hooke(m, eps);
+      const auto  &m      = defaults.materials[material];
+      const Sym3   ref    = hooke(m, eps);
       unsigned int n_plus = 0, n_minus = 0;
-      const auto plus  = interior_stresses(material, eps, +1, n_plus);
-      const auto minus = interior_stresses(material, eps, -1, n_minus);
+      const auto   plus  = interior_stresses(material, eps, +1, n_plus);
+      const auto   minus = interior_stresses(material, eps, -1, n_minus);
       check(n_plus > 10 && n_plus == n_minus,
             m.name + ": " + std::to_string(n_plus) + " interior automata");
       double worst_central = 0, worst_one_sided = 0;
@@ -100,16 +102,22 @@ main(int argc, char **argv)
               central[c] = 0.5 * (plus[k][c] - minus[k][c]) - ref[c];
               one[c]     = plus[k][c] - ref[c];
             }
-          worst_central = std::max(worst_central, sym_norm(central));
+          worst_central   = std::max(worst_central, sym_norm(central));
           worst_one_sided = std::max(worst_one_sided, sym_norm(one));
         }
-      check_relative(worst_central, 0, 1e-8,
-                     m.name + ": |central-difference stress - Hooke| / "
-                              "|Hooke|",
+      check_relative(worst_central,
+                     0,
+                     1e-8,
+                     m.name
+                       + ": |central-difference stress - Hooke| / "
+                         "|Hooke|",
                      sym_norm(ref));
-      check_relative(worst_one_sided, 0, 10 * amplitude,
-                     m.name + ": |stress - Hooke| / |Hooke| (one-sided, "
-                              "O(eps))",
+      check_relative(worst_one_sided,
+                     0,
+                     10 * amplitude,
+                     m.name
+                       + ": |stress - Hooke| / |Hooke| (one-sided, "
+                         "O(eps))",
                      sym_norm(ref));
     }
   return result();

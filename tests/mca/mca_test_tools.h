@@ -1,15 +1,13 @@
 #ifndef tribodyn_tests_mca_test_tools_h
 #define tribodyn_tests_mca_test_tools_h
 
-#include <deal.II/base/mpi.h>
-
-#include <tribodyn/mca/automaton_system.h>
-#include <tribodyn/mca/parameters.h>
-
 #include "../test_utilities.h"
 
 #include <cmath>
+#include <deal.II/base/mpi.h>
 #include <map>
+#include <tribodyn/mca/automaton_system.h>
+#include <tribodyn/mca/parameters.h>
 
 namespace tribodyn_test
 {
@@ -19,21 +17,21 @@ namespace tribodyn_test
   inline Parameters
   block_parameters(const unsigned int n,
                    const double       d,
-                   const int          material = 0,
+                   const int          material    = 0,
                    const bool         periodic_xy = false)
   {
     Parameters   p;
-    const double a = d * std::sqrt(2.);
-    auto        &g = p.geometry;
+    const double a   = d * std::sqrt(2.);
+    auto        &g   = p.geometry;
     g.automaton_size = d;
     g.domain_lower   = Point3(0, 0, 0);
     g.domain_upper   = Point3(n * a, n * a, n * a);
     g.periodic       = {{periodic_xy, periodic_xy, false}};
     Body b;
-    b.lower    = g.domain_lower;
-    b.upper    = g.domain_upper;
-    b.material = material;
-    g.bodies   = {b};
+    b.lower                      = g.domain_lower;
+    b.upper                      = g.domain_upper;
+    b.material                   = material;
+    g.bodies                     = {b};
     p.interaction.rotations      = true;
     p.interaction.plasticity     = false;
     p.interaction.bond_breaking  = false;
@@ -59,8 +57,8 @@ namespace tribodyn_test
   inline double
   sym_norm(const Sym3 &s)
   {
-    return std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2] +
-                     2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+    return std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]
+                     + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
   }
 } // namespace tribodyn_test
 

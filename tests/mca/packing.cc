@@ -15,18 +15,19 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const double d = 1e-3, a = d * std::sqrt(2.);
-  const unsigned int n = 12;
-  Parameters p = block_parameters(n, d, 0);
-  const auto plain = pack_automata(p.geometry, 2);
+  const double                             d = 1e-3, a = d * std::sqrt(2.);
+  const unsigned int                       n     = 12;
+  Parameters                               p     = block_parameters(n, d, 0);
+  const auto                               plain = pack_automata(p.geometry, 2);
   check(plain.size() == 4 * n * n * n,
-        "FCC box of 12^3 cells holds 4 n^3 = " + std::to_string(4 * n * n * n) +
-          " automata (" + std::to_string(plain.size()) + ")");
+        "FCC box of 12^3 cells holds 4 n^3 = " + std::to_string(4 * n * n * n)
+          + " automata (" + std::to_string(plain.size()) + ")");
   // nearest-neighbour distance of an interior automaton
   const Point3 centre(n * a / 2, n * a / 2, n * a / 2);
   std::size_t  inner = 0;
   for (std::size_t k = 0; k < plain.size(); ++k)
-    if (plain[k].position.distance(centre) < plain[inner].position.distance(centre))
+    if (plain[k].position.distance(centre)
+        < plain[inner].position.distance(centre))
       inner = k;
   unsigned int neighbours = 0;
   double       nearest    = 1e300;
@@ -43,18 +44,18 @@ main(int argc, char **argv)
 
   const double R = 4.5 * d;
   Region       sphere;
-  sphere.shape  = Region::Shape::sphere;
-  sphere.a      = centre;
-  sphere.radius = R;
+  sphere.shape    = Region::Shape::sphere;
+  sphere.a        = centre;
+  sphere.radius   = R;
   sphere.material = -1;
   Region cylinder;
-  cylinder.shape    = Region::Shape::cylinder;
-  cylinder.a        = Point3(1 * a, 2 * a, 1.5 * a);
-  cylinder.b        = Point3(10 * a, 9 * a, 10.5 * a);
-  cylinder.radius   = 2.5 * d;
-  cylinder.material = 1;
-  p.geometry.regions = {cylinder, sphere};
-  const auto packed = pack_automata(p.geometry, 2);
+  cylinder.shape        = Region::Shape::cylinder;
+  cylinder.a            = Point3(1 * a, 2 * a, 1.5 * a);
+  cylinder.b            = Point3(10 * a, 9 * a, 10.5 * a);
+  cylinder.radius       = 2.5 * d;
+  cylinder.material     = 1;
+  p.geometry.regions    = {cylinder, sphere};
+  const auto  packed    = pack_automata(p.geometry, 2);
   std::size_t in_sphere = 0, in_cylinder = 0, carbon = 0;
   for (const auto &q : plain)
     {
@@ -67,18 +68,22 @@ main(int argc, char **argv)
     carbon += q.material == 1;
   const double V = d * d * d / std::sqrt(2.);
   check(packed.size() == plain.size() - in_sphere,
-        "the void removes the " + std::to_string(in_sphere) +
-          " automata inside the sphere");
-  check(carbon == in_cylinder, "the cylinder turns its " +
-                                 std::to_string(in_cylinder) +
-                                 " automata (outside the void) into carbon");
-  check_relative(in_sphere * V, 4. / 3 * M_PI * R * R * R, 0.05,
+        "the void removes the " + std::to_string(in_sphere)
+          + " automata inside the sphere");
+  check(carbon == in_cylinder,
+        "the cylinder turns its " + std::to_string(in_cylinder)
+          + " automata (outside the void) into carbon");
+  check_relative(in_sphere * V,
+                 4. / 3 * M_PI * R * R * R,
+                 0.05,
                  "sphere: automata x V vs its volume");
-  const double L = cylinder.b.distance(cylinder.a);
+  const double L       = cylinder.b.distance(cylinder.a);
   std::size_t  cyl_all = 0;
   for (const auto &q : plain)
     cyl_all += cylinder.contains(q.position);
-  check_relative(cyl_all * V, M_PI * 2.5 * d * 2.5 * d * L, 0.05,
+  check_relative(cyl_all * V,
+                 M_PI * 2.5 * d * 2.5 * d * L,
+                 0.05,
                  "cylinder (oblique axis): automata x V vs its volume");
   return result();
 }

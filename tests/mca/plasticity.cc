@@ -60,13 +60,16 @@ namespace
   void
   run(const int material, const MaterialParameters &m, const double e_max)
   {
-    Parameters p              = block_parameters(6, 1e-3, material);
-    p.interaction.plasticity  = true;
-    p.materials[material]     = m;
+    Parameters p             = block_parameters(6, 1e-3, material);
+    p.interaction.plasticity = true;
+    p.materials[material]    = m;
     AutomatonSystem system(p, MPI_COMM_WORLD);
     system.setup();
-    const Curve c{m.youngs_modulus, m.poisson_ratio, m.yield_stress,
-                  m.hardening_modulus, m.second_hardening_modulus,
+    const Curve c{m.youngs_modulus,
+                  m.poisson_ratio,
+                  m.yield_stress,
+                  m.hardening_modulus,
+                  m.second_hardening_modulus,
                   m.second_hardening_onset,
                   m.hardening == Hardening::bilinear};
     // deep interior automata
@@ -93,7 +96,7 @@ namespace
       for (unsigned int d = 0; d < 3; ++d)
         X[system.ids()[k]][d] = system.positions()[k][d] - centre[d];
 
-    const unsigned int  n = 400;
+    const unsigned int  n     = 400;
     double              e_old = 0, lat_old = 0;
     double              worst_axial = 0, worst_lateral = 0, kink = -1;
     std::vector<double> eps_list, sig_list;
@@ -103,9 +106,9 @@ namespace
         const double e = -e_max * s / n; // compression
         double       sigma, ep;
         c.at(-e, sigma, ep);
-        const double lat = -(-c.nu * sigma / c.E - ep / 2); // expansion
-        const double de = e - e_old, dl = lat - lat_old;
-        std::size_t  k  = 0;
+        const double      lat = -(-c.nu * sigma / c.E - ep / 2); // expansion
+        const double      de = e - e_old, dl = lat - lat_old;
+        std::size_t       k = 0;
         std::vector<Vec3> X_local(system.ids().size());
         for (unsigned int q = 0; q < system.ids().size(); ++q)
           X_local[q] = X[system.ids()[q]];
@@ -126,8 +129,9 @@ namespace
           if (deep[q])
             {
               sz += -system.stresses()[q][2];
-              sx = std::max(sx, std::max(std::abs(system.stresses()[q][0]),
-                                         std::abs(system.stresses()[q][1])));
+              sx = std::max(sx,
+                            std::max(std::abs(system.stresses()[q][0]),
+                                     std::abs(system.stresses()[q][1])));
               epm += system.plastic_strains()[q];
               nd += 1;
             }
@@ -142,11 +146,12 @@ namespace
         ep_end = epm;
         ep_ref = ep;
       }
-    const std::string name = m.name + (c.bilinear ? " (bilinear)" : " (linear)");
-    check_relative(worst_axial, 0, 1e-3,
-                   name + ": max |sigma_zz - analytic| / sigma", 1.);
-    check_relative(worst_lateral, 0, 1e-3,
-                   name + ": max lateral |sigma| / sigma_zz", 1.);
+    const std::string name
+      = m.name + (c.bilinear ? " (bilinear)" : " (linear)");
+    check_relative(
+      worst_axial, 0, 1e-3, name + ": max |sigma_zz - analytic| / sigma", 1.);
+    check_relative(
+      worst_lateral, 0, 1e-3, name + ": max lateral |sigma| / sigma_zz", 1.);
     check_relative(kink, c.sy, 1e-3, name + ": stress at first yield");
     // slopes of the hardening branches (fit on the middle of each)
     auto slope = [&](const double lo, const double hi) {
@@ -165,16 +170,22 @@ namespace
     const double ey  = c.sy / c.E;
     const double Et1 = c.E * c.H1 / (c.E + c.H1);
     if (!c.bilinear)
-      check_relative(slope(1.5 * ey, e_max), Et1, 1e-2,
+      check_relative(slope(1.5 * ey, e_max),
+                     Et1,
+                     1e-2,
                      name + ": hardening slope E H/(E + H)");
     else
       {
         const double s1  = c.sy + c.H1 * c.onset;
         const double e1  = s1 / c.E + c.onset;
         const double Et2 = c.E * c.H2 / (c.E + c.H2);
-        check_relative(slope(1.5 * ey, 0.9 * e1), Et1, 1e-2,
+        check_relative(slope(1.5 * ey, 0.9 * e1),
+                       Et1,
+                       1e-2,
                        name + ": first hardening slope E H1/(E + H1)");
-        check_relative(slope(1.2 * e1, e_max), Et2, 1e-2,
+        check_relative(slope(1.2 * e1, e_max),
+                       Et2,
+                       1e-2,
                        name + ": second hardening slope E H2/(E + H2)");
       }
     check_relative(ep_end, ep_ref, 1e-3, name + ": final plastic strain");
@@ -185,9 +196,9 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  MaterialParameters steel = MaterialParameters::steel();
-  steel.hardening_modulus  = 20e9;
-  steel.yield_stress       = 0.8e6;
+  MaterialParameters                       steel = MaterialParameters::steel();
+  steel.hardening_modulus                        = 20e9;
+  steel.yield_stress                             = 0.8e6;
   run(0, steel, 1e-5);
   MaterialParameters carbon     = MaterialParameters::carbon();
   carbon.yield_stress           = 32e3;

@@ -24,13 +24,13 @@ namespace
     p.interaction.rotations = rotations;
     AutomatonSystem system(p, MPI_COMM_WORLD);
     system.setup();
-    const double a   = 4 * 1e-3 * std::sqrt(2.);
+    const double a = 4 * 1e-3 * std::sqrt(2.);
     const Point3 c(a / 2, a / 2, a / 2);
     const double len = std::sqrt(14.);
     const Vec3   axis{{1 / len, 2 / len, 3 / len}};
     const double delta = 1e-3;
     // rotation matrix of angle delta about axis (Rodrigues)
-    double R[3][3];
+    double       R[3][3];
     const double cs = std::cos(delta), sn = std::sin(delta);
     for (unsigned int i = 0; i < 3; ++i)
       for (unsigned int j = 0; j < 3; ++j)
@@ -66,17 +66,19 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const Parameters defaults;
-  const double     G     = defaults.materials[0].shear_modulus();
-  const double     theta = 0.2;
-  const double     with  = max_stress_after_rotation(true);
-  const double     without = max_stress_after_rotation(false);
-  check_relative(with, 0, 1e-6,
+  const Parameters                         defaults;
+  const double G       = defaults.materials[0].shear_modulus();
+  const double theta   = 0.2;
+  const double with    = max_stress_after_rotation(true);
+  const double without = max_stress_after_rotation(false);
+  check_relative(with,
+                 0,
+                 1e-6,
                  "max |stress| after a rigid rotation of 0.2 rad, relative "
                  "to G theta",
                  G * theta);
   check(without > 1e-2 * G * theta,
-        "control without the rotational term: max |stress| / (G theta) = " +
-          std::to_string(without / (G * theta)) + " > 1e-2");
+        "control without the rotational term: max |stress| / (G theta) = "
+          + std::to_string(without / (G * theta)) + " > 1e-2");
   return result();
 }

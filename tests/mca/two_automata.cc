@@ -25,19 +25,19 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const double d = 1e-3, a = d * std::sqrt(2.);
-  Parameters   p = block_parameters(1, d, 0);
-  p.geometry.domain_lower = Point3(-2 * a, -2 * a, -2 * a);
-  p.geometry.domain_upper = Point3(3 * a, 3 * a, 3 * a);
-  p.geometry.bodies[0].lower = Point3(0, 0, 0);
-  p.geometry.bodies[0].upper = Point3(a, a, a / 2);
-  p.interaction.plasticity     = true;
-  p.interaction.bond_breaking  = true;
-  p.interaction.bond_formation = true;
-  p.interaction.friction_coefficient = 0.3;
+  const double                             d = 1e-3, a = d * std::sqrt(2.);
+  Parameters                               p = block_parameters(1, d, 0);
+  p.geometry.domain_lower                    = Point3(-2 * a, -2 * a, -2 * a);
+  p.geometry.domain_upper                    = Point3(3 * a, 3 * a, 3 * a);
+  p.geometry.bodies[0].lower                 = Point3(0, 0, 0);
+  p.geometry.bodies[0].upper                 = Point3(a, a, a / 2);
+  p.interaction.plasticity                   = true;
+  p.interaction.bond_breaking                = true;
+  p.interaction.bond_formation               = true;
+  p.interaction.friction_coefficient         = 0.3;
   // the packing lattice starts at domain_lower + a/4: shift the body
   p.geometry.bodies[0].lower = Point3(0, 0, 0);
-  const auto &m = p.materials[0];
+  const auto     &m          = p.materials[0];
   AutomatonSystem system(p, MPI_COMM_WORLD);
   system.setup();
   check(system.n_global_automata() == 2,
@@ -46,9 +46,9 @@ main(int argc, char **argv)
     return result();
   // automaton 1 is moved, automaton 0 stays
   const unsigned int moving = system.ids()[0] == 1 ? 0 : 1;
-  Vec3 n, t;
+  Vec3               n, t;
   {
-    const auto &x = system.positions();
+    const auto  &x = system.positions();
     const double r = x[0].distance(x[1]);
     for (unsigned int c = 0; c < 3; ++c)
       n[c] = (x[moving][c] - x[1 - moving][c]) / r;
@@ -80,12 +80,12 @@ main(int argc, char **argv)
         }
       previous = pv.sigma;
     }
-  check(at_break >= m.bond_breaking_stress && previous < m.bond_breaking_stress &&
-          at_break - m.bond_breaking_stress <= increment,
-        "bond breaks at the first increment reaching the breaking stress: " +
-          std::to_string(previous / 1e6) + " MPa before, " +
-          std::to_string(at_break / 1e6) + " MPa at the break (threshold " +
-          std::to_string(m.bond_breaking_stress / 1e6) + " MPa)");
+  check(at_break >= m.bond_breaking_stress && previous < m.bond_breaking_stress
+          && at_break - m.bond_breaking_stress <= increment,
+        "bond breaks at the first increment reaching the breaking stress: "
+          + std::to_string(previous / 1e6) + " MPa before, "
+          + std::to_string(at_break / 1e6) + " MPa at the break (threshold "
+          + std::to_string(m.bond_breaking_stress / 1e6) + " MPa)");
 
   // 2. no tension
   auto pv = move(n, 1e-4 * d);
@@ -103,15 +103,15 @@ main(int argc, char **argv)
   for (unsigned int s = 0; s < 20; ++s)
     pv = move(n, -1e-5 * d);
   check(pv.sigma < 0 && !pv.bonded,
-        "unbonded pair in compression: sigma = " + std::to_string(pv.sigma / 1e6) +
-          " MPa");
+        "unbonded pair in compression: sigma = "
+          + std::to_string(pv.sigma / 1e6) + " MPa");
   double worst_coulomb = 0;
   bool   slid = false, exceeded = false;
   for (unsigned int s = 0; s < 200; ++s)
     {
-      pv             = move(t, 1e-6 * d);
-      const double tn = std::sqrt(pv.tau[0] * pv.tau[0] + pv.tau[1] * pv.tau[1] +
-                                  pv.tau[2] * pv.tau[2]);
+      pv              = move(t, 1e-6 * d);
+      const double tn = std::sqrt(pv.tau[0] * pv.tau[0] + pv.tau[1] * pv.tau[1]
+                                  + pv.tau[2] * pv.tau[2]);
       const double limit = p.interaction.friction_coefficient * -pv.sigma;
       if (tn >= limit * (1 - 1e-12))
         {
@@ -123,17 +123,17 @@ main(int argc, char **argv)
     }
   check(!exceeded, "the shear stress never exceeds mu |sigma|");
   check(slid, "the pair slides");
-  check_relative(worst_coulomb, 0, 1e-12,
-                 "while sliding |tau| = mu |sigma|", 1.);
+  check_relative(
+    worst_coulomb, 0, 1e-12, "while sliding |tau| = mu |sigma|", 1.);
 
   // 4. bonding again
-  const double Eb = m.bond_energy_density *
-                    (d * d / (2 * std::sqrt(2.))) * pv.distance;
+  const double Eb
+    = m.bond_energy_density * (d * d / (2 * std::sqrt(2.))) * pv.distance;
   system.set_pair_heat(0.6 * Eb);
   pv = move(n, 0);
   check(!pv.bonded && pv.sigma > -m.yield_stress,
-        "heat 0.6 E_b, compression " + std::to_string(-pv.sigma / 1e6) +
-          " MPa below yield: stays unbonded");
+        "heat 0.6 E_b, compression " + std::to_string(-pv.sigma / 1e6)
+          + " MPa below yield: stays unbonded");
   while (pv.sigma > -m.yield_stress)
     {
       system.set_pair_heat(0.49 * Eb);

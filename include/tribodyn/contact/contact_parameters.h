@@ -3,11 +3,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
-
+#include <string>
 #include <tribodyn/core/material.h>
 #include <tribodyn/core/morphology.h>
-
-#include <string>
 #include <vector>
 
 namespace tribodyn
@@ -24,7 +22,8 @@ namespace tribodyn
       /// Extent along x (sliding direction) and y (m).
       double width  = 28e-3;
       double height = 8e-3;
-      /// Target element size h (m): n_x = round(width/h), n_y = round(height/h).
+      /// Target element size h (m): n_x = round(width/h), n_y =
+      /// round(height/h).
       double mesh_size = 0.25e-3;
       /// Meso pins only: elements per morphology pixel along each axis.
       unsigned int subdivisions_per_pixel = 1;
@@ -61,12 +60,11 @@ namespace tribodyn
 
       /// Type = anisotropic: the 2D stiffness and the out-of-plane row
       /// (sigma_zz = c_z . eps, used only for the von Mises output).
-      VoigtStiffness                anisotropic_stiffness;
-      dealii::Tensor<1, 3>          anisotropic_c_z;
+      VoigtStiffness       anisotropic_stiffness;
+      dealii::Tensor<1, 3> anisotropic_c_z;
 
       /// Type = engineering constants: transversely isotropic, axis L = x.
-      double E_L = 31.9e9, E_T = 34e9, nu_LT = 0.2, nu_TT = 0.2,
-             G_LT = 13.3e9;
+      double E_L = 31.9e9, E_T = 34e9, nu_LT = 0.2, nu_TT = 0.2, G_LT = 13.3e9;
 
       /// Type = homogenization summary: file and key (KUBC, SUBC, periodic).
       std::string summary_file;
@@ -136,20 +134,20 @@ namespace tribodyn
 
     enum class ContactAlgorithm
     {
-      node_wise,            ///< closed form per node (rigid plane, lumped mass)
+      node_wise, ///< closed form per node (rigid plane, lumped mass)
       projected_gauss_seidel ///< general path for coupled constraints
     };
 
     /// Subsection "Contact".
     struct ContactLawParameters
     {
-      ContactAlgorithm algorithm = ContactAlgorithm::node_wise;
-      FrictionLaw      law       = FrictionLaw::regularized;
+      ContactAlgorithm algorithm            = ContactAlgorithm::node_wise;
+      FrictionLaw      law                  = FrictionLaw::regularized;
       double           friction_coefficient = 0.25;
       /// L*/|V| of the regularized law (s); 1.5e-6 = 300 x 5 ns.
-      double regularization_time = 1.5e-6;
-      double pgs_tolerance       = 1e-12;
-      unsigned int pgs_max_iterations = 50;
+      double       regularization_time = 1.5e-6;
+      double       pgs_tolerance       = 1e-12;
+      unsigned int pgs_max_iterations  = 50;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -211,8 +209,8 @@ namespace tribodyn
      * Throws InputError naming the file and key when it cannot.
      */
     VoigtStiffness
-    read_homogenization_stiffness(const std::string &   file,
-                                  const std::string &   key,
+    read_homogenization_stiffness(const std::string    &file,
+                                  const std::string    &key,
                                   dealii::Tensor<1, 3> &c_z);
   } // namespace contact
 } // namespace tribodyn

@@ -1,13 +1,11 @@
 #ifndef tribodyn_contact_contact_problem_h
 #define tribodyn_contact_contact_problem_h
 
+#include <chrono>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
-
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/core/problem.h>
-
-#include <chrono>
 
 namespace tribodyn
 {
@@ -32,7 +30,7 @@ namespace tribodyn
 
     private:
       void
-      run_with_timer(dealii::TimerOutput &                        timer,
+      run_with_timer(dealii::TimerOutput                         &timer,
                      const std::chrono::steady_clock::time_point &start);
 
       RunContext        context;

@@ -1,25 +1,19 @@
 #ifndef tribodyn_contact_contact_solver_h
 #define tribodyn_contact_contact_solver_h
 
+#include <array>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/timer.h>
-
 #include <deal.II/distributed/tria.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_system.h>
-
 #include <deal.II/lac/la_parallel_vector.h>
-
-#include <tribodyn/contact/contact_parameters.h>
-#include <tribodyn/contact/friction.h>
-
-#include <array>
 #include <functional>
 #include <string>
+#include <tribodyn/contact/contact_parameters.h>
+#include <tribodyn/contact/friction.h>
 #include <vector>
 
 namespace tribodyn
@@ -41,19 +35,19 @@ namespace tribodyn
       double contact_normal_force     = 0;
       double mu_contact               = 0;
       /// Energies (J per m of thickness), see doc/theory/contact.md.
-      double kinetic_energy      = 0;
-      double elastic_energy      = 0;
-      double external_work       = 0;
-      double contact_work        = 0;
-      double damping_dissipation = 0;
+      double kinetic_energy       = 0;
+      double elastic_energy       = 0;
+      double external_work        = 0;
+      double contact_work         = 0;
+      double damping_dissipation  = 0;
       double friction_dissipation = 0;
       double energy_balance_error = 0;
       /// Linear momentum of the pin.
       double momentum_x = 0;
       double momentum_y = 0;
       /// Point M (central contact node): displacement, velocity, status.
-      double        M_ux = 0, M_vx = 0, M_uy = 0, M_vy = 0;
-      unsigned int  M_status = 0;
+      double       M_ux = 0, M_vx = 0, M_uy = 0, M_vy = 0;
+      unsigned int M_status = 0;
       /// Fractions of the contact nodes in each status.
       double stick_fraction = 0, slip_fraction = 0, separation_fraction = 0;
     };
@@ -61,18 +55,17 @@ namespace tribodyn
     /// Headline figures of a run (summary.json).
     struct RunSummary
     {
-      double       mu_global_mean       = 0;
-      double       mu_contact_mean      = 0;
-      double       dominant_frequency_hz = 0;
-      double       energy_balance_error = 0;
-      double       stick_fraction = 0, slip_fraction = 0,
-             separation_fraction = 0;
-      double       M_stick_fraction = 0, M_slip_fraction = 0,
+      double mu_global_mean        = 0;
+      double mu_contact_mean       = 0;
+      double dominant_frequency_hz = 0;
+      double energy_balance_error  = 0;
+      double stick_fraction = 0, slip_fraction = 0, separation_fraction = 0;
+      double M_stick_fraction = 0, M_slip_fraction = 0,
              M_separation_fraction = 0;
       std::string  regime;
-      unsigned int n_samples_averaged = 0;
-      double       wall_time_s        = 0;
-      double       time_loop_s        = 0;
+      unsigned int n_samples_averaged   = 0;
+      double       wall_time_s          = 0;
+      double       time_loop_s          = 0;
       double       dof_steps_per_second = 0;
     };
 
@@ -87,9 +80,9 @@ namespace tribodyn
     class ContactSolver
     {
     public:
-      ContactSolver(const MPI_Comm            comm,
-                    const ContactParameters & parameters,
-                    dealii::TimerOutput &     timer);
+      ContactSolver(const MPI_Comm           comm,
+                    const ContactParameters &parameters,
+                    dealii::TimerOutput     &timer);
 
       /// Mesh, dofs, element matrices, lumped mass, loads, critical dt.
       /// Throws InputError when the time step is above the critical one
@@ -216,14 +209,14 @@ namespace tribodyn
       void
       cell_stresses(std::vector<std::array<double, 4>> &stress) const;
 
-      MPI_Comm                               comm;
-      const ContactParameters &              prm;
-      dealii::TimerOutput &                  timer;
+      MPI_Comm                                        comm;
+      const ContactParameters                        &prm;
+      dealii::TimerOutput                            &timer;
       dealii::parallel::distributed::Triangulation<2> triangulation;
-      dealii::FESystem<2>                    fe;
-      dealii::DoFHandler<2>                  dof_handler;
-      dealii::IndexSet                       locally_owned;
-      dealii::IndexSet                       locally_relevant;
+      dealii::FESystem<2>                             fe;
+      dealii::DoFHandler<2>                           dof_handler;
+      dealii::IndexSet                                locally_owned;
+      dealii::IndexSet                                locally_relevant;
 
       using VectorType = dealii::LinearAlgebra::distributed::Vector<double>;
       VectorType u, u_prev, u_next, p, w, r, a, scratch, scratch_result;
@@ -236,8 +229,8 @@ namespace tribodyn
       std::vector<unsigned int>  top_y_dofs;
 
       // Cells: 8 local dof indices each, material index, element data.
-      std::vector<unsigned int>          cell_dofs;
-      std::vector<unsigned char>         cell_material;
+      std::vector<unsigned int>                     cell_dofs;
+      std::vector<unsigned char>                    cell_material;
       std::vector<dealii::types::global_cell_index> cell_active_index;
       std::vector<std::array<double, 64>> element_stiffness; // per material
       std::vector<VoigtStiffness>         stiffness;         // per material
@@ -246,10 +239,10 @@ namespace tribodyn
       // Shape data of the (identical) rectangular cells: for local dof i,
       // node and component; gradients of the node's shape function at the
       // four Gauss points and at the centre; JxW.
-      std::array<unsigned int, 8>                      dof_node, dof_component;
+      std::array<unsigned int, 8> dof_node, dof_component;
       std::array<std::array<dealii::Tensor<1, 2>, 4>, 4> grad_q;
-      std::array<dealii::Tensor<1, 2>, 4>             grad_center;
-      std::array<double, 4>                           JxW;
+      std::array<dealii::Tensor<1, 2>, 4>                grad_center;
+      std::array<double, 4>                              JxW;
       // The same gradients per local dof and Gauss point as plain arrays,
       // pre-multiplied by JxW for the force (large-deformation loop).
       double grad_x[4][8], grad_y[4][8], grad_x_w[4][8], grad_y_w[4][8];
@@ -271,11 +264,11 @@ namespace tribodyn
       int                      point_M_index          = -1; // local, or -1
       double                   point_M_x              = 0;
 
-      double dt = 0, h = 0, dt_critical = 0, dt_cfl = 0, omega_maximum = 0;
-      double mass_total = 0;
+      double      dt = 0, h = 0, dt_critical = 0, dt_cfl = 0, omega_maximum = 0;
+      double      mass_total = 0;
       std::string material_text;
-      FrictionStep friction_step;
-      unsigned long step_count = 0;
+      FrictionStep  friction_step;
+      unsigned long step_count         = 0;
       unsigned int  pgs_iterations_max = 0;
 
       // Energy accumulators (local sums; reduced when sampled).

@@ -1,9 +1,8 @@
 #ifndef tribodyn_contact_friction_h
 #define tribodyn_contact_friction_h
 
-#include <tribodyn/contact/contact_parameters.h>
-
 #include <cmath>
+#include <tribodyn/contact/contact_parameters.h>
 
 namespace tribodyn
 {
@@ -46,7 +45,7 @@ namespace tribodyn
                           const double        lambda_n,
                           const double        tau_old,
                           const FrictionStep &f,
-                          ContactStatus &     status)
+                          ContactStatus      &status)
     {
       if constexpr (law == FrictionLaw::frictionless)
         {
@@ -74,7 +73,8 @@ namespace tribodyn
         {
           // Exact solution of the relaxation over the step, with |sigma|
           // frozen at its value of this step.
-          const double tau = alpha * limit + (tau_old - alpha * limit) * f.decay;
+          const double tau
+            = alpha * limit + (tau_old - alpha * limit) * f.decay;
           // Never more friction than needed to stick (that would reverse the
           // slip): then the point sticks.
           if (alpha * tau >= alpha * trial)

@@ -1,18 +1,16 @@
 #ifndef tribodyn_mca_automaton_system_h
 #define tribodyn_mca_automaton_system_h
 
+#include <array>
+#include <cstdint>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/particles/particle_handler.h>
-
-#include <tribodyn/mca/parameters.h>
-
-#include <array>
-#include <cstdint>
 #include <memory>
+#include <tribodyn/mca/parameters.h>
 #include <vector>
 
 namespace tribodyn
@@ -50,11 +48,11 @@ namespace tribodyn
       /// @p ghost_owner / @p ghost_ids for local ghosts n_owned + k;
       /// @p owned_index maps an owned id to its local index.
       void
-      setup(const MPI_Comm                         comm,
-            const std::vector<unsigned int> &      ghost_owner,
-            const std::vector<std::uint64_t> &     ghost_ids,
-            const std::vector<std::uint64_t> &     owned_ids,
-            const unsigned int                     n_owned);
+      setup(const MPI_Comm                    comm,
+            const std::vector<unsigned int>  &ghost_owner,
+            const std::vector<std::uint64_t> &ghost_ids,
+            const std::vector<std::uint64_t> &owned_ids,
+            const unsigned int                n_owned);
 
       /// Copy @p width doubles per automaton of @p data (array of local
       /// automata, stride width) from owners to ghosts.
@@ -68,22 +66,22 @@ namespace tribodyn
       }
 
     private:
-      MPI_Comm                               comm = MPI_COMM_SELF;
-      unsigned int                           n_owned = 0;
-      std::vector<unsigned int>              neighbors;
-      std::vector<std::vector<unsigned int>> send_indices; ///< owned local
-      std::vector<std::vector<unsigned int>> recv_indices; ///< ghost local
+      MPI_Comm                                 comm    = MPI_COMM_SELF;
+      unsigned int                             n_owned = 0;
+      std::vector<unsigned int>                neighbors;
+      std::vector<std::vector<unsigned int>>   send_indices; ///< owned local
+      std::vector<std::vector<unsigned int>>   recv_indices; ///< ghost local
       mutable std::vector<std::vector<double>> send_buffers, recv_buffers;
     };
 
     /// Global figures of the current state (summed over ranks).
     struct SystemEnergies
     {
-      double kinetic = 0;
-      double elastic = 0;
-      double plastic_work = 0;
-      double friction_work = 0;
-      unsigned long long n_bonded = 0;
+      double             kinetic             = 0;
+      double             elastic             = 0;
+      double             plastic_work        = 0;
+      double             friction_work       = 0;
+      unsigned long long n_bonded            = 0;
       unsigned long long n_unbonded_contacts = 0;
     };
 
@@ -185,10 +183,10 @@ namespace tribodyn
                       const std::string &base,
                       const unsigned int number,
                       const bool         with_stress,
-                      const bool         slab     = false,
-                      const unsigned int axis     = 0,
-                      const double       slab_lo  = 0,
-                      const double       slab_hi  = 0) const;
+                      const bool         slab    = false,
+                      const unsigned int axis    = 0,
+                      const double       slab_lo = 0,
+                      const double       slab_hi = 0) const;
 
       // ---- access for analyses and tests (owned automata: index < n_owned)
       const std::vector<Point3> &
@@ -306,7 +304,7 @@ namespace tribodyn
       /// MPI: receive the automata of other ranks within the interaction
       /// range of this rank's slab as ghosts (ghost_records).
       void
-      exchange_ghosts();
+                                exchange_ghosts();
       std::vector<double>       ghost_records;
       std::vector<unsigned int> ghost_record_owner;
       void
@@ -342,42 +340,42 @@ namespace tribodyn
       MPI_Comm          comm;
       unsigned int      n_ranks, rank;
 
-      dealii::parallel::distributed::Triangulation<3> tria;
-      dealii::MappingQ1<3>                            mapping;
+      dealii::parallel::distributed::Triangulation<3>        tria;
+      dealii::MappingQ1<3>                                   mapping;
       std::unique_ptr<dealii::Particles::ParticleHandler<3>> particles;
       unsigned int n_automaton_properties = 0, n_slot_fields = 0;
 
       // material constants indexed by material
       struct MaterialConstants
       {
-        double rho, G, K, D, two_G, yield0, sigma_b, w_b;
+        double             rho, G, K, D, two_G, yield0, sigma_b, w_b;
         MaterialParameters m;
       };
       std::vector<MaterialConstants> mc;
-      bool plastic_scene = false, bond_scene = false, rotations = true;
+      bool   plastic_scene = false, bond_scene = false, rotations = true;
       double d = 0, r0 = 0, S = 0, V = 0, mass_factor = 0;
-      Vec3   period = {{0, 0, 0}};
+      Vec3   period                = {{0, 0, 0}};
       std::array<bool, 3> periodic = {{false, false, false}};
 
-      double dt = 0, critical_dt = 0, current_time = 0;
-      unsigned long n_steps_done = 0;
-      unsigned long long n_global = 0;
-      unsigned int rebuild_count = 0;
+      double             dt = 0, critical_dt = 0, current_time = 0;
+      unsigned long      n_steps_done  = 0;
+      unsigned long long n_global      = 0;
+      unsigned int       rebuild_count = 0;
 
       // --- automata (local: owned first, then ghosts)
-      unsigned int n_owned = 0, n_local = 0;
-      std::vector<std::uint64_t>  id;
-      std::vector<Point3>         x, x_at_rebuild;
-      std::vector<Vec3>           dx, v, w, f, f_tot, torque, u;
-      std::vector<double>         mass, inertia;
-      std::vector<unsigned char>  mat, body;
-      std::vector<std::uint32_t>  groups;
-      std::vector<double>         eps_p, sigma_y;
-      std::vector<Sym3>           stress;
+      unsigned int               n_owned = 0, n_local = 0;
+      std::vector<std::uint64_t> id;
+      std::vector<Point3>        x, x_at_rebuild;
+      std::vector<Vec3>          dx, v, w, f, f_tot, torque, u;
+      std::vector<double>        mass, inertia;
+      std::vector<unsigned char> mat, body;
+      std::vector<std::uint32_t> groups;
+      std::vector<double>        eps_p, sigma_y;
+      std::vector<Sym3>          stress;
       /// Per-step exchange buffers (stride given by their use).
-      std::vector<double> kin;    ///< x(3) dx(3) w(3)
-      std::vector<double> mean;   ///< dsm, sum qS, dsm_prev
-      std::vector<double> plast;  ///< sigma_m trial, M, heat share
+      std::vector<double> kin;   ///< x(3) dx(3) w(3)
+      std::vector<double> mean;  ///< dsm, sum qS, dsm_prev
+      std::vector<double> plast; ///< sigma_m trial, M, heat share
       std::vector<double> sum_qs, dsm, dsm_prev, acc_qse;
       std::vector<double> return_factor, mean_trial, heat_share;
       std::vector<Sym3>   trial;
@@ -393,8 +391,8 @@ namespace tribodyn
       bool                       weights_stale = true;
       std::vector<unsigned char> in_contact;
 
-      double plastic_work = 0, friction_work = 0;
-      std::vector<Vec3> group_force_local;
+      double                    plastic_work = 0, friction_work = 0;
+      std::vector<Vec3>         group_force_local;
       std::vector<unsigned int> group_count_local;
     };
   } // namespace mca

@@ -2,7 +2,6 @@
 #define tribodyn_mca_mca_problem_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <tribodyn/core/problem.h>
 #include <tribodyn/mca/parameters.h>
 

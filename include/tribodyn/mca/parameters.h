@@ -1,10 +1,9 @@
 #ifndef tribodyn_mca_parameters_h
 #define tribodyn_mca_parameters_h
 
+#include <array>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
-
-#include <array>
 #include <string>
 #include <vector>
 
@@ -21,9 +20,9 @@ namespace tribodyn
     /// Response function of a material beyond the elastic range.
     enum class Hardening
     {
-      elastic,  ///< no plasticity
-      linear,   ///< sigma_y = sigma_y0 + H1 eps_p
-      bilinear  ///< slope H1 up to eps_p = onset, H2 beyond
+      elastic, ///< no plasticity
+      linear,  ///< sigma_y = sigma_y0 + H1 eps_p
+      bilinear ///< slope H1 up to eps_p = onset, H2 beyond
     };
 
     /**
@@ -54,7 +53,7 @@ namespace tribodyn
                          const MaterialParameters &defaults);
       void
       parse_parameters(dealii::ParameterHandler &prm,
-                       const std::string &       section);
+                       const std::string        &section);
 
       double
       shear_modulus() const
@@ -130,17 +129,17 @@ namespace tribodyn
       /// Automaton size d (distance between neighbours in the FCC packing).
       double automaton_size = 1e-3;
       /// The simulation box; in periodic directions it is the period.
-      Point3 domain_lower, domain_upper;
+      Point3              domain_lower, domain_upper;
       std::array<bool, 3> periodic = {{false, false, false}};
       std::vector<Body>   bodies;
       std::vector<Region> regions;
       /// Rough interface: sites of all bodies are assigned to body 0 below
       /// the surface z = height + amplitude * f(x, y) and to body 1 above.
-      bool   rough_interface    = false;
-      double interface_height   = 0;
-      double roughness_amplitude = 0;
-      double roughness_wavelength = 1;
-      unsigned int roughness_seed = 1;
+      bool         rough_interface      = false;
+      double       interface_height     = 0;
+      double       roughness_amplitude  = 0;
+      double       roughness_wavelength = 1;
+      unsigned int roughness_seed       = 1;
       /// Initial gap added between the two bodies of a rough interface
       /// (body 1 is shifted up by it).
       double interface_gap = 0;
@@ -148,7 +147,7 @@ namespace tribodyn
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
-      parse_parameters(dealii::ParameterHandler &          prm,
+      parse_parameters(dealii::ParameterHandler       &prm,
                        const std::vector<std::string> &material_names);
     };
 
@@ -196,7 +195,7 @@ namespace tribodyn
       std::array<double, 3> value = {{0, 0, 0}};
       /// Time at which a second value starts to ramp in (velocity/force),
       /// to chain e.g. approach then sliding; negative = none.
-      double                switch_time = -1;
+      double                switch_time  = -1;
       std::array<double, 3> second_value = {{0, 0, 0}};
     };
 
@@ -237,12 +236,12 @@ namespace tribodyn
     /// Subsection "Output".
     struct McaOutputParameters
     {
-      double output_interval = 0; ///< 0 = only at the end
-      double series_interval = 0; ///< 0 = every 100 steps
-      bool   write_particles = true;
-      bool   write_stress    = true;
-      bool   cross_section   = false;
-      unsigned int cross_section_axis = 0;
+      double       output_interval         = 0; ///< 0 = only at the end
+      double       series_interval         = 0; ///< 0 = every 100 steps
+      bool         write_particles         = true;
+      bool         write_stress            = true;
+      bool         cross_section           = false;
+      unsigned int cross_section_axis      = 0;
       double       cross_section_position  = 0;
       double       cross_section_thickness = 0;
 
@@ -268,7 +267,7 @@ namespace tribodyn
       unsigned int axis = 2;
       /// uniaxial: groups whose reaction and displacement define stress and
       /// strain (the loaded group and the fixed one).
-      std::string loaded_group = "top";
+      std::string loaded_group  = "top";
       std::string support_group = "bottom";
       /// uniaxial: fit E over this fraction of the yield strain (upper).
       double elastic_fit_fraction = 0.5;
@@ -310,8 +309,8 @@ namespace tribodyn
     /// Index of material @p name ("steel", "carbon"); throws InputError.
     int
     material_index(const std::vector<std::string> &names,
-                   const std::string &             name,
-                   const std::string &             parameter);
+                   const std::string              &name,
+                   const std::string              &parameter);
   } // namespace mca
 } // namespace tribodyn
 
