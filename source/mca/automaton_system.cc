@@ -1376,21 +1376,7 @@ namespace tribodyn
               const unsigned int i = pi[p], j = pj[p];
               sig_i[p] += mc[mat[i]].two_G * deps_i[p] + mc[mat[i]].D * dsm[i];
               sig_j[p] += mc[mat[j]].two_G * deps_j[p] + mc[mat[j]].D * dsm[j];
-              const Vec3 &n = normal[p];
-              if (owned_i[p])
-                {
-                  Vec3 t;
-                  for (unsigned int c = 0; c < 3; ++c)
-                    t[c] = sig_i[p] * n[c] + tau_i[p][c];
-                  add_sym(trial[i], q_i[p] * S / V, n, t);
-                }
-              if (owned_j[p])
-                {
-                  Vec3 t;
-                  for (unsigned int c = 0; c < 3; ++c)
-                    t[c] = sig_j[p] * n[c] + tau_j[p][c];
-                  add_sym(trial[j], (r_now[p] - q_i[p]) * S / V, n, t);
-                }
+              add_pair_stress(p, trial);
             }
           // Radial return per automaton.
           plast.assign(static_cast<std::size_t>(n_local) * 3, 0.);
@@ -1591,6 +1577,29 @@ namespace tribodyn
 
 
     void
+    AutomatonSystem::add_pair_stress(const unsigned int p,
+                                     std::vector<Sym3> &target) const
+    {
+      // Seed eq. (4): sigma^i += (q_ij S / V_i) n_ij (x) F_ij / S, for each
+      // owned side of the pair (q_ji = r_ij - q_ij).
+      const Vec3 &n = normal[p];
+      if (owned_i[p])
+        {
+          Vec3 t;
+          for (unsigned int c = 0; c < 3; ++c)
+            t[c] = sig_i[p] * n[c] + tau_i[p][c];
+          add_sym(target[pi[p]], q_i[p] * S / V, n, t);
+        }
+      if (owned_j[p])
+        {
+          Vec3 t;
+          for (unsigned int c = 0; c < 3; ++c)
+            t[c] = sig_j[p] * n[c] + tau_j[p][c];
+          add_sym(target[pj[p]], (r_now[p] - q_i[p]) * S / V, n, t);
+        }
+    }
+
+    void
     AutomatonSystem::compute_automaton_stresses()
     {
       stress.assign(n_local, Sym3{{0, 0, 0, 0, 0, 0}});
@@ -1598,22 +1607,7 @@ namespace tribodyn
         {
           if (!bonded[p] && !in_contact[p])
             continue;
-          const unsigned int i = pi[p], j = pj[p];
-          const Vec3        &n = normal[p];
-          if (owned_i[p])
-            {
-              Vec3 t;
-              for (unsigned int c = 0; c < 3; ++c)
-                t[c] = sig_i[p] * n[c] + tau_i[p][c];
-              add_sym(stress[i], q_i[p] * S / V, n, t);
-            }
-          if (owned_j[p])
-            {
-              Vec3 t;
-              for (unsigned int c = 0; c < 3; ++c)
-                t[c] = sig_j[p] * n[c] + tau_j[p][c];
-              add_sym(stress[j], (r_now[p] - q_i[p]) * S / V, n, t);
-            }
+          add_pair_stress(p, stress);
         }
       for (unsigned int k = 0; k < n_owned; ++k)
         stress[k] = fabric_corrected(k, stress[k]);

@@ -325,6 +325,10 @@ namespace tribodyn
       update_neighbourhood_weights();
       Sym3
       fabric_corrected(const unsigned int k, const Sym3 &t) const;
+      /// Add the eq.-(4) stress contributions of pair @p p to the owned
+      /// automata of the pair in @p target (indexed by local automaton).
+      void
+      add_pair_stress(const unsigned int p, std::vector<Sym3> &target) const;
       void
       apply_kinematic_constraints(const double t);
       double
