@@ -904,18 +904,7 @@ namespace tribodyn
           const double t = n * dt;
           const double s = prm.loading.pressure_at(t);
           // Internal forces of u_n and the damping force beta K p_n.
-          if (large)
-            {
-              u.update_ghost_values();
-              p.update_ghost_values();
-              internal_forces_large_deformation();
-            }
-          else
-            {
-              w.update_ghost_values();
-              internal_forces_small_strain();
-            }
-          r.compress(VectorOperation::add);
+          add_internal_forces(large);
 
           // Predictor: a* = M^-1 (f_n - r), u* = u_n + dt p_n + h a*.
           {
@@ -1464,13 +1453,12 @@ namespace tribodyn
     }
 
 
-    double
-    ContactSolver::max_internal_force()
+    void
+    ContactSolver::add_internal_forces(const bool large)
     {
-      r = 0;
-      const bool large
-        = prm.material.kinematics
-          == ContactMaterialParameters::Kinematics::large_deformation;
+      // r += K(u_n + beta p_n) (small strain: w holds u + beta p) or the
+      // total-Lagrangian internal forces of u and p; ghosts are refreshed
+      // first, contributions to ghost rows are sent to their owners after.
       if (large)
         {
           u.update_ghost_values();
@@ -1483,6 +1471,17 @@ namespace tribodyn
           internal_forces_small_strain();
         }
       r.compress(VectorOperation::add);
+    }
+
+
+    double
+    ContactSolver::max_internal_force()
+    {
+      r = 0;
+      const bool large
+        = prm.material.kinematics
+          == ContactMaterialParameters::Kinematics::large_deformation;
+      add_internal_forces(large);
       const double result = r.linfty_norm();
       r                   = 0;
       return result;

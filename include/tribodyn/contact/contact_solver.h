@@ -191,6 +191,10 @@ namespace tribodyn
       /// r += f_int(u) + beta K p (total Lagrangian St Venant-Kirchhoff).
       void
       internal_forces_large_deformation();
+      /// Refresh the ghosts the internal forces need, add them to r with
+      /// the small-strain or the large-deformation path, and compress r.
+      void
+      add_internal_forces(const bool large);
       template <FrictionLaw law>
       void
       contact_node_wise(const double time_next);
