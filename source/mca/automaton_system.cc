@@ -1835,17 +1835,16 @@ namespace tribodyn
 
 
     std::vector<Vec3>
-    AutomatonSystem::group_forces() const
+    AutomatonSystem::sum_over_groups(const std::vector<Vec3> &field) const
     {
       const unsigned int  n_groups = prm.boundary.groups.size();
       std::vector<double> sums(3 * n_groups, 0.);
-      // f holds the pair forces only (the reaction of the group).
       for (unsigned int k = 0; k < n_owned; ++k)
         if (groups[k] != 0)
           for (unsigned int gi = 0; gi < n_groups; ++gi)
             if (groups[k] & (1u << gi))
               for (unsigned int c = 0; c < 3; ++c)
-                sums[3 * gi + c] += f[k][c];
+                sums[3 * gi + c] += field[k][c];
       dealii::Utilities::MPI::sum(sums, comm, sums);
       std::vector<Vec3> out(n_groups);
       for (unsigned int gi = 0; gi < n_groups; ++gi)
@@ -1856,22 +1855,21 @@ namespace tribodyn
 
 
     std::vector<Vec3>
+    AutomatonSystem::group_forces() const
+    {
+      // f holds the pair forces only (the reaction of the group).
+      return sum_over_groups(f);
+    }
+
+
+    std::vector<Vec3>
     AutomatonSystem::group_displacements() const
     {
-      const unsigned int  n_groups = prm.boundary.groups.size();
-      std::vector<double> sums(3 * n_groups, 0.);
-      for (unsigned int k = 0; k < n_owned; ++k)
-        if (groups[k] != 0)
-          for (unsigned int gi = 0; gi < n_groups; ++gi)
-            if (groups[k] & (1u << gi))
-              for (unsigned int c = 0; c < 3; ++c)
-                sums[3 * gi + c] += u[k][c];
-      dealii::Utilities::MPI::sum(sums, comm, sums);
+      std::vector<Vec3> out   = sum_over_groups(u);
       const auto        sizes = group_sizes();
-      std::vector<Vec3> out(n_groups);
-      for (unsigned int gi = 0; gi < n_groups; ++gi)
+      for (unsigned int gi = 0; gi < out.size(); ++gi)
         for (unsigned int c = 0; c < 3; ++c)
-          out[gi][c] = sizes[gi] > 0 ? sums[3 * gi + c] / sizes[gi] : 0;
+          out[gi][c] = sizes[gi] > 0 ? out[gi][c] / sizes[gi] : 0;
       return out;
     }
 

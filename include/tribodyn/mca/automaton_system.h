@@ -329,6 +329,10 @@ namespace tribodyn
       /// automata of the pair in @p target (indexed by local automaton).
       void
       add_pair_stress(const unsigned int p, std::vector<Sym3> &target) const;
+      /// Sum of @p field (per local automaton) over the owned automata of
+      /// each boundary group, over all ranks.
+      std::vector<Vec3>
+      sum_over_groups(const std::vector<Vec3> &field) const;
       void
       apply_kinematic_constraints(const double t);
       double
