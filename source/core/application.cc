@@ -28,6 +28,9 @@ namespace tribodyn
           << "  tribodyn --print-parameters [PROBLEM]\n"
           << "                                    print every parameter with "
              "its documentation and default\n"
+          << "  tribodyn --partition-report N FILE.prm\n"
+          << "                                    how FILE.prm's scene would "
+             "be split over N ranks (mca), without running it\n"
           << "  tribodyn --version | --help\n\n"
           << "Problems:";
       for (const auto &p : registered_problems())
@@ -107,8 +110,10 @@ namespace tribodyn
     }
 
 
-    int
-    run_parameter_file(const std::string &file, const MPI_Comm comm)
+    /// Read @p file into @p prm (declared for its problem, strictly
+    /// checked); returns the problem's description.
+    const ProblemDescription &
+    parse_parameter_file(const std::string &file, dealii::ParameterHandler &prm)
     {
       check_readable(file);
 
@@ -117,21 +122,20 @@ namespace tribodyn
       // checked strictly in the second pass.
       std::string problem_name;
       {
-        dealii::ParameterHandler prm;
-        GlobalParameters::declare_parameters(prm);
+        dealii::ParameterHandler first;
+        GlobalParameters::declare_parameters(first);
         try
           {
-            prm.parse_input(file, "", true);
+            first.parse_input(file, "", true);
           }
         catch (const dealii::ExceptionBase &e)
           {
             throw InputError(describe_parameter_exception(e, file));
           }
-        problem_name = prm.get("Problem");
+        problem_name = first.get("Problem");
       }
       const ProblemDescription &description = find_problem(problem_name);
 
-      dealii::ParameterHandler prm;
       declare_all(prm, description);
       try
         {
@@ -141,6 +145,48 @@ namespace tribodyn
         {
           throw InputError(describe_parameter_exception(e, file));
         }
+      return description;
+    }
+
+
+    int
+    partition_report(const std::string &count,
+                     const std::string &file,
+                     const MPI_Comm     comm)
+    {
+      unsigned long n_ranks = 0;
+      try
+        {
+          std::size_t used = 0;
+          n_ranks          = std::stoul(count, &used);
+          if (used != count.size())
+            n_ranks = 0;
+        }
+      catch (const std::exception &)
+        {
+          n_ranks = 0;
+        }
+      if (n_ranks == 0 || n_ranks > 1000000)
+        throw InputError("'--partition-report' takes a number of ranks "
+                         "between 1 and 10^6 and a parameter file; got '"
+                         + count + "'.");
+      dealii::ParameterHandler  prm;
+      const ProblemDescription &description = parse_parameter_file(file, prm);
+      if (!description.partition_report)
+        throw InputError("'--partition-report' is available for the mca "
+                         "problem only; '"
+                         + file + "' sets Problem = " + description.name + ".");
+      if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+        description.partition_report(prm, n_ranks, std::cout);
+      return exit_code::success;
+    }
+
+
+    int
+    run_parameter_file(const std::string &file, const MPI_Comm comm)
+    {
+      dealii::ParameterHandler  prm;
+      const ProblemDescription &description = parse_parameter_file(file, prm);
 
       GlobalParameters global;
       global.parse_parameters(prm);
@@ -204,6 +250,13 @@ namespace tribodyn
             if (root)
               print_parameters(std::cout, args.size() == 2 ? args[1] : "");
             return exit_code::success;
+          }
+        if (args[0] == "--partition-report")
+          {
+            if (args.size() != 3)
+              throw InputError("Usage: tribodyn --partition-report N "
+                               "FILE.prm");
+            return partition_report(args[1], args[2], comm);
           }
         if (args[0].size() > 1 && args[0][0] == '-')
           throw InputError("Unknown option '" + args[0]

@@ -24,6 +24,34 @@ namespace tribodyn
     }
 
 
+    void
+    McaProblem::print_partition_report(dealii::ParameterHandler &handler,
+                                       const unsigned int        n_ranks,
+                                       std::ostream             &out)
+    {
+      Parameters p;
+      p.parse_parameters(handler);
+      const auto f = AutomatonSystem::partition_report(p, n_ranks);
+      out << std::setprecision(4) << "Partition of " << f.n_automata
+          << " automata over " << n_ranks
+          << " ranks (p4est's partition of the cells along its space-filling "
+             "curve, emulated):\n"
+          << "  owned automata per rank: min " << f.owned_min << ", mean "
+          << f.owned_mean << ", max " << f.owned_max << " (imbalance max/mean "
+          << f.owned_max / f.owned_mean << ")\n"
+          << "  ghosts per rank:         min " << f.ghosts_min << ", mean "
+          << f.ghosts_mean << ", max " << f.ghosts_max << "\n"
+          << "  ghost/owned ratio (mean): " << f.ghosts_mean / f.owned_mean
+          << "\n"
+          << "  memory per rank (estimate, largest rank): "
+          << f.bytes_per_rank_max / 1048576. << " MiB ("
+          << AutomatonSystem::bytes_per_owned_automaton
+          << " B per owned automaton, "
+          << AutomatonSystem::bytes_per_ghost_automaton << " B per ghost)"
+          << std::endl;
+    }
+
+
     McaProblem::McaProblem(dealii::ParameterHandler &prm,
                            const RunContext         &context)
         : context(context)
@@ -594,8 +622,11 @@ namespace tribodyn
       summary["critical_dt"]          = system.critical_time_step();
       summary["end_time"]             = system.time();
       summary["n_pair_list_rebuilds"] = system.n_rebuilds();
-      summary["wall_time_s"]          = wall;
-      summary["time_loop_s"]          = loop_seconds;
+      summary["n_dropped_bonds"]      = system.n_dropped_bonds();
+      summary["n_ghost_automata_max"]
+        = dealii::Utilities::MPI::max(system.n_ghost_automata(), comm);
+      summary["wall_time_s"] = wall;
+      summary["time_loop_s"] = loop_seconds;
       summary["automaton_steps_per_second"]
         = loop_seconds > 0
             ? double(system.n_global_automata()) * n_steps / loop_seconds
@@ -661,6 +692,7 @@ namespace tribodyn
        [](dealii::ParameterHandler &prm,
           const RunContext         &context) -> std::unique_ptr<Problem> {
          return std::make_unique<McaProblem>(prm, context);
-       }});
+       },
+       &McaProblem::print_partition_report});
   } // namespace mca
 } // namespace tribodyn

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <tribodyn/core/errors.h>
@@ -51,8 +52,44 @@ namespace tribodyn
     } // namespace
 
 
-    std::vector<PackedAutomaton>
-    pack_automata(const GeometryParameters &g, const unsigned int n_materials)
+    namespace
+    {
+      /// Region membership with the periodic images of the region.
+      bool
+      region_contains(const Region             &r,
+                      const GeometryParameters &g,
+                      const Point3             &p)
+      {
+        if (r.contains(p))
+          return true;
+        if (r.shape == Region::Shape::box)
+          return false; // boxes are given in the box's own frame
+        for (int sz = -1; sz <= 1; ++sz)
+          for (int sy = -1; sy <= 1; ++sy)
+            for (int sx = -1; sx <= 1; ++sx)
+              {
+                const int s[3] = {sx, sy, sz};
+                bool      ok   = sx != 0 || sy != 0 || sz != 0;
+                Point3    q    = p;
+                for (unsigned int c = 0; c < 3 && ok; ++c)
+                  {
+                    if (s[c] != 0 && !g.periodic[c])
+                      ok = false;
+                    q[c] += s[c] * (g.domain_upper[c] - g.domain_lower[c]);
+                  }
+                if (ok && r.contains(q))
+                  return true;
+              }
+        return false;
+      }
+    } // namespace
+
+
+    void
+    pack_box(const GeometryParameters                           &g,
+             const Point3                                       &lower,
+             const Point3                                       &upper,
+             const std::function<void(const PackedAutomaton &)> &add)
     {
       const double                               d = g.automaton_size;
       const double                               a = d * std::sqrt(2.);
@@ -62,17 +99,35 @@ namespace tribodyn
       for (unsigned int c = 0; c < 3; ++c)
         n[c] = static_cast<long>(
           std::floor((g.domain_upper[c] - g.domain_lower[c]) / a + 1e-9));
+      if (4.0 * (n[0] + 1) * (n[1] + 1) * (n[2] + 1) >= 4294967295.)
+        throw InputError(
+          "The FCC lattice of the box has more than 2^32 sites (automaton "
+          "ids are 32-bit in this deal.II build): use a larger "
+          "Geometry/Automaton size or a smaller box.");
       const RoughSurface surface(g);
-
-      std::vector<PackedAutomaton> packed;
-      for (long k = 0; k < n[2] + 1; ++k)
-        for (long j = 0; j < n[1] + 1; ++j)
-          for (long i = 0; i < n[0] + 1; ++i)
-            for (const auto &b : basis)
+      // Sites whose final position may lie in [lower, upper]: the upper
+      // body of a rough interface is shifted up by the interface gap.
+      const double        margin = 1e-9 * a;
+      std::array<long, 3> lo, hi;
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          double blo = lower[c] - margin, bhi = upper[c] + margin;
+          if (c == 2 && g.rough_interface)
+            blo -= std::max(0., g.interface_gap);
+          const double o = g.domain_lower[c] + a / 4;
+          lo[c]
+            = std::max(0L, static_cast<long>(std::floor((blo - o) / a)) - 1);
+          hi[c] = std::min(n[c], static_cast<long>(std::ceil((bhi - o) / a)));
+        }
+      for (long k = lo[2]; k <= hi[2]; ++k)
+        for (long j = lo[1]; j <= hi[1]; ++j)
+          for (long i = lo[0]; i <= hi[0]; ++i)
+            for (unsigned int bi = 0; bi < 4; ++bi)
               {
-                Point3     p;
-                const long ijk[3] = {i, j, k};
-                bool       inside = true;
+                const auto &b = basis[bi];
+                Point3      p;
+                const long  ijk[3] = {i, j, k};
+                bool        inside = true;
                 for (unsigned int c = 0; c < 3; ++c)
                   {
                     p[c] = g.domain_lower[c] + a / 4 + a * (ijk[c] + b[c]);
@@ -98,6 +153,8 @@ namespace tribodyn
                 if (body < 0)
                   continue;
                 PackedAutomaton automaton;
+                automaton.id = static_cast<std::uint32_t>(
+                  ((k * (n[1] + 1) + j) * (n[0] + 1) + i) * 4 + bi);
                 automaton.position = p;
                 automaton.material = g.bodies[body].material;
                 automaton.body     = std::min(body, 255);
@@ -110,9 +167,16 @@ namespace tribodyn
                     if (automaton.body == 1)
                       automaton.position[2] += g.interface_gap;
                   }
+                bool in_box = true;
+                for (unsigned int c = 0; c < 3; ++c)
+                  if (automaton.position[c] < lower[c] - margin
+                      || automaton.position[c] > upper[c] + margin)
+                    in_box = false;
+                if (!in_box)
+                  continue;
                 bool removed = false;
                 for (const Region &r : g.regions)
-                  if (r.contains(p))
+                  if (region_contains(r, g, p))
                     {
                       if (r.material < 0)
                         removed = true;
@@ -123,9 +187,27 @@ namespace tribodyn
                         }
                     }
                 if (!removed)
-                  packed.push_back(automaton);
+                  add(automaton);
               }
+    }
+
+
+    std::vector<PackedAutomaton>
+    pack_automata(const GeometryParameters &g, const unsigned int n_materials)
+    {
       (void)n_materials;
+      std::vector<PackedAutomaton> packed;
+      Point3                       upper = g.domain_upper;
+      if (g.rough_interface)
+        upper[2] += std::max(0., g.interface_gap);
+      pack_box(g, g.domain_lower, upper, [&](const PackedAutomaton &a) {
+        packed.push_back(a);
+      });
+      std::sort(packed.begin(),
+                packed.end(),
+                [](const PackedAutomaton &a, const PackedAutomaton &b) {
+                  return a.id < b.id;
+                });
       if (packed.empty())
         throw InputError(
           "The packing is empty: no FCC site of spacing Geometry/Automaton "

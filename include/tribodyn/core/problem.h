@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <functional>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,12 @@ namespace tribodyn
     std::function<std::unique_ptr<Problem>(dealii::ParameterHandler &,
                                            const RunContext &)>
       create;
+    /// Optional: print, without running, how the problem's scene would be
+    /// partitioned over a number of MPI ranks (`--partition-report N`).
+    std::function<void(dealii::ParameterHandler &,
+                       const unsigned int n_ranks,
+                       std::ostream      &out)>
+      partition_report;
   };
 
   /**

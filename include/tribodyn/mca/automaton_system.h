@@ -9,70 +9,45 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/particles/particle_handler.h>
+#include <functional>
 #include <memory>
+#include <tribodyn/mca/decomposition.h>
 #include <tribodyn/mca/parameters.h>
+#include <tribodyn/mca/vector_algebra.h>
 #include <vector>
 
 namespace tribodyn
 {
   namespace mca
   {
-    using Vec3 = std::array<double, 3>;
-    using Sym3 = std::array<double, 6>; ///< xx yy zz yz xz xy
 
-    /// One automaton of the initial packing (global numbering = id).
+    /// One automaton of the packing.
     struct PackedAutomaton
     {
       Point3        position;
+      std::uint32_t id       = 0; ///< index of the FCC lattice site
       unsigned char material = 0;
       unsigned char body     = 0;
     };
 
     /**
-     * FCC packing of the bodies with the regions applied, in a
-     * deterministic global order (the index is the automaton id).
+     * FCC packing of the bodies with the regions applied, restricted to the
+     * automata whose (final) position lies in the box [@p lower, @p upper):
+     * the lattice sites of that box only are enumerated, so that each rank
+     * packs its own cells. The id of an automaton is the index of its
+     * lattice site (the same on any partition). Regions are tested with
+     * their periodic images.
      */
+    void
+    pack_box(const GeometryParameters                           &geometry,
+             const Point3                                       &lower,
+             const Point3                                       &upper,
+             const std::function<void(const PackedAutomaton &)> &add);
+
+    /// The whole packing (tests and small scenes), in id order.
     std::vector<PackedAutomaton>
     pack_automata(const GeometryParameters &geometry,
                   const unsigned int        n_materials);
-
-    /**
-     * Ghost-automaton communication between MPI ranks: after each pair-list
-     * rebuild, every rank knows which of its ghosts each other rank owns;
-     * update() then copies a few doubles per automaton from owners to
-     * ghosts with point-to-point messages.
-     */
-    class GhostExchange
-    {
-    public:
-      /// @p ghost_owner / @p ghost_ids for local ghosts n_owned + k;
-      /// @p owned_index maps an owned id to its local index.
-      void
-      setup(const MPI_Comm                    comm,
-            const std::vector<unsigned int>  &ghost_owner,
-            const std::vector<std::uint64_t> &ghost_ids,
-            const std::vector<std::uint64_t> &owned_ids,
-            const unsigned int                n_owned);
-
-      /// Copy @p width doubles per automaton of @p data (array of local
-      /// automata, stride width) from owners to ghosts.
-      void
-      update(double *data, const unsigned int width) const;
-
-      bool
-      active() const
-      {
-        return !neighbors.empty();
-      }
-
-    private:
-      MPI_Comm                                 comm    = MPI_COMM_SELF;
-      unsigned int                             n_owned = 0;
-      std::vector<unsigned int>                neighbors;
-      std::vector<std::vector<unsigned int>>   send_indices; ///< owned local
-      std::vector<std::vector<unsigned int>>   recv_indices; ///< ghost local
-      mutable std::vector<std::vector<double>> send_buffers, recv_buffers;
-    };
 
     /// Global figures of the current state (summed over ranks).
     struct SystemEnergies
@@ -85,15 +60,39 @@ namespace tribodyn
       unsigned long long n_unbonded_contacts = 0;
     };
 
+    /// Number of automata per rank for a partition (partition report).
+    struct PartitionFigures
+    {
+      unsigned long long n_automata = 0;
+      unsigned int       n_ranks    = 0;
+      double             owned_min = 0, owned_mean = 0, owned_max = 0;
+      double             ghosts_min = 0, ghosts_mean = 0, ghosts_max = 0;
+      double             bytes_per_rank_max = 0;
+    };
+
     /**
-     * The automata and their pairs. Automata are particles of a
-     * Particles::ParticleHandler<3> over a parallel::distributed background
-     * mesh (periodic faces added for periodic directions); the particle
-     * properties hold the automaton state (and, under MPI, the states of the
-     * pairs in which the automaton has the smaller id), and travel with the
-     * particles when they are sorted into subdomains. Between two pair-list
-     * rebuilds the working state lives in flat arrays indexed by a local
-     * automaton index: owned automata first, then ghosts.
+     * The automata and their pairs.
+     *
+     * Decomposition: the automata of a rank are those in the cells it owns
+     * in a parallel::distributed background mesh (see Decomposition); each
+     * rank packs only the lattice sites of its own cells. Ghost copies of
+     * the automata of neighbour cells owned by other ranks are received
+     * from those ranks only, with their owners' (raw) coordinates; the
+     * periodic image shift of a pair is cached in the pair list, so the
+     * pair kernel never searches for a minimum image.
+     *
+     * Between two pair-list rebuilds (when an automaton moved more than
+     * skin/2) the state lives in flat arrays indexed by a local automaton
+     * index: owned automata first (along the space-filling curve of their
+     * cells), then ghosts. At a rebuild, automata that entered a cell of
+     * another rank migrate through deal.II's ParticleHandler
+     * (sort_particles_into_subdomains_and_cells), and the states of their
+     * pairs follow them point to point.
+     *
+     * Results do not depend on the partition: the pairs are ordered by a
+     * global key (cell along the curve, then rank in the cell), so every
+     * automaton sums its pair forces in the same order on any number of
+     * ranks.
      *
      * A time step (velocity Verlet) is: half kick, drift, ghost update,
      * pair kernel (strain increments -> mean-stress increments -> pair
@@ -153,9 +152,12 @@ namespace tribodyn
       /// Mean displacement of each group's automata, global.
       std::vector<Vec3>
       group_displacements() const;
-      /// Number of automata in each group, global.
-      std::vector<unsigned long long>
-      group_sizes() const;
+      /// Number of automata in each group, global (counted at set-up).
+      const std::vector<unsigned long long> &
+      group_sizes() const
+      {
+        return group_size;
+      }
 
       unsigned long long
       n_global_automata() const
@@ -167,12 +169,29 @@ namespace tribodyn
       {
         return n_owned;
       }
+      unsigned int
+      n_ghost_automata() const
+      {
+        return n_local - n_owned;
+      }
       unsigned long long
       n_global_pairs() const;
       unsigned int
       n_rebuilds() const
       {
         return rebuild_count;
+      }
+      /// Bonded pairs that left the pair-list range (and so were dropped),
+      /// global count since the start.
+      unsigned long long
+      n_dropped_bonds() const;
+      /// Bytes held by this rank's automata and pair arrays.
+      std::size_t
+      memory_consumption() const;
+      const Decomposition &
+      decomposition() const
+      {
+        return cells;
       }
 
       /// Write particles_NNNN.pvtu (+ .vtu per rank); returns the pvtu name
@@ -201,7 +220,7 @@ namespace tribodyn
       {
         return u;
       }
-      const std::vector<std::uint64_t> &
+      const std::vector<std::uint32_t> &
       ids() const
       {
         return id;
@@ -289,46 +308,84 @@ namespace tribodyn
         return prm;
       }
 
+      /**
+       * The partition of @p prm's scene over @p n_ranks ranks as p4est
+       * would cut it (equal numbers of cells along the space-filling curve
+       * of the trees), computed on this process without building the mesh
+       * or the automata: counts of owned and ghost automata per rank and
+       * the memory estimate. Cost: one pass over the lattice sites.
+       */
+      static PartitionFigures
+      partition_report(const Parameters &prm, const unsigned int n_ranks);
+
+      /// Memory per owned and per ghost automaton of an elastic bonded
+      /// block (memory_consumption() / n_owned on one rank, bench/mca), for
+      /// the partition report's estimate.
+      static constexpr double bytes_per_owned_automaton = 1000;
+      static constexpr double bytes_per_ghost_automaton = 300;
+
     private:
-      // --- set-up and rebuild
+      // --- set-up and rebuild (automaton_system.cc, rebuild.cc)
       void
-      make_background_mesh();
-      void
-      insert_packing();
+      pack_owned_cells();
       void
       rebuild(const bool initial);
+      /// Wrap the owned automata into the box, send those that entered a
+      /// cell of another rank (ParticleHandler) with the states of their
+      /// pairs; returns the pair states this rank may need.
       void
-      write_state_to_particles();
+      migrate();
+      /// Sort the owned automata along the curve of their cells.
       void
-      read_state_from_particles(const bool initial);
-      /// MPI: receive the automata of other ranks within the interaction
-      /// range of this rank's slab as ghosts (ghost_records).
+      order_owned_automata();
+      /// Receive the ghosts from the neighbour ranks.
       void
-                                exchange_ghosts();
-      std::vector<double>       ghost_records;
-      std::vector<unsigned int> ghost_record_owner;
+      exchange_ghosts();
+      /// Pair list of the owned automata (neighbour_list.cc); returns the
+      /// pair distances.
+      std::vector<double>
+      build_pair_list();
+      /// Restore the pair states kept over a rebuild (@p r: distances).
       void
-      build_pair_list(const bool initial);
+      restore_pair_states(const bool initial, const std::vector<double> &r);
+      void
+      resize_automaton_arrays(const unsigned int n);
 
-      // --- dynamics
+      // --- dynamics (pair_kernel.cc)
       void
       evaluate_pairs(const double step, const bool integrate);
       template <bool rotations, bool plastic, bool bonds>
       void
       pair_kernel(const double step);
+      template <bool plastic>
       void
-      apply_boundary_forces(const double t);
+      bond_switching();
+      /// Pair vector x_j - x_i (with the cached periodic image shift).
+      Vec3
+      pair_vector(const unsigned int p) const
+      {
+        const unsigned int i = pi[p], j = pj[p];
+        const auto        &s = cells.shift_vector(pshift[p]);
+        return {{(x[j][0] - x[i][0]) + s[0],
+                 (x[j][1] - x[i][1]) + s[1],
+                 (x[j][2] - x[i][2]) + s[2]}};
+      }
+
+      // --- neighbourhood weights (neighbourhood_weights.cc)
       /// Least-squares weights beta of the volumetric strain and inverse
-      /// fabric tensors of the owned automata (after rebuilds and changes
-      /// of the neighbourhoods).
+      /// fabric tensors of the owned automata whose neighbourhoods changed.
       void
-      update_neighbourhood_weights();
+      update_neighbourhood_weights(const bool all);
       Sym3
       fabric_corrected(const unsigned int k, const Sym3 &t) const;
       /// Add the eq.-(4) stress contributions of pair @p p to the owned
       /// automata of the pair in @p target (indexed by local automaton).
       void
       add_pair_stress(const unsigned int p, std::vector<Sym3> &target) const;
+
+      // --- boundary groups (boundary_groups.cc)
+      void
+      apply_boundary_forces(const double t);
       /// Sum of @p field (per local automaton) over the owned automata of
       /// each boundary group, over all ranks.
       std::vector<Vec3>
@@ -340,68 +397,85 @@ namespace tribodyn
       Vec3
       group_value(const BoundaryGroup &g, const double t) const;
 
-      /// Minimum-image vector x_j - x_i.
-      dealii::Tensor<1, 3>
-      min_image(const Point3 &xi, const Point3 &xj) const;
+      /// Particle properties of a migrating automaton (see rebuild.cc).
+      static constexpr unsigned int migration_properties = 22;
 
       const Parameters &prm;
       MPI_Comm          comm;
       unsigned int      n_ranks, rank;
 
-      dealii::parallel::distributed::Triangulation<3>        tria;
+      Decomposition                                          cells;
       dealii::MappingQ1<3>                                   mapping;
       std::unique_ptr<dealii::Particles::ParticleHandler<3>> particles;
-      unsigned int n_automaton_properties = 0, n_slot_fields = 0;
+      NeighbourExchange                                      neighbours;
 
       // material constants indexed by material
       struct MaterialConstants
       {
         double             rho, G, K, D, two_G, yield0, sigma_b, w_b;
+        double             mass, inertia;
         MaterialParameters m;
       };
       std::vector<MaterialConstants> mc;
       bool   plastic_scene = false, bond_scene = false, rotations = true;
-      double d = 0, r0 = 0, S = 0, V = 0, mass_factor = 0;
-      Vec3   period                = {{0, 0, 0}};
-      std::array<bool, 3> periodic = {{false, false, false}};
+      double d = 0, r0 = 0, S = 0, V = 0, range = 0;
 
-      double             dt = 0, critical_dt = 0, current_time = 0;
-      unsigned long      n_steps_done  = 0;
-      unsigned long long n_global      = 0;
-      unsigned int       rebuild_count = 0;
+      double                          dt = 0, critical_dt = 0, current_time = 0;
+      unsigned long                   n_steps_done  = 0;
+      unsigned long long              n_global      = 0;
+      unsigned int                    rebuild_count = 0;
+      std::vector<unsigned long long> group_size;
 
       // --- automata (local: owned first, then ghosts)
       unsigned int               n_owned = 0, n_local = 0;
-      std::vector<std::uint64_t> id;
+      std::vector<std::uint32_t> id;
+      /// Global order key: curve index of the cell << 16 | rank of the id
+      /// within the cell.
+      std::vector<std::uint64_t> order;
+      std::vector<unsigned int>  cell_of; ///< local cell (at the rebuild)
       std::vector<Point3>        x, x_at_rebuild;
       std::vector<Vec3>          dx, v, w, f, f_tot, torque, u;
-      std::vector<double>        mass, inertia;
       std::vector<unsigned char> mat, body;
       std::vector<std::uint32_t> groups;
       std::vector<double>        eps_p, sigma_y;
       std::vector<Sym3>          stress;
       /// Per-step exchange buffers (stride given by their use).
       std::vector<double> kin;   ///< x(3) dx(3) w(3)
-      std::vector<double> mean;  ///< dsm, sum qS, dsm_prev
       std::vector<double> plast; ///< sigma_m trial, M, heat share
-      std::vector<double> sum_qs, dsm, dsm_prev, acc_qse;
-      std::vector<double> return_factor, mean_trial, heat_share;
+      std::vector<double> sum_qs, dsm, acc_qse;
       std::vector<Sym3>   trial;
-      GhostExchange       ghosts;
+      std::vector<Sym3>   fabric_inverse;
+      /// Owned automata whose contacts or bonds changed (weights stale).
+      std::vector<unsigned char> changed;
+      bool                       any_changed = true;
 
-      // --- pairs (flat arrays indexed by pair)
+      // --- pairs (flat arrays indexed by pair; i has the smaller key)
       std::vector<std::uint32_t> pi, pj;
-      std::vector<unsigned char> bonded, owned_i, owned_j;
-      std::vector<double>        q_i, sig_i, sig_j, heat, r_now;
+      std::vector<unsigned char> pshift; ///< image shift code of x_j
+      std::vector<unsigned char> bonded, in_contact, owned_i, owned_j;
+      std::vector<double>        q_i, sig_i, sig_j, heat, r_now, dr;
       std::vector<Vec3>          tau_i, tau_j, normal;
-      std::vector<double>        deps_i, deps_j, beta_i, beta_j;
-      std::vector<Sym3>          fabric_inverse;
-      bool                       weights_stale = true;
-      std::vector<unsigned char> in_contact;
+      std::vector<double>        beta_i, beta_j;
+      /// Pairs of each owned automaton: 2 p + side (side 1: the automaton
+      /// is j of pair p), CSR.
+      std::vector<unsigned int> adjacency_first, adjacency;
 
-      double                    plastic_work = 0, friction_work = 0;
-      std::vector<Vec3>         group_force_local;
-      std::vector<unsigned int> group_count_local;
+      /// Pair states kept over a rebuild, sorted by (id_i, id_j).
+      struct PairState
+      {
+        std::uint64_t key; ///< smaller id << 32 | larger id
+        double        bonded, contact, q, r, sig_i, sig_j, heat;
+        double        tau_i[3], tau_j[3];
+      };
+      std::vector<PairState> kept_pairs;
+      /// This rank's old pairs by key (index into the old pair arrays).
+      std::vector<std::pair<std::uint64_t, std::uint32_t>> old_pairs;
+      /// Per old pair: bit 0 = i had the larger id; bit 1 = bonded and
+      /// counted here (i owned).
+      std::vector<unsigned char> old_flags;
+
+      double             plastic_work = 0, friction_work = 0;
+      unsigned long long dropped_bonds = 0;
     };
   } // namespace mca
 } // namespace tribodyn

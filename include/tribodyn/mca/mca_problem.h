@@ -21,6 +21,12 @@ namespace tribodyn
       static void
       declare_parameters(dealii::ParameterHandler &prm);
 
+      /// tribodyn --partition-report N FILE.prm
+      static void
+      print_partition_report(dealii::ParameterHandler &prm,
+                             const unsigned int        n_ranks,
+                             std::ostream             &out);
+
       McaProblem(dealii::ParameterHandler &prm, const RunContext &context);
 
       void

@@ -1,0 +1,273 @@
+#ifndef tribodyn_mca_decomposition_h
+#define tribodyn_mca_decomposition_h
+
+#include <array>
+#include <cstdint>
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria.h>
+#include <tribodyn/mca/parameters.h>
+#include <unordered_map>
+#include <vector>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    /**
+     * The 3D domain decomposition of the automata engine.
+     *
+     * The simulation box is a parallel::distributed::Triangulation<3>
+     * (p4est) of cells at least one interaction range wide, with periodic
+     * faces in the periodic directions. A rank owns the cells p4est's
+     * partition gives it (cuts in x, y and z) and the automata in them.
+     *
+     * The cells form a structured grid: cell (i, j, k) of
+     * n_cells[0] x n_cells[1] x n_cells[2]. Every automaton within the
+     * interaction range of an automaton in cell C lies in C or in one of its
+     * 26 neighbours, possibly across a periodic face (then seen through an
+     * image shift of one period). This class lists, for each owned cell,
+     * those neighbours with their shift, and the ranks that own them: the
+     * neighbour ranks, the only ones a rank ever talks to. deal.II 9.4's
+     * ghost cells include the cells across periodic faces (p4est's ghost
+     * layer follows the periodic connectivity), but its particle ghost
+     * exchange does not; this is the periodic-aware neighbour map that
+     * deal.II 9.5 builds from coinciding vertices.
+     *
+     * Nothing here has the size of the global mesh: the local cells are the
+     * owned cells and their neighbour (ghost) cells.
+     */
+    class Decomposition
+    {
+    public:
+      using CellIterator =
+        typename dealii::parallel::distributed::Triangulation<
+          3>::active_cell_iterator;
+
+      /// A neighbour of an owned cell: local cell index and image shift code
+      /// (shift_vector(code) is added to the neighbour's coordinates).
+      struct Neighbour
+      {
+        unsigned int  cell;
+        unsigned char shift;
+      };
+
+      /// Shift code of no shift.
+      static constexpr unsigned char no_shift = 13;
+
+      static constexpr unsigned int invalid = static_cast<unsigned int>(-1);
+
+      Decomposition(const GeometryParameters &geometry,
+                    const double              interaction_range,
+                    const MPI_Comm            comm);
+
+      /// Choose the cell grid for the box and the interaction range: the
+      /// coarse mesh of nearly cubic p4est trees, refined to cells of at
+      /// least the range. Static so that the partition report can use it
+      /// without building the mesh.
+      static void
+      choose_grid(const GeometryParameters    &geometry,
+                  const double                 interaction_range,
+                  std::array<unsigned int, 3> &trees,
+                  unsigned int                &level);
+
+      /// Build the mesh, partition it and the cell tables.
+      void
+      setup();
+
+      const dealii::parallel::distributed::Triangulation<3> &
+      triangulation() const
+      {
+        return tria;
+      }
+
+      unsigned int
+      n_owned_cells() const
+      {
+        return n_owned;
+      }
+      unsigned int
+      n_local_cells() const
+      {
+        return cell_index.size();
+      }
+      const std::array<unsigned int, 3> &
+      cells_per_direction() const
+      {
+        return n_cells;
+      }
+      const std::array<double, 3> &
+      cell_size() const
+      {
+        return h;
+      }
+
+      /// Structured index (i, j, k) of local cell @p c.
+      const std::array<unsigned int, 3> &
+      cell_coordinates(const unsigned int c) const
+      {
+        return cell_index[c];
+      }
+      /// Rank owning local cell @p c.
+      unsigned int
+      owner(const unsigned int c) const
+      {
+        return cell_owner[c];
+      }
+      CellIterator
+      dealii_cell(const unsigned int c) const
+      {
+        return cells[c];
+      }
+      /// Position of local cell @p c along a space-filling (Morton) curve of
+      /// the global cell grid: the same on every partition.
+      std::uint64_t
+      curve_index(const unsigned int c) const;
+
+      /// Structured cell of a point (wrapped into the box in periodic
+      /// directions); false if outside the box in a non-periodic direction.
+      bool
+      structured_cell(const Point3 &p, std::array<unsigned int, 3> &ijk) const;
+      /// Local cell containing @p p (invalid if not a local cell).
+      unsigned int
+      local_cell(const Point3 &p) const;
+      /// Local cell with structured index @p ijk (invalid if not local).
+      unsigned int
+      local_cell(const std::array<unsigned int, 3> &ijk) const;
+
+      /// @p p moved into the box in the periodic directions.
+      Point3
+      wrap(const Point3 &p) const;
+
+      /// The neighbours of owned cell @p c, itself included (shift none).
+      const std::vector<Neighbour> &
+      neighbours(const unsigned int c) const
+      {
+        return cell_neighbours[c];
+      }
+      /// Image shift vector of a shift code.
+      const std::array<double, 3> &
+      shift_vector(const unsigned char code) const
+      {
+        return shifts[code];
+      }
+      static unsigned char
+      opposite_shift(const unsigned char code)
+      {
+        return 26 - code;
+      }
+
+      /// Ranks owning a neighbour cell of an owned cell (this rank
+      /// excluded), ascending.
+      const std::vector<unsigned int> &
+      neighbour_ranks() const
+      {
+        return ranks;
+      }
+      /// Owned cells that neighbour a cell of neighbour_ranks()[n]: their
+      /// automata are ghosts on that rank. Ascending local cell index.
+      const std::vector<unsigned int> &
+      cells_sent_to(const unsigned int n) const
+      {
+        return send_cells[n];
+      }
+      /// Index in neighbour_ranks() of @p rank (invalid if none).
+      unsigned int
+      neighbour_index(const unsigned int rank) const;
+
+      const std::array<bool, 3> &
+      periodic() const
+      {
+        return periodic_;
+      }
+      const std::array<double, 3> &
+      period() const
+      {
+        return period_;
+      }
+
+    private:
+      std::uint64_t
+      key(const std::array<unsigned int, 3> &ijk) const
+      {
+        return (static_cast<std::uint64_t>(ijk[2]) * n_cells[1] + ijk[1])
+                 * n_cells[0]
+               + ijk[0];
+      }
+
+      const GeometryParameters &geometry;
+      const double              range;
+      MPI_Comm                  comm;
+      unsigned int              rank;
+
+      dealii::parallel::distributed::Triangulation<3> tria;
+      std::array<unsigned int, 3>                     n_cells{{0, 0, 0}};
+      std::array<double, 3>                           h{{0, 0, 0}};
+      std::array<bool, 3>                             periodic_{{0, 0, 0}};
+      std::array<double, 3>                           period_{{0, 0, 0}};
+      std::array<std::array<double, 3>, 27>           shifts;
+
+      unsigned int                                    n_owned = 0;
+      std::vector<std::array<unsigned int, 3>>        cell_index;
+      std::vector<unsigned int>                       cell_owner;
+      std::vector<CellIterator>                       cells;
+      std::unordered_map<std::uint64_t, unsigned int> local_of_key;
+      std::vector<std::vector<Neighbour>>             cell_neighbours;
+      std::vector<unsigned int>                       ranks;
+      std::vector<std::vector<unsigned int>>          send_cells;
+    };
+
+
+    /**
+     * Point-to-point exchange with the neighbour ranks of a Decomposition.
+     * After set-up, update() copies a fixed number of doubles per automaton
+     * from the owned automata in the send lists to the ghost copies on the
+     * neighbours (the receiving rank's ghosts of neighbour n are the
+     * contiguous block recv_offset[n] ... recv_offset[n+1] after the owned
+     * automata). exchange() sends variable-length messages once.
+     */
+    class NeighbourExchange
+    {
+    public:
+      void
+      reinit(const MPI_Comm comm, const std::vector<unsigned int> &ranks);
+
+      /// Send @p out[n] to ranks[n] and return what each neighbour sent.
+      template <typename T>
+      std::vector<std::vector<T>>
+      exchange(const std::vector<std::vector<T>> &out, const int tag) const;
+
+      /// Per-step ghost update set-up: send_indices[n] are the local indices
+      /// of the owned automata whose copies neighbour n holds, in its order;
+      /// ghost block n starts at ghost_offset[n].
+      void
+      set_ghost_lists(std::vector<std::vector<unsigned int>> send_indices,
+                      std::vector<unsigned int>              ghost_offset);
+
+      /// Copy @p width doubles per automaton of @p data (array over local
+      /// automata, stride @p width) from owners to ghosts.
+      void
+      update(double *data, const unsigned int width) const;
+
+      bool
+      active() const
+      {
+        return !ranks.empty();
+      }
+      const std::vector<unsigned int> &
+      neighbour_ranks() const
+      {
+        return ranks;
+      }
+
+    private:
+      MPI_Comm                                 comm = MPI_COMM_SELF;
+      std::vector<unsigned int>                ranks;
+      std::vector<std::vector<unsigned int>>   send_indices;
+      std::vector<unsigned int>                ghost_offset;
+      mutable std::vector<std::vector<double>> send_buffers, recv_buffers;
+      mutable std::vector<MPI_Request>         requests;
+    };
+  } // namespace mca
+} // namespace tribodyn
+
+#endif

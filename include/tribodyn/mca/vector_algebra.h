@@ -1,0 +1,56 @@
+#ifndef tribodyn_mca_vector_algebra_h
+#define tribodyn_mca_vector_algebra_h
+
+#include <array>
+#include <cmath>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    using Vec3 = std::array<double, 3>;
+    using Sym3 = std::array<double, 6>; ///< xx yy zz yz xz xy
+
+    // Small inline kernels of the pair loops: plain arrays so that the
+    // compiler keeps them in registers (no Tensor temporaries).
+
+    inline double
+    dot(const Vec3 &a, const Vec3 &b)
+    {
+      return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    inline Vec3
+    cross(const Vec3 &a, const Vec3 &b)
+    {
+      return {{a[1] * b[2] - a[2] * b[1],
+               a[2] * b[0] - a[0] * b[2],
+               a[0] * b[1] - a[1] * b[0]}};
+    }
+
+    /// Add c * sym(n (x) t) to s (xx yy zz yz xz xy).
+    inline void
+    add_sym(Sym3 &s, const double c, const Vec3 &n, const Vec3 &t)
+    {
+      s[0] += c * n[0] * t[0];
+      s[1] += c * n[1] * t[1];
+      s[2] += c * n[2] * t[2];
+      s[3] += c * 0.5 * (n[1] * t[2] + n[2] * t[1]);
+      s[4] += c * 0.5 * (n[0] * t[2] + n[2] * t[0]);
+      s[5] += c * 0.5 * (n[0] * t[1] + n[1] * t[0]);
+    }
+
+    /// Von Mises equivalent stress sqrt(3 J2).
+    inline double
+    von_mises(const Sym3 &s)
+    {
+      const double m = (s[0] + s[1] + s[2]) / 3;
+      const double a = s[0] - m, b = s[1] - m, c = s[2] - m;
+      const double j2 = 0.5 * (a * a + b * b + c * c) + s[3] * s[3]
+                        + s[4] * s[4] + s[5] * s[5];
+      return std::sqrt(3 * j2);
+    }
+  } // namespace mca
+} // namespace tribodyn
+
+#endif

@@ -1,0 +1,403 @@
+#include <algorithm>
+#include <cmath>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <limits>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/output.h>
+#include <tribodyn/mca/decomposition.h>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    namespace
+    {
+      /// Spread the lowest 21 bits of @p v to every third bit.
+      std::uint64_t
+      spread_bits(std::uint64_t v)
+      {
+        v &= 0x1fffff;
+        v = (v | v << 32) & 0x1f00000000ffffULL;
+        v = (v | v << 16) & 0x1f0000ff0000ffULL;
+        v = (v | v << 8) & 0x100f00f00f00f00fULL;
+        v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+        v = (v | v << 2) & 0x1249249249249249ULL;
+        return v;
+      }
+    } // namespace
+
+
+    Decomposition::Decomposition(const GeometryParameters &geometry,
+                                 const double              interaction_range,
+                                 const MPI_Comm            communicator)
+        : geometry(geometry)
+        , range(interaction_range)
+        , comm(communicator)
+        , rank(dealii::Utilities::MPI::this_mpi_process(communicator))
+        , tria(communicator)
+    {
+      periodic_ = geometry.periodic;
+      for (unsigned int c = 0; c < 3; ++c)
+        period_[c] = geometry.domain_upper[c] - geometry.domain_lower[c];
+      for (int sz = -1; sz <= 1; ++sz)
+        for (int sy = -1; sy <= 1; ++sy)
+          for (int sx = -1; sx <= 1; ++sx)
+            shifts[(sx + 1) + 3 * (sy + 1) + 9 * (sz + 1)]
+              = {{sx * period_[0], sy * period_[1], sz * period_[2]}};
+    }
+
+
+    void
+    Decomposition::choose_grid(const GeometryParameters    &g,
+                               const double                 r,
+                               std::array<unsigned int, 3> &trees,
+                               unsigned int                &level)
+    {
+      // Cells must be at least the interaction range wide in every
+      // direction (then all partners of an automaton lie in the 27 cells
+      // around it) and should be as close to it as possible (the search
+      // volume and the ghost layer grow with the cell size). The coarse mesh
+      // (the p4est trees) is replicated on every rank, so it stays small:
+      // the most refined grid whose widest cell is within 10 % of the best
+      // achievable with at most 4096 trees.
+      std::array<double, 3>       L;
+      std::array<unsigned int, 3> n_max;
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          L[c]     = g.domain_upper[c] - g.domain_lower[c];
+          n_max[c] = std::max(1u, static_cast<unsigned int>(L[c] / r));
+        }
+      const unsigned int  n_min = *std::min_element(n_max.begin(), n_max.end());
+      std::vector<double> width;
+      for (unsigned int l = 0; (1u << l) <= n_min && l < 20; ++l)
+        {
+          double w = 0, prod = 1;
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              const unsigned int t = n_max[c] >> l;
+              prod *= t;
+              w = std::max(w, L[c] / (t << l));
+            }
+          width.push_back(prod <= 4096 ? w
+                                       : std::numeric_limits<double>::max());
+        }
+      const double best = *std::min_element(width.begin(), width.end());
+      level             = 0;
+      for (unsigned int l = 0; l < width.size(); ++l)
+        if (width[l] <= 1.1 * best)
+          level = l;
+      for (unsigned int c = 0; c < 3; ++c)
+        trees[c] = n_max[c] >> level;
+    }
+
+
+    void
+    Decomposition::setup()
+    {
+      const auto &g = geometry;
+      for (unsigned int c = 0; c < 3; ++c)
+        if (periodic_[c] && period_[c] <= 2 * range)
+          throw InputError(
+            std::string("The periodic length in ") + "xyz"[c] + " ("
+            + format_number(period_[c])
+            + " m) must exceed twice the interaction range (automaton size "
+              "times 1 + Interaction/Skin = "
+            + format_number(range) + " m).");
+      std::array<unsigned int, 3> trees;
+      unsigned int                level;
+      choose_grid(g, range, trees, level);
+      dealii::GridGenerator::subdivided_hyper_rectangle(
+        tria,
+        std::vector<unsigned int>(trees.begin(), trees.end()),
+        g.domain_lower,
+        g.domain_upper,
+        true);
+      std::vector<dealii::GridTools::PeriodicFacePair<
+        dealii::parallel::distributed::Triangulation<3>::cell_iterator>>
+        faces;
+      for (unsigned int c = 0; c < 3; ++c)
+        if (periodic_[c])
+          dealii::GridTools::collect_periodic_faces(
+            tria, 2 * c, 2 * c + 1, c, faces);
+      if (!faces.empty())
+        tria.add_periodicity(faces);
+      if (level > 0)
+        tria.refine_global(level);
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          n_cells[c] = trees[c] << level;
+          h[c]       = period_[c] / n_cells[c];
+        }
+
+      // Local cells: the owned ones (along the space-filling curve, for
+      // locality of the automata numbered after them), then the ghosts.
+      std::vector<std::pair<std::uint64_t, CellIterator>> owned, ghost;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned() || cell->is_ghost())
+          {
+            std::array<unsigned int, 3> ijk;
+            const bool inside = structured_cell(cell->center(), ijk);
+            AssertThrow(inside, dealii::ExcInternalError());
+            const std::uint64_t z = spread_bits(ijk[0])
+                                    | spread_bits(ijk[1]) << 1
+                                    | spread_bits(ijk[2]) << 2;
+            (cell->is_locally_owned() ? owned : ghost).emplace_back(z, cell);
+          }
+      auto by_curve
+        = [](const auto &a, const auto &b) { return a.first < b.first; };
+      std::sort(owned.begin(), owned.end(), by_curve);
+      std::sort(ghost.begin(), ghost.end(), by_curve);
+      n_owned = owned.size();
+      cells.clear();
+      cell_index.clear();
+      cell_owner.clear();
+      local_of_key.clear();
+      for (const auto *list : {&owned, &ghost})
+        for (const auto &entry : *list)
+          {
+            std::array<unsigned int, 3> ijk;
+            structured_cell(entry.second->center(), ijk);
+            local_of_key[key(ijk)] = cells.size();
+            cells.push_back(entry.second);
+            cell_index.push_back(ijk);
+            cell_owner.push_back(entry.second->subdomain_id());
+          }
+
+      // Neighbours of the owned cells (periodic images included).
+      cell_neighbours.assign(n_owned, {});
+      std::vector<std::vector<unsigned int>> cells_for_rank;
+      ranks.clear();
+      for (unsigned int c = 0; c < n_owned; ++c)
+        {
+          for (int oz = -1; oz <= 1; ++oz)
+            for (int oy = -1; oy <= 1; ++oy)
+              for (int ox = -1; ox <= 1; ++ox)
+                {
+                  const int                   o[3] = {ox, oy, oz};
+                  std::array<unsigned int, 3> nb;
+                  int                         s[3]  = {0, 0, 0};
+                  bool                        valid = true;
+                  for (unsigned int d = 0; d < 3; ++d)
+                    {
+                      int v = static_cast<int>(cell_index[c][d]) + o[d];
+                      if (v < 0 || v >= static_cast<int>(n_cells[d]))
+                        {
+                          if (!periodic_[d])
+                            valid = false;
+                          s[d] = v < 0 ? -1 : 1;
+                          v -= s[d] * static_cast<int>(n_cells[d]);
+                        }
+                      nb[d] = v;
+                    }
+                  if (!valid)
+                    continue;
+                  const unsigned int lc = local_cell(nb);
+                  if (lc == invalid)
+                    throw RunError(
+                      "Internal error: a neighbour cell of an owned cell is "
+                      "not in this rank's ghost layer (periodic "
+                      "connectivity of the p4est mesh).");
+                  const unsigned char code
+                    = (s[0] + 1) + 3 * (s[1] + 1) + 9 * (s[2] + 1);
+                  cell_neighbours[c].push_back({lc, code});
+                  const unsigned int r = cell_owner[lc];
+                  if (r == rank)
+                    continue;
+                  auto it = std::lower_bound(ranks.begin(), ranks.end(), r);
+                  const unsigned int n = it - ranks.begin();
+                  if (it == ranks.end() || *it != r)
+                    {
+                      ranks.insert(it, r);
+                      cells_for_rank.insert(cells_for_rank.begin() + n,
+                                            std::vector<unsigned int>());
+                    }
+                  if (cells_for_rank[n].empty()
+                      || cells_for_rank[n].back() != c)
+                    cells_for_rank[n].push_back(c);
+                }
+        }
+      send_cells = std::move(cells_for_rank);
+    }
+
+
+    std::uint64_t
+    Decomposition::curve_index(const unsigned int c) const
+    {
+      const auto &ijk = cell_index[c];
+      return spread_bits(ijk[0]) | spread_bits(ijk[1]) << 1
+             | spread_bits(ijk[2]) << 2;
+    }
+
+
+    bool
+    Decomposition::structured_cell(const Point3                &p,
+                                   std::array<unsigned int, 3> &ijk) const
+    {
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          double y = p[c] - geometry.domain_lower[c];
+          if (periodic_[c])
+            y -= period_[c] * std::floor(y / period_[c]);
+          else if (y < 0 || y >= period_[c])
+            return false;
+          const long i = static_cast<long>(std::floor(y / h[c]));
+          ijk[c]       = static_cast<unsigned int>(
+            std::min<long>(n_cells[c] - 1, std::max<long>(0, i)));
+        }
+      return true;
+    }
+
+
+    unsigned int
+    Decomposition::local_cell(const std::array<unsigned int, 3> &ijk) const
+    {
+      const auto it = local_of_key.find(key(ijk));
+      return it == local_of_key.end() ? invalid : it->second;
+    }
+
+
+    unsigned int
+    Decomposition::local_cell(const Point3 &p) const
+    {
+      std::array<unsigned int, 3> ijk;
+      if (!structured_cell(p, ijk))
+        return invalid;
+      return local_cell(ijk);
+    }
+
+
+    Point3
+    Decomposition::wrap(const Point3 &p) const
+    {
+      Point3 q = p;
+      for (unsigned int c = 0; c < 3; ++c)
+        if (periodic_[c])
+          {
+            const double lo = geometry.domain_lower[c];
+            q[c] -= period_[c] * std::floor((q[c] - lo) / period_[c]);
+            // round-off can leave q exactly at the upper end
+            if (q[c] >= lo + period_[c])
+              q[c] = lo;
+          }
+      return q;
+    }
+
+
+    unsigned int
+    Decomposition::neighbour_index(const unsigned int r) const
+    {
+      const auto it = std::lower_bound(ranks.begin(), ranks.end(), r);
+      return (it == ranks.end() || *it != r)
+               ? invalid
+               : static_cast<unsigned int>(it - ranks.begin());
+    }
+
+
+    // ------------------------------------------------------------------
+    void
+    NeighbourExchange::reinit(const MPI_Comm                   communicator,
+                              const std::vector<unsigned int> &neighbours)
+    {
+      comm  = communicator;
+      ranks = neighbours;
+      send_indices.clear();
+      ghost_offset.assign(1, 0);
+      send_buffers.resize(ranks.size());
+      recv_buffers.resize(ranks.size());
+      requests.resize(2 * ranks.size());
+    }
+
+
+    template <typename T>
+    std::vector<std::vector<T>>
+    NeighbourExchange::exchange(const std::vector<std::vector<T>> &out,
+                                const int                          tag) const
+    {
+      std::vector<std::vector<T>> in(ranks.size());
+      std::vector<MPI_Request>    sends(ranks.size());
+      for (unsigned int n = 0; n < ranks.size(); ++n)
+        MPI_Isend(out[n].data(),
+                  out[n].size() * sizeof(T),
+                  MPI_BYTE,
+                  ranks[n],
+                  tag,
+                  comm,
+                  &sends[n]);
+      for (unsigned int n = 0; n < ranks.size(); ++n)
+        {
+          MPI_Status status;
+          MPI_Probe(ranks[n], tag, comm, &status);
+          int bytes = 0;
+          MPI_Get_count(&status, MPI_BYTE, &bytes);
+          in[n].resize(bytes / sizeof(T));
+          MPI_Recv(in[n].data(),
+                   bytes,
+                   MPI_BYTE,
+                   ranks[n],
+                   tag,
+                   comm,
+                   MPI_STATUS_IGNORE);
+        }
+      MPI_Waitall(sends.size(), sends.data(), MPI_STATUSES_IGNORE);
+      return in;
+    }
+
+    template std::vector<std::vector<double>>
+    NeighbourExchange::exchange(const std::vector<std::vector<double>> &,
+                                const int) const;
+
+
+    void
+    NeighbourExchange::set_ghost_lists(
+      std::vector<std::vector<unsigned int>> indices,
+      std::vector<unsigned int>              offsets)
+    {
+      send_indices = std::move(indices);
+      ghost_offset = std::move(offsets);
+    }
+
+
+    void
+    NeighbourExchange::update(double *data, const unsigned int width) const
+    {
+      const unsigned int n_nb = ranks.size();
+      if (n_nb == 0)
+        return;
+      for (unsigned int n = 0; n < n_nb; ++n)
+        {
+          recv_buffers[n].resize((ghost_offset[n + 1] - ghost_offset[n])
+                                 * width);
+          MPI_Irecv(recv_buffers[n].data(),
+                    recv_buffers[n].size(),
+                    MPI_DOUBLE,
+                    ranks[n],
+                    78,
+                    comm,
+                    &requests[n]);
+        }
+      for (unsigned int n = 0; n < n_nb; ++n)
+        {
+          auto &buf = send_buffers[n];
+          buf.resize(send_indices[n].size() * width);
+          double *out = buf.data();
+          for (const unsigned int k : send_indices[n])
+            out = std::copy(data + std::size_t(k) * width,
+                            data + std::size_t(k + 1) * width,
+                            out);
+          MPI_Isend(buf.data(),
+                    buf.size(),
+                    MPI_DOUBLE,
+                    ranks[n],
+                    78,
+                    comm,
+                    &requests[n_nb + n]);
+        }
+      MPI_Waitall(2 * n_nb, requests.data(), MPI_STATUSES_IGNORE);
+      for (unsigned int n = 0; n < n_nb; ++n)
+        std::copy(recv_buffers[n].begin(),
+                  recv_buffers[n].end(),
+                  data + std::size_t(ghost_offset[n]) * width);
+    }
+  } // namespace mca
+} // namespace tribodyn

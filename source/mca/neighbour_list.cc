@@ -1,0 +1,104 @@
+// The pair list: all pairs of automata closer than the interaction range
+// (automaton size times 1 + skin) with at least one owned member, found
+// through the cells of the decomposition, with the periodic image shift of
+// each pair cached.
+
+#include <algorithm>
+#include <numeric>
+#include <tribodyn/mca/automaton_system.h>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    std::vector<double>
+    AutomatonSystem::build_pair_list()
+    {
+      // Automata of each local cell (owned and ghost), CSR.
+      const unsigned int        n_cells = cells.n_local_cells();
+      std::vector<unsigned int> first(n_cells + 1, 0), members(n_local);
+      for (unsigned int k = 0; k < n_local; ++k)
+        ++first[cell_of[k] + 1];
+      std::partial_sum(first.begin(), first.end(), first.begin());
+      {
+        std::vector<unsigned int> fill(first.begin(), first.end() - 1);
+        for (unsigned int k = 0; k < n_local; ++k)
+          members[fill[cell_of[k]]++] = k;
+      }
+
+      struct Candidate
+      {
+        std::uint32_t i, j;
+        unsigned char shift;
+        double        r;
+      };
+      std::vector<Candidate> found;
+      found.reserve(std::size_t(n_owned) * 7);
+      const double range2 = range * range;
+      for (unsigned int c = 0; c < cells.n_owned_cells(); ++c)
+        for (const auto &nb : cells.neighbours(c))
+          {
+            const auto &s = cells.shift_vector(nb.shift);
+            for (unsigned int ia = first[c]; ia < first[c + 1]; ++ia)
+              {
+                const unsigned int a = members[ia];
+                for (unsigned int ib = first[nb.cell]; ib < first[nb.cell + 1];
+                     ++ib)
+                  {
+                    const unsigned int b = members[ib];
+                    // an owned-owned pair is found from both sides: keep
+                    // it once, from the automaton of smaller key
+                    if (b < n_owned && order[b] <= order[a])
+                      continue;
+                    double r2 = 0;
+                    Vec3   dn;
+                    for (unsigned int e = 0; e < 3; ++e)
+                      {
+                        dn[e] = (x[b][e] - x[a][e]) + s[e];
+                        r2 += dn[e] * dn[e];
+                      }
+                    if (r2 >= range2)
+                      continue;
+                    // i is the automaton of smaller key: the same pair and
+                    // orientation on every rank and partition
+                    if (order[a] < order[b])
+                      found.push_back({a, b, nb.shift, std::sqrt(r2)});
+                    else
+                      found.push_back({b,
+                                       a,
+                                       Decomposition::opposite_shift(nb.shift),
+                                       std::sqrt(r2)});
+                  }
+              }
+          }
+      // Order of the pairs: by the keys of i then j, so that every
+      // automaton sums its pairs' forces in the same order on any
+      // partition (the results do not depend on the number of ranks).
+      std::sort(found.begin(),
+                found.end(),
+                [&](const Candidate &p, const Candidate &q) {
+                  return order[p.i] != order[q.i] ? order[p.i] < order[q.i]
+                                                  : order[p.j] < order[q.j];
+                });
+      const unsigned int  n_pairs = found.size();
+      std::vector<double> r(n_pairs);
+      pi.resize(n_pairs);
+      pj.resize(n_pairs);
+      pshift.resize(n_pairs);
+      owned_i.resize(n_pairs);
+      owned_j.resize(n_pairs);
+      for (unsigned int p = 0; p < n_pairs; ++p)
+        {
+          pi[p]      = found[p].i;
+          pj[p]      = found[p].j;
+          pshift[p]  = found[p].shift;
+          owned_i[p] = found[p].i < n_owned;
+          owned_j[p] = found[p].j < n_owned;
+          r[p]       = found[p].r;
+        }
+      pi.shrink_to_fit(), pj.shrink_to_fit(), pshift.shrink_to_fit();
+      owned_i.shrink_to_fit(), owned_j.shrink_to_fit();
+      return r;
+    }
+  } // namespace mca
+} // namespace tribodyn

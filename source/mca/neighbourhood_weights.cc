@@ -1,0 +1,211 @@
+// Neighbourhood weights of the many-body term and the fabric correction of
+// the eq.-(4) stress (doc/theory/mca.md §3): per automaton, a 6 x 6 least
+// squares fit of a strain tensor to its pairs' normal strains, and the 3 x 3
+// fabric tensor of its neighbourhood. Recomputed only for the automata
+// whose contacts or bonds changed.
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <tribodyn/mca/automaton_system.h>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    namespace
+    {
+      /// Voigt vector of n (x) n with doubled shear entries.
+      inline Eigen::Matrix<double, 6, 1>
+      voigt(const Vec3 &n)
+      {
+        Eigen::Matrix<double, 6, 1> N;
+        N << n[0] * n[0], n[1] * n[1], n[2] * n[2], 2 * n[1] * n[2],
+          2 * n[0] * n[2], 2 * n[0] * n[1];
+        return N;
+      }
+    } // namespace
+
+
+    void
+    AutomatonSystem::update_neighbourhood_weights(const bool all)
+    {
+      const unsigned int n_pairs = pi.size();
+      if (all)
+        {
+          beta_i.assign(n_pairs, 0);
+          beta_j.assign(n_pairs, 0);
+          fabric_inverse.assign(n_local, Sym3{{1, 1, 1, 0, 0, 0}});
+          // pairs of each owned automaton (CSR): rebuilt with the pair list
+          adjacency_first.assign(n_owned + 1, 0);
+          for (unsigned int p = 0; p < n_pairs; ++p)
+            {
+              if (owned_i[p])
+                ++adjacency_first[pi[p] + 1];
+              if (owned_j[p])
+                ++adjacency_first[pj[p] + 1];
+            }
+          for (unsigned int k = 0; k < n_owned; ++k)
+            adjacency_first[k + 1] += adjacency_first[k];
+          adjacency.resize(adjacency_first[n_owned]);
+          std::vector<unsigned int> fill(adjacency_first.begin(),
+                                         adjacency_first.end() - 1);
+          for (unsigned int p = 0; p < n_pairs; ++p)
+            {
+              if (owned_i[p])
+                adjacency[fill[pi[p]]++] = 2 * p;
+              if (owned_j[p])
+                adjacency[fill[pj[p]]++] = 2 * p + 1;
+            }
+        }
+      using Matrix6 = Eigen::Matrix<double, 6, 6>;
+      using Vector6 = Eigen::Matrix<double, 6, 1>;
+      Vector6 e;
+      e << 1, 1, 1, 0, 0, 0;
+      for (unsigned int k = 0; k < n_owned; ++k)
+        {
+          if (!all && !changed[k])
+            continue;
+          // A = sum_j N_j N_j^T, fabric B = sum_j (q S / V) n n, over the
+          // interacting pairs (bonded or in contact)
+          Matrix6         A     = Matrix6::Zero();
+          Eigen::Matrix3d B     = Eigen::Matrix3d::Zero();
+          unsigned int    count = 0;
+          for (unsigned int a = adjacency_first[k]; a < adjacency_first[k + 1];
+               ++a)
+            {
+              const unsigned int p = adjacency[a] / 2;
+              if (!bonded[p] && !in_contact[p])
+                continue;
+              const Vec3   dn = pair_vector(p);
+              const double r  = std::sqrt(dot(dn, dn));
+              const Vec3   n{{dn[0] / r, dn[1] / r, dn[2] / r}};
+              const auto   N = voigt(n);
+              A.noalias() += N * N.transpose();
+              const double q = (adjacency[a] & 1) ? r - q_i[p] : q_i[p];
+              const Eigen::Vector3d nv(n[0], n[1], n[2]);
+              B.noalias() += (q * S / V) * nv * nv.transpose();
+              ++count;
+            }
+          // Least-squares weights of the volumetric strain: beta_j = g.N_j
+          // with A g = (1 1 1 0 0 0), for well-conditioned neighbourhoods
+          // (bulk: |g| ~ 1); otherwise an equal share of the trace.
+          bool         full_rank = false;
+          Vector6      g         = Vector6::Zero();
+          const double scale     = A.diagonal().maxCoeff();
+          if (count > 0 && scale > 0)
+            {
+              const Eigen::LDLT<Matrix6> ldlt(A);
+              if (ldlt.info() == Eigen::Success
+                  && ldlt.vectorD().minCoeff() > 1e-3 * scale)
+                {
+                  g         = ldlt.solve(e);
+                  full_rank = g.cwiseAbs().maxCoeff() < 8;
+                }
+            }
+          double beta_sum = 0;
+          for (unsigned int a = adjacency_first[k]; a < adjacency_first[k + 1];
+               ++a)
+            {
+              const unsigned int p    = adjacency[a] / 2;
+              const bool         side = adjacency[a] & 1;
+              double             beta = 0;
+              if (bonded[p] || in_contact[p])
+                {
+                  if (full_rank)
+                    {
+                      const Vec3   dn = pair_vector(p);
+                      const double r  = std::sqrt(dot(dn, dn));
+                      beta = g.dot(voigt({{dn[0] / r, dn[1] / r, dn[2] / r}}));
+                    }
+                  else
+                    beta = 3. / count;
+                }
+              (side ? beta_j : beta_i)[p] = beta;
+              beta_sum += std::abs(beta);
+            }
+          // Bound the many-body stiffness by its bulk value (sum of |beta|
+          // = 3 in a complete FCC neighbourhood): sparse, nearly degenerate
+          // neighbourhoods (e.g. around broken bonds) could otherwise make
+          // an automaton far stiffer than the bulk and the explicit step
+          // unstable.
+          if (beta_sum > 3)
+            for (unsigned int a = adjacency_first[k];
+                 a < adjacency_first[k + 1];
+                 ++a)
+              {
+                const unsigned int p = adjacency[a] / 2;
+                ((adjacency[a] & 1) ? beta_j : beta_i)[p] *= 3 / beta_sum;
+              }
+          // Inverse fabric, for well-conditioned fabrics only (complete
+          // FCC: B = I); otherwise eq. (4) as is: B^-1 of a nearly planar
+          // neighbourhood would blow the stress (and the radial return's
+          // mean stress) up.
+          const double tr3 = B.trace() / 3;
+          Sym3         binv{{1, 1, 1, 0, 0, 0}};
+          if (B.determinant() > 0.1 * tr3 * tr3 * tr3)
+            {
+              const Eigen::Matrix3d Bi = B.inverse();
+              binv                     = {
+                                    {Bi(0, 0), Bi(1, 1), Bi(2, 2), Bi(1, 2), Bi(0, 2), Bi(0, 1)}};
+            }
+          fabric_inverse[k] = binv;
+          changed[k]        = 0;
+        }
+      any_changed = false;
+    }
+
+
+    Sym3
+    AutomatonSystem::fabric_corrected(const unsigned int k, const Sym3 &t) const
+    {
+      // sym(B^-1 T)
+      const Sym3     &b = fabric_inverse[k];
+      Eigen::Matrix3d Bi, T;
+      Bi << b[0], b[5], b[4], b[5], b[1], b[3], b[4], b[3], b[2];
+      T << t[0], t[5], t[4], t[5], t[1], t[3], t[4], t[3], t[2];
+      const Eigen::Matrix3d P = Bi * T;
+      return {{P(0, 0),
+               P(1, 1),
+               P(2, 2),
+               0.5 * (P(1, 2) + P(2, 1)),
+               0.5 * (P(0, 2) + P(2, 0)),
+               0.5 * (P(0, 1) + P(1, 0))}};
+    }
+
+
+    void
+    AutomatonSystem::add_pair_stress(const unsigned int p,
+                                     std::vector<Sym3> &target) const
+    {
+      // Seed eq. (4): sigma^i += (q_ij S / V_i) n_ij (x) F_ij / S, for each
+      // owned side of the pair (q_ji = r_ij - q_ij).
+      const Vec3 &n = normal[p];
+      if (owned_i[p])
+        {
+          Vec3 t;
+          for (unsigned int c = 0; c < 3; ++c)
+            t[c] = sig_i[p] * n[c] + tau_i[p][c];
+          add_sym(target[pi[p]], q_i[p] * S / V, n, t);
+        }
+      if (owned_j[p])
+        {
+          Vec3 t;
+          for (unsigned int c = 0; c < 3; ++c)
+            t[c] = sig_j[p] * n[c] + tau_j[p][c];
+          add_sym(target[pj[p]], (r_now[p] - q_i[p]) * S / V, n, t);
+        }
+    }
+
+
+    void
+    AutomatonSystem::compute_automaton_stresses()
+    {
+      stress.assign(n_local, Sym3{{0, 0, 0, 0, 0, 0}});
+      for (unsigned int p = 0; p < pi.size(); ++p)
+        if (bonded[p] || in_contact[p])
+          add_pair_stress(p, stress);
+      for (unsigned int k = 0; k < n_owned; ++k)
+        stress[k] = fabric_corrected(k, stress[k]);
+    }
+  } // namespace mca
+} // namespace tribodyn

@@ -1,0 +1,143 @@
+// Particle output: one .vtu per rank and a .pvtu, optionally restricted to
+// a slab (cross-sections of the seed's Figs. 3-4).
+
+#include <cstdio>
+#include <iomanip>
+#include <sstream>
+#include <tribodyn/core/output.h>
+#include <tribodyn/mca/automaton_system.h>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    std::string
+    AutomatonSystem::write_particles(const std::string &directory,
+                                     const std::string &base,
+                                     const unsigned int number,
+                                     const bool         with_stress,
+                                     const bool         slab,
+                                     const unsigned int axis,
+                                     const double       slab_lo,
+                                     const double       slab_hi) const
+    {
+      char tag[32];
+      std::snprintf(tag, sizeof(tag), "%s_%04u", base.c_str(), number);
+      const std::string         name    = tag;
+      const auto                nbonded = bonded_neighbour_counts();
+      std::vector<unsigned int> selected;
+      for (unsigned int k = 0; k < n_owned; ++k)
+        {
+          if (slab)
+            {
+              const double y = cells.wrap(x[k])[axis];
+              if (y < slab_lo || y > slab_hi)
+                continue;
+            }
+          selected.push_back(k);
+        }
+      std::ostringstream o;
+      o << std::setprecision(8);
+      o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
+           "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
+        << "<Piece NumberOfPoints=\"" << selected.size()
+        << "\" NumberOfCells=\"" << selected.size() << "\">\n";
+      o << "<PointData Scalars=\"material\">\n";
+      auto scalar = [&](const std::string &field, const auto &value) {
+        o << "<DataArray type=\"Float64\" Name=\"" << field
+          << "\" format=\"ascii\">\n";
+        for (const unsigned int k : selected)
+          o << value(k) << "\n";
+        o << "</DataArray>\n";
+      };
+      auto vector = [&](const std::string &field, const auto &value) {
+        o << "<DataArray type=\"Float64\" Name=\"" << field
+          << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+        for (const unsigned int k : selected)
+          {
+            const Vec3 a = value(k);
+            o << a[0] << " " << a[1] << " " << a[2] << "\n";
+          }
+        o << "</DataArray>\n";
+      };
+      scalar("id", [&](unsigned k) { return static_cast<double>(id[k]); });
+      scalar("rank", [&](unsigned) { return static_cast<double>(rank); });
+      scalar("material", [&](unsigned k) { return double(mat[k]); });
+      scalar("body", [&](unsigned k) { return double(body[k]); });
+      scalar("bonded_neighbours",
+             [&](unsigned k) { return double(nbonded[k]); });
+      scalar("plastic_strain", [&](unsigned k) { return eps_p[k]; });
+      vector("velocity", [&](unsigned k) { return v[k]; });
+      vector("displacement", [&](unsigned k) { return u[k]; });
+      vector("angular_velocity", [&](unsigned k) { return w[k]; });
+      if (with_stress)
+        {
+          o << "<DataArray type=\"Float64\" Name=\"stress\" "
+               "NumberOfComponents=\"9\" format=\"ascii\">\n";
+          for (const unsigned int k : selected)
+            {
+              const Sym3 &s = stress[k];
+              o << s[0] << " " << s[5] << " " << s[4] << " " << s[5] << " "
+                << s[1] << " " << s[3] << " " << s[4] << " " << s[3] << " "
+                << s[2] << "\n";
+            }
+          o << "</DataArray>\n";
+          scalar("pressure", [&](unsigned k) {
+            return -(stress[k][0] + stress[k][1] + stress[k][2]) / 3;
+          });
+          scalar("von_mises", [&](unsigned k) { return von_mises(stress[k]); });
+        }
+      o << "</PointData>\n<Points>\n<DataArray type=\"Float64\" "
+           "NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const unsigned int k : selected)
+        o << x[k][0] << " " << x[k][1] << " " << x[k][2] << "\n";
+      o << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" "
+           "Name=\"connectivity\" format=\"ascii\">\n";
+      for (std::size_t k = 0; k < selected.size(); ++k)
+        o << k << "\n";
+      o << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
+           "format=\"ascii\">\n";
+      for (std::size_t k = 0; k < selected.size(); ++k)
+        o << k + 1 << "\n";
+      o << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+           "format=\"ascii\">\n";
+      for (std::size_t k = 0; k < selected.size(); ++k)
+        o << "1\n";
+      o << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</"
+           "VTKFile>\n";
+      write_file_atomically(
+        join_path(directory, name + "." + std::to_string(rank) + ".vtu"),
+        o.str());
+      if (rank == 0)
+        {
+          std::ostringstream pv;
+          pv << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" "
+                "version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                "<PUnstructuredGrid GhostLevel=\"0\">\n<PPointData "
+                "Scalars=\"material\">\n";
+          for (const char *s : {"id",
+                                "rank",
+                                "material",
+                                "body",
+                                "bonded_neighbours",
+                                "plastic_strain"})
+            pv << "<PDataArray type=\"Float64\" Name=\"" << s << "\"/>\n";
+          for (const char *s : {"velocity", "displacement", "angular_velocity"})
+            pv << "<PDataArray type=\"Float64\" Name=\"" << s
+               << "\" NumberOfComponents=\"3\"/>\n";
+          if (with_stress)
+            pv << "<PDataArray type=\"Float64\" Name=\"stress\" "
+                  "NumberOfComponents=\"9\"/>\n<PDataArray type=\"Float64\" "
+                  "Name=\"pressure\"/>\n<PDataArray type=\"Float64\" "
+                  "Name=\"von_mises\"/>\n";
+          pv << "</PPointData>\n<PPoints><PDataArray type=\"Float64\" "
+                "NumberOfComponents=\"3\"/></PPoints>\n";
+          for (unsigned int r = 0; r < n_ranks; ++r)
+            pv << "<Piece Source=\"" << name << "." << r << ".vtu\"/>\n";
+          pv << "</PUnstructuredGrid>\n</VTKFile>\n";
+          write_file_atomically(join_path(directory, name + ".pvtu"), pv.str());
+        }
+      return name + ".pvtu";
+    }
+  } // namespace mca
+} // namespace tribodyn

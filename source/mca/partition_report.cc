@@ -1,0 +1,186 @@
+// The partition of a scene over N ranks, computed on one process without
+// building the mesh or the automata (tribodyn --partition-report N).
+
+#include <algorithm>
+#include <cmath>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/grid/grid_generator.h>
+#include <map>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/mca/automaton_system.h>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    namespace
+    {
+      std::uint64_t
+      interleave(const std::uint64_t i,
+                 const std::uint64_t j,
+                 const std::uint64_t k,
+                 const unsigned int  level)
+      {
+        // p4est's Morton index within a tree: bit b of x, y, z at bits
+        // 3b, 3b+1, 3b+2
+        std::uint64_t m = 0;
+        for (unsigned int b = 0; b < level; ++b)
+          m |= ((i >> b) & 1) << (3 * b) | ((j >> b) & 1) << (3 * b + 1)
+               | ((k >> b) & 1) << (3 * b + 2);
+        return m;
+      }
+    } // namespace
+
+
+    PartitionFigures
+    AutomatonSystem::partition_report(const Parameters  &prm,
+                                      const unsigned int n_ranks)
+    {
+      const auto  &g     = prm.geometry;
+      const double range = g.automaton_size * (1 + prm.interaction.skin);
+      std::array<unsigned int, 3> trees;
+      unsigned int                level;
+      Decomposition::choose_grid(g, range, trees, level);
+      std::array<unsigned int, 3> n;
+      std::array<double, 3>       h;
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          n[c] = trees[c] << level;
+          h[c] = (g.domain_upper[c] - g.domain_lower[c]) / n[c];
+        }
+      const std::uint64_t n_cells = std::uint64_t(n[0]) * n[1] * n[2];
+      if (n_cells > 2000000000ull)
+        throw InputError("The scene has more than 2e9 cells of the "
+                         "interaction range; the partition report does not "
+                         "handle it.");
+
+      // The order in which deal.II hands the trees to p4est (a few
+      // thousand coarse cells at most: built here on this process).
+      std::map<std::array<unsigned int, 3>, unsigned int> tree_of;
+      {
+        dealii::parallel::distributed::Triangulation<3> coarse(MPI_COMM_SELF);
+        dealii::GridGenerator::subdivided_hyper_rectangle(
+          coarse,
+          std::vector<unsigned int>(trees.begin(), trees.end()),
+          g.domain_lower,
+          g.domain_upper);
+        const auto &perm = coarse.get_coarse_cell_to_p4est_tree_permutation();
+        for (const auto &cell : coarse.cell_iterators_on_level(0))
+          {
+            std::array<unsigned int, 3> t;
+            for (unsigned int c = 0; c < 3; ++c)
+              t[c] = static_cast<unsigned int>(
+                (cell->center()[c] - g.domain_lower[c])
+                / (h[c] * (1u << level)));
+            tree_of[t] = perm[cell->index()];
+          }
+      }
+      const std::uint64_t per_tree = std::uint64_t(1) << (3 * level);
+      auto                position =
+        [&](const unsigned int i, const unsigned int j, const unsigned int k) {
+          const std::array<unsigned int, 3> t{
+            {i >> level, j >> level, k >> level}};
+          const unsigned int mask = (1u << level) - 1;
+          return tree_of.at(t) * per_tree
+                 + interleave(i & mask, j & mask, k & mask, level);
+        };
+      // p4est's uniform partition: rank r owns positions
+      // [floor(N_cells r / R), floor(N_cells (r+1) / R)).
+      auto owner = [&](const std::uint64_t pos) {
+        std::uint64_t r = pos * n_ranks / n_cells;
+        while (r + 1 < n_ranks && (n_cells * (r + 1)) / n_ranks <= pos)
+          ++r;
+        while (r > 0 && (n_cells * r) / n_ranks > pos)
+          --r;
+        return static_cast<unsigned int>(r);
+      };
+
+      // Automata per cell (one pass over the lattice).
+      std::vector<std::uint16_t> count(n_cells, 0);
+      Point3                     upper = g.domain_upper;
+      pack_box(g, g.domain_lower, upper, [&](const PackedAutomaton &a) {
+        std::array<unsigned int, 3> ijk;
+        for (unsigned int c = 0; c < 3; ++c)
+          ijk[c] = std::min<unsigned int>(
+            n[c] - 1,
+            static_cast<unsigned int>(std::max(
+              0., std::floor((a.position[c] - g.domain_lower[c]) / h[c]))));
+        auto &slot
+          = count[(std::uint64_t(ijk[2]) * n[1] + ijk[1]) * n[0] + ijk[0]];
+        if (slot < 65535)
+          ++slot;
+      });
+
+      std::vector<double>       owned(n_ranks, 0), ghosts(n_ranks, 0);
+      unsigned long long        total = 0;
+      std::vector<unsigned int> seen;
+      for (unsigned int k = 0; k < n[2]; ++k)
+        for (unsigned int j = 0; j < n[1]; ++j)
+          for (unsigned int i = 0; i < n[0]; ++i)
+            {
+              const unsigned int c_count
+                = count[(std::uint64_t(k) * n[1] + j) * n[0] + i];
+              if (c_count == 0)
+                continue;
+              total += c_count;
+              const unsigned int o = owner(position(i, j, k));
+              owned[o] += c_count;
+              // ranks owning a neighbour cell receive this cell as ghosts
+              seen.clear();
+              const unsigned int ijk[3] = {i, j, k};
+              for (int oz = -1; oz <= 1; ++oz)
+                for (int oy = -1; oy <= 1; ++oy)
+                  for (int ox = -1; ox <= 1; ++ox)
+                    {
+                      const int    off[3] = {ox, oy, oz};
+                      unsigned int nb[3];
+                      bool         valid = true;
+                      for (unsigned int c = 0; c < 3; ++c)
+                        {
+                          int v = static_cast<int>(ijk[c]) + off[c];
+                          if (v < 0 || v >= static_cast<int>(n[c]))
+                            {
+                              if (!g.periodic[c])
+                                valid = false;
+                              v = (v + n[c]) % n[c];
+                            }
+                          nb[c] = v;
+                        }
+                      if (!valid)
+                        continue;
+                      const unsigned int r
+                        = owner(position(nb[0], nb[1], nb[2]));
+                      if (r != o
+                          && std::find(seen.begin(), seen.end(), r)
+                               == seen.end())
+                        seen.push_back(r);
+                    }
+              for (const unsigned int r : seen)
+                ghosts[r] += c_count;
+            }
+
+      PartitionFigures fig;
+      fig.n_automata = total;
+      fig.n_ranks    = n_ranks;
+      auto stats     = [&](const std::vector<double> &v,
+                       double                    &lo,
+                       double                    &mean,
+                       double                    &hi) {
+        lo   = *std::min_element(v.begin(), v.end());
+        hi   = *std::max_element(v.begin(), v.end());
+        mean = 0;
+        for (const double a : v)
+          mean += a;
+        mean /= v.size();
+      };
+      stats(owned, fig.owned_min, fig.owned_mean, fig.owned_max);
+      stats(ghosts, fig.ghosts_min, fig.ghosts_mean, fig.ghosts_max);
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        fig.bytes_per_rank_max
+          = std::max(fig.bytes_per_rank_max,
+                     owned[r] * bytes_per_owned_automaton
+                       + ghosts[r] * bytes_per_ghost_automaton);
+      return fig;
+    }
+  } // namespace mca
+} // namespace tribodyn

@@ -1,0 +1,529 @@
+// Pair-list rebuilds: migration of automata between ranks, ghosts from the
+// neighbour ranks, and the pair states carried over.
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <numeric>
+#include <sstream>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/output.h>
+#include <tribodyn/mca/automaton_system.h>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    namespace
+    {
+      // Layout of the particle properties of a migrating automaton.
+      namespace prop
+      {
+        constexpr unsigned int v = 0, w = 3, f_tot = 6, torque = 9, u = 12,
+                               mat = 15, body = 16, groups = 17, eps_p = 18,
+                               sigma_y = 19, n = 20;
+      } // namespace prop
+
+      // Fields of a ghost record (doubles; keys as raw 64-bit words).
+      namespace ghost_field
+      {
+        constexpr unsigned int id = 0, order = 1, x = 2, mat = 5, body = 6,
+                               n = 7;
+      } // namespace ghost_field
+
+      double
+      bits_to_double(const std::uint64_t k)
+      {
+        double v;
+        std::memcpy(&v, &k, sizeof(v));
+        return v;
+      }
+
+      std::uint64_t
+      double_to_bits(const double v)
+      {
+        std::uint64_t k;
+        std::memcpy(&k, &v, sizeof(k));
+        return k;
+      }
+
+      inline std::uint64_t
+      pair_key(const std::uint32_t a, const std::uint32_t b)
+      {
+        return a < b ? (std::uint64_t(a) << 32 | b)
+                     : (std::uint64_t(b) << 32 | a);
+      }
+
+      /// Throw on every rank if any rank failed; the message is that of the
+      /// lowest failing rank.
+      void
+      throw_collectively(const MPI_Comm     comm,
+                         const bool         failed,
+                         const std::string &message)
+      {
+        const unsigned int n_ranks
+          = dealii::Utilities::MPI::n_mpi_processes(comm);
+        const unsigned int me = dealii::Utilities::MPI::this_mpi_process(comm);
+        const unsigned int first
+          = dealii::Utilities::MPI::min(failed ? me : n_ranks, comm);
+        if (first == n_ranks)
+          return;
+        std::string text = me == first ? message : std::string();
+        text             = dealii::Utilities::MPI::broadcast(comm, text, first);
+        throw RunError(text);
+      }
+    } // namespace
+
+    static_assert(prop::n == 20, "migration property count");
+
+
+    void
+    AutomatonSystem::rebuild(const bool initial)
+    {
+      if (!initial)
+        migrate();
+      order_owned_automata();
+      exchange_ghosts();
+      x_at_rebuild                = x;
+      const std::vector<double> r = build_pair_list();
+      restore_pair_states(initial, r);
+      changed.assign(n_local, 1);
+      update_neighbourhood_weights(true);
+      ++rebuild_count;
+    }
+
+
+    void
+    AutomatonSystem::migrate()
+    {
+      // Identity of the old pairs (their states are restored by key).
+      const unsigned int                                   n_old = pi.size();
+      std::vector<std::pair<std::uint64_t, std::uint32_t>> old_key(n_old);
+      old_flags.resize(n_old);
+      for (unsigned int p = 0; p < n_old; ++p)
+        {
+          old_key[p]   = {pair_key(id[pi[p]], id[pj[p]]), p};
+          old_flags[p] = (id[pi[p]] > id[pj[p]] ? 1 : 0)
+                         | (bonded[p] && owned_i[p] ? 2 : 0);
+        }
+
+      // Wrap into the box; find who owns the new cell.
+      std::vector<unsigned int> destination(n_owned, rank);
+      unsigned int              n_lost = 0;
+      std::ostringstream        lost;
+      for (unsigned int k = 0; k < n_owned; ++k)
+        {
+          const Point3       p = cells.wrap(x[k]);
+          const unsigned int c = cells.local_cell(p);
+          if (c == Decomposition::invalid)
+            {
+              if (n_lost++ < 3)
+                lost << " automaton " << id[k] << " at (" << x[k] << ")";
+              continue;
+            }
+          x[k]           = p;
+          cell_of[k]     = c;
+          destination[k] = cells.owner(c);
+        }
+      throw_collectively(
+        comm,
+        n_lost > 0,
+        std::to_string(n_lost)
+          + " automata left the simulation box (Geometry/Domain lower and "
+            "upper) through a non-periodic side, e.g."
+          + lost.str()
+          + ". Enlarge the box to leave room for the motion, or hold the "
+            "bodies with boundary groups.");
+
+      // Pair states of the pairs of departing automata go to their new
+      // owners (neighbour ranks).
+      const auto                      &nb_ranks = cells.neighbour_ranks();
+      std::vector<std::vector<double>> out_pairs(nb_ranks.size());
+      const unsigned int width = sizeof(PairState) / sizeof(double);
+      static_assert(sizeof(PairState) % sizeof(double) == 0, "layout");
+      for (unsigned int p = 0; p < n_old; ++p)
+        for (const unsigned int k : {pi[p], pj[p]})
+          if (k < n_owned && destination[k] != rank)
+            {
+              const bool swap = id[pi[p]] > id[pj[p]];
+              PairState  s;
+              s.key     = old_key[p].first;
+              s.r       = r_now[p];
+              s.bonded  = bonded[p];
+              s.contact = in_contact[p];
+              s.q       = swap ? r_now[p] - q_i[p] : q_i[p];
+              s.sig_i   = swap ? sig_j[p] : sig_i[p];
+              s.sig_j   = swap ? sig_i[p] : sig_j[p];
+              s.heat    = heat.empty() ? 0. : heat[p];
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  s.tau_i[c] = swap ? tau_j[p][c] : tau_i[p][c];
+                  s.tau_j[c] = swap ? tau_i[p][c] : tau_j[p][c];
+                }
+              auto &buf = out_pairs[cells.neighbour_index(destination[k])];
+              const auto *raw = reinterpret_cast<const double *>(&s);
+              buf.insert(buf.end(), raw, raw + width);
+            }
+      const auto in_pairs = neighbours.exchange(out_pairs, 81);
+
+      // The departing automata travel as particles of deal.II's
+      // ParticleHandler: inserted in the cell they were in, sorted into the
+      // cell (and rank) that now contains them.
+      particles->clear_particles();
+      std::vector<double> props(prop::n);
+      unsigned int        n_departing = 0;
+      for (unsigned int k = 0; k < n_owned; ++k)
+        if (destination[k] != rank)
+          {
+            ++n_departing;
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                props[prop::v + c]      = v[k][c];
+                props[prop::w + c]      = w[k][c];
+                props[prop::f_tot + c]  = f_tot[k][c];
+                props[prop::torque + c] = torque[k][c];
+                props[prop::u + c]      = u[k][c];
+              }
+            props[prop::mat]     = mat[k];
+            props[prop::body]    = body[k];
+            props[prop::groups]  = groups[k];
+            props[prop::eps_p]   = eps_p[k];
+            props[prop::sigma_y] = sigma_y[k];
+            const auto cell      = cells.dealii_cell(cell_of[k]);
+            particles->insert_particle(
+              x[k],
+              mapping.transform_real_to_unit_cell(cell, x[k]),
+              id[k],
+              cell,
+              dealii::ArrayView<const double>(props.data(), props.size()));
+          }
+      (void)n_departing;
+      particles->sort_particles_into_subdomains_and_cells();
+
+      // Keep the automata that stay, append the arrivals.
+      unsigned int kept = 0;
+      for (unsigned int k = 0; k < n_owned; ++k)
+        if (destination[k] == rank)
+          {
+            if (kept != k)
+              {
+                id[kept]      = id[k];
+                x[kept]       = x[k];
+                cell_of[kept] = cell_of[k];
+                v[kept]       = v[k];
+                w[kept]       = w[k];
+                f_tot[kept]   = f_tot[k];
+                torque[kept]  = torque[k];
+                u[kept]       = u[k];
+                mat[kept]     = mat[k];
+                body[kept]    = body[k];
+                groups[kept]  = groups[k];
+                eps_p[kept]   = eps_p[k];
+                sigma_y[kept] = sigma_y[k];
+              }
+            ++kept;
+          }
+      const unsigned int n_arrived = particles->n_locally_owned_particles();
+      n_owned                      = kept + n_arrived;
+      resize_automaton_arrays(n_owned);
+      unsigned int k = kept, n_bad = 0;
+      for (const auto &particle : *particles)
+        {
+          const auto props = particle.get_properties();
+          id[k]            = particle.get_id();
+          x[k]             = particle.get_location();
+          cell_of[k]       = cells.local_cell(x[k]);
+          if (cell_of[k] >= cells.n_owned_cells())
+            ++n_bad;
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              v[k][c]      = props[prop::v + c];
+              w[k][c]      = props[prop::w + c];
+              f_tot[k][c]  = props[prop::f_tot + c];
+              torque[k][c] = props[prop::torque + c];
+              u[k][c]      = props[prop::u + c];
+            }
+          mat[k]     = static_cast<unsigned char>(props[prop::mat]);
+          body[k]    = static_cast<unsigned char>(props[prop::body]);
+          groups[k]  = static_cast<std::uint32_t>(props[prop::groups]);
+          eps_p[k]   = props[prop::eps_p];
+          sigma_y[k] = props[prop::sigma_y];
+          ++k;
+        }
+      particles->clear_particles();
+      const unsigned long long n_now
+        = dealii::Utilities::MPI::sum<unsigned long long>(n_owned, comm);
+      throw_collectively(comm,
+                         n_bad > 0 || n_now != n_global,
+                         "Internal error: the migration of automata between "
+                         "ranks lost or misplaced automata ("
+                           + std::to_string(n_now) + " of "
+                           + std::to_string(n_global) + ").");
+
+      // Received pair states by key, for the restore.
+      kept_pairs.clear();
+      for (const auto &buf : in_pairs)
+        for (std::size_t o = 0; o + width <= buf.size(); o += width)
+          {
+            PairState s;
+            std::memcpy(&s, buf.data() + o, sizeof(PairState));
+            kept_pairs.push_back(s);
+          }
+      std::sort(kept_pairs.begin(),
+                kept_pairs.end(),
+                [](const PairState &a, const PairState &b) {
+                  return a.key < b.key;
+                });
+      // This rank's old pairs by key (their states stay in the pair arrays
+      // until restore_pair_states() gathers them); the top bit of the index
+      // says that the old pair had i = the larger id.
+      old_pairs = std::move(old_key);
+      std::sort(old_pairs.begin(), old_pairs.end());
+    }
+
+
+    void
+    AutomatonSystem::order_owned_automata()
+    {
+      // Along the curve of the cells, then by id: a global order, the same
+      // on any partition.
+      std::vector<std::uint64_t> cell_curve(n_owned);
+      for (unsigned int k = 0; k < n_owned; ++k)
+        cell_curve[k] = cells.curve_index(cell_of[k]);
+      std::vector<unsigned int> perm(n_owned);
+      std::iota(perm.begin(), perm.end(), 0u);
+      std::sort(perm.begin(), perm.end(), [&](unsigned a, unsigned b) {
+        return cell_curve[a] != cell_curve[b] ? cell_curve[a] < cell_curve[b]
+                                              : id[a] < id[b];
+      });
+      auto permute = [&](auto &vec) {
+        auto copy = vec;
+        for (unsigned int k = 0; k < n_owned; ++k)
+          vec[k] = copy[perm[k]];
+      };
+      permute(id), permute(cell_of), permute(x), permute(v), permute(w);
+      permute(f_tot), permute(torque), permute(u), permute(mat);
+      permute(body), permute(groups), permute(eps_p), permute(sigma_y);
+      permute(cell_curve);
+      for (unsigned int k = 0, rank_in_cell = 0; k < n_owned; ++k)
+        {
+          rank_in_cell = (k > 0 && cell_curve[k] == cell_curve[k - 1])
+                           ? rank_in_cell + 1
+                           : 0;
+          order[k]     = cell_curve[k] << 16 | rank_in_cell;
+        }
+    }
+
+
+    void
+    AutomatonSystem::exchange_ghosts()
+    {
+      // The automata of the owned cells next to a neighbour rank's cells,
+      // whole cells in the owned order, go to that rank.
+      const unsigned int               n_nb = cells.neighbour_ranks().size();
+      std::vector<std::vector<double>> out(n_nb);
+      std::vector<std::vector<unsigned int>> send_indices(n_nb);
+      std::vector<unsigned int> first_of_cell(cells.n_owned_cells() + 1, 0);
+      for (unsigned int k = 0; k < n_owned; ++k)
+        ++first_of_cell[cell_of[k] + 1];
+      // owned automata are ordered along the curve, as the owned cells are
+      std::partial_sum(first_of_cell.begin(),
+                       first_of_cell.end(),
+                       first_of_cell.begin());
+      for (unsigned int n = 0; n < n_nb; ++n)
+        for (const unsigned int c : cells.cells_sent_to(n))
+          for (unsigned int k = first_of_cell[c]; k < first_of_cell[c + 1]; ++k)
+            {
+              send_indices[n].push_back(k);
+              auto &buf = out[n];
+              buf.push_back(id[k]);
+              buf.push_back(bits_to_double(order[k]));
+              for (unsigned int e = 0; e < 3; ++e)
+                buf.push_back(x[k][e]);
+              buf.push_back(mat[k]);
+              buf.push_back(body[k]);
+            }
+      const auto                in = neighbours.exchange(out, 82);
+      std::vector<unsigned int> offsets(n_nb + 1, n_owned);
+      for (unsigned int n = 0; n < n_nb; ++n)
+        offsets[n + 1] = offsets[n] + in[n].size() / ghost_field::n;
+      n_local = offsets[n_nb];
+      resize_automaton_arrays(n_local);
+      unsigned int n_bad = 0;
+      for (unsigned int n = 0; n < n_nb; ++n)
+        for (unsigned int g = 0, k = offsets[n]; k < offsets[n + 1]; ++g, ++k)
+          {
+            const double *r = in[n].data() + g * ghost_field::n;
+            id[k]           = static_cast<std::uint32_t>(r[ghost_field::id]);
+            order[k]        = double_to_bits(r[ghost_field::order]);
+            for (unsigned int e = 0; e < 3; ++e)
+              x[k][e] = r[ghost_field::x + e];
+            mat[k]     = static_cast<unsigned char>(r[ghost_field::mat]);
+            body[k]    = static_cast<unsigned char>(r[ghost_field::body]);
+            cell_of[k] = cells.local_cell(x[k]);
+            if (cell_of[k] == Decomposition::invalid)
+              ++n_bad;
+            dx[k] = w[k] = {{0, 0, 0}};
+          }
+      throw_collectively(comm,
+                         n_bad > 0,
+                         "Internal error: a ghost automaton lies outside the "
+                         "ghost cells of the receiving rank.");
+      neighbours.set_ghost_lists(std::move(send_indices), std::move(offsets));
+    }
+
+
+    void
+    AutomatonSystem::restore_pair_states(const bool                 initial,
+                                         const std::vector<double> &r)
+    {
+      const unsigned int n_pairs = pi.size();
+      // Source of each new pair's state: an old pair of this rank, a
+      // received state, or none (a new pair); and whether the sides swap
+      // (the old state had i = the other automaton).
+      constexpr std::uint32_t    none = 0xffffffffu, received = 0x80000000u;
+      std::vector<std::uint32_t> source(n_pairs, none);
+      std::vector<unsigned char> swap(n_pairs, 0);
+      const unsigned int         n_old = old_flags.size();
+      if (!initial)
+        {
+          std::vector<unsigned char> used(n_old, 0);
+          for (unsigned int p = 0; p < n_pairs; ++p)
+            {
+              const std::uint64_t key  = pair_key(id[pi[p]], id[pj[p]]);
+              const bool          flip = id[pi[p]] > id[pj[p]];
+              const auto          it
+                = std::lower_bound(old_pairs.begin(),
+                                   old_pairs.end(),
+                                   std::make_pair(key, std::uint32_t(0)));
+              if (it != old_pairs.end() && it->first == key)
+                {
+                  source[p]        = it->second;
+                  swap[p]          = ((old_flags[it->second] & 1) != 0) != flip;
+                  used[it->second] = 1;
+                  continue;
+                }
+              const auto jt = std::lower_bound(kept_pairs.begin(),
+                                               kept_pairs.end(),
+                                               key,
+                                               [](const PairState    &s,
+                                                  const std::uint64_t k) {
+                                                 return s.key < k;
+                                               });
+              if (jt != kept_pairs.end() && jt->key == key)
+                {
+                  source[p] = received | (jt - kept_pairs.begin());
+                  swap[p]   = flip; // received states are in id order
+                }
+            }
+          // A bonded pair that left the pair-list range is dropped: counted
+          // (by the rank that owned its automaton i) and reported.
+          for (unsigned int o = 0; o < n_old; ++o)
+            if (!used[o] && (old_flags[o] & 2))
+              ++dropped_bonds;
+        }
+
+      // New state arrays, one field at a time.
+      const bool keep_heat = !heat.empty() || bond_scene;
+      {
+        std::vector<unsigned char> b(n_pairs, 0), c(n_pairs, 0);
+        for (unsigned int p = 0; p < n_pairs; ++p)
+          {
+            const std::uint32_t o = source[p];
+            if (o == none)
+              {
+                if (initial)
+                  {
+                    b[p] = body[pi[p]] == body[pj[p]] && r[p] < d * (1 + 1e-6);
+                    c[p] = r[p] < d * (1 + 1e-6);
+                  }
+              }
+            else if (o & received)
+              {
+                b[p] = kept_pairs[o & ~received].bonded != 0;
+                c[p] = kept_pairs[o & ~received].contact != 0;
+              }
+            else
+              {
+                b[p] = bonded[o];
+                c[p] = in_contact[o];
+              }
+          }
+        bonded.swap(b);
+        in_contact.swap(c);
+      }
+      {
+        std::vector<double> q(n_pairs), si(n_pairs, 0.), sj(n_pairs, 0.),
+          ht(keep_heat ? n_pairs : 0, 0.);
+        for (unsigned int p = 0; p < n_pairs; ++p)
+          {
+            const std::uint32_t o = source[p];
+            if (o == none)
+              {
+                q[p] = r[p] / 2;
+                continue;
+              }
+            double qq, a, b, hh;
+            if (o & received)
+              {
+                const PairState &st = kept_pairs[o & ~received];
+                qq = st.q, a = st.sig_i, b = st.sig_j, hh = st.heat;
+                if (swap[p])
+                  qq = st.r - qq;
+              }
+            else
+              {
+                qq = q_i[o], a = sig_i[o], b = sig_j[o];
+                hh = heat.empty() ? 0. : heat[o];
+                if (swap[p])
+                  qq = r_now[o] - qq;
+              }
+            q[p]  = qq;
+            si[p] = swap[p] ? b : a;
+            sj[p] = swap[p] ? a : b;
+            if (keep_heat)
+              ht[p] = hh;
+          }
+        q_i.swap(q);
+        sig_i.swap(si);
+        sig_j.swap(sj);
+        heat.swap(ht);
+      }
+      {
+        std::vector<Vec3> ti(n_pairs, Vec3{{0, 0, 0}}),
+          tj(n_pairs, Vec3{{0, 0, 0}});
+        for (unsigned int p = 0; p < n_pairs; ++p)
+          {
+            const std::uint32_t o = source[p];
+            if (o == none)
+              continue;
+            Vec3 a, b;
+            if (o & received)
+              {
+                const PairState &st = kept_pairs[o & ~received];
+                for (unsigned int c = 0; c < 3; ++c)
+                  a[c] = st.tau_i[c], b[c] = st.tau_j[c];
+              }
+            else
+              a = tau_i[o], b = tau_j[o];
+            ti[p] = swap[p] ? b : a;
+            tj[p] = swap[p] ? a : b;
+          }
+        tau_i.swap(ti);
+        tau_j.swap(tj);
+      }
+      r_now = r;
+      normal.resize(n_pairs);
+      for (unsigned int p = 0; p < n_pairs; ++p)
+        {
+          const Vec3 dn = pair_vector(p);
+          for (unsigned int c = 0; c < 3; ++c)
+            normal[p][c] = dn[c] / r[p];
+        }
+      dr.assign(n_pairs, 0.);
+      std::vector<PairState>().swap(kept_pairs);
+      std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(old_pairs);
+      std::vector<unsigned char>().swap(old_flags);
+    }
+  } // namespace mca
+} // namespace tribodyn
