@@ -108,9 +108,11 @@ namespace tribodyn
         }
 
       // Wrap into the box; find who owns the new cell.
-      std::vector<unsigned int> destination(n_owned, rank);
-      unsigned int              n_lost = 0;
-      std::ostringstream        lost;
+      std::vector<unsigned int>  destination(n_owned, rank);
+      std::vector<unsigned int>  new_cell(n_owned, Decomposition::invalid);
+      std::vector<unsigned char> crossed(n_owned, 0);
+      unsigned int               n_lost = 0;
+      std::ostringstream         lost;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           const Point3       p = cells.wrap(x[k]);
@@ -121,8 +123,9 @@ namespace tribodyn
                 lost << " automaton " << id[k] << " at (" << x[k] << ")";
               continue;
             }
+          crossed[k]     = !(p == x[k]);
           x[k]           = p;
-          cell_of[k]     = c;
+          new_cell[k]    = c;
           destination[k] = cells.owner(c);
         }
       throw_collectively(
@@ -167,15 +170,18 @@ namespace tribodyn
       const auto in_pairs = neighbours.exchange(out_pairs, 81);
 
       // The departing automata travel as particles of deal.II's
-      // ParticleHandler: inserted in the cell they were in, sorted into the
-      // cell (and rank) that now contains them.
+      // ParticleHandler: inserted in the (owned) cell they were in and
+      // sorted into the cell, and rank, that now contains them. deal.II
+      // 9.4's search for the new cell does not follow periodic faces (it
+      // loses such particles, as its ghost exchange ignores them), so the
+      // automata that crossed a periodic face go to their new owner point
+      // to point, with the same record.
       particles->clear_particles();
-      std::vector<double> props(prop::n);
-      unsigned int        n_departing = 0;
+      std::vector<double>              props(prop::n);
+      std::vector<std::vector<double>> out_automata(nb_ranks.size());
       for (unsigned int k = 0; k < n_owned; ++k)
         if (destination[k] != rank)
           {
-            ++n_departing;
             for (unsigned int c = 0; c < 3; ++c)
               {
                 props[prop::v + c]      = v[k][c];
@@ -189,7 +195,15 @@ namespace tribodyn
             props[prop::groups]  = groups[k];
             props[prop::eps_p]   = eps_p[k];
             props[prop::sigma_y] = sigma_y[k];
-            const auto cell      = cells.dealii_cell(cell_of[k]);
+            if (crossed[k])
+              {
+                auto &buf = out_automata[cells.neighbour_index(destination[k])];
+                buf.push_back(id[k]);
+                buf.insert(buf.end(), x[k].begin_raw(), x[k].end_raw());
+                buf.insert(buf.end(), props.begin(), props.end());
+                continue;
+              }
+            const auto cell = cells.dealii_cell(cell_of[k]);
             particles->insert_particle(
               x[k],
               mapping.transform_real_to_unit_cell(cell, x[k]),
@@ -197,14 +211,15 @@ namespace tribodyn
               cell,
               dealii::ArrayView<const double>(props.data(), props.size()));
           }
-      (void)n_departing;
       particles->sort_particles_into_subdomains_and_cells();
+      const auto in_automata = neighbours.exchange(out_automata, 83);
 
       // Keep the automata that stay, append the arrivals.
       unsigned int kept = 0;
       for (unsigned int k = 0; k < n_owned; ++k)
         if (destination[k] == rank)
           {
+            cell_of[k] = new_cell[k];
             if (kept != k)
               {
                 id[kept]      = id[k];
@@ -223,33 +238,45 @@ namespace tribodyn
               }
             ++kept;
           }
-      const unsigned int n_arrived = particles->n_locally_owned_particles();
-      n_owned                      = kept + n_arrived;
+      const unsigned int record    = 4 + prop::n;
+      unsigned int       n_arrived = particles->n_locally_owned_particles();
+      for (const auto &buf : in_automata)
+        n_arrived += buf.size() / record;
+      n_owned = kept + n_arrived;
       resize_automaton_arrays(n_owned);
       unsigned int k = kept, n_bad = 0;
+      auto         arrive = [&](const std::uint32_t the_id,
+                        const Point3       &location,
+                        const double       *props) {
+        id[k]      = the_id;
+        x[k]       = location;
+        cell_of[k] = cells.local_cell(x[k]);
+        if (cell_of[k] >= cells.n_owned_cells())
+          ++n_bad;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            v[k][c]      = props[prop::v + c];
+            w[k][c]      = props[prop::w + c];
+            f_tot[k][c]  = props[prop::f_tot + c];
+            torque[k][c] = props[prop::torque + c];
+            u[k][c]      = props[prop::u + c];
+          }
+        mat[k]     = static_cast<unsigned char>(props[prop::mat]);
+        body[k]    = static_cast<unsigned char>(props[prop::body]);
+        groups[k]  = static_cast<std::uint32_t>(props[prop::groups]);
+        eps_p[k]   = props[prop::eps_p];
+        sigma_y[k] = props[prop::sigma_y];
+        ++k;
+      };
       for (const auto &particle : *particles)
-        {
-          const auto props = particle.get_properties();
-          id[k]            = particle.get_id();
-          x[k]             = particle.get_location();
-          cell_of[k]       = cells.local_cell(x[k]);
-          if (cell_of[k] >= cells.n_owned_cells())
-            ++n_bad;
-          for (unsigned int c = 0; c < 3; ++c)
-            {
-              v[k][c]      = props[prop::v + c];
-              w[k][c]      = props[prop::w + c];
-              f_tot[k][c]  = props[prop::f_tot + c];
-              torque[k][c] = props[prop::torque + c];
-              u[k][c]      = props[prop::u + c];
-            }
-          mat[k]     = static_cast<unsigned char>(props[prop::mat]);
-          body[k]    = static_cast<unsigned char>(props[prop::body]);
-          groups[k]  = static_cast<std::uint32_t>(props[prop::groups]);
-          eps_p[k]   = props[prop::eps_p];
-          sigma_y[k] = props[prop::sigma_y];
-          ++k;
-        }
+        arrive(particle.get_id(),
+               particle.get_location(),
+               particle.get_properties().data());
+      for (const auto &buf : in_automata)
+        for (std::size_t o = 0; o + record <= buf.size(); o += record)
+          arrive(static_cast<std::uint32_t>(buf[o]),
+                 Point3(buf[o + 1], buf[o + 2], buf[o + 3]),
+                 buf.data() + o + 4);
       particles->clear_particles();
       const unsigned long long n_now
         = dealii::Utilities::MPI::sum<unsigned long long>(n_owned, comm);
