@@ -625,6 +625,12 @@ namespace tribodyn
       summary["n_dropped_bonds"]      = system.n_dropped_bonds();
       summary["n_ghost_automata_max"]
         = dealii::Utilities::MPI::max(system.n_ghost_automata(), comm);
+      summary["n_owned_automata_min"]
+        = dealii::Utilities::MPI::min(system.n_owned_automata(), comm);
+      summary["n_owned_automata_max"]
+        = dealii::Utilities::MPI::max(system.n_owned_automata(), comm);
+      summary["memory_bytes_max"] = dealii::Utilities::MPI::max(
+        static_cast<double>(system.memory_consumption()), comm);
       summary["wall_time_s"] = wall;
       summary["time_loop_s"] = loop_seconds;
       summary["automaton_steps_per_second"]

@@ -103,8 +103,15 @@ namespace tribodyn
       for (unsigned int p = 0; p < n_old; ++p)
         {
           old_key[p]   = {pair_key(id[pi[p]], id[pj[p]]), p};
-          old_flags[p] = (id[pi[p]] > id[pj[p]] ? 1 : 0)
-                         | (bonded[p] && owned_i[p] ? 2 : 0);
+          old_flags[p] = id[pi[p]] > id[pj[p]] ? 1 : 0;
+          // a bonded pair now beyond the pair-list range drops out of every
+          // rank's list: its bond is lost (counted once, by i's owner)
+          if (bonded[p] && owned_i[p])
+            {
+              const Vec3 dn = pair_vector(p);
+              if (dot(dn, dn) >= range * range)
+                ++dropped_bonds;
+            }
         }
 
       // Wrap into the box; find who owns the new cell.
@@ -414,7 +421,6 @@ namespace tribodyn
       const unsigned int         n_old = old_flags.size();
       if (!initial)
         {
-          std::vector<unsigned char> used(n_old, 0);
           for (unsigned int p = 0; p < n_pairs; ++p)
             {
               const std::uint64_t key  = pair_key(id[pi[p]], id[pj[p]]);
@@ -427,7 +433,6 @@ namespace tribodyn
                 {
                   source[p]        = it->second;
                   swap[p]          = ((old_flags[it->second] & 1) != 0) != flip;
-                  used[it->second] = 1;
                   continue;
                 }
               const auto jt = std::lower_bound(kept_pairs.begin(),
@@ -443,11 +448,6 @@ namespace tribodyn
                   swap[p]   = flip; // received states are in id order
                 }
             }
-          // A bonded pair that left the pair-list range is dropped: counted
-          // (by the rank that owned its automaton i) and reported.
-          for (unsigned int o = 0; o < n_old; ++o)
-            if (!used[o] && (old_flags[o] & 2))
-              ++dropped_bonds;
         }
 
       // New state arrays, one field at a time.

@@ -59,7 +59,7 @@ namespace tribodyn
     std::function<void(dealii::ParameterHandler &,
                        const unsigned int n_ranks,
                        std::ostream      &out)>
-      partition_report;
+      partition_report = {};
   };
 
   /**
