@@ -330,7 +330,7 @@ namespace tribodyn
       add(trial), add(fabric_inverse), add(changed);
       add(pi), add(pj), add(pshift), add(bonded), add(in_contact);
       add(owned_i), add(owned_j), add(q_i), add(sig_i), add(sig_j);
-      add(heat), add(r_now), add(dr), add(tau_i), add(tau_j), add(normal);
+      add(heat), add(r_now), add(dr), add(tau_i), add(tau_j);
       add(beta_i), add(beta_j), add(kept_pairs), add(adjacency);
       add(adjacency_first);
       return bytes;

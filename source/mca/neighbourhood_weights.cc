@@ -179,7 +179,7 @@ namespace tribodyn
     {
       // Seed eq. (4): sigma^i += (q_ij S / V_i) n_ij (x) F_ij / S, for each
       // owned side of the pair (q_ji = r_ij - q_ij).
-      const Vec3 &n = normal[p];
+      const Vec3 n = unit_normal(p);
       if (owned_i[p])
         {
           Vec3 t;

@@ -100,7 +100,6 @@ namespace tribodyn
           for (unsigned int c = 0; c < 3; ++c)
             nm[c] /= nmn;
           double dr_p = dot(diff, sum) / (r + ro), r_prev = ro;
-          normal[p]       = n;
           r_now[p]        = r;
           const double ki = mc[mat[i]].two_G * inv_r0,
                        kj = mc[mat[j]].two_G * inv_r0;
@@ -147,22 +146,31 @@ namespace tribodyn
           const double dun = dot(du, nm);
           for (unsigned int c = 0; c < 3; ++c)
             du[c] -= dun * nm[c];
-          // rotate stored shear stresses into the new tangent plane
-          for (Vec3 *tp : {&tau_i[p], &tau_j[p]})
-            {
-              Vec3        &t  = *tp;
-              const double t2 = dot(t, t);
-              if (t2 > 0)
-                {
-                  const double tn = dot(t, n);
-                  for (unsigned int c = 0; c < 3; ++c)
-                    t[c] -= tn * n[c];
-                  const double p2 = dot(t, t);
-                  const double s  = p2 > 1e-12 * t2 ? std::sqrt(t2 / p2) : 0.;
-                  for (unsigned int c = 0; c < 3; ++c)
-                    t[c] *= s;
-                }
-            }
+          // rotate the stored shear stresses into the new tangent plane,
+          // keeping their magnitudes (both sides are parallel: they are set
+          // equal below and only scaled afterwards, so one factor serves)
+          {
+            const Vec3  &ref = dot(tau_i[p], tau_i[p]) > 0 ? tau_i[p] : tau_j[p];
+            const double t2  = dot(ref, ref);
+            if (t2 > 0)
+              {
+                const double tn = dot(ref, n);
+                double       p2 = 0;
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    const double e = ref[c] - tn * n[c];
+                    p2 += e * e;
+                  }
+                const double s = p2 > 1e-12 * t2 ? std::sqrt(t2 / p2) : 0.;
+                for (Vec3 *tp : {&tau_i[p], &tau_j[p]})
+                  {
+                    Vec3        &t   = *tp;
+                    const double tnt = dot(t, n);
+                    for (unsigned int c = 0; c < 3; ++c)
+                      t[c] = s * (t[c] - tnt * n[c]);
+                  }
+              }
+          }
           {
             // series springs of the two halves: one shear stress
             const double inv = 1. / (ki + kj);
@@ -315,7 +323,7 @@ namespace tribodyn
                     }
                 }
             }
-          const Vec3  &n  = normal[p];
+          const Vec3   n  = unit_normal(p);
           const double sn = 0.5 * (sig_i[p] + sig_j[p]);
           Vec3         ft, F;
           for (unsigned int c = 0; c < 3; ++c)
@@ -370,7 +378,7 @@ namespace tribodyn
       for (unsigned int p = 0; p < n_pairs; ++p)
         {
           const unsigned int i = pi[p], j = pj[p];
-          const Vec3        &n  = normal[p];
+          const Vec3         n  = unit_normal(p);
           const double       sn = 0.5 * (sig_i[p] + sig_j[p]);
           if (bonded[p] && prm.interaction.bond_breaking)
             {

@@ -540,13 +540,7 @@ namespace tribodyn
         tau_j.swap(tj);
       }
       r_now = r;
-      normal.resize(n_pairs);
-      for (unsigned int p = 0; p < n_pairs; ++p)
-        {
-          const Vec3 dn = pair_vector(p);
-          for (unsigned int c = 0; c < 3; ++c)
-            normal[p][c] = dn[c] / r[p];
-        }
+
       dr.assign(n_pairs, 0.);
       std::vector<PairState>().swap(kept_pairs);
       std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(old_pairs);

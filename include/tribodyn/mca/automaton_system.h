@@ -371,6 +371,15 @@ namespace tribodyn
                  (x[j][2] - x[i][2]) + s[2]}};
       }
 
+      /// Unit normal n_ij of pair @p p at the last evaluation (r_now).
+      Vec3
+      unit_normal(const unsigned int p) const
+      {
+        const Vec3   dn  = pair_vector(p);
+        const double inv = 1. / r_now[p];
+        return {{dn[0] * inv, dn[1] * inv, dn[2] * inv}};
+      }
+
       // --- neighbourhood weights (neighbourhood_weights.cc)
       /// Least-squares weights beta of the volumetric strain and inverse
       /// fabric tensors of the owned automata whose neighbourhoods changed.
@@ -454,7 +463,7 @@ namespace tribodyn
       std::vector<unsigned char> pshift; ///< image shift code of x_j
       std::vector<unsigned char> bonded, in_contact, owned_i, owned_j;
       std::vector<double>        q_i, sig_i, sig_j, heat, r_now, dr;
-      std::vector<Vec3>          tau_i, tau_j, normal;
+      std::vector<Vec3>          tau_i, tau_j;
       std::vector<double>        beta_i, beta_j;
       /// Pairs of each owned automaton: 2 p + side (side 1: the automaton
       /// is j of pair p), CSR.
