@@ -4,6 +4,7 @@
 // each pair cached.
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <tribodyn/mca/automaton_system.h>
 
@@ -26,11 +27,10 @@ namespace tribodyn
           members[fill[cell_of[k]]++] = k;
       }
 
-      struct Candidate
+      struct Candidate // 12 bytes: the peak memory of a rebuild
       {
         std::uint32_t i, j;
         unsigned char shift;
-        double        r;
       };
       std::vector<Candidate> found;
       found.reserve(std::size_t(n_owned) * 7);
@@ -62,12 +62,10 @@ namespace tribodyn
                     // i is the automaton of smaller key: the same pair and
                     // orientation on every rank and partition
                     if (order[a] < order[b])
-                      found.push_back({a, b, nb.shift, std::sqrt(r2)});
+                      found.push_back({a, b, nb.shift});
                     else
-                      found.push_back({b,
-                                       a,
-                                       Decomposition::opposite_shift(nb.shift),
-                                       std::sqrt(r2)});
+                      found.push_back(
+                        {b, a, Decomposition::opposite_shift(nb.shift)});
                   }
               }
           }
@@ -81,7 +79,6 @@ namespace tribodyn
                                                   : order[p.j] < order[q.j];
                 });
       const unsigned int  n_pairs = found.size();
-      std::vector<double> r(n_pairs);
       pi.resize(n_pairs);
       pj.resize(n_pairs);
       pshift.resize(n_pairs);
@@ -94,7 +91,13 @@ namespace tribodyn
           pshift[p]  = found[p].shift;
           owned_i[p] = found[p].i < n_owned;
           owned_j[p] = found[p].j < n_owned;
-          r[p]       = found[p].r;
+        }
+      std::vector<Candidate>().swap(found);
+      std::vector<double> r(n_pairs);
+      for (unsigned int p = 0; p < n_pairs; ++p)
+        {
+          const Vec3 dn = pair_vector(p);
+          r[p]          = std::sqrt(dot(dn, dn));
         }
       pi.shrink_to_fit(), pj.shrink_to_fit(), pshift.shrink_to_fit();
       owned_i.shrink_to_fit(), owned_j.shrink_to_fit();

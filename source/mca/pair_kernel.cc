@@ -150,8 +150,8 @@ namespace tribodyn
           // keeping their magnitudes (both sides are parallel: they are set
           // equal below and only scaled afterwards, so one factor serves)
           {
-            const Vec3  &ref = dot(tau_i[p], tau_i[p]) > 0 ? tau_i[p] : tau_j[p];
-            const double t2  = dot(ref, ref);
+            const Vec3 &ref = dot(tau_i[p], tau_i[p]) > 0 ? tau_i[p] : tau_j[p];
+            const double t2 = dot(ref, ref);
             if (t2 > 0)
               {
                 const double tn = dot(ref, n);

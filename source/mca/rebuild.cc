@@ -418,7 +418,6 @@ namespace tribodyn
       constexpr std::uint32_t    none = 0xffffffffu, received = 0x80000000u;
       std::vector<std::uint32_t> source(n_pairs, none);
       std::vector<unsigned char> swap(n_pairs, 0);
-      const unsigned int         n_old = old_flags.size();
       if (!initial)
         {
           for (unsigned int p = 0; p < n_pairs; ++p)
@@ -431,8 +430,8 @@ namespace tribodyn
                                    std::make_pair(key, std::uint32_t(0)));
               if (it != old_pairs.end() && it->first == key)
                 {
-                  source[p]        = it->second;
-                  swap[p]          = ((old_flags[it->second] & 1) != 0) != flip;
+                  source[p] = it->second;
+                  swap[p]   = ((old_flags[it->second] & 1) != 0) != flip;
                   continue;
                 }
               const auto jt = std::lower_bound(kept_pairs.begin(),

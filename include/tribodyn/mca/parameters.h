@@ -165,10 +165,6 @@ namespace tribodyn
       double bond_formation_heat_fraction = 0.5;
       /// Pair-list skin as a fraction of the automaton size.
       double skin = 0.2;
-      /// Slots per automaton for pair states carried by the particles
-      /// under MPI (upper bound on pairs in which an automaton has the
-      /// smaller id).
-      unsigned int pair_slots = 16;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

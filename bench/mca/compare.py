@@ -1,0 +1,144 @@
+#!/usr/bin/env python3
+"""MCA benchmark (issue #7): tribodyn's automaton-steps per second per core
+against LAMMPS's granular FCC benchmark, side by side in one run, and the
+memory per automaton.
+
+usage: compare.py --tribodyn build/tribodyn [--steps 300] [--ranks 1,2]
+                  [--memory] [--work DIR]
+
+Rates: an elastic bonded FCC block of 29 x 29 x 30 cells (100,920 automata
+of d = 1 mm, periodic in x and y; make_block.py), time-step loop only
+(summary.json). LAMMPS (Debian package 'lammps', command lmp): the same FCC
+lattice of 100,920 spheres of diameter 1.001 d (12 contacts per sphere),
+pair_style gran/hooke/history, fix nve/sphere, the same time step and number
+of steps; its 'Loop time'. The ratio tribodyn / LAMMPS is printed. Both run
+one after the other on the same machine, so they see the same load; check
+that the machine is idle (uptime) before quoting figures.
+
+--memory: peak resident set size of a ~2.56e5-automaton block (40 x 40 x 40
+cells) minus that of a tiny one (4 x 4 x 4), per automaton, on one rank,
+and on two ranks per owned automaton.
+"""
+import argparse
+import json
+import os
+import re
+import resource
+import shutil
+import subprocess
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1")
+
+
+def peak_rss_kb(command, cwd):
+    """Run command; return the peak RSS (KB) of its largest process."""
+    wrapped = ["/usr/bin/time", "-f", "%M"] + command if os.path.exists("/usr/bin/time") else command
+    run = subprocess.run(wrapped, cwd=cwd, env=env, capture_output=True, text=True)
+    if run.returncode != 0:
+        sys.exit("failed: %s\n%s" % (" ".join(command), run.stderr[-2000:]))
+    if wrapped is command:
+        return resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    return int(run.stderr.strip().splitlines()[-1])
+
+
+def tribodyn_block(args, cells_xy, cells_z, steps, ranks, name):
+    prm = os.path.join(args.work, name + ".prm")
+    with open(prm, "w") as f:
+        subprocess.run([sys.executable, os.path.join(here, "make_block.py"), str(cells_xy),
+                        str(cells_z), "elastic", str(steps), "out_" + name], stdout=f, check=True)
+    command = ([] if ranks == 1 else ["mpirun", "-np", str(ranks)]) + [args.tribodyn, prm]
+    rss = peak_rss_kb(command, args.work)
+    summary = json.load(open(os.path.join(args.work, "out_" + name, "summary.json")))
+    return summary, rss
+
+
+def lammps_rate(args, steps):
+    lmp = shutil.which("lmp") or shutil.which("lmp_serial")
+    if not lmp:
+        return None
+    d = 1e-3
+    c_p = 5810.6
+    dt = 0.2 * d / c_p
+    script = f"""units si
+atom_style sphere
+boundary p p p
+comm_modify vel yes
+lattice fcc {d * 2 ** 0.5!r}
+region box block 0 29 0 29 0 30
+create_box 1 box
+create_atoms 1 box
+set type 1 diameter {1.001 * d!r}
+set type 1 density 7800
+pair_style gran/hooke/history 2.0e6 NULL 0.0 NULL 0.5 1
+pair_coeff * *
+neighbor {0.2 * d!r} bin
+neigh_modify delay 0
+velocity all create 1e-9 4928459 loop geom
+fix 1 all nve/sphere
+timestep {dt!r}
+thermo {steps}
+run {steps}
+"""
+    path = os.path.join(args.work, "lammps_fcc.in")
+    with open(path, "w") as f:
+        f.write(script)
+    run = subprocess.run([lmp, "-in", path, "-log", "none"], cwd=args.work, env=env,
+                         capture_output=True, text=True)
+    m = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms",
+                  run.stdout)
+    if not m:
+        sys.exit("LAMMPS did not run:\n" + run.stdout[-2000:] + run.stderr[-2000:])
+    seconds, procs, n_steps, atoms = float(m[1]), int(m[2]), int(m[3]), int(m[4])
+    return atoms * n_steps / seconds / procs
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--tribodyn", required=True)
+    parser.add_argument("--steps", type=int, default=300)
+    parser.add_argument("--ranks", default="1,2")
+    parser.add_argument("--memory", action="store_true")
+    parser.add_argument("--work", default="bench-mca-work")
+    args = parser.parse_args()
+    args.tribodyn = os.path.abspath(args.tribodyn)
+    os.makedirs(args.work, exist_ok=True)
+    print("load average before:", open("/proc/loadavg").read().split()[:3])
+
+    rates = {}
+    for ranks in [int(r) for r in args.ranks.split(",")]:
+        s, _ = tribodyn_block(args, 29, 30, args.steps, ranks, "block_1e5_%d" % ranks)
+        rates[ranks] = s["automaton_steps_per_second_per_rank"]
+        print("tribodyn  %d automata, %d rank(s): %.3e automaton-steps/s per core"
+              % (s["n_automata"], ranks, rates[ranks]))
+    if 1 in rates and 2 in rates:
+        print("tribodyn  1 -> 2 ranks parallel efficiency: %.0f %%" % (100 * rates[2] / rates[1]))
+    lammps = lammps_rate(args, args.steps)
+    if lammps is None:
+        print("LAMMPS    not installed (apt-get install lammps): no side-by-side figure")
+    else:
+        print("LAMMPS    100920 spheres, gran/hooke/history, 1 proc: %.3e atom-steps/s" % lammps)
+        if 1 in rates:
+            print("ratio     tribodyn / LAMMPS = %.2f (target >= 0.75)" % (rates[1] / lammps))
+
+    if args.memory:
+        tiny, rss_tiny = tribodyn_block(args, 4, 4, 20, 1, "memory_tiny")
+        big, rss_big = tribodyn_block(args, 40, 40, 20, 1, "memory_big")
+        per = (rss_big - rss_tiny) * 1024 / (big["n_automata"] - tiny["n_automata"])
+        print("memory    1 rank: peak RSS %d KB (%d automata) - %d KB (%d) = %.0f B per automaton "
+              "(target <= 1000); arrays: %.0f B per automaton"
+              % (rss_big, big["n_automata"], rss_tiny, tiny["n_automata"], per,
+                 big["memory_bytes_max"] / big["n_automata"]))
+        big2, rss_big2 = tribodyn_block(args, 40, 40, 20, 2, "memory_big_2")
+        tiny2, rss_tiny2 = tribodyn_block(args, 4, 4, 20, 2, "memory_tiny_2")
+        owned = big2["n_owned_automata_max"]
+        per2 = (rss_big2 - rss_tiny2) * 1024 / owned
+        print("memory    2 ranks: peak RSS of the largest rank %d KB - %d KB over %d owned "
+              "automata = %.0f B per owned automaton (target <= 1500)"
+              % (rss_big2, rss_tiny2, owned, per2))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,152 @@
+// Parameters of the boundary groups (constraints, loads, damping).
+
+#include "parameter_tools.h"
+
+#include <cmath>
+#include <deal.II/base/patterns.h>
+#include <limits>
+#include <sstream>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/mca/parameters.h>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    using dealii::ParameterHandler;
+    using dealii::Patterns::Bool;
+    using dealii::Patterns::Double;
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::Selection;
+    namespace Patterns = dealii::Patterns;
+
+    using namespace parameter_tools;
+
+    void
+    BoundaryParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      {
+        prm.declare_entry(
+          "Groups",
+          "",
+          Patterns::Anything(),
+          "Groups of automata with a boundary condition, separated by ';': "
+          "'NAME TYPE x0 y0 z0 x1 y1 z1 [v1 v2 v3] [then T w1 w2 w3]'. "
+          "Automata whose centre lies in the box belong to the group (an "
+          "automaton may belong to several). TYPE: fixed (velocity zero), "
+          "velocity (prescribed velocity components v, '*' leaves one "
+          "free), force (total force v on the group; the group moves as a "
+          "rigid loading plate under it and its reaction), damping (F = -v_k m "
+          "u_k per component, coefficients in 1/s). "
+          "'then T w' switches to the value w at time T (ramped smoothly "
+          "over the ramp time).");
+        prm.declare_entry("Ramp time",
+                          "0",
+                          Double(),
+                          "Prescribed velocities and forces rise smoothly "
+                          "(C1, 3s^2 - 2s^3) from zero over this time (s).");
+        prm.declare_entry("Global damping",
+                          "0",
+                          Double(),
+                          "Viscous damping of every automaton, "
+                          "F = -c m v (1/s), >= 0.");
+      }
+      prm.leave_subsection();
+    }
+
+
+    void
+    BoundaryParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      {
+        ramp_time      = prm.get_double("Ramp time");
+        global_damping = prm.get_double("Global damping");
+        check_parameter_range(
+          "Boundary conditions/Ramp time", ramp_time, 0, inf, false, true);
+        check_parameter_range("Boundary conditions/Global damping",
+                              global_damping,
+                              0,
+                              inf,
+                              false,
+                              true);
+        groups.clear();
+        const std::string p = "Boundary conditions/Groups";
+        for (const std::string &entry : split(prm.get("Groups"), ';'))
+          {
+            const auto    t = tokens(entry);
+            BoundaryGroup g;
+            if (t.size() < 8)
+              throw InputError("Parameter '" + p + "': the entry '" + entry
+                               + "' must read 'NAME TYPE x0 y0 z0 x1 y1 z1 "
+                                 "[v1 v2 v3] [then T w1 w2 w3]'.");
+            g.name = t[0];
+            for (const auto &other : groups)
+              check_parameter(other.name != g.name,
+                              p,
+                              "the group name '" + g.name + "' is used twice.");
+            if (t[1] == "fixed")
+              g.type = BoundaryGroup::Type::fixed;
+            else if (t[1] == "velocity")
+              g.type = BoundaryGroup::Type::velocity;
+            else if (t[1] == "force")
+              g.type = BoundaryGroup::Type::force;
+            else if (t[1] == "damping")
+              g.type = BoundaryGroup::Type::damping;
+            else
+              throw InputError("Parameter '" + p + "': unknown type '" + t[1]
+                               + "' in '" + entry
+                               + "'; use fixed, velocity, force or damping.");
+            g.lower = read_point(t, 2, p, entry);
+            g.upper = read_point(t, 5, p, entry);
+            const std::size_t expected
+              = g.type == BoundaryGroup::Type::fixed ? 8 : 11;
+            if (t.size() != expected && t.size() != expected + 5)
+              throw InputError("Parameter '" + p + "': the entry '" + entry
+                               + "' has " + std::to_string(t.size())
+                               + " fields; type " + t[1] + " takes "
+                               + std::to_string(expected)
+                               + " (or 5 more with 'then T w1 w2 w3').");
+            if (expected == 11)
+              for (unsigned int d = 0; d < 3; ++d)
+                g.value[d] = to_double(t[8 + d], p, entry);
+            if (g.type == BoundaryGroup::Type::damping
+                || g.type == BoundaryGroup::Type::force)
+              for (unsigned int d = 0; d < 3; ++d)
+                check_parameter(!std::isnan(g.value[d]),
+                                p,
+                                "'*' is only allowed for velocity groups ('"
+                                  + entry + "').");
+            if (g.type == BoundaryGroup::Type::damping)
+              for (unsigned int d = 0; d < 3; ++d)
+                check_parameter(g.value[d] >= 0,
+                                p,
+                                "damping coefficients must be >= 0 ('" + entry
+                                  + "').");
+            if (t.size() == expected + 5)
+              {
+                check_parameter(t[expected] == "then",
+                                p,
+                                "expected 'then' in '" + entry + "'.");
+                g.switch_time = to_double(t[expected + 1], p, entry);
+                for (unsigned int d = 0; d < 3; ++d)
+                  g.second_value[d] = to_double(t[expected + 2 + d], p, entry);
+                for (unsigned int d = 0; d < 3; ++d)
+                  check_parameter(std::isnan(g.second_value[d])
+                                    == std::isnan(g.value[d]),
+                                  p,
+                                  "the free ('*') components must be the "
+                                  "same before and after 'then' ('"
+                                    + entry + "').");
+              }
+            groups.push_back(g);
+          }
+        check_parameter(groups.size() <= 32, p, "at most 32 groups.");
+      }
+      prm.leave_subsection();
+    }
+
+
+  } // namespace mca
+} // namespace tribodyn

@@ -1,0 +1,287 @@
+// Parameters of the scene: box, bodies, regions, rough interface.
+
+#include "parameter_tools.h"
+
+#include <cmath>
+#include <deal.II/base/patterns.h>
+#include <limits>
+#include <sstream>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/mca/parameters.h>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    using dealii::ParameterHandler;
+    using dealii::Patterns::Bool;
+    using dealii::Patterns::Double;
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::Selection;
+    namespace Patterns = dealii::Patterns;
+
+    using namespace parameter_tools;
+
+    // ------------------------------------------------------------------
+    bool
+    Region::contains(const Point3 &p) const
+    {
+      switch (shape)
+        {
+          case Shape::box:
+            for (unsigned int d = 0; d < 3; ++d)
+              if (p[d] < std::min(a[d], b[d]) || p[d] > std::max(a[d], b[d]))
+                return false;
+            return true;
+          case Shape::sphere:
+            return p.distance_square(a) <= radius * radius;
+          case Shape::cylinder:
+            {
+              const dealii::Tensor<1, 3> axis = b - a;
+              const double               L2   = axis.norm_square();
+              const double               s    = (p - a) * axis / L2;
+              if (s < 0 || s > 1)
+                return false;
+              const dealii::Tensor<1, 3> off = (p - a) - s * axis;
+              return off.norm_square() <= radius * radius;
+            }
+        }
+      return false;
+    }
+
+
+    void
+    GeometryParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      {
+        prm.declare_entry("Automaton size",
+                          "1e-3",
+                          Double(),
+                          "Automaton size d (m): the distance between "
+                          "neighbours of the FCC packing; contact area "
+                          "S = d^2/(2 sqrt 2), volume V = d^3/sqrt 2.");
+        prm.declare_entry("Domain lower",
+                          "0, 0, 0",
+                          Patterns::Anything(),
+                          "Lower corner of the simulation box (m). In "
+                          "periodic directions the box is the period and "
+                          "its length must hold a whole number of FCC "
+                          "cells (a = d sqrt 2).");
+        prm.declare_entry("Domain upper",
+                          "0.01, 0.01, 0.01",
+                          Patterns::Anything(),
+                          "Upper corner of the simulation box (m). In "
+                          "non-periodic directions automata must stay "
+                          "inside it (leave room for the motion).");
+        prm.declare_entry("Periodic x",
+                          "false",
+                          Bool(),
+                          "Periodic boundary in x.");
+        prm.declare_entry("Periodic y",
+                          "false",
+                          Bool(),
+                          "Periodic boundary in y.");
+        prm.declare_entry("Periodic z",
+                          "false",
+                          Bool(),
+                          "Periodic boundary in z.");
+        prm.declare_entry(
+          "Bodies",
+          "0, 0, 0, 0.01, 0.01, 0.01, steel",
+          Patterns::Anything(),
+          "Boxes filled with automata on one FCC lattice (origin at "
+          "'Domain lower' + a/4 in every direction), separated by ';': "
+          "'x0 y0 z0 x1 y1 z1 MATERIAL'. Automata of different bodies are "
+          "not bonded at the start.");
+        prm.declare_entry(
+          "Regions",
+          "",
+          Patterns::Anything(),
+          "Regions applied in order after the packing, separated by ';': "
+          "'box x0 y0 z0 x1 y1 z1 M', 'sphere cx cy cz r M', 'cylinder "
+          "ax ay az bx by bz r M' (axis from a to b, any direction), where "
+          "M is a material name (sets the material) or 'void' (removes "
+          "the automata).");
+        prm.enter_subsection("Rough interface");
+        {
+          prm.declare_entry("Enabled",
+                            "false",
+                            Bool(),
+                            "Split the packing into body 0 below and body "
+                            "1 above a rough surface z = Height + "
+                            "Amplitude * f(x, y), f a sum of random-phase "
+                            "cosines with the given wavelength (periodic "
+                            "over the box when the wavelength divides it).");
+          prm.declare_entry("Height", "0", Double(), "Mean height (m).");
+          prm.declare_entry("Amplitude",
+                            "0",
+                            Double(),
+                            "Roughness amplitude (m), >= 0.");
+          prm.declare_entry("Wavelength",
+                            "1e-3",
+                            Double(),
+                            "Roughness wavelength (m), > 0.");
+          prm.declare_entry("Seed",
+                            "1",
+                            Integer(0),
+                            "Seed of the random phases.");
+          prm.declare_entry("Gap",
+                            "0",
+                            Double(),
+                            "Initial gap: body 1 is shifted up by it (m).");
+        }
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
+    }
+
+
+    void
+    GeometryParameters::parse_parameters(
+      ParameterHandler               &prm,
+      const std::vector<std::string> &material_names)
+    {
+      prm.enter_subsection("Geometry");
+      {
+        automaton_size = prm.get_double("Automaton size");
+        check_parameter_range(
+          "Geometry/Automaton size", automaton_size, 0, inf, true, true);
+        domain_lower
+          = parse_point(prm.get("Domain lower"), "Geometry/Domain lower");
+        domain_upper
+          = parse_point(prm.get("Domain upper"), "Geometry/Domain upper");
+        periodic       = {{prm.get_bool("Periodic x"),
+                           prm.get_bool("Periodic y"),
+                           prm.get_bool("Periodic z")}};
+        const double a = automaton_size * std::sqrt(2.);
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            const double      L = domain_upper[d] - domain_lower[d];
+            const std::string name
+              = std::string("Geometry/Domain upper (") + "xyz"[d] + ")";
+            check_parameter(L > 0,
+                            name,
+                            "the domain must have a positive length in "
+                            "every direction.");
+            if (periodic[d])
+              {
+                const double cells = L / a;
+                check_parameter(
+                  std::abs(cells - std::round(cells)) < 1e-6 * cells
+                    && std::round(cells) >= 2,
+                  name,
+                  "in a periodic direction the length must be a whole "
+                  "number (>= 2) of FCC cells a = d sqrt(2) = "
+                    + format_number(a) + " m; the nearest is "
+                    + format_number(std::max(2., std::round(cells)) * a)
+                    + " m.");
+              }
+          }
+
+        bodies.clear();
+        for (const std::string &entry : split(prm.get("Bodies"), ';'))
+          {
+            const auto t = tokens(entry);
+            if (t.size() != 7)
+              throw InputError("Parameter 'Geometry/Bodies': the entry '"
+                               + entry
+                               + "' must read 'x0 y0 z0 x1 y1 z1 MATERIAL'.");
+            Body b;
+            b.lower = read_point(t, 0, "Geometry/Bodies", entry);
+            b.upper = read_point(t, 3, "Geometry/Bodies", entry);
+            b.material
+              = material_index(material_names, t[6], "Geometry/Bodies");
+            bodies.push_back(b);
+          }
+        check_parameter(!bodies.empty(),
+                        "Geometry/Bodies",
+                        "give at least one body.");
+
+        regions.clear();
+        for (const std::string &entry : split(prm.get("Regions"), ';'))
+          {
+            const auto        t = tokens(entry);
+            Region            r;
+            const std::string p = "Geometry/Regions";
+            std::size_t       n = 0;
+            if (!t.empty() && t[0] == "box")
+              {
+                r.shape = Region::Shape::box;
+                n       = 8;
+              }
+            else if (!t.empty() && t[0] == "sphere")
+              {
+                r.shape = Region::Shape::sphere;
+                n       = 6;
+              }
+            else if (!t.empty() && t[0] == "cylinder")
+              {
+                r.shape = Region::Shape::cylinder;
+                n       = 9;
+              }
+            else
+              throw InputError("Parameter '" + p + "': the entry '" + entry
+                               + "' must start with box, sphere or cylinder.");
+            if (t.size() != n)
+              throw InputError(
+                "Parameter '" + p + "': the entry '" + entry + "' has "
+                + std::to_string(t.size()) + " fields; expected "
+                + std::to_string(n)
+                + " ('box x0 y0 z0 x1 y1 z1 M', 'sphere cx cy cz r M' or "
+                  "'cylinder ax ay az bx by bz r M').");
+            r.a = read_point(t, 1, p, entry);
+            if (r.shape == Region::Shape::sphere)
+              r.radius = to_double(t[4], p, entry);
+            else
+              r.b = read_point(t, 4, p, entry);
+            if (r.shape == Region::Shape::cylinder)
+              {
+                r.radius = to_double(t[7], p, entry);
+                check_parameter((r.b - r.a).norm() > 0,
+                                p,
+                                "the cylinder '" + entry
+                                  + "' has a zero-length axis.");
+              }
+            if (r.shape != Region::Shape::box)
+              check_parameter(r.radius > 0,
+                              p,
+                              "the radius in '" + entry
+                                + "' must be positive.");
+            r.material = t.back() == "void"
+                           ? -1
+                           : material_index(material_names, t.back(), p);
+            regions.push_back(r);
+          }
+
+        prm.enter_subsection("Rough interface");
+        {
+          rough_interface      = prm.get_bool("Enabled");
+          interface_height     = prm.get_double("Height");
+          roughness_amplitude  = prm.get_double("Amplitude");
+          roughness_wavelength = prm.get_double("Wavelength");
+          roughness_seed       = prm.get_integer("Seed");
+          interface_gap        = prm.get_double("Gap");
+          check_parameter_range("Geometry/Rough interface/Amplitude",
+                                roughness_amplitude,
+                                0,
+                                inf,
+                                false,
+                                true);
+          check_parameter_range("Geometry/Rough interface/Wavelength",
+                                roughness_wavelength,
+                                0,
+                                inf,
+                                true,
+                                true);
+          check_parameter_range(
+            "Geometry/Rough interface/Gap", interface_gap, 0, inf, false, true);
+        }
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
+    }
+
+
+  } // namespace mca
+} // namespace tribodyn
