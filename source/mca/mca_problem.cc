@@ -611,18 +611,26 @@ namespace tribodyn
       const double wall = std::chrono::duration<double>(
                             std::chrono::steady_clock::now() - start)
                             .count();
-      JsonValue summary               = JsonValue::object();
-      summary["problem"]              = "mca";
-      summary["tribodyn_version"]     = version_string;
-      summary["n_mpi_ranks"]          = n_ranks;
-      summary["n_automata"]           = system.n_global_automata();
-      summary["n_pairs"]              = system.n_global_pairs();
-      summary["n_steps"]              = n_steps;
-      summary["dt"]                   = dt;
-      summary["critical_dt"]          = system.critical_time_step();
-      summary["end_time"]             = system.time();
-      summary["n_pair_list_rebuilds"] = system.n_rebuilds();
-      summary["n_dropped_bonds"]      = system.n_dropped_bonds();
+      JsonValue summary                = JsonValue::object();
+      summary["problem"]               = "mca";
+      summary["tribodyn_version"]      = version_string;
+      summary["n_mpi_ranks"]           = n_ranks;
+      summary["n_automata"]            = system.n_global_automata();
+      summary["n_pairs"]               = system.n_global_pairs();
+      summary["n_steps"]               = n_steps;
+      summary["dt"]                    = dt;
+      summary["critical_dt"]           = system.critical_time_step();
+      summary["end_time"]              = system.time();
+      summary["n_pair_list_rebuilds"]  = system.n_rebuilds();
+      const unsigned long long dropped = system.n_dropped_bonds();
+      summary["n_dropped_bonds"]       = dropped;
+      if (dropped > 0)
+        pcout << "Warning: " << dropped
+              << " bonded pair(s) were stretched beyond the pair-list range "
+                 "(automaton size times 1 + Interaction/Skin) and their bonds "
+                 "were lost. With Bond breaking = false this is a large "
+                 "deformation the list cannot follow: raise Interaction/Skin."
+              << std::endl;
       summary["n_ghost_automata_max"]
         = dealii::Utilities::MPI::max(system.n_ghost_automata(), comm);
       summary["n_owned_automata_min"]

@@ -78,7 +78,7 @@ namespace tribodyn
                   return order[p.i] != order[q.i] ? order[p.i] < order[q.i]
                                                   : order[p.j] < order[q.j];
                 });
-      const unsigned int  n_pairs = found.size();
+      const unsigned int n_pairs = found.size();
       pi.resize(n_pairs);
       pj.resize(n_pairs);
       pshift.resize(n_pairs);

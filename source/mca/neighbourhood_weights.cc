@@ -94,11 +94,14 @@ namespace tribodyn
           const double scale     = A.diagonal().maxCoeff();
           if (count > 0 && scale > 0)
             {
-              const Eigen::LDLT<Matrix6> ldlt(A);
-              if (ldlt.info() == Eigen::Success
-                  && ldlt.vectorD().minCoeff() > 1e-3 * scale)
+              // full rank: smallest eigenvalue of A not negligible against
+              // the largest (A is symmetric positive semi-definite)
+              const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(
+                A, Eigen::EigenvaluesOnly);
+              const auto &lambda = eigen.eigenvalues();
+              if (lambda(0) > 1e-6 * lambda(5))
                 {
-                  g         = ldlt.solve(e);
+                  g         = A.ldlt().solve(e);
                   full_rank = g.cwiseAbs().maxCoeff() < 8;
                 }
             }
@@ -156,13 +159,14 @@ namespace tribodyn
 
 
     Sym3
-    AutomatonSystem::fabric_corrected(const unsigned int k, const Sym3 &t) const
+    AutomatonSystem::fabric_corrected(const unsigned int k, const Mat3 &t) const
     {
-      // sym(B^-1 T)
+      // sym(B^-1 T) of the full (unsymmetric) T = B sigma: at surfaces B is
+      // anisotropic and sym(B^-1 sym(T)) would not recover sigma
       const Sym3     &b = fabric_inverse[k];
       Eigen::Matrix3d Bi, T;
       Bi << b[0], b[5], b[4], b[5], b[1], b[3], b[4], b[3], b[2];
-      T << t[0], t[5], t[4], t[5], t[1], t[3], t[4], t[3], t[2];
+      T << t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8];
       const Eigen::Matrix3d P = Bi * T;
       return {{P(0, 0),
                P(1, 1),
@@ -175,24 +179,24 @@ namespace tribodyn
 
     void
     AutomatonSystem::add_pair_stress(const unsigned int p,
-                                     std::vector<Sym3> &target) const
+                                     std::vector<Mat3> &target) const
     {
-      // Seed eq. (4): sigma^i += (q_ij S / V_i) n_ij (x) F_ij / S, for each
-      // owned side of the pair (q_ji = r_ij - q_ij).
+      // Seed eq. (4): T^i += (q_ij S / V_i) n_ij (x) F_ij / S, for each
+      // owned side of the pair (q_ji = r_ij - q_ij); sigma^i = sym(B^-1 T).
       const Vec3 n = unit_normal(p);
       if (owned_i[p])
         {
           Vec3 t;
           for (unsigned int c = 0; c < 3; ++c)
             t[c] = sig_i[p] * n[c] + tau_i[p][c];
-          add_sym(target[pi[p]], q_i[p] * S / V, n, t);
+          add_outer(target[pi[p]], q_i[p] * S / V, n, t);
         }
       if (owned_j[p])
         {
           Vec3 t;
           for (unsigned int c = 0; c < 3; ++c)
             t[c] = sig_j[p] * n[c] + tau_j[p][c];
-          add_sym(target[pj[p]], (r_now[p] - q_i[p]) * S / V, n, t);
+          add_outer(target[pj[p]], (r_now[p] - q_i[p]) * S / V, n, t);
         }
     }
 
@@ -200,12 +204,13 @@ namespace tribodyn
     void
     AutomatonSystem::compute_automaton_stresses()
     {
-      stress.assign(n_local, Sym3{{0, 0, 0, 0, 0, 0}});
+      std::vector<Mat3> t(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
       for (unsigned int p = 0; p < pi.size(); ++p)
         if (bonded[p] || in_contact[p])
-          add_pair_stress(p, stress);
+          add_pair_stress(p, t);
+      stress.resize(n_local);
       for (unsigned int k = 0; k < n_owned; ++k)
-        stress[k] = fabric_corrected(k, stress[k]);
+        stress[k] = fabric_corrected(k, t[k]);
     }
   } // namespace mca
 } // namespace tribodyn

@@ -231,7 +231,7 @@ namespace tribodyn
       // radial return per automaton.
       if constexpr (plastic)
         {
-          trial.assign(n_local, Sym3{{0, 0, 0, 0, 0, 0}});
+          trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
           for (unsigned int p = 0; p < n_pairs; ++p)
             {
               if (!bonded[p] && !in_contact[p])

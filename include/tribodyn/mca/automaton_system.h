@@ -386,11 +386,11 @@ namespace tribodyn
       void
       update_neighbourhood_weights(const bool all);
       Sym3
-      fabric_corrected(const unsigned int k, const Sym3 &t) const;
+      fabric_corrected(const unsigned int k, const Mat3 &t) const;
       /// Add the eq.-(4) stress contributions of pair @p p to the owned
       /// automata of the pair in @p target (indexed by local automaton).
       void
-      add_pair_stress(const unsigned int p, std::vector<Sym3> &target) const;
+      add_pair_stress(const unsigned int p, std::vector<Mat3> &target) const;
 
       // --- boundary groups (boundary_groups.cc)
       void
@@ -452,7 +452,7 @@ namespace tribodyn
       std::vector<double> kin;   ///< x(3) dx(3) w(3)
       std::vector<double> plast; ///< sigma_m trial, M, heat share
       std::vector<double> sum_qs, dsm, acc_qse;
-      std::vector<Sym3>   trial;
+      std::vector<Mat3>   trial;
       std::vector<Sym3>   fabric_inverse;
       /// Owned automata whose contacts or bonds changed (weights stale).
       std::vector<unsigned char> changed;

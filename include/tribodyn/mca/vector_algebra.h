@@ -10,6 +10,7 @@ namespace tribodyn
   {
     using Vec3 = std::array<double, 3>;
     using Sym3 = std::array<double, 6>; ///< xx yy zz yz xz xy
+    using Mat3 = std::array<double, 9>; ///< row major
 
     // Small inline kernels of the pair loops: plain arrays so that the
     // compiler keeps them in registers (no Tensor temporaries).
@@ -38,6 +39,15 @@ namespace tribodyn
       s[3] += c * 0.5 * (n[1] * t[2] + n[2] * t[1]);
       s[4] += c * 0.5 * (n[0] * t[2] + n[2] * t[0]);
       s[5] += c * 0.5 * (n[0] * t[1] + n[1] * t[0]);
+    }
+
+    /// Add c * (n (x) t) to the full tensor m.
+    inline void
+    add_outer(Mat3 &m, const double c, const Vec3 &n, const Vec3 &t)
+    {
+      for (unsigned int a = 0; a < 3; ++a)
+        for (unsigned int b = 0; b < 3; ++b)
+          m[3 * a + b] += c * n[a] * t[b];
     }
 
     /// Von Mises equivalent stress sqrt(3 J2).
