@@ -204,13 +204,30 @@ namespace tribodyn
     void
     AutomatonSystem::compute_automaton_stresses()
     {
-      std::vector<Mat3> t(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
-      for (unsigned int p = 0; p < pi.size(); ++p)
-        if (bonded[p] || in_contact[p])
-          add_pair_stress(p, t);
+      // Per automaton over its pairs (in pair order, the order of the pair
+      // loop): no tensor array of all automata is needed.
       stress.resize(n_local);
       for (unsigned int k = 0; k < n_owned; ++k)
-        stress[k] = fabric_corrected(k, t[k]);
+        {
+          Mat3 t{{0, 0, 0, 0, 0, 0, 0, 0, 0}};
+          for (unsigned int a = adjacency_first[k]; a < adjacency_first[k + 1];
+               ++a)
+            {
+              const unsigned int p = adjacency[a] / 2;
+              if (!bonded[p] && !in_contact[p])
+                continue;
+              const Vec3   n    = unit_normal(p);
+              const bool   is_j = adjacency[a] & 1;
+              const double sg   = is_j ? sig_j[p] : sig_i[p];
+              const Vec3  &tau  = is_j ? tau_j[p] : tau_i[p];
+              const double q    = is_j ? r_now[p] - q_i[p] : q_i[p];
+              Vec3         traction;
+              for (unsigned int c = 0; c < 3; ++c)
+                traction[c] = sg * n[c] + tau[c];
+              add_outer(t, q * S / V, n, traction);
+            }
+          stress[k] = fabric_corrected(k, t);
+        }
     }
   } // namespace mca
 } // namespace tribodyn
