@@ -27,18 +27,7 @@ namespace
     const Parameters p = block_parameters(6, 1e-3, material);
     AutomatonSystem  system(p, MPI_COMM_WORLD);
     system.setup();
-    system.impose_motion(
-      [&](const Point3 &x, Vec3 &du, Vec3 &dtheta) {
-        for (unsigned int i = 0; i < 3; ++i)
-          {
-            du[i]     = 0;
-            dtheta[i] = 0;
-            for (unsigned int j = 0; j < 3; ++j)
-              du[i] += sign * eps[i][j] * x[j];
-          }
-      },
-      1e-9);
-    system.compute_automaton_stresses();
+    impose_affine_strain(system, eps, sign);
     // interior: all 12 bonded neighbours have 12 bonded neighbours
     const auto counts = system.bonded_neighbour_counts();
     const auto pairs  = system.pair_views();
@@ -75,13 +64,8 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const double                             amplitude = 1e-6;
-  // a general strain with all six components
-  const double shape[3][3]
-    = {{1.0, 0.3, -0.2}, {0.3, -0.7, 0.5}, {-0.2, 0.5, 0.4}};
-  double eps[3][3];
-  for (unsigned int i = 0; i < 3; ++i)
-    for (unsigned int j = 0; j < 3; ++j)
-      eps[i][j] = amplitude * shape[i][j];
+  double                                   eps[3][3];
+  general_strain(eps, amplitude);
 
   const Parameters defaults;
   for (const int material : {0, 1})

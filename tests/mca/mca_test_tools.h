@@ -54,6 +54,38 @@ namespace tribodyn_test
              2 * G * eps[0][1]}};
   }
 
+  /// A general strain with all six components, of size @p amplitude.
+  inline void
+  general_strain(double eps[3][3], const double amplitude)
+  {
+    const double shape[3][3]
+      = {{1.0, 0.3, -0.2}, {0.3, -0.7, 0.5}, {-0.2, 0.5, 0.4}};
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        eps[i][j] = amplitude * shape[i][j];
+  }
+
+  /// Impose u = sign * eps x on every automaton in one pseudo-step (no
+  /// rotation), evaluate the pairs and the automaton stresses.
+  inline void
+  impose_affine_strain(AutomatonSystem &system,
+                       const double     eps[3][3],
+                       const double     sign)
+  {
+    system.impose_motion(
+      [&](const Point3 &x, Vec3 &du, Vec3 &dtheta) {
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            du[i]     = 0;
+            dtheta[i] = 0;
+            for (unsigned int j = 0; j < 3; ++j)
+              du[i] += sign * eps[i][j] * x[j];
+          }
+      },
+      1e-9);
+    system.compute_automaton_stresses();
+  }
+
   inline double
   sym_norm(const Sym3 &s)
   {
