@@ -11,6 +11,7 @@
 #include <tribodyn/core/progress.h>
 #include <tribodyn/core/version.h>
 #include <tribodyn/mca/automaton_system.h>
+#include <tribodyn/mca/friction_observer.h>
 #include <tribodyn/mca/mca_problem.h>
 
 namespace tribodyn
@@ -493,7 +494,7 @@ namespace tribodyn
         uniaxial = std::make_unique<UniaxialAnalysis>(system, p, comm);
       if (p.analysis.type == AnalysisParameters::Type::pulse)
         pulse = std::make_unique<PulseAnalysis>(system, p, comm);
-      std::vector<double> mu_times, mu_values;
+      FrictionObserver friction_observer(p, loaded);
 
       const unsigned long series_every
         = p.output.series_interval > 0
@@ -560,16 +561,9 @@ namespace tribodyn
           }
         if (friction && loaded >= 0)
           {
-            const unsigned int a  = p.analysis.axis;
-            const double       fn = std::abs(forces[loaded][a]);
-            double             ft = 0;
-            for (unsigned int c = 0; c < 3; ++c)
-              if (c != a)
-                ft += forces[loaded][c] * forces[loaded][c];
-            const double mu = fn > 0 ? std::sqrt(ft) / fn : 0;
+            const double mu
+              = friction_observer.record(system.time(), forces, e);
             row.push_back(mu);
-            mu_times.push_back(system.time());
-            mu_values.push_back(mu);
             key_figure = "mu = " + format_number(mu);
           }
         series.add_row(row);
@@ -670,22 +664,8 @@ namespace tribodyn
         uniaxial->finish(summary, figures);
       if (pulse)
         pulse->finish(summary, figures);
-      if (friction && !mu_values.empty())
-        {
-          double       sum = 0;
-          unsigned int n   = 0;
-          for (std::size_t k = 0; k < mu_values.size(); ++k)
-            if (mu_times[k] >= p.analysis.averaging_start)
-              {
-                sum += mu_values[k];
-                ++n;
-              }
-          const double mean                    = n > 0 ? sum / n : std::nan("");
-          summary["mean_friction_coefficient"] = mean;
-          figures << "Friction: mean mu = " << mean
-                  << " over t >= " << p.analysis.averaging_start << " s (" << n
-                  << " samples)" << std::endl;
-        }
+      if (friction)
+        friction_observer.finish(out_dir, root, summary, figures);
       pcout << figures.str();
       pcout << "Throughput: "
             << double(system.n_global_automata()) * n_steps

@@ -364,7 +364,9 @@ namespace tribodyn
       // Bond switching (takes effect at the next step), from the automata's
       // stress tensors (eq. 4) exchanged with the neighbours.
       compute_automaton_stresses();
-      std::vector<double> ex(static_cast<std::size_t>(n_local) * 7, 0.);
+      // member buffer: no allocation per step
+      std::vector<double> &ex = bond_buffer;
+      ex.assign(static_cast<std::size_t>(n_local) * 7, 0.);
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           for (unsigned int c = 0; c < 6; ++c)

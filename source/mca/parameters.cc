@@ -491,6 +491,20 @@ namespace tribodyn
                           Double(),
                           "friction: the mean mu is taken from this time "
                           "on (s).");
+        prm.declare_entry(
+          "Smoothing window",
+          "0",
+          Double(0),
+          "friction: width of the centred moving average of mu giving "
+          "mu_smoothed (s); 0 = a tenth of the End time.");
+        prm.declare_entry(
+          "Steady band",
+          "0.05",
+          Double(0, 1),
+          "friction: the quasi-steady regime starts when the smoothed mu stays "
+          "within this fraction of its later mean for the rest of the run "
+          "(and for at least a fifth of it); its mu is block-averaged from "
+          "there, with a standard error.");
       }
       prm.leave_subsection();
     }
@@ -513,6 +527,8 @@ namespace tribodyn
         probe_1              = prm.get_double("Probe 1");
         probe_2              = prm.get_double("Probe 2");
         averaging_start      = prm.get_double("Averaging start");
+        smoothing_window     = prm.get_double("Smoothing window");
+        steady_band          = prm.get_double("Steady band");
         check_parameter_range("Analysis/Elastic fit fraction",
                               elastic_fit_fraction,
                               0,

@@ -449,8 +449,9 @@ namespace tribodyn
       std::vector<double>        eps_p, sigma_y;
       std::vector<Sym3>          stress;
       /// Per-step exchange buffers (stride given by their use).
-      std::vector<double> kin;   ///< x(3) dx(3) w(3)
-      std::vector<double> plast; ///< sigma_m trial, M, heat share
+      std::vector<double> kin;         ///< x(3) dx(3) w(3)
+      std::vector<double> plast;       ///< sigma_m trial, M, heat share
+      std::vector<double> bond_buffer; ///< stress tensor (6), yield stress
       std::vector<double> sum_qs, dsm, acc_qse;
       std::vector<Mat3>   trial;
       std::vector<Sym3>   fabric_inverse;

@@ -271,6 +271,10 @@ namespace tribodyn
       double probe_1 = 0, probe_2 = 0;
       /// friction: time from which the mean mu is taken.
       double averaging_start = 0;
+      /// friction: moving-average width of mu (s); 0 = End time / 10.
+      double smoothing_window = 0;
+      /// friction: relative band of the quasi-steady regime.
+      double steady_band = 0.05;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -1,0 +1,50 @@
+#ifndef tribodyn_mca_friction_observer_h
+#define tribodyn_mca_friction_observer_h
+
+#include <ostream>
+#include <string>
+#include <tribodyn/core/json.h>
+#include <tribodyn/mca/automaton_system.h>
+#include <tribodyn/mca/friction_analysis.h>
+#include <vector>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    /**
+     * The friction observer of `Analysis/Type = friction`: at each series
+     * sample, the normal force (along `Analysis/Axis`) and the tangential
+     * force on the loaded group, mu = |F_t| / |F_n| and the pair counts; at
+     * the end, friction.csv (time, normal_force, tangential_force, mu,
+     * mu_smoothed, n_bonded, n_unbonded), the quasi-steady regime and the
+     * block-averaged steady mu with its standard error
+     * (analyse_friction()), in summary.json.
+     */
+    class FrictionObserver
+    {
+    public:
+      FrictionObserver(const Parameters &parameters, const int loaded_group);
+
+      /// Record one sample; returns mu.
+      double
+      record(const double             time,
+             const std::vector<Vec3> &group_forces,
+             const SystemEnergies    &energies);
+
+      /// friction.csv (by the root rank), summary keys, a line of figures.
+      void
+      finish(const std::string &output_directory,
+             const bool         root,
+             JsonValue         &summary,
+             std::ostream      &figures) const;
+
+    private:
+      const Parameters   &prm;
+      const int           loaded;
+      std::vector<double> times, normal, tangential, bonded, unbonded;
+    };
+  } // namespace mca
+} // namespace tribodyn
+
+#endif
