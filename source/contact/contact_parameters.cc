@@ -291,6 +291,42 @@ namespace tribodyn
                         Double(0),
                         "Initial distance between the bottom face and the "
                         "plane (m).");
+      prm.declare_entry("Plane start time",
+                        "0",
+                        Double(0),
+                        "The plane is at rest until this time (the pressure "
+                        "preloads the pin), then its velocity ramps to "
+                        "'Plane velocity' (s). 0: it moves from the start.");
+      prm.declare_entry("Plane velocity ramp time",
+                        "0",
+                        Double(0),
+                        "Duration of the smooth ramp V(t) = V (1 - cos(pi "
+                        "(t - t_start)/t_v))/2 of the plane velocity (s); 0 "
+                        "starts the plane at V at once.");
+      prm.declare_entry("Surface imperfection amplitude",
+                        "0",
+                        Double(0),
+                        "Absolute amplitude A of a waviness of the plane (m): "
+                        "its surface is y = -gap - A (1 - cos(2 pi xi / "
+                        "lambda))/2 with xi the coordinate along the moving "
+                        "plane. Does not scale with P, so it breaks the P/|V| "
+                        "invariance of the model. 0: flat plane.");
+      prm.declare_entry("Surface imperfection wavelength",
+                        "2e-3",
+                        Double(0),
+                        "Wavelength lambda of that waviness (m).");
+      prm.declare_entry("Initial velocity perturbation",
+                        "0",
+                        Double(0),
+                        "Amplitude a of a uniform random initial velocity in "
+                        "[-a, a] added to every free dof (m/s); repeats of a "
+                        "study use it to sample the chaotic dynamics.");
+      prm.declare_entry("Perturbation seed",
+                        "1",
+                        Integer(0),
+                        "Seed of that random perturbation (the same seed "
+                        "gives the same perturbation on any number of "
+                        "ranks).");
       prm.leave_subsection();
     }
 
@@ -309,7 +345,29 @@ namespace tribodyn
       initial_velocity[0] = v[0];
       initial_velocity[1] = v[1];
       initial_gap         = prm.get_double("Initial gap");
+      plane_start_time    = prm.get_double("Plane start time");
+      plane_velocity_ramp_time = prm.get_double("Plane velocity ramp time");
+      imperfection_amplitude = prm.get_double("Surface imperfection amplitude");
+      imperfection_wavelength
+        = prm.get_double("Surface imperfection wavelength");
+      velocity_perturbation = prm.get_double("Initial velocity perturbation");
+      perturbation_seed     = prm.get_integer("Perturbation seed");
       prm.leave_subsection();
+      check_parameter_range("Loading/Surface imperfection wavelength",
+                            imperfection_wavelength,
+                            0,
+                            1e3,
+                            true,
+                            false);
+      check_parameter_range("Loading/Surface imperfection amplitude",
+                            imperfection_amplitude,
+                            0,
+                            0.1 * imperfection_wavelength,
+                            false,
+                            false,
+                            "The contact normal is taken along y: the "
+                            "waviness must be shallow (amplitude at most a "
+                            "tenth of the wavelength).");
       check_parameter_range("Loading/Pressure",
                             pressure,
                             0,
@@ -320,6 +378,36 @@ namespace tribodyn
                             "must not be negative.");
       check_parameter_range(
         "Loading/Plane velocity", plane_velocity, -1e4, 1e4, false, false);
+    }
+
+
+    double
+    LoadingParameters::plane_velocity_at(const double t) const
+    {
+      if (t >= plane_start_time + plane_velocity_ramp_time)
+        return plane_velocity;
+      if (t <= plane_start_time)
+        return 0.;
+      return 0.5 * plane_velocity
+             * (1.
+                - std::cos(M_PI * (t - plane_start_time)
+                           / plane_velocity_ramp_time));
+    }
+
+
+    double
+    LoadingParameters::plane_position_at(const double t) const
+    {
+      if (t <= plane_start_time)
+        return 0.;
+      const double tv = plane_velocity_ramp_time;
+      const double s  = std::min(t - plane_start_time, tv);
+      double       x  = 0.5 * plane_velocity * s;
+      if (tv > 0)
+        x -= 0.5 * plane_velocity * tv / M_PI * std::sin(M_PI * s / tv);
+      if (t > plane_start_time + tv)
+        x += plane_velocity * (t - plane_start_time - tv);
+      return x;
     }
 
 
@@ -446,6 +534,22 @@ namespace tribodyn
                         "50",
                         Integer(1, 100000),
                         "Projected Gauss-Seidel: iteration limit per step.");
+      prm.declare_entry("Regularization rate",
+                        "plane speed",
+                        Selection("plane speed|local slip rate"),
+                        "Time constant t* of the regularized law during slip: "
+                        "'plane speed': t* = L*/|V(t)| (seed eq. (4)); 'local "
+                        "slip rate': t* = L*/|[u']| with the node's slip rate "
+                        "of the previous step (Prakash-Clifton), L* = "
+                        "'Regularization time' x |Plane velocity|.");
+      prm.declare_entry("State on re-contact",
+                        "reset to zero",
+                        Selection("reset to zero|keep|reset to mu sigma"),
+                        "Friction state tau of the regularized law when a "
+                        "separated node touches the plane again: 'reset to "
+                        "zero' (tau starts from 0), 'keep' (tau of the last "
+                        "contact step), 'reset to mu sigma' (tau starts at "
+                        "alpha mu |sigma|, Coulomb on the first step).");
       prm.leave_subsection();
     }
 
@@ -465,6 +569,14 @@ namespace tribodyn
       regularization_time  = prm.get_double("Regularization time");
       pgs_tolerance        = prm.get_double("Gauss-Seidel tolerance");
       pgs_max_iterations   = prm.get_integer("Gauss-Seidel max iterations");
+      regularization_rate  = prm.get("Regularization rate") == "plane speed"
+                               ? RegularizationRate::plane_speed
+                               : RegularizationRate::local_slip_rate;
+      const std::string rc = prm.get("State on re-contact");
+      recontact_state      = rc == "keep" ? RecontactState::keep
+                             : rc == "reset to zero"
+                               ? RecontactState::reset_to_zero
+                               : RecontactState::reset_to_mu_sigma;
       prm.leave_subsection();
       check_parameter_range("Contact/Friction coefficient",
                             friction_coefficient,
@@ -505,6 +617,21 @@ namespace tribodyn
                         Double(),
                         "End of that window (s); negative: the end of the "
                         "run.");
+      prm.declare_entry("Regime threshold",
+                        "0.01",
+                        Double(0, 1),
+                        "A status (stick, slip, separation) counts in the "
+                        "name of the regime when its time fraction over the "
+                        "window is above this (for point M, and for all the "
+                        "contact node-samples of the face).");
+      prm.declare_entry("Contact face interval",
+                        "0",
+                        Integer(0),
+                        "Write the space-time series of the contact face "
+                        "(contact_face_lambda_n.csv, contact_face_lambda_t.csv, "
+                        "contact_face_status.csv: one row per time, one "
+                        "column per contact node) every this many samples; 0 "
+                        "writes none.");
       prm.leave_subsection();
     }
 
@@ -517,6 +644,8 @@ namespace tribodyn
       field_interval  = prm.get_double("Field interval");
       average_start   = prm.get_double("Averaging start time");
       average_end     = prm.get_double("Averaging end time");
+      regime_threshold      = prm.get_double("Regime threshold");
+      contact_face_interval = prm.get_integer("Contact face interval");
       prm.leave_subsection();
       if (average_end >= 0)
         check_parameter(average_end > average_start,
@@ -549,6 +678,11 @@ namespace tribodyn
       time.parse_parameters(prm);
       contact.parse_parameters(prm);
       output.parse_parameters(prm);
+      if (contact.regularization_rate == RegularizationRate::local_slip_rate)
+        check_parameter(loading.plane_velocity != 0,
+                        "Contact/Regularization rate",
+                        "'plane speed' when 'Loading/Plane velocity' is 0 (L* "
+                        "= Regularization time x |V| would vanish)");
       check_parameter(output.average_start < time.end_time,
                       "Output/Averaging start time",
                       "a time before 'Time integration/End time' ("

@@ -10,7 +10,9 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/la_parallel_vector.h>
+#include <fstream>
 #include <functional>
+#include <memory>
 #include <string>
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/contact/friction.h>
@@ -52,6 +54,18 @@ namespace tribodyn
       double stick_fraction = 0, slip_fraction = 0, separation_fraction = 0;
     };
 
+    /**
+     * Name of a contact regime from the time fractions of the statuses:
+     * a status counts when its fraction is above @p threshold
+     * ("slip", "slip-separation", "stick-slip", "stick-slip-separation",
+     * "stick", "stick-separation", "separation"; "none" if nothing does).
+     */
+    std::string
+    classify_regime(const double stick,
+                    const double slip,
+                    const double separation,
+                    const double threshold);
+
     /// Headline figures of a run (summary.json).
     struct RunSummary
     {
@@ -63,6 +77,9 @@ namespace tribodyn
       double M_stick_fraction = 0, M_slip_fraction = 0,
              M_separation_fraction = 0;
       std::string  regime;
+      /// Regime from the time fractions of all contact node-samples.
+      std::string regime_contact_face;
+      double      normal_force_dominant_frequency_hz = 0;
       unsigned int n_samples_averaged   = 0;
       double       wall_time_s          = 0;
       double       time_loop_s          = 0;
@@ -262,7 +279,24 @@ namespace tribodyn
         double        x;
         double        lambda_n = 0, lambda_t = 0, tau = 0;
         ContactStatus status = separated;
+        /// |slip increment| / dt of the last step (local slip rate).
+        double slip_rate = 0;
       };
+      /// Plane height under a node at x (current position) when the plane
+      /// has moved by @p plane_x: 0 for a flat plane, in [-A, 0] with the
+      /// waviness (y = -gap + this).
+      double
+      plane_height(const double x, const double plane_x) const;
+      /// The friction constants of node @p node for this step (per-node
+      /// decay for the local slip rate) and its tau before the step (state
+      /// on re-contact).
+      template <FrictionLaw law>
+      double
+      previous_tau(const ContactNode &node,
+                   const double       trial,
+                   const double       lambda_n) const;
+      double
+      node_decay(const ContactNode &node) const;
       std::vector<ContactNode> contact_nodes;
       unsigned int             n_contact_nodes_global = 0;
       int                      point_M_index          = -1; // local, or -1
@@ -272,6 +306,10 @@ namespace tribodyn
       double      mass_total = 0;
       std::string material_text;
       FrictionStep  friction_step;
+      // Plane motion over the current step (t_n -> t_{n+1}): displacement
+      // and position at t_{n+1}; decay of the regularized law for the
+      // plane speed of this step; L* for the local slip rate.
+      double plane_slide = 0, plane_x_next = 0, step_decay = 0, slip_length = 0;
       unsigned long step_count         = 0;
       unsigned int  pgs_iterations_max = 0;
 
@@ -281,6 +319,15 @@ namespace tribodyn
       double scale_energy = 0; // largest energy seen (for the error)
 
       std::vector<Sample> history;
+      /// Space-time series of the contact face (rank 0 writes).
+      void
+      write_contact_face_row(const double time);
+      std::vector<std::unique_ptr<std::ofstream>> face_files;
+      std::vector<std::string>                    face_paths;
+      void
+      open_contact_face_files(const std::string &dir);
+      void
+      close_contact_face_files();
       double              run_wall_time = 0, loop_wall_time = 0;
     };
   } // namespace contact
