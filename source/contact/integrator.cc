@@ -154,6 +154,8 @@ namespace tribodyn
             pv[i] = mass_inverse[i] == 0
                       ? 0.
                       : prm.loading.initial_velocity[component[i]];
+            if (!initial_velocity_field.empty() && mass_inverse[i] != 0)
+              pv[i] += initial_velocity_field[i];
             if (noise > 0 && mass_inverse[i] != 0)
               pv[i] += noise
                        * (2. * uniform_hash(prm.loading.perturbation_seed,

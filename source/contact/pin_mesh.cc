@@ -561,5 +561,26 @@ namespace tribodyn
     }
 
 
+    void
+    ContactSolver::set_initial_velocity_field(
+      const std::function<Tensor<1, 2>(const Point<2> &)> &field)
+    {
+      const auto &partitioner = *u.get_partitioner();
+      initial_velocity_field.assign(mass.size(), 0.);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : GeometryInfo<2>::vertex_indices())
+            {
+              const Tensor<1, 2> d = field(cell->vertex(v));
+              for (unsigned int c = 0; c < 2; ++c)
+                {
+                  const auto g = cell->vertex_dof_index(v, c);
+                  if (locally_owned.is_element(g))
+                    initial_velocity_field[partitioner.global_to_local(g)]
+                      = d[c];
+                }
+            }
+    }
+
   } // namespace contact
 } // namespace tribodyn

@@ -182,6 +182,13 @@ namespace tribodyn
       set_displacement(
         const std::function<dealii::Tensor<1, 2>(const dealii::Point<2> &)>
           &field);
+      /// Add the velocity field @p field (evaluated at the nodes) to the
+      /// initial velocity of the next run() (after setup(); held dofs stay
+      /// at rest). Used by the beam-vibration verification.
+      void
+      set_initial_velocity_field(
+        const std::function<dealii::Tensor<1, 2>(const dealii::Point<2> &)>
+          &field);
       /// Testing aid: largest |internal force| entry for the current
       /// displacement (no damping), and the largest von Mises stress of the
       /// cell-centre stresses.
@@ -247,6 +254,7 @@ namespace tribodyn
       std::vector<double>        mass, mass_inverse, unit_load;
       std::vector<unsigned char> component;
       std::vector<unsigned int>  top_x_dofs; // held dofs (local indices)
+      std::vector<double>        initial_velocity_field; // owned dofs, or empty
       std::vector<unsigned int>  top_y_dofs;
 
       // Cells: 8 local dof indices each, material index, element data.
