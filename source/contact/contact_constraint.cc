@@ -38,8 +38,9 @@ namespace tribodyn
         return 0.;
       const double xi = x - plane_x;
       return -0.5 * A
-             * (1. - std::cos(2. * M_PI * xi
-                              / prm.loading.imperfection_wavelength));
+             * (1.
+                - std::cos(2. * M_PI * xi
+                           / prm.loading.imperfection_wavelength));
     }
 
 
@@ -90,9 +91,8 @@ namespace tribodyn
         {
           // Gap at t_{n+1} of the predicted configuration (plane at
           // y = -gap0 + plane_height).
-          const double g
-            = un[node.iy] + gap0
-              - plane_height(node.x + un[node.ix], plane_x_next);
+          const double g = un[node.iy] + gap0
+                           - plane_height(node.x + un[node.ix], plane_x_next);
           if (g >= 0)
             {
               node.lambda_n = node.lambda_t = 0;
@@ -105,9 +105,13 @@ namespace tribodyn
           const double lambda_n = -node.m * g / h;
           const double trial = node.m * (uv[node.ix] + slide - un[node.ix]) / h;
           ContactStatus status;
-          f.decay = node_decay(node);
+          f.decay               = node_decay(node);
           const double lambda_t = tangential_multiplier<law>(
-            trial, lambda_n, previous_tau<law>(node, trial, lambda_n), f, status);
+            trial,
+            lambda_n,
+            previous_tau<law>(node, trial, lambda_n),
+            f,
+            status);
           node.lambda_n = lambda_n;
           node.lambda_t = lambda_t;
           node.tau      = lambda_t;
@@ -203,7 +207,7 @@ namespace tribodyn
             }
         }
       pgs_iterations_max = std::max(pgs_iterations_max, iteration);
-      const bool keep = prm.contact.recontact_state == RecontactState::keep;
+      const bool keep    = prm.contact.recontact_state == RecontactState::keep;
       double     wc = 0, df = 0;
       for (std::size_t k = 0; k < contact_nodes.size(); ++k)
         {
@@ -246,11 +250,12 @@ namespace tribodyn
           // t* = L*/|V(t)|, L* = Regularization time x |V|: the relaxation
           // stops while the plane is at rest.
           const double V = std::abs(L.plane_velocity);
-          step_decay
-            = V > 0 ? std::exp(-std::abs(plane_slide) / (V * prm.contact.regularization_time))
-                    : friction_step.decay;
+          step_decay     = V > 0 ? std::exp(-std::abs(plane_slide)
+                                        / (V * prm.contact.regularization_time))
+                                 : friction_step.decay;
         }
-      slip_length = prm.contact.regularization_time * std::abs(L.plane_velocity);
+      slip_length
+        = prm.contact.regularization_time * std::abs(L.plane_velocity);
       const bool gs
         = prm.contact.algorithm == ContactAlgorithm::projected_gauss_seidel;
       switch (prm.contact.law)

@@ -335,17 +335,17 @@ namespace tribodyn
     LoadingParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Loading");
-      pressure            = prm.get_double("Pressure");
-      ramp_time           = prm.get_double("Ramp time");
-      plane_velocity      = prm.get_double("Plane velocity");
-      top_held_in_x       = prm.get_bool("Top face held in x");
-      const auto v        = parse_numbers(prm.get("Initial velocity"),
+      pressure                 = prm.get_double("Pressure");
+      ramp_time                = prm.get_double("Ramp time");
+      plane_velocity           = prm.get_double("Plane velocity");
+      top_held_in_x            = prm.get_bool("Top face held in x");
+      const auto v             = parse_numbers(prm.get("Initial velocity"),
                                    2,
                                    "Loading/Initial velocity");
-      initial_velocity[0] = v[0];
-      initial_velocity[1] = v[1];
-      initial_gap         = prm.get_double("Initial gap");
-      plane_start_time    = prm.get_double("Plane start time");
+      initial_velocity[0]      = v[0];
+      initial_velocity[1]      = v[1];
+      initial_gap              = prm.get_double("Initial gap");
+      plane_start_time         = prm.get_double("Plane start time");
       plane_velocity_ramp_time = prm.get_double("Plane velocity ramp time");
       imperfection_amplitude = prm.get_double("Surface imperfection amplitude");
       imperfection_wavelength
@@ -624,14 +624,15 @@ namespace tribodyn
                         "name of the regime when its time fraction over the "
                         "window is above this (for point M, and for all the "
                         "contact node-samples of the face).");
-      prm.declare_entry("Contact face interval",
-                        "0",
-                        Integer(0),
-                        "Write the space-time series of the contact face "
-                        "(contact_face_lambda_n.csv, contact_face_lambda_t.csv, "
-                        "contact_face_status.csv: one row per time, one "
-                        "column per contact node) every this many samples; 0 "
-                        "writes none.");
+      prm.declare_entry(
+        "Contact face interval",
+        "0",
+        Integer(0),
+        "Write the space-time series of the contact face "
+        "(contact_face_lambda_n.csv, contact_face_lambda_t.csv, "
+        "contact_face_status.csv: one row per time, one "
+        "column per contact node) every this many samples; 0 "
+        "writes none.");
       prm.leave_subsection();
     }
 
@@ -640,10 +641,10 @@ namespace tribodyn
     ContactOutputParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Output");
-      sample_interval = prm.get_integer("Sample interval");
-      field_interval  = prm.get_double("Field interval");
-      average_start   = prm.get_double("Averaging start time");
-      average_end     = prm.get_double("Averaging end time");
+      sample_interval       = prm.get_integer("Sample interval");
+      field_interval        = prm.get_double("Field interval");
+      average_start         = prm.get_double("Averaging start time");
+      average_end           = prm.get_double("Averaging end time");
       regime_threshold      = prm.get_double("Regime threshold");
       contact_face_interval = prm.get_integer("Contact face interval");
       prm.leave_subsection();

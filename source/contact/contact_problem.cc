@@ -119,8 +119,8 @@ namespace tribodyn
         dealii::TimerOutput::Scope scope(timer, "summary");
         s = solver.summarize(context.output_directory);
       }
-      recorded_samples = solver.samples();
-      run_summary      = s;
+      recorded_samples       = solver.samples();
+      run_summary            = s;
       const double wall_time = std::chrono::duration<double>(
                                  std::chrono::steady_clock::now() - start)
                                  .count();

@@ -1,9 +1,9 @@
 // The beta2 time loop: internal forces, predictor, update (doc/theory/
 // contact.md section 2).
 #include <algorithm>
-#include <cstdint>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -21,11 +21,11 @@
 #include <set>
 #include <sstream>
 #include <tribodyn/contact/contact_solver.h>
+#include <tribodyn/contact/element_kernels.h>
 #include <tribodyn/contact/spectrum.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/progress.h>
-#include <tribodyn/contact/element_kernels.h>
 
 namespace tribodyn
 {
@@ -41,9 +41,9 @@ namespace tribodyn
       uniform_hash(const std::uint64_t seed, const std::uint64_t index)
       {
         std::uint64_t z = seed * 0x9E3779B97F4A7C15ULL + index + 1;
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-        z = z ^ (z >> 31);
+        z               = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z               = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        z               = z ^ (z >> 31);
         return (z >> 11) * (1. / 9007199254740992.);
       }
     } // namespace
@@ -158,8 +158,9 @@ namespace tribodyn
               pv[i] += initial_velocity_field[i];
             if (noise > 0 && mass_inverse[i] != 0)
               pv[i] += noise
-                       * (2. * uniform_hash(prm.loading.perturbation_seed,
-                                            partitioner.local_to_global(i))
+                       * (2.
+                            * uniform_hash(prm.loading.perturbation_seed,
+                                           partitioner.local_to_global(i))
                           - 1.);
             u.local_element(i)      = 0;
             u_prev.local_element(i) = -dt * pv[i];

@@ -1,10 +1,9 @@
 // Samples, time averages, spectra, fields (doc/theory/contact.md
 // section 5).
 #include <algorithm>
-#include <cstdio>
-#include <fstream>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -14,6 +13,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -22,11 +22,11 @@
 #include <set>
 #include <sstream>
 #include <tribodyn/contact/contact_solver.h>
+#include <tribodyn/contact/element_kernels.h>
 #include <tribodyn/contact/spectrum.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/progress.h>
-#include <tribodyn/contact/element_kernels.h>
 
 namespace tribodyn
 {
@@ -363,7 +363,7 @@ namespace tribodyn
           s.M_stick_fraction      = m_status[stick] / n;
           s.M_slip_fraction       = m_status[slip] / n;
         }
-      s.regime = classify_regime(s.M_stick_fraction,
+      s.regime              = classify_regime(s.M_stick_fraction,
                                  s.M_slip_fraction,
                                  s.M_separation_fraction,
                                  prm.output.regime_threshold);
@@ -459,8 +459,7 @@ namespace tribodyn
           if (!*face_files.back())
             throw InputError("Cannot write '" + face_paths.back()
                              + ".part'; check the output directory.");
-          *face_files.back() << header.str() << "\n"
-                             << std::setprecision(8);
+          *face_files.back() << header.str() << "\n" << std::setprecision(8);
         }
     }
 

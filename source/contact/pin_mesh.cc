@@ -537,7 +537,6 @@ namespace tribodyn
     }
 
 
-
     void
     ContactSolver::set_displacement(
       const std::function<Tensor<1, 2>(const Point<2> &)> &field)

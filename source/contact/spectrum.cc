@@ -14,9 +14,9 @@ namespace tribodyn
       // microseconds; one transform per run does not need more.
       if (data.size() < 2)
         return;
-      fftw_complex *d = reinterpret_cast<fftw_complex *>(data.data());
-      fftw_plan     plan
-        = fftw_plan_dft_1d(static_cast<int>(data.size()), d, d, FFTW_FORWARD, FFTW_ESTIMATE);
+      fftw_complex *d    = reinterpret_cast<fftw_complex *>(data.data());
+      fftw_plan     plan = fftw_plan_dft_1d(
+        static_cast<int>(data.size()), d, d, FFTW_FORWARD, FFTW_ESTIMATE);
       fftw_execute(plan);
       fftw_destroy_plan(plan);
     }

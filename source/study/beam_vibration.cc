@@ -84,8 +84,8 @@ namespace tribodyn
         = beta_L * beta_L * std::sqrt(EI / (rhoA * std::pow(L, 4)));
       // Shear and rotary inertia lower the frequency: bracket in
       // [0.5, 1.01] omega_EB by a scan, then bisect.
-      double       a = 0.5 * omega_eb;
-      double       fa = free_end_determinant(a, EI, kGA, rhoA, rhoI, L);
+      double       a    = 0.5 * omega_eb;
+      double       fa   = free_end_determinant(a, EI, kGA, rhoA, rhoI, L);
       const double step = 0.01 * omega_eb;
       double       b = a, fb = fa;
       while (b < 1.02 * omega_eb)
@@ -119,14 +119,23 @@ namespace tribodyn
     BeamParameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Beam");
-      prm.declare_entry("Length", "40e-3", Patterns::Double(0), "Length L (m).");
+      prm.declare_entry("Length",
+                        "40e-3",
+                        Patterns::Double(0),
+                        "Length L (m).");
       prm.declare_entry("Height", "4e-3", Patterns::Double(0), "Height H (m).");
-      prm.declare_entry("Young modulus", "30e9", Patterns::Double(0), "E (Pa).");
+      prm.declare_entry("Young modulus",
+                        "30e9",
+                        Patterns::Double(0),
+                        "E (Pa).");
       prm.declare_entry("Poisson ratio",
                         "0.2",
                         Patterns::Double(-1, 0.5),
                         "nu (plane strain).");
-      prm.declare_entry("Density", "1770", Patterns::Double(0), "rho (kg/m^3).");
+      prm.declare_entry("Density",
+                        "1770",
+                        Patterns::Double(0),
+                        "rho (kg/m^3).");
       prm.declare_entry("Mesh size",
                         "0.25e-3",
                         Patterns::Double(0),
@@ -193,10 +202,13 @@ namespace tribodyn
       const double E_plane = bp.youngs_modulus / (1 - nu * nu);
       const double G       = bp.youngs_modulus / (2 * (1 + nu));
       BeamResult   result;
-      const double omega_ref = timoshenko_free_free_omega(
-        E_plane * H * H * H / 12., bp.shear_coefficient * G * H, bp.density * H,
-        bp.density * H * H * H / 12., L);
-      const double beta_L = 4.730040744862704;
+      const double omega_ref
+        = timoshenko_free_free_omega(E_plane * H * H * H / 12.,
+                                     bp.shear_coefficient * G * H,
+                                     bp.density * H,
+                                     bp.density * H * H * H / 12.,
+                                     L);
+      const double beta_L           = 4.730040744862704;
       result.frequency_reference_hz = omega_ref / (2 * M_PI);
       result.frequency_euler_bernoulli_hz
         = beta_L * beta_L * std::sqrt(E_plane * H * H / 12. / bp.density)
@@ -205,10 +217,10 @@ namespace tribodyn
 
       // The pin of the contact solver as a free beam far above the plane.
       contact::ContactParameters p;
-      p.geometry.width                    = L;
-      p.geometry.height                   = H;
-      p.geometry.mesh_size                = bp.mesh_size;
-      p.material.type                     = contact::ContactMaterialParameters::Type::isotropic;
+      p.geometry.width     = L;
+      p.geometry.height    = H;
+      p.geometry.mesh_size = bp.mesh_size;
+      p.material.type = contact::ContactMaterialParameters::Type::isotropic;
       p.material.isotropic.youngs_modulus = bp.youngs_modulus;
       p.material.isotropic.poisson_ratio  = nu;
       p.material.isotropic.density        = bp.density;
@@ -222,11 +234,11 @@ namespace tribodyn
       p.time.automatic_time_step          = true;
       p.time.safety_factor                = bp.safety_factor;
       p.time.damping                      = bp.damping;
-      p.time.end_time = bp.periods / result.frequency_reference_hz;
-      p.output.average_start              = 0;
-      p.output.field_interval             = 0;
+      p.time.end_time         = bp.periods / result.frequency_reference_hz;
+      p.output.average_start  = 0;
+      p.output.field_interval = 0;
 
-      dealii::TimerOutput timer(comm,
+      dealii::TimerOutput    timer(comm,
                                 std::cout,
                                 dealii::TimerOutput::never,
                                 dealii::TimerOutput::wall_times);
@@ -235,14 +247,14 @@ namespace tribodyn
       // About 400 samples per period.
       p.output.sample_interval = std::max<unsigned int>(
         1,
-        std::lround(1. / (400. * result.frequency_reference_hz
-                          * solver.time_step())));
+        std::lround(
+          1. / (400. * result.frequency_reference_hz * solver.time_step())));
       // First free-free Euler-Bernoulli mode as initial velocity, plane
       // sections for the axial part.
       const double k     = beta_L / L;
       const double sigma = (std::cosh(beta_L) - std::cos(beta_L))
                            / (std::sinh(beta_L) - std::sin(beta_L));
-      const double A     = bp.amplitude / 2.;
+      const double A = bp.amplitude / 2.;
       solver.set_initial_velocity_field([&](const dealii::Point<2> &x) {
         const double s = k * x[0];
         const double phi
@@ -348,35 +360,35 @@ namespace tribodyn
     {
       const auto       start = std::chrono::steady_clock::now();
       const BeamResult r     = run_beam_vibration(parameters,
-                                                  context.mpi_communicator,
-                                                  context.output_directory);
+                                              context.mpi_communicator,
+                                              context.output_directory);
       const double     wall  = std::chrono::duration<double>(
-                              std::chrono::steady_clock::now() - start)
-                              .count();
-      JsonValue s                         = JsonValue::object();
-      s["problem"]                        = "beam";
-      s["tribodyn_version"]               = version_string;
-      s["n_mpi_ranks"]                    = dealii::Utilities::MPI::n_mpi_processes(
-        context.mpi_communicator);
-      s["frequency_hz"]                   = r.frequency_hz;
-      s["frequency_reference_hz"]         = r.frequency_reference_hz;
-      s["frequency_euler_bernoulli_hz"]   = r.frequency_euler_bernoulli_hz;
+                            std::chrono::steady_clock::now() - start)
+                            .count();
+      JsonValue s           = JsonValue::object();
+      s["problem"]          = "beam";
+      s["tribodyn_version"] = version_string;
+      s["n_mpi_ranks"]
+        = dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
+      s["frequency_hz"]                 = r.frequency_hz;
+      s["frequency_reference_hz"]       = r.frequency_reference_hz;
+      s["frequency_euler_bernoulli_hz"] = r.frequency_euler_bernoulli_hz;
       s["frequency_relative_error"]
         = r.frequency_hz / r.frequency_reference_hz - 1.;
-      s["decay_rate"]                     = r.decay_rate;
-      s["damping_ratio"]                  = r.damping_ratio;
-      s["damping_ratio_reference"]        = r.damping_ratio_reference;
+      s["decay_rate"]              = r.decay_rate;
+      s["damping_ratio"]           = r.damping_ratio;
+      s["damping_ratio_reference"] = r.damping_ratio_reference;
       s["damping_ratio_relative_error"]
         = r.damping_ratio / r.damping_ratio_reference - 1.;
-      s["periods_measured"]               = r.n_periods_measured;
-      s["n_dofs"]                         = r.n_dofs;
-      s["n_steps"]                        = r.n_steps;
-      s["dt"]                             = r.dt;
-      s["wall_time_s"]                    = wall;
-      dealii::ConditionalOStream pcout(
-        std::cout,
-        dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator)
-          == 0);
+      s["periods_measured"] = r.n_periods_measured;
+      s["n_dofs"]           = r.n_dofs;
+      s["n_steps"]          = r.n_steps;
+      s["dt"]               = r.dt;
+      s["wall_time_s"]      = wall;
+      dealii::ConditionalOStream pcout(std::cout,
+                                       dealii::Utilities::MPI::this_mpi_process(
+                                         context.mpi_communicator)
+                                         == 0);
       if (dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator)
           == 0)
         write_file_atomically(join_path(context.output_directory,
@@ -385,10 +397,10 @@ namespace tribodyn
       pcout << std::setprecision(6) << "First bending frequency "
             << r.frequency_hz << " Hz (Timoshenko " << r.frequency_reference_hz
             << " Hz, Euler-Bernoulli " << r.frequency_euler_bernoulli_hz
-            << " Hz); damping ratio " << r.damping_ratio << " (beta omega/2 = "
-            << r.damping_ratio_reference << ")\nResults written to "
-            << context.output_directory << "/ (summary.json, beam.csv)"
-            << std::endl;
+            << " Hz); damping ratio " << r.damping_ratio
+            << " (beta omega/2 = " << r.damping_ratio_reference
+            << ")\nResults written to " << context.output_directory
+            << "/ (summary.json, beam.csv)" << std::endl;
     }
 
 
@@ -404,5 +416,5 @@ namespace tribodyn
            return std::unique_ptr<Problem>(new BeamProblem(prm, context));
          }});
     } // namespace
-  } // namespace study
+  }   // namespace study
 } // namespace tribodyn

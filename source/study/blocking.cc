@@ -13,7 +13,7 @@ namespace tribodyn
       BlockingResult r;
       if (series.empty())
         return r;
-      std::vector<double> x = series;
+      std::vector<double> x   = series;
       double              sum = 0;
       for (const double v : x)
         sum += v;
@@ -46,8 +46,8 @@ namespace tribodyn
             = n > 1 ? std::sqrt(var / n / (n - 1.)) : 0.;
           return r;
         }
-      r.naive_stderr          = r.level_stderr.front();
-      const std::size_t L     = r.level_stderr.size();
+      r.naive_stderr            = r.level_stderr.front();
+      const std::size_t L       = r.level_stderr.size();
       double            largest = 0;
       for (std::size_t k = 0; k < L; ++k)
         largest = std::max(largest, r.level_stderr[k]);
@@ -57,8 +57,7 @@ namespace tribodyn
         {
           bool plateau = true;
           for (std::size_t m = k + 1; m < L; ++m)
-            if (r.level_stderr[m]
-                > r.level_stderr[k] + r.level_stderr_error[m])
+            if (r.level_stderr[m] > r.level_stderr[k] + r.level_stderr_error[m])
               {
                 plateau = false;
                 break;

@@ -126,9 +126,10 @@ namespace tribodyn
       models.clear();
       for (const auto &item :
            dealii::Utilities::split_string_list(prm.get("Models"), ','))
-        models.push_back(item == "homogeneous matrix" ? PinModel::homogeneous_matrix
-                         : item == "homogenized"      ? PinModel::homogenized
-                                                      : PinModel::meso);
+        models.push_back(item == "homogeneous matrix"
+                           ? PinModel::homogeneous_matrix
+                         : item == "homogenized" ? PinModel::homogenized
+                                                 : PinModel::meso);
       check_parameter(!models.empty(), "Study/Models", "at least one model");
       n_morphologies     = prm.get_integer("Number of morphologies");
       first_seed         = prm.get_integer("First random seed");

@@ -41,8 +41,8 @@ namespace tribodyn
 
       // The same mesh for every model: the morphology's pixel grid times
       // the subdivisions, which must be square.
-      const auto        &m = base.morphology;
-      const unsigned int s = base.geometry.subdivisions_per_pixel;
+      const auto        &m  = base.morphology;
+      const unsigned int s  = base.geometry.subdivisions_per_pixel;
       const double       hx = m.width / (m.n_pixels_x * s),
                    hy       = m.height / (m.n_pixels_y * s);
       if (std::abs(hx - hy) > 1e-6 * hx)
@@ -95,12 +95,12 @@ namespace tribodyn
     StudyProblem::homogenize(const MPI_Comm group, const unsigned int n_groups)
     {
       const MPI_Comm     world = context.mpi_communicator;
-      const unsigned int color
-        = dealii::Utilities::MPI::this_mpi_process(world)
-          / parameters.ranks_per_case;
-      const bool group_root = dealii::Utilities::MPI::this_mpi_process(group) == 0;
-      const std::string root_dir = join_path(context.output_directory,
-                                             "homogenization");
+      const unsigned int color = dealii::Utilities::MPI::this_mpi_process(world)
+                                 / parameters.ranks_per_case;
+      const bool group_root
+        = dealii::Utilities::MPI::this_mpi_process(group) == 0;
+      const std::string root_dir
+        = join_path(context.output_directory, "homogenization");
       std::vector<std::string> summaries;
       for (unsigned int k = 0; k < parameters.n_morphologies; ++k)
         {
@@ -139,9 +139,9 @@ namespace tribodyn
           hprm.enter_subsection("Output");
           hprm.set("Write fields", false);
           hprm.leave_subsection();
-          RunContext hc        = context;
-          hc.mpi_communicator  = group;
-          hc.output_directory  = dir;
+          RunContext hc       = context;
+          hc.mpi_communicator = group;
+          hc.output_directory = dir;
           if (group_root)
             create_output_directory(dir);
           MPI_Barrier(group);
@@ -159,14 +159,12 @@ namespace tribodyn
       for (const std::string &file : summaries)
         {
           dealii::Tensor<1, 3> cz;
-          homogenized_C
-            += contact::read_homogenization_stiffness(file,
-                                                      parameters.boundary_condition,
-                                                      cz);
+          homogenized_C += contact::read_homogenization_stiffness(
+            file, parameters.boundary_condition, cz);
           homogenized_c_z += cz;
-          std::ifstream          in(file);
-          const nlohmann::json   j = nlohmann::json::parse(in);
-          const double           f = j.at("volume_fraction").get<double>();
+          std::ifstream        in(file);
+          const nlohmann::json j = nlohmann::json::parse(in);
+          const double         f = j.at("volume_fraction").get<double>();
           homogenized_density += (1. - f) * base.material.matrix.density
                                  + f * base.material.heterogeneity.density;
           record["summaries"].push_back(file);
@@ -189,9 +187,9 @@ namespace tribodyn
     contact::ContactParameters
     StudyProblem::case_parameters(const StudyCase &c) const
     {
-      using Type                  = contact::ContactMaterialParameters::Type;
+      using Type                   = contact::ContactMaterialParameters::Type;
       contact::ContactParameters p = base;
-      p.loading.pressure          = parameters.pressures[c.pressure_index];
+      p.loading.pressure           = parameters.pressures[c.pressure_index];
       switch (c.model)
         {
           case PinModel::homogeneous_matrix:
@@ -205,7 +203,7 @@ namespace tribodyn
             p.material.density               = homogenized_density;
             break;
           case PinModel::meso:
-            p.material.type         = Type::morphology;
+            p.material.type          = Type::morphology;
             p.morphology.random_seed = c.seed;
             break;
         }
@@ -221,20 +219,22 @@ namespace tribodyn
     void
     StudyProblem::run()
     {
-      const auto     start = std::chrono::steady_clock::now();
-      const MPI_Comm world = context.mpi_communicator;
-      const unsigned int rank  = dealii::Utilities::MPI::this_mpi_process(world);
-      const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(world);
+      const auto         start = std::chrono::steady_clock::now();
+      const MPI_Comm     world = context.mpi_communicator;
+      const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(world);
+      const unsigned int n_ranks
+        = dealii::Utilities::MPI::n_mpi_processes(world);
       dealii::ConditionalOStream pcout(std::cout, rank == 0);
       const unsigned int         n_groups
         = std::max(1u, n_ranks / parameters.ranks_per_case);
       // Groups of ranks_per_case consecutive ranks (the remainder joins the
       // last group).
-      const unsigned int color = std::min(rank / parameters.ranks_per_case,
-                                          n_groups - 1);
-      MPI_Comm           group;
+      const unsigned int color
+        = std::min(rank / parameters.ranks_per_case, n_groups - 1);
+      MPI_Comm group;
       MPI_Comm_split(world, color, rank, &group);
-      const bool group_root = dealii::Utilities::MPI::this_mpi_process(group) == 0;
+      const bool group_root
+        = dealii::Utilities::MPI::this_mpi_process(group) == 0;
 
       pcout << "Study: " << study_cases.size() << " cases on " << n_groups
             << " group(s) of ranks; mesh h = " << base.geometry.mesh_size
@@ -251,7 +251,7 @@ namespace tribodyn
         {
           if (i % n_groups != color)
             continue;
-          const StudyCase &c = study_cases[i];
+          const StudyCase &c  = study_cases[i];
           RunContext       cc = context;
           cc.mpi_communicator = group;
           cc.output_directory
@@ -259,8 +259,8 @@ namespace tribodyn
           if (group_root)
             {
               create_output_directory(cc.output_directory);
-              std::cout << "Case " << i + 1 << "/" << study_cases.size()
-                        << ": " << c.name << std::endl;
+              std::cout << "Case " << i + 1 << "/" << study_cases.size() << ": "
+                        << c.name << std::endl;
             }
           MPI_Barrier(group);
           const contact::ContactParameters cp = case_parameters(c);
@@ -268,16 +268,16 @@ namespace tribodyn
           problem.run();
 
           // Blocking of mu_global over the averaging window.
-          const double t0 = cp.output.average_start;
-          const double t1 = cp.output.average_end < 0 ? cp.time.end_time
-                                                      : cp.output.average_end;
+          const double        t0 = cp.output.average_start;
+          const double        t1 = cp.output.average_end < 0 ? cp.time.end_time
+                                                             : cp.output.average_end;
           std::vector<double> mu;
           for (const contact::Sample &s : problem.samples())
             if (s.time >= t0 && s.time <= t1)
               mu.push_back(s.mu_global);
-          const BlockingResult     b = block_average(mu);
+          const BlockingResult       b = block_average(mu);
           const contact::RunSummary &s = problem.summary();
-          CaseResult               r;
+          CaseResult                 r;
           r.mu_mean               = s.mu_global_mean;
           r.mu_stderr             = b.stderr_of_mean;
           r.mu_naive_stderr       = b.naive_stderr;
@@ -324,5 +324,5 @@ namespace tribodyn
            return std::unique_ptr<Problem>(new StudyProblem(prm, context));
          }});
     } // namespace
-  } // namespace study
+  }   // namespace study
 } // namespace tribodyn

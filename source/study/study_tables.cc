@@ -58,7 +58,8 @@ namespace tribodyn
       executable_directory()
       {
         char          buffer[4096];
-        const ssize_t n = readlink("/proc/self/exe", buffer, sizeof(buffer) - 1);
+        const ssize_t n
+          = readlink("/proc/self/exe", buffer, sizeof(buffer) - 1);
         if (n <= 0)
           return "";
         std::string path(buffer, n);
@@ -95,13 +96,13 @@ namespace tribodyn
             const StudyCase  &c = study_cases[i];
             const CaseResult &r = results[i];
             out << c.name << "," << parameters.pressures[c.pressure_index]
-                << "," << to_string(c.model) << "," << c.seed << ","
-                << c.repeat << "," << r.mu_mean << "," << r.mu_stderr << ","
-                << r.mu_naive_stderr << "," << r.plateau_found << ","
-                << r.stick << "," << r.slip << "," << r.separation << ","
-                << r.M_stick << "," << r.M_slip << "," << r.M_separation
-                << "," << r.mu_contact_mean << "," << r.dominant_frequency_hz
-                << "," << r.wall_time_s << "\n";
+                << "," << to_string(c.model) << "," << c.seed << "," << c.repeat
+                << "," << r.mu_mean << "," << r.mu_stderr << ","
+                << r.mu_naive_stderr << "," << r.plateau_found << "," << r.stick
+                << "," << r.slip << "," << r.separation << "," << r.M_stick
+                << "," << r.M_slip << "," << r.M_separation << ","
+                << r.mu_contact_mean << "," << r.dominant_frequency_hz << ","
+                << r.wall_time_s << "\n";
           }
         write_file_atomically(join_path(dir, "cases.csv"), out.str());
       }
@@ -116,15 +117,16 @@ namespace tribodyn
       csv << "pressure,model,n_runs,mu_mean,mu_stderr,stick_fraction,"
              "slip_fraction,separation_fraction,regime\n"
           << std::setprecision(6);
-      md << "# Table 2 (seed 001): time-averaged global friction coefficient\n\n"
-         << "mu_stderr combines morphologies/repeats and block averaging in "
-            "time; regime from the time fractions of all contact "
-            "node-samples (threshold "
-         << threshold << "). Seed values in the last columns.\n\n"
-         << "| P (MPa) | model | runs | mu_mean ± stderr | stick / slip / "
-            "separation | regime (contact face) | regime (point M) | seed "
-            "mu | seed regime |\n"
-         << "|---|---|---|---|---|---|---|---|---|\n";
+      md
+        << "# Table 2 (seed 001): time-averaged global friction coefficient\n\n"
+        << "mu_stderr combines morphologies/repeats and block averaging in "
+           "time; regime from the time fractions of all contact "
+           "node-samples (threshold "
+        << threshold << "). Seed values in the last columns.\n\n"
+        << "| P (MPa) | model | runs | mu_mean ± stderr | stick / slip / "
+           "separation | regime (contact face) | regime (point M) | seed "
+           "mu | seed regime |\n"
+        << "|---|---|---|---|---|---|---|---|---|\n";
       JsonValue table = JsonValue::array();
       for (unsigned int p = 0; p < parameters.pressures.size(); ++p)
         for (const PinModel model : parameters.models)
@@ -134,9 +136,8 @@ namespace tribodyn
               if (study_cases[i].pressure_index == p
                   && study_cases[i].model == model)
                 runs.push_back(&results[i]);
-            const double n    = runs.size();
-            double       mean = 0, fr[3] = {0, 0, 0}, M[3] = {0, 0, 0},
-                   within = 0;
+            const double n = runs.size();
+            double mean = 0, fr[3] = {0, 0, 0}, M[3] = {0, 0, 0}, within = 0;
             for (const CaseResult *r : runs)
               {
                 mean += r->mu_mean / n;
@@ -155,7 +156,7 @@ namespace tribodyn
                   between += (r->mu_mean - mean) * (r->mu_mean - mean);
                 between /= (n - 1.) * n;
               }
-            const double se = std::sqrt(std::max(between, within));
+            const double      se = std::sqrt(std::max(between, within));
             const std::string regime
               = contact::classify_regime(fr[0], fr[1], fr[2], threshold);
             const std::string regime_M
@@ -193,18 +194,18 @@ namespace tribodyn
       write_file_atomically(join_path(dir, "table2.csv"), csv.str());
       write_file_atomically(join_path(dir, "table2.md"), md.str());
 
-      JsonValue summary             = JsonValue::object();
-      summary["problem"]            = "study";
-      summary["tribodyn_version"]   = version_string;
-      summary["n_mpi_ranks"]        = dealii::Utilities::MPI::n_mpi_processes(
-        context.mpi_communicator);
-      summary["n_cases"]            = study_cases.size();
-      summary["mesh_size"]          = base.geometry.mesh_size;
-      summary["end_time"]           = base.time.end_time;
-      summary["averaging_window"]   = json_array(
-        {base.output.average_start,
-         base.output.average_end < 0 ? base.time.end_time
-                                     : base.output.average_end});
+      JsonValue summary           = JsonValue::object();
+      summary["problem"]          = "study";
+      summary["tribodyn_version"] = version_string;
+      summary["n_mpi_ranks"]
+        = dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
+      summary["n_cases"]   = study_cases.size();
+      summary["mesh_size"] = base.geometry.mesh_size;
+      summary["end_time"]  = base.time.end_time;
+      summary["averaging_window"]
+        = json_array({base.output.average_start,
+                      base.output.average_end < 0 ? base.time.end_time
+                                                  : base.output.average_end});
       summary["regime_threshold"] = threshold;
       summary["table2"]           = table;
       double case_time            = 0;
@@ -214,7 +215,8 @@ namespace tribodyn
       summary["wall_time_s"]              = wall_time;
       write_file_atomically(join_path(dir, "summary.json"),
                             summary.dump() + "\n");
-      std::cout << "\n" << md.str() << "\nStudy written to " << dir
+      std::cout << "\n"
+                << md.str() << "\nStudy written to " << dir
                 << "/ (table2.csv, table2.md, cases.csv, summary.json, "
                    "cases/*/)"
                 << std::endl;

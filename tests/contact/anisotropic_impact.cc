@@ -23,7 +23,7 @@ namespace
   std::pair<double, double>
   impact(const std::string &material)
   {
-    ContactRun run(R"(
+    ContactRun  run(R"(
       subsection Geometry
         set Width = 1e-3
         set Height = 8e-3
@@ -94,14 +94,20 @@ main(int argc, char **argv)
     std::string name, material;
     double      E_T, E_other;
   };
-  const std::vector<Case> cases = {
-    {"engineering constants E_L = 20, E_T = 60 GPa", engineering(20e9, 60e9), 60e9, 20e9},
-    {"engineering constants E_L = 60, E_T = 20 GPa", engineering(60e9, 20e9), 20e9, 60e9},
-    {"anisotropic C = diag(20, 60, 10) GPa",
-     "set Type = anisotropic\nsubsection Anisotropic\nset Stiffness = "
-     "20e9, 0, 0, 0, 60e9, 0, 0, 0, 10e9\nend\n",
-     60e9,
-     20e9}};
+  const std::vector<Case> cases
+    = {{"engineering constants E_L = 20, E_T = 60 GPa",
+        engineering(20e9, 60e9),
+        60e9,
+        20e9},
+       {"engineering constants E_L = 60, E_T = 20 GPa",
+        engineering(60e9, 20e9),
+        20e9,
+        60e9},
+       {"anisotropic C = diag(20, 60, 10) GPa",
+        "set Type = anisotropic\nsubsection Anisotropic\nset Stiffness = "
+        "20e9, 0, 0, 0, 60e9, 0, 0, 0, 10e9\nend\n",
+        60e9,
+        20e9}};
   std::vector<double> durations;
   for (const Case &c : cases)
     {

@@ -46,7 +46,7 @@ namespace
   std::vector<Statistic>
   statistics(const std::string &h, const std::string &dt)
   {
-    ContactRun run(R"(
+    ContactRun          run(R"(
       subsection Geometry
         set Mesh size = )"
                    + h + R"(
@@ -84,27 +84,27 @@ namespace
       v2.push_back((x - bv.mean) * (x - bv.mean));
     for (const double x : u)
       u2.push_back((x - bu.mean) * (x - bu.mean));
-    const auto   bv2 = block_average(v2), bu2 = block_average(u2);
-    const double sv = std::sqrt(bv2.mean), su = std::sqrt(bu2.mean);
-    const auto   bs = block_average(sep), bf = block_average(face);
-    std::vector<Statistic> r = {
-      {"mean tangential velocity of M (m/s)", bv.mean, bv.stderr_of_mean},
-      {"std of the tangential velocity of M (m/s)",
-       sv,
-       bv2.stderr_of_mean / (2 * sv)},
-      {"std of the tangential displacement of M (m)",
-       su,
-       bu2.stderr_of_mean / (2 * su)},
-      {"separated fraction of all contact nodes (not checked)",
-       bf.mean,
-       bf.stderr_of_mean},
-      {"separated fraction of M (not checked)", bs.mean, bs.stderr_of_mean}};
+    const auto             bv2 = block_average(v2), bu2 = block_average(u2);
+    const double           sv = std::sqrt(bv2.mean), su = std::sqrt(bu2.mean);
+    const auto             bs = block_average(sep), bf = block_average(face);
+    std::vector<Statistic> r
+      = {{"mean tangential velocity of M (m/s)", bv.mean, bv.stderr_of_mean},
+         {"std of the tangential velocity of M (m/s)",
+          sv,
+          bv2.stderr_of_mean / (2 * sv)},
+         {"std of the tangential displacement of M (m)",
+          su,
+          bu2.stderr_of_mean / (2 * su)},
+         {"separated fraction of all contact nodes (not checked)",
+          bf.mean,
+          bf.stderr_of_mean},
+         {"separated fraction of M (not checked)", bs.mean, bs.stderr_of_mean}};
     if (is_root())
       {
         std::cout << "h = " << h << ", dt = " << dt << ":\n";
         for (const auto &s : r)
-          std::cout << "  " << s.name << " = " << s.value << " +- "
-                    << s.stderr_ << "\n";
+          std::cout << "  " << s.name << " = " << s.value << " +- " << s.stderr_
+                    << "\n";
       }
     return r;
   }
@@ -115,24 +115,24 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto base  = statistics("0.25e-3", "5e-9");
+  const auto                               base = statistics("0.25e-3", "5e-9");
   const auto small = statistics("0.25e-3", "2.5e-9");
   const auto fine  = statistics("0.125e-3", "5e-9");
   for (const auto *other : {&small, &fine})
     for (unsigned int i = 0; i < 3; ++i)
       {
-        const double tol = 3 * std::sqrt(base[i].stderr_ * base[i].stderr_
-                                         + (*other)[i].stderr_
-                                             * (*other)[i].stderr_);
+        const double tol
+          = 3
+            * std::sqrt(base[i].stderr_ * base[i].stderr_
+                        + (*other)[i].stderr_ * (*other)[i].stderr_);
         const std::string what
-          = base[i].name + (other == &small ? ": dt 5 vs 2.5 ns"
-                                            : ": h 0.25 vs 0.125 mm");
+          = base[i].name
+            + (other == &small ? ": dt 5 vs 2.5 ns" : ": h 0.25 vs 0.125 mm");
         check(std::abs(base[i].value - (*other)[i].value) <= tol,
-              what + " within 3 standard errors (" + std::to_string(tol)
-                + ")");
+              what + " within 3 standard errors (" + std::to_string(tol) + ")");
         // The mean velocity is about 0: resolved to half the spread.
-        const double tight = i == 0 ? 0.5 * base[1].value
-                                    : 0.25 * std::abs(base[i].value);
+        const double tight
+          = i == 0 ? 0.5 * base[1].value : 0.25 * std::abs(base[i].value);
         check(tol < tight, what + ": tolerance tight enough");
       }
   return result();

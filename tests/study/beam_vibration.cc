@@ -33,8 +33,8 @@ main(int argc, char **argv)
 
   const double L = 40e-3, H = 4e-3, rho = 1770, E = 30e9 / (1 - 0.04);
   const double EI = E * H * H * H / 12, rhoA = rho * H;
-  const double eb = std::pow(4.730040744862704, 2)
-                    * std::sqrt(EI / (rhoA * std::pow(L, 4)));
+  const double eb
+    = std::pow(4.730040744862704, 2) * std::sqrt(EI / (rhoA * std::pow(L, 4)));
   check_relative(timoshenko_free_free_omega(EI, 1e30, rhoA, 0., L),
                  eb,
                  1e-6,
@@ -58,8 +58,7 @@ main(int argc, char **argv)
                      k == 0 ? 6e-3 : 3e-3,
                      "first bending frequency against Timoshenko");
       check(std::abs(r.frequency_hz - r.frequency_reference_hz)
-              < 0.2
-                  * std::abs(r.frequency_hz - r.frequency_euler_bernoulli_hz),
+              < 0.2 * std::abs(r.frequency_hz - r.frequency_euler_bernoulli_hz),
             "5 times closer to Timoshenko than to Euler-Bernoulli");
       check_relative(r.damping_ratio,
                      r.damping_ratio_reference,

@@ -23,13 +23,13 @@ main(int argc, char **argv)
 {
   using namespace tribodyn_test;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const unsigned int n = 1u << 17;
-  std::mt19937_64    rng(12345);
-  std::normal_distribution<double> normal(0., 1.);
+  const unsigned int                       n = 1u << 17;
+  std::mt19937_64                          rng(12345);
+  std::normal_distribution<double>         normal(0., 1.);
 
-  const double phi = 0.9;
+  const double phi       = 0.9;
   double       ratio_sum = 0, naive_ratio_sum = 0;
-  bool         plateaus  = true;
+  bool         plateaus = true;
   for (unsigned int k = 0; k < 8; ++k)
     {
       std::vector<double> x(n);
@@ -64,7 +64,8 @@ main(int argc, char **argv)
   check(std::abs(white.stderr_of_mean * std::sqrt(n) - 1) < 0.1,
         "white noise: stderr = 1/sqrt(n) within 10 %");
 
-  const auto flat = tribodyn::study::block_average(std::vector<double>(1000, 3.));
+  const auto flat
+    = tribodyn::study::block_average(std::vector<double>(1000, 3.));
   check(flat.stderr_of_mean == 0 && flat.mean == 3., "constant series");
   return result();
 }

@@ -160,7 +160,7 @@ namespace tribodyn
     /// Time constant t* of the regularized law during slip.
     enum class RegularizationRate
     {
-      plane_speed, ///< t* = L*/|V(t)| (seed eq. (4))
+      plane_speed,    ///< t* = L*/|V(t)| (seed eq. (4))
       local_slip_rate ///< t* = L*/|[u']| of the node (Prakash-Clifton)
     };
 
@@ -185,11 +185,11 @@ namespace tribodyn
       FrictionLaw      law                  = FrictionLaw::regularized;
       double           friction_coefficient = 0.25;
       /// L*/|V| of the regularized law (s); 1.5e-6 = 300 x 5 ns.
-      double       regularization_time = 1.5e-6;
+      double             regularization_time = 1.5e-6;
       RegularizationRate regularization_rate = RegularizationRate::plane_speed;
       RecontactState     recontact_state     = RecontactState::reset_to_zero;
-      double       pgs_tolerance       = 1e-12;
-      unsigned int pgs_max_iterations  = 50;
+      double             pgs_tolerance       = 1e-12;
+      unsigned int       pgs_max_iterations  = 50;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

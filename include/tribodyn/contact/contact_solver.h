@@ -76,14 +76,14 @@ namespace tribodyn
       double stick_fraction = 0, slip_fraction = 0, separation_fraction = 0;
       double M_stick_fraction = 0, M_slip_fraction = 0,
              M_separation_fraction = 0;
-      std::string  regime;
+      std::string regime;
       /// Regime from the time fractions of all contact node-samples.
-      std::string regime_contact_face;
-      double      normal_force_dominant_frequency_hz = 0;
-      unsigned int n_samples_averaged   = 0;
-      double       wall_time_s          = 0;
-      double       time_loop_s          = 0;
-      double       dof_steps_per_second = 0;
+      std::string  regime_contact_face;
+      double       normal_force_dominant_frequency_hz = 0;
+      unsigned int n_samples_averaged                 = 0;
+      double       wall_time_s                        = 0;
+      double       time_loop_s                        = 0;
+      double       dof_steps_per_second               = 0;
     };
 
     /**
@@ -304,7 +304,7 @@ namespace tribodyn
                    const double       trial,
                    const double       lambda_n) const;
       double
-      node_decay(const ContactNode &node) const;
+                               node_decay(const ContactNode &node) const;
       std::vector<ContactNode> contact_nodes;
       unsigned int             n_contact_nodes_global = 0;
       int                      point_M_index          = -1; // local, or -1
@@ -313,7 +313,7 @@ namespace tribodyn
       double      dt = 0, h = 0, dt_critical = 0, dt_cfl = 0, omega_maximum = 0;
       double      mass_total = 0;
       std::string material_text;
-      FrictionStep  friction_step;
+      FrictionStep friction_step;
       // Plane motion over the current step (t_n -> t_{n+1}): displacement
       // and position at t_{n+1}; decay of the regularized law for the
       // plane speed of this step; L* for the local slip rate.
@@ -335,8 +335,8 @@ namespace tribodyn
       void
       open_contact_face_files(const std::string &dir);
       void
-      close_contact_face_files();
-      double              run_wall_time = 0, loop_wall_time = 0;
+             close_contact_face_files();
+      double run_wall_time = 0, loop_wall_time = 0;
     };
   } // namespace contact
 } // namespace tribodyn

@@ -40,7 +40,6 @@ namespace tribodyn
     }
 
 
-
     /// Von Mises stress of (sigma_xx, sigma_yy, sigma_xy, sigma_zz).
     inline double
     von_mises(const std::array<double, 4> &s)

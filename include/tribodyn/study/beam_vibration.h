@@ -34,7 +34,7 @@ namespace tribodyn
     {
       double length = 40e-3, height = 4e-3;
       double youngs_modulus = 30e9, poisson_ratio = 0.2, density = 1770;
-      double mesh_size      = 0.25e-3;
+      double mesh_size = 0.25e-3;
       /// Stiffness-proportional damping beta (s).
       double damping = 1.5e-7;
       /// Peak initial transverse velocity (m/s).

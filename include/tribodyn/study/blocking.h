@@ -26,11 +26,11 @@ namespace tribodyn
      */
     struct BlockingResult
     {
-      double       mean            = 0;
-      double       naive_stderr    = 0; ///< as if uncorrelated (level 0)
-      double       stderr_of_mean  = 0; ///< plateau value
-      unsigned int plateau_level   = 0;
-      bool         plateau_found   = false;
+      double       mean           = 0;
+      double       naive_stderr   = 0; ///< as if uncorrelated (level 0)
+      double       stderr_of_mean = 0; ///< plateau value
+      unsigned int plateau_level  = 0;
+      bool         plateau_found  = false;
       /// Estimate and its error per level.
       std::vector<double> level_stderr, level_stderr_error;
     };

@@ -27,13 +27,12 @@ namespace tribodyn
     struct StudyParameters
     {
       std::vector<double>   pressures = {0.5e6, 2.5e6, 5e6};
-      std::vector<PinModel> models    = {PinModel::homogeneous_matrix,
-                                         PinModel::homogenized,
-                                         PinModel::meso};
-      unsigned int n_morphologies = 6;
-      unsigned int first_seed     = 1;
-      unsigned int repeats        = 1;
-      double       perturbation   = 1e-6;
+      std::vector<PinModel> models
+        = {PinModel::homogeneous_matrix, PinModel::homogenized, PinModel::meso};
+      unsigned int n_morphologies     = 6;
+      unsigned int first_seed         = 1;
+      unsigned int repeats            = 1;
+      double       perturbation       = 1e-6;
       std::string  boundary_condition = "KUBC";
       unsigned int ranks_per_case     = 1;
       bool         write_case_fields  = false;
@@ -113,12 +112,12 @@ namespace tribodyn
       StudyParameters            parameters;
       contact::ContactParameters base;
       /// The study's parameter file as text (fed to the homogenization runs).
-      std::string                prm_text;
-      std::vector<StudyCase>     study_cases;
+      std::string            prm_text;
+      std::vector<StudyCase> study_cases;
       /// The homogenized pin: stiffness, out-of-plane row, density.
-      contact::VoigtStiffness    homogenized_C;
-      dealii::Tensor<1, 3>       homogenized_c_z;
-      double                     homogenized_density = 0;
+      contact::VoigtStiffness homogenized_C;
+      dealii::Tensor<1, 3>    homogenized_c_z;
+      double                  homogenized_density = 0;
     };
   } // namespace study
 } // namespace tribodyn
