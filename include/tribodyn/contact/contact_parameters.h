@@ -236,6 +236,16 @@ namespace tribodyn
       parse_parameters(dealii::ParameterHandler &prm);
     };
 
+    namespace internal
+    {
+      /// The @p n comma-separated numbers of @p text; InputError naming the
+      /// parameter @p name otherwise.
+      std::vector<double>
+      parse_numbers(const std::string &text,
+                    const unsigned int n,
+                    const std::string &name);
+    } // namespace internal
+
     /**
      * Plane-strain stiffness (Voigt, engineering shear) of a transversely
      * isotropic material with axis L = x and isotropy plane (y, z):
