@@ -225,6 +225,10 @@ namespace tribodyn
       std::string script = parameters.plot_script;
       if (script == "none")
         return;
+      // Debian's python3-matplotlib belongs to /usr/bin/python3 (another
+      // python3 first in PATH may not have it).
+      const std::string python
+        = file_exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
       if (script == "auto")
         {
           script = executable_directory() + "/../scripts/plot_study";
@@ -235,7 +239,8 @@ namespace tribodyn
                         << std::endl;
               return;
             }
-          if (std::system("python3 -c 'import matplotlib' >/dev/null 2>&1")
+          if (std::system(
+                (python + " -c 'import matplotlib' >/dev/null 2>&1").c_str())
               != 0)
             {
               std::cout << "No plots: python3 with matplotlib is not "
@@ -244,7 +249,7 @@ namespace tribodyn
               return;
             }
         }
-      const std::string command = "python3 '" + script + "' '" + dir + "'";
+      const std::string command = python + " '" + script + "' '" + dir + "'";
       if (std::system(command.c_str()) != 0)
         std::cout << "The plot script failed: " << command << std::endl;
     }
