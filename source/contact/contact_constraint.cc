@@ -152,8 +152,16 @@ namespace tribodyn
       double       *av    = a.begin();
       // State before the step (the friction law's tau_n and the status).
       std::vector<ContactNode> before(contact_nodes);
-      for (ContactNode &node : contact_nodes)
-        node.lambda_n = node.lambda_t = 0;
+      // The plane's height under each node, at the predicted position (the
+      // constraint rows are built once per step on the predicted
+      // configuration, as in the node-wise path).
+      std::vector<double> height(contact_nodes.size());
+      for (std::size_t k = 0; k < contact_nodes.size(); ++k)
+        {
+          ContactNode &node = contact_nodes[k];
+          height[k]         = plane_height(node.x + un[node.ix], plane_x_next);
+          node.lambda_n = node.lambda_t = 0;
+        }
       // Rows of node k: normal (dof iy, coefficient 1), tangential (ix, 1).
       auto apply = [&](const unsigned int dof,
                        const double       coefficient,
@@ -172,9 +180,7 @@ namespace tribodyn
               ContactNode &node = contact_nodes[k];
               const double W    = h / node.m; // G M^-1 G^T h, diagonal entry
               // Normal row.
-              const double g
-                = un[node.iy] + gap0
-                  - plane_height(node.x + un[node.ix], plane_x_next);
+              const double g        = un[node.iy] + gap0 - height[k];
               const double lambda_n = std::max(0., node.lambda_n - g / W);
               apply(node.iy, 1., lambda_n - node.lambda_n, node.m);
               change = std::max(change, std::abs(lambda_n - node.lambda_n));
