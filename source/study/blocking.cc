@@ -8,16 +8,35 @@ namespace tribodyn
   {
     BlockingResult
     block_average(const std::vector<double> &series,
-                  const unsigned int         min_blocks)
+                  const unsigned int         min_blocks,
+                  const unsigned int         base_block)
     {
       BlockingResult r;
       if (series.empty())
         return r;
-      std::vector<double> x   = series;
-      double              sum = 0;
-      for (const double v : x)
+      double sum = 0;
+      for (const double v : series)
         sum += v;
-      r.mean = sum / x.size();
+      r.mean = sum / series.size();
+      std::vector<double> x;
+      if (base_block > 1 && series.size() >= 2 * base_block)
+        {
+          // Means of whole base blocks; the mean is then that of the
+          // samples they hold.
+          const std::size_t n_blocks = series.size() / base_block;
+          double            kept     = 0;
+          for (std::size_t b = 0; b < n_blocks; ++b)
+            {
+              double s = 0;
+              for (std::size_t i = 0; i < base_block; ++i)
+                s += series[b * base_block + i];
+              x.push_back(s / base_block);
+              kept += s;
+            }
+          r.mean = kept / (n_blocks * base_block);
+        }
+      else
+        x = series;
       // Levels with at least max(min_blocks, 2) blocks.
       const std::size_t smallest = std::max(2u, min_blocks);
       while (x.size() >= smallest)
@@ -35,18 +54,22 @@ namespace tribodyn
             half[i] = 0.5 * (x[2 * i] + x[2 * i + 1]);
           x.swap(half);
         }
+      // As if the samples were uncorrelated.
+      {
+        const double n    = static_cast<double>(series.size());
+        double       mean = 0, var = 0;
+        for (const double v : series)
+          mean += v / n;
+        for (const double v : series)
+          var += (v - mean) * (v - mean);
+        r.naive_stderr = n > 1 ? std::sqrt(var / n / (n - 1.)) : 0.;
+      }
       if (r.level_stderr.empty())
         {
           // Too short to block: the naive estimate of what there is.
-          const double n   = static_cast<double>(series.size());
-          double       var = 0;
-          for (const double v : series)
-            var += (v - r.mean) * (v - r.mean);
-          r.naive_stderr = r.stderr_of_mean
-            = n > 1 ? std::sqrt(var / n / (n - 1.)) : 0.;
+          r.stderr_of_mean = r.naive_stderr;
           return r;
         }
-      r.naive_stderr            = r.level_stderr.front();
       const std::size_t L       = r.level_stderr.size();
       double            largest = 0;
       for (std::size_t k = 0; k < L; ++k)

@@ -275,8 +275,19 @@ namespace tribodyn
           for (const contact::Sample &s : problem.samples())
             if (s.time >= t0 && s.time <= t1)
               mu.push_back(s.mu_global);
-          const BlockingResult       b = block_average(mu);
-          const contact::RunSummary &s = problem.summary();
+          // Base blocks of one period of mu_global's dominant oscillation
+          // (the pin's shear mode): each block averages whole cycles.
+          const contact::RunSummary &summary = problem.summary();
+          const auto                &series  = problem.samples();
+          const double               spacing = series.size() > 1
+                                                 ? series[1].time - series[0].time
+                                                 : cp.time.time_step;
+          const unsigned int         base_block
+            = summary.dominant_frequency_hz > 0 ? std::max<long>(
+                1, std::lround(1. / (summary.dominant_frequency_hz * spacing)))
+                                                : 1;
+          const BlockingResult       b = block_average(mu, 8, base_block);
+          const contact::RunSummary &s = summary;
           CaseResult                 r;
           r.mu_mean               = s.mu_global_mean;
           r.mu_stderr             = b.stderr_of_mean;

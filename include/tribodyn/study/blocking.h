@@ -35,9 +35,21 @@ namespace tribodyn
       std::vector<double> level_stderr, level_stderr_error;
     };
 
+    /**
+     * With @p base_block > 1 the series is first cut into consecutive blocks
+     * of base_block samples (the remainder at the end is dropped from the
+     * blocking, not from the mean), and the halving starts from their means.
+     * For a series with a dominant oscillation (mu_global of the pin: its
+     * 71 kHz shear mode), base_block = one period makes every block average
+     * whole cycles; otherwise the blocked estimate peaks at blocks of about
+     * half a period (the oscillation's share, not the statistical error) and
+     * only falls back beyond a period, often past the last level with
+     * enough blocks.
+     */
     BlockingResult
     block_average(const std::vector<double> &series,
-                  const unsigned int         min_blocks = 16);
+                  const unsigned int         min_blocks = 16,
+                  const unsigned int         base_block = 1);
   } // namespace study
 } // namespace tribodyn
 
