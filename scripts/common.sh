@@ -17,7 +17,8 @@ export OMPI_MCA_rmaps_base_oversubscribe=1
 export OMPI_MCA_btl_vader_single_copy_mechanism=none
 
 TRIBODYN_PACKAGES=(libdeal.ii-dev libeigen3-dev numdiff python3
-                   python3-matplotlib cmake g++ make openmpi-bin)
+                   python3-matplotlib cmake g++ make openmpi-bin
+                   nlohmann-json3-dev libfftw3-dev pkg-config)
 
 tribodyn_install_packages() {
   local missing=()

@@ -17,7 +17,7 @@ namespace tribodyn
     using dealii::Patterns::List;
     using dealii::Patterns::Selection;
 
-    namespace
+    namespace internal
     {
       std::vector<double>
       parse_numbers(const std::string &text,
@@ -45,7 +45,7 @@ namespace tribodyn
                              + "'.");
         return values;
       }
-    } // namespace
+    } // namespace internal
 
 
     void
@@ -109,155 +109,6 @@ namespace tribodyn
 
 
     void
-    ContactMaterialParameters::declare_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Material");
-      prm.declare_entry(
-        "Type",
-        "isotropic",
-        Selection("isotropic|anisotropic|engineering constants|"
-                  "homogenization summary|morphology"),
-        "Constitutive model of the pin. 'isotropic': subsection Isotropic. "
-        "'anisotropic': the plane-strain stiffness of subsection "
-        "Anisotropic. 'engineering constants': transversely isotropic with "
-        "axis L = x (subsection Engineering constants, defaults = seed "
-        "Table 1 homogenized values). 'homogenization summary': the apparent "
-        "stiffness C of a homogenization run's summary.json. 'morphology': a "
-        "heterogeneous (meso) pin from subsection Morphology with the phases "
-        "of subsections Matrix and Heterogeneity.");
-      prm.declare_entry("Kinematics",
-                        "small strain",
-                        Selection("small strain|large deformation"),
-                        "'small strain': linear elasticity. 'large "
-                        "deformation': total Lagrangian, St Venant-Kirchhoff "
-                        "(S = C:E with the Green-Lagrange strain E).");
-      prm.declare_entry("Density",
-                        "1770",
-                        Double(),
-                        "Density (kg/m^3) of the homogeneous anisotropic "
-                        "materials (types anisotropic, engineering constants, "
-                        "homogenization summary).");
-      prm.enter_subsection("Isotropic");
-      IsotropicElasticMaterial::declare_parameters(prm, 30e9, 0.2, 1770.);
-      prm.leave_subsection();
-      prm.enter_subsection("Anisotropic");
-      prm.declare_entry("Stiffness",
-                        "33.33e9, 8.33e9, 0, 8.33e9, 33.33e9, 0, 0, 0, 12.5e9",
-                        List(Double(), 9, 9, ","),
-                        "Plane-strain stiffness C (Pa), 9 numbers row by row, "
-                        "Voigt order (xx, yy, xy) with the engineering shear "
-                        "strain: sigma = C (eps_xx, eps_yy, gamma_xy).");
-      prm.declare_entry("Out-of-plane stiffness",
-                        "8.33e9, 8.33e9, 0",
-                        List(Double(), 3, 3, ","),
-                        "Row c_z with sigma_zz = c_z . (eps_xx, eps_yy, "
-                        "gamma_xy) (Pa); used only for the von Mises output.");
-      prm.leave_subsection();
-      prm.enter_subsection("Engineering constants");
-      prm.declare_entry("E_L",
-                        "31.9e9",
-                        Double(),
-                        "Young modulus along x (Pa).");
-      prm.declare_entry("E_T",
-                        "34e9",
-                        Double(),
-                        "Young modulus along y, z (Pa).");
-      prm.declare_entry("nu_LT", "0.2", Double(), "Poisson ratio nu_LT.");
-      prm.declare_entry("nu_TT", "0.2", Double(), "Poisson ratio nu_TT'.");
-      prm.declare_entry("G_LT", "13.3e9", Double(), "Shear modulus G_LT (Pa).");
-      prm.leave_subsection();
-      prm.enter_subsection("Homogenization summary");
-      prm.declare_entry("File",
-                        "",
-                        dealii::Patterns::Anything(),
-                        "summary.json written by a 'set Problem = "
-                        "homogenization' run.");
-      prm.declare_entry("Boundary condition",
-                        "KUBC",
-                        Selection("KUBC|SUBC|periodic"),
-                        "Which apparent stiffness of the file to use.");
-      prm.leave_subsection();
-      prm.enter_subsection("Matrix");
-      IsotropicElasticMaterial::declare_parameters(prm, 30e9, 0.2, 1770.);
-      prm.leave_subsection();
-      prm.enter_subsection("Heterogeneity");
-      IsotropicElasticMaterial::declare_parameters(prm, 80e9, 0.2, 1770.);
-      prm.leave_subsection();
-      prm.leave_subsection();
-    }
-
-
-    void
-    ContactMaterialParameters::parse_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Material");
-      const std::string t = prm.get("Type");
-      type                = t == "isotropic"               ? Type::isotropic
-                            : t == "anisotropic"           ? Type::anisotropic
-                            : t == "engineering constants" ? Type::engineering_constants
-                            : t == "homogenization summary" ? Type::homogenization_summary
-                                                            : Type::morphology;
-      kinematics          = prm.get("Kinematics") == "small strain"
-                              ? Kinematics::small_strain
-                              : Kinematics::large_deformation;
-      density             = prm.get_double("Density");
-      check_parameter_range("Material/Density", density, 0, 1e6, true, false);
-      prm.enter_subsection("Isotropic");
-      isotropic.parse_parameters(prm, "Material/Isotropic");
-      prm.leave_subsection();
-      prm.enter_subsection("Anisotropic");
-      {
-        const auto c = parse_numbers(prm.get("Stiffness"),
-                                     9,
-                                     "Material/Anisotropic/Stiffness");
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = 0; j < 3; ++j)
-            anisotropic_stiffness[i][j] = c[3 * i + j];
-        const auto z = parse_numbers(prm.get("Out-of-plane stiffness"),
-                                     3,
-                                     "Material/Anisotropic/Out-of-plane "
-                                     "stiffness");
-        for (unsigned int i = 0; i < 3; ++i)
-          anisotropic_c_z[i] = z[i];
-      }
-      prm.leave_subsection();
-      prm.enter_subsection("Engineering constants");
-      E_L   = prm.get_double("E_L");
-      E_T   = prm.get_double("E_T");
-      nu_LT = prm.get_double("nu_LT");
-      nu_TT = prm.get_double("nu_TT");
-      G_LT  = prm.get_double("G_LT");
-      prm.leave_subsection();
-      prm.enter_subsection("Homogenization summary");
-      summary_file = prm.get("File");
-      summary_key  = prm.get("Boundary condition");
-      prm.leave_subsection();
-      prm.enter_subsection("Matrix");
-      matrix.parse_parameters(prm, "Material/Matrix");
-      prm.leave_subsection();
-      prm.enter_subsection("Heterogeneity");
-      heterogeneity.parse_parameters(prm, "Material/Heterogeneity");
-      prm.leave_subsection();
-      prm.leave_subsection();
-
-      if (type == Type::engineering_constants)
-        {
-          const std::string s = "Material/Engineering constants/";
-          check_parameter_range(s + "E_L", E_L, 0, 1e15, true, false);
-          check_parameter_range(s + "E_T", E_T, 0, 1e15, true, false);
-          check_parameter_range(s + "G_LT", G_LT, 0, 1e15, true, false);
-          check_parameter_range(s + "nu_TT", nu_TT, -1, 1, true, true);
-          check_parameter_range(s + "nu_LT", nu_LT, -1, 1, true, true);
-        }
-      if (type == Type::homogenization_summary)
-        check_parameter(!summary_file.empty(),
-                        "Material/Homogenization summary/File",
-                        "the path of a homogenization summary.json when "
-                        "'Material/Type = homogenization summary'");
-    }
-
-
-    void
     LoadingParameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Loading");
@@ -291,6 +142,42 @@ namespace tribodyn
                         Double(0),
                         "Initial distance between the bottom face and the "
                         "plane (m).");
+      prm.declare_entry("Plane start time",
+                        "0",
+                        Double(0),
+                        "The plane is at rest until this time (the pressure "
+                        "preloads the pin), then its velocity ramps to "
+                        "'Plane velocity' (s). 0: it moves from the start.");
+      prm.declare_entry("Plane velocity ramp time",
+                        "0",
+                        Double(0),
+                        "Duration of the smooth ramp V(t) = V (1 - cos(pi "
+                        "(t - t_start)/t_v))/2 of the plane velocity (s); 0 "
+                        "starts the plane at V at once.");
+      prm.declare_entry("Surface imperfection amplitude",
+                        "0",
+                        Double(0),
+                        "Absolute amplitude A of a waviness of the plane (m): "
+                        "its surface is y = -gap - A (1 - cos(2 pi xi / "
+                        "lambda))/2 with xi the coordinate along the moving "
+                        "plane. Does not scale with P, so it breaks the P/|V| "
+                        "invariance of the model. 0: flat plane.");
+      prm.declare_entry("Surface imperfection wavelength",
+                        "2e-3",
+                        Double(0),
+                        "Wavelength lambda of that waviness (m).");
+      prm.declare_entry("Initial velocity perturbation",
+                        "0",
+                        Double(0),
+                        "Amplitude a of a uniform random initial velocity in "
+                        "[-a, a] added to every free dof (m/s); repeats of a "
+                        "study use it to sample the chaotic dynamics.");
+      prm.declare_entry("Perturbation seed",
+                        "1",
+                        Integer(0),
+                        "Seed of that random perturbation (the same seed "
+                        "gives the same perturbation on any number of "
+                        "ranks).");
       prm.leave_subsection();
     }
 
@@ -303,13 +190,35 @@ namespace tribodyn
       ramp_time           = prm.get_double("Ramp time");
       plane_velocity      = prm.get_double("Plane velocity");
       top_held_in_x       = prm.get_bool("Top face held in x");
-      const auto v        = parse_numbers(prm.get("Initial velocity"),
-                                   2,
-                                   "Loading/Initial velocity");
+      const auto v        = internal::parse_numbers(prm.get("Initial velocity"),
+                                             2,
+                                             "Loading/Initial velocity");
       initial_velocity[0] = v[0];
       initial_velocity[1] = v[1];
       initial_gap         = prm.get_double("Initial gap");
+      plane_start_time    = prm.get_double("Plane start time");
+      plane_velocity_ramp_time = prm.get_double("Plane velocity ramp time");
+      imperfection_amplitude = prm.get_double("Surface imperfection amplitude");
+      imperfection_wavelength
+        = prm.get_double("Surface imperfection wavelength");
+      velocity_perturbation = prm.get_double("Initial velocity perturbation");
+      perturbation_seed     = prm.get_integer("Perturbation seed");
       prm.leave_subsection();
+      check_parameter_range("Loading/Surface imperfection wavelength",
+                            imperfection_wavelength,
+                            0,
+                            1e3,
+                            true,
+                            false);
+      check_parameter_range("Loading/Surface imperfection amplitude",
+                            imperfection_amplitude,
+                            0,
+                            0.1 * imperfection_wavelength,
+                            false,
+                            false,
+                            "The contact normal is taken along y: the "
+                            "waviness must be shallow (amplitude at most a "
+                            "tenth of the wavelength).");
       check_parameter_range("Loading/Pressure",
                             pressure,
                             0,
@@ -320,6 +229,36 @@ namespace tribodyn
                             "must not be negative.");
       check_parameter_range(
         "Loading/Plane velocity", plane_velocity, -1e4, 1e4, false, false);
+    }
+
+
+    double
+    LoadingParameters::plane_velocity_at(const double t) const
+    {
+      if (t >= plane_start_time + plane_velocity_ramp_time)
+        return plane_velocity;
+      if (t <= plane_start_time)
+        return 0.;
+      return 0.5 * plane_velocity
+             * (1.
+                - std::cos(M_PI * (t - plane_start_time)
+                           / plane_velocity_ramp_time));
+    }
+
+
+    double
+    LoadingParameters::plane_position_at(const double t) const
+    {
+      if (t <= plane_start_time)
+        return 0.;
+      const double tv = plane_velocity_ramp_time;
+      const double s  = std::min(t - plane_start_time, tv);
+      double       x  = 0.5 * plane_velocity * s;
+      if (tv > 0)
+        x -= 0.5 * plane_velocity * tv / M_PI * std::sin(M_PI * s / tv);
+      if (t > plane_start_time + tv)
+        x += plane_velocity * (t - plane_start_time - tv);
+      return x;
     }
 
 
@@ -446,6 +385,22 @@ namespace tribodyn
                         "50",
                         Integer(1, 100000),
                         "Projected Gauss-Seidel: iteration limit per step.");
+      prm.declare_entry("Regularization rate",
+                        "plane speed",
+                        Selection("plane speed|local slip rate"),
+                        "Time constant t* of the regularized law during slip: "
+                        "'plane speed': t* = L*/|V(t)| (seed eq. (4)); 'local "
+                        "slip rate': t* = L*/|[u']| with the node's slip rate "
+                        "of the previous step (Prakash-Clifton), L* = "
+                        "'Regularization time' x |Plane velocity|.");
+      prm.declare_entry("State on re-contact",
+                        "reset to zero",
+                        Selection("reset to zero|keep|reset to mu sigma"),
+                        "Friction state tau of the regularized law when a "
+                        "separated node touches the plane again: 'reset to "
+                        "zero' (tau starts from 0), 'keep' (tau of the last "
+                        "contact step), 'reset to mu sigma' (tau starts at "
+                        "alpha mu |sigma|, Coulomb on the first step).");
       prm.leave_subsection();
     }
 
@@ -465,6 +420,14 @@ namespace tribodyn
       regularization_time  = prm.get_double("Regularization time");
       pgs_tolerance        = prm.get_double("Gauss-Seidel tolerance");
       pgs_max_iterations   = prm.get_integer("Gauss-Seidel max iterations");
+      regularization_rate  = prm.get("Regularization rate") == "plane speed"
+                               ? RegularizationRate::plane_speed
+                               : RegularizationRate::local_slip_rate;
+      const std::string rc = prm.get("State on re-contact");
+      recontact_state      = rc == "keep" ? RecontactState::keep
+                             : rc == "reset to zero"
+                               ? RecontactState::reset_to_zero
+                               : RecontactState::reset_to_mu_sigma;
       prm.leave_subsection();
       check_parameter_range("Contact/Friction coefficient",
                             friction_coefficient,
@@ -505,6 +468,22 @@ namespace tribodyn
                         Double(),
                         "End of that window (s); negative: the end of the "
                         "run.");
+      prm.declare_entry("Regime threshold",
+                        "0.01",
+                        Double(0, 1),
+                        "A status (stick, slip, separation) counts in the "
+                        "name of the regime when its time fraction over the "
+                        "window is above this (for point M, and for all the "
+                        "contact node-samples of the face).");
+      prm.declare_entry(
+        "Contact face interval",
+        "0",
+        Integer(0),
+        "Write the space-time series of the contact face "
+        "(contact_face_lambda_n.csv, contact_face_lambda_t.csv, "
+        "contact_face_status.csv: one row per time, one "
+        "column per contact node) every this many samples; 0 "
+        "writes none.");
       prm.leave_subsection();
     }
 
@@ -513,10 +492,12 @@ namespace tribodyn
     ContactOutputParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Output");
-      sample_interval = prm.get_integer("Sample interval");
-      field_interval  = prm.get_double("Field interval");
-      average_start   = prm.get_double("Averaging start time");
-      average_end     = prm.get_double("Averaging end time");
+      sample_interval       = prm.get_integer("Sample interval");
+      field_interval        = prm.get_double("Field interval");
+      average_start         = prm.get_double("Averaging start time");
+      average_end           = prm.get_double("Averaging end time");
+      regime_threshold      = prm.get_double("Regime threshold");
+      contact_face_interval = prm.get_integer("Contact face interval");
       prm.leave_subsection();
       if (average_end >= 0)
         check_parameter(average_end > average_start,
@@ -549,110 +530,15 @@ namespace tribodyn
       time.parse_parameters(prm);
       contact.parse_parameters(prm);
       output.parse_parameters(prm);
+      if (contact.regularization_rate == RegularizationRate::local_slip_rate)
+        check_parameter(loading.plane_velocity != 0,
+                        "Contact/Regularization rate",
+                        "'plane speed' when 'Loading/Plane velocity' is 0 (L* "
+                        "= Regularization time x |V| would vanish)");
       check_parameter(output.average_start < time.end_time,
                       "Output/Averaging start time",
                       "a time before 'Time integration/End time' ("
                         + format_number(time.end_time) + " s)");
-    }
-
-
-    VoigtStiffness
-    transversely_isotropic_plane_strain(const double          E_L,
-                                        const double          E_T,
-                                        const double          nu_LT,
-                                        const double          nu_TT,
-                                        const double          G_LT,
-                                        dealii::Tensor<1, 3> &c_z)
-    {
-      // Normal part of the 3D compliance, axes (x = L, y = T, z = T').
-      double S[3][3] = {{1. / E_L, -nu_LT / E_L, -nu_LT / E_L},
-                        {-nu_LT / E_L, 1. / E_T, -nu_TT / E_T},
-                        {-nu_LT / E_L, -nu_TT / E_T, 1. / E_T}};
-      // Plane strain: eps_zz = 0 gives sigma_zz = -(S31 s_xx + S32 s_yy)/S33,
-      // so the in-plane compliance is S_ij - S_i3 S_3j / S33.
-      const double a   = S[0][0] - S[0][2] * S[2][0] / S[2][2];
-      const double b   = S[0][1] - S[0][2] * S[2][1] / S[2][2];
-      const double d   = S[1][1] - S[1][2] * S[2][1] / S[2][2];
-      const double det = a * d - b * b;
-      if (!(det > 0) || !(a > 0))
-        throw InputError("The engineering constants (E_L, E_T, nu_LT, nu_TT, "
-                         "G_LT) do not give a positive definite plane-strain "
-                         "stiffness; check 'Material/Engineering "
-                         "constants'.");
-      VoigtStiffness C;
-      C[0][0] = d / det;
-      C[0][1] = C[1][0] = -b / det;
-      C[1][1]           = a / det;
-      C[2][2]           = G_LT;
-      for (unsigned int j = 0; j < 2; ++j)
-        c_z[j] = -(S[2][0] * C[0][j] + S[2][1] * C[1][j]) / S[2][2];
-      c_z[2] = 0;
-      return C;
-    }
-
-
-    VoigtStiffness
-    read_homogenization_stiffness(const std::string    &file,
-                                  const std::string    &key,
-                                  dealii::Tensor<1, 3> &c_z)
-    {
-      namespace pt = boost::property_tree;
-      pt::ptree tree;
-      {
-        std::ifstream in(file);
-        if (!in)
-          throw InputError("Cannot read the homogenization summary '" + file
-                           + "' ('Material/Homogenization summary/File'): it "
-                             "does not exist or is not readable. Run 'set "
-                             "Problem = homogenization' first; it writes "
-                             "OUTPUT_DIRECTORY/summary.json.");
-        try
-          {
-            pt::read_json(in, tree);
-          }
-        catch (const std::exception &e)
-          {
-            throw InputError("The homogenization summary '" + file
-                             + "' is not valid JSON: " + e.what());
-          }
-      }
-      const auto entry = tree.get_child_optional(key);
-      if (!entry || !entry->get_child_optional("C"))
-        throw InputError("The homogenization summary '" + file
-                         + "' has no stiffness '" + key
-                         + ".C'; was it computed with that boundary "
-                           "condition? Choose another 'Material/"
-                           "Homogenization summary/Boundary condition'.");
-      VoigtStiffness C;
-      unsigned int   i = 0;
-      for (const auto &row : entry->get_child("C"))
-        {
-          unsigned int j = 0;
-          for (const auto &value : row.second)
-            {
-              if (i < 3 && j < 3)
-                C[i][j] = value.second.get_value<double>();
-              ++j;
-            }
-          if (j != 3)
-            i = 99;
-          ++i;
-        }
-      if (i != 3)
-        throw InputError("The stiffness '" + key + ".C' of '" + file
-                         + "' is not a 3x3 array.");
-      c_z = dealii::Tensor<1, 3>();
-      if (const auto z = entry->get_child_optional("c_z"))
-        {
-          unsigned int k = 0;
-          for (const auto &value : *z)
-            if (k < 3)
-              c_z[k++] = value.second.get_value<double>();
-        }
-      if (!(C[0][0] > 0 && C[1][1] > 0 && C[2][2] > 0))
-        throw InputError("The stiffness '" + key + ".C' of '" + file
-                         + "' is not positive definite.");
-      return C;
     }
   } // namespace contact
 } // namespace tribodyn

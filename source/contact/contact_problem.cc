@@ -33,6 +33,14 @@ namespace tribodyn
     }
 
 
+    ContactProblem::ContactProblem(const ContactParameters &parameters,
+                                   const RunContext        &context)
+        : context(context)
+        , parameters(parameters)
+    {
+    }
+
+
     namespace
     {
       const char *
@@ -111,6 +119,8 @@ namespace tribodyn
         dealii::TimerOutput::Scope scope(timer, "summary");
         s = solver.summarize(context.output_directory);
       }
+      recorded_samples       = solver.samples();
+      run_summary            = s;
       const double wall_time = std::chrono::duration<double>(
                                  std::chrono::steady_clock::now() - start)
                                  .count();
@@ -141,6 +151,10 @@ namespace tribodyn
       M["separation_fraction"]         = s.M_separation_fraction;
       summary["point_M"]               = M;
       summary["regime"]                = s.regime;
+      summary["regime_contact_face"]   = s.regime_contact_face;
+      summary["regime_threshold"]      = parameters.output.regime_threshold;
+      summary["normal_force_dominant_frequency_hz"]
+        = s.normal_force_dominant_frequency_hz;
       summary["n_dofs"] = static_cast<unsigned long long>(solver.n_dofs());
       summary["n_contact_nodes"]      = solver.n_contact_nodes();
       summary["n_steps"]              = solver.n_steps_done();

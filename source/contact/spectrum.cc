@@ -1,4 +1,5 @@
 #include <cmath>
+#include <fftw3.h>
 #include <tribodyn/contact/spectrum.h>
 
 namespace tribodyn
@@ -8,35 +9,16 @@ namespace tribodyn
     void
     fft(std::vector<std::complex<double>> &data)
     {
-      const std::size_t n = data.size();
-      // Bit reversal.
-      for (std::size_t i = 1, j = 0; i < n; ++i)
-        {
-          std::size_t bit = n >> 1;
-          for (; j & bit; bit >>= 1)
-            j ^= bit;
-          j ^= bit;
-          if (i < j)
-            std::swap(data[i], data[j]);
-        }
-      for (std::size_t length = 2; length <= n; length <<= 1)
-        {
-          const double angle = -2. * M_PI / static_cast<double>(length);
-          const std::complex<double> root(std::cos(angle), std::sin(angle));
-          for (std::size_t start = 0; start < n; start += length)
-            {
-              std::complex<double> w(1.);
-              for (std::size_t k = 0; k < length / 2; ++k)
-                {
-                  const std::complex<double> even = data[start + k];
-                  const std::complex<double> odd
-                    = data[start + k + length / 2] * w;
-                  data[start + k]              = even + odd;
-                  data[start + k + length / 2] = even - odd;
-                  w *= root;
-                }
-            }
-        }
+      // FFTW, in place (std::complex<double> and fftw_complex have the same
+      // layout). FFTW_ESTIMATE: no timing runs, the plan is made in
+      // microseconds; one transform per run does not need more.
+      if (data.size() < 2)
+        return;
+      fftw_complex *d    = reinterpret_cast<fftw_complex *>(data.data());
+      fftw_plan     plan = fftw_plan_dft_1d(
+        static_cast<int>(data.size()), d, d, FFTW_FORWARD, FFTW_ESTIMATE);
+      fftw_execute(plan);
+      fftw_destroy_plan(plan);
     }
 
 

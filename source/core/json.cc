@@ -1,6 +1,5 @@
 #include <cmath>
-#include <iomanip>
-#include <sstream>
+#include <nlohmann/json.hpp>
 #include <tribodyn/core/json.h>
 
 namespace tribodyn
@@ -111,112 +110,63 @@ namespace tribodyn
   }
 
 
-  namespace
+  nlohmann::ordered_json
+  JsonValue::to_library() const
   {
-    std::string
-    escape(const std::string &text)
-    {
-      std::ostringstream out;
-      for (const char c : text)
-        switch (c)
+    switch (value_type)
+      {
+        case Type::null:
+          return nullptr;
+        case Type::boolean:
+          return bool_value;
+        case Type::number:
+          if (!std::isfinite(number_value))
+            return nullptr;
+          if (number_value == std::round(number_value)
+              && std::abs(number_value) < 1e15)
+            return static_cast<long long>(number_value);
+          return number_value;
+        case Type::string:
+          return string_value;
+        case Type::array:
           {
-            case '"':
-              out << "\\\"";
-              break;
-            case '\\':
-              out << "\\\\";
-              break;
-            case '\n':
-              out << "\\n";
-              break;
-            case '\t':
-              out << "\\t";
-              break;
-            default:
-              if (static_cast<unsigned char>(c) < 0x20)
-                out << "\\u" << std::hex << std::setw(4) << std::setfill('0')
-                    << static_cast<int>(c) << std::dec;
-              else
-                out << c;
+            nlohmann::ordered_json a = nlohmann::ordered_json::array();
+            for (const auto &v : array_values)
+              a.push_back(v.to_library());
+            return a;
           }
-      return out.str();
-    }
-  } // namespace
+        case Type::object:
+          {
+            nlohmann::ordered_json o = nlohmann::ordered_json::object();
+            for (const auto &entry : object_values)
+              o[entry.first] = entry.second.to_library();
+            return o;
+          }
+      }
+    return nullptr;
+  }
 
 
   std::string
   JsonValue::dump(const unsigned int indent) const
   {
-    const std::string  pad(indent + 2, ' ');
-    const std::string  end_pad(indent, ' ');
-    std::ostringstream out;
-    switch (value_type)
+    // nlohmann-json writes numbers with the shortest representation that
+    // reads back to the same double (round-trip exact) and escapes strings.
+    std::string text = to_library().dump(2);
+    if (indent > 0)
       {
-        case Type::null:
-          out << "null";
-          break;
-        case Type::boolean:
-          out << (bool_value ? "true" : "false");
-          break;
-        case Type::number:
-          if (std::isfinite(number_value))
-            {
-              if (number_value == std::round(number_value)
-                  && std::abs(number_value) < 1e15)
-                out << static_cast<long long>(number_value);
-              else
-                out << std::setprecision(17) << number_value;
-            }
-          else
-            out << "null";
-          break;
-        case Type::string:
-          out << '"' << escape(string_value) << '"';
-          break;
-        case Type::array:
+        // Nested use: indent every line after the first.
+        const std::string pad(indent, ' ');
+        std::string       shifted;
+        for (const char c : text)
           {
-            // Arrays of numbers stay on one line (matrices read well).
-            bool all_numbers = true;
-            for (const auto &v : array_values)
-              all_numbers = all_numbers
-                            && (v.value_type == Type::number
-                                || v.value_type == Type::null);
-            if (array_values.empty())
-              out << "[]";
-            else if (all_numbers)
-              {
-                out << "[";
-                for (unsigned int i = 0; i < array_values.size(); ++i)
-                  out << (i > 0 ? ", " : "") << array_values[i].dump(indent);
-                out << "]";
-              }
-            else
-              {
-                out << "[\n";
-                for (unsigned int i = 0; i < array_values.size(); ++i)
-                  out << pad << array_values[i].dump(indent + 2)
-                      << (i + 1 < array_values.size() ? ",\n" : "\n");
-                out << end_pad << "]";
-              }
-            break;
+            shifted += c;
+            if (c == '\n')
+              shifted += pad;
           }
-        case Type::object:
-          {
-            if (object_values.empty())
-              {
-                out << "{}";
-                break;
-              }
-            out << "{\n";
-            for (unsigned int i = 0; i < object_values.size(); ++i)
-              out << pad << '"' << escape(object_values[i].first)
-                  << "\": " << object_values[i].second.dump(indent + 2)
-                  << (i + 1 < object_values.size() ? ",\n" : "\n");
-            out << end_pad << "}";
-            break;
-          }
+        text = shifted;
       }
-    return out.str();
+    return text;
   }
 
 

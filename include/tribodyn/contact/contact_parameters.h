@@ -95,6 +95,19 @@ namespace tribodyn
       dealii::Tensor<1, 2> initial_velocity;
       /// Initial distance between the pin's bottom face and the plane (m).
       double initial_gap = 0.;
+      /// The plane is at rest until this time, then its velocity ramps
+      /// smoothly to V over the velocity ramp time (s).
+      double plane_start_time         = 0.;
+      double plane_velocity_ramp_time = 0.;
+      /// Waviness of the plane (absolute, m): its surface is
+      /// y = -gap - A (1 - cos(2 pi xi / lambda)) / 2, xi the coordinate
+      /// along the plane (it moves with the plane).
+      double imperfection_amplitude  = 0.;
+      double imperfection_wavelength = 2e-3;
+      /// Uniform random initial velocity in [-a, a] per dof (m/s), seeded by
+      /// the perturbation seed and the global dof index (rank independent).
+      double       velocity_perturbation = 0.;
+      unsigned int perturbation_seed     = 1;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -104,6 +117,18 @@ namespace tribodyn
       /// The pressure at time t (smooth ramp).
       double
       pressure_at(const double t) const;
+      /// Velocity of the plane at time t (m/s).
+      double
+      plane_velocity_at(const double t) const;
+      /// Displacement of the plane along x from 0 to t (m).
+      double
+      plane_position_at(const double t) const;
+      /// True when the plane moves at the constant V from t = 0 on.
+      bool
+      constant_plane_velocity() const
+      {
+        return plane_start_time == 0 && plane_velocity_ramp_time == 0;
+      }
     };
 
     /// Subsection "Time integration": the beta2 scheme.
@@ -132,6 +157,21 @@ namespace tribodyn
       regularized ///< simplified Prakash-Clifton law, seed 001 eq. (4)
     };
 
+    /// Time constant t* of the regularized law during slip.
+    enum class RegularizationRate
+    {
+      plane_speed,    ///< t* = L*/|V(t)| (seed eq. (4))
+      local_slip_rate ///< t* = L*/|[u']| of the node (Prakash-Clifton)
+    };
+
+    /// Friction state tau of a node that comes back into contact.
+    enum class RecontactState
+    {
+      reset_to_zero,
+      keep,
+      reset_to_mu_sigma
+    };
+
     enum class ContactAlgorithm
     {
       node_wise, ///< closed form per node (rigid plane, lumped mass)
@@ -145,9 +185,11 @@ namespace tribodyn
       FrictionLaw      law                  = FrictionLaw::regularized;
       double           friction_coefficient = 0.25;
       /// L*/|V| of the regularized law (s); 1.5e-6 = 300 x 5 ns.
-      double       regularization_time = 1.5e-6;
-      double       pgs_tolerance       = 1e-12;
-      unsigned int pgs_max_iterations  = 50;
+      double             regularization_time = 1.5e-6;
+      RegularizationRate regularization_rate = RegularizationRate::plane_speed;
+      RecontactState     recontact_state     = RecontactState::reset_to_zero;
+      double             pgs_tolerance       = 1e-12;
+      unsigned int       pgs_max_iterations  = 50;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -165,6 +207,11 @@ namespace tribodyn
       /// Window [start, end] of the time averages (end < 0: end of run).
       double average_start = 40e-6;
       double average_end   = -1;
+      /// Fraction of time above which a status counts in the regime name.
+      double regime_threshold = 0.01;
+      /// Space-time series of the contact face (lambda_N, lambda_T, status
+      /// per contact node) every this many samples (0: none).
+      unsigned int contact_face_interval = 0;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -188,6 +235,16 @@ namespace tribodyn
       void
       parse_parameters(dealii::ParameterHandler &prm);
     };
+
+    namespace internal
+    {
+      /// The @p n comma-separated numbers of @p text; InputError naming the
+      /// parameter @p name otherwise.
+      std::vector<double>
+      parse_numbers(const std::string &text,
+                    const unsigned int n,
+                    const std::string &name);
+    } // namespace internal
 
     /**
      * Plane-strain stiffness (Voigt, engineering shear) of a transversely

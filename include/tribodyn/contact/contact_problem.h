@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <tribodyn/contact/contact_parameters.h>
+#include <tribodyn/contact/contact_solver.h>
 #include <tribodyn/core/problem.h>
 
 namespace tribodyn
@@ -25,16 +26,35 @@ namespace tribodyn
 
       ContactProblem(dealii::ParameterHandler &prm, const RunContext &context);
 
+      /// From parsed (and possibly modified) parameters: used by the study
+      /// driver, which runs many cases.
+      ContactProblem(const ContactParameters &parameters,
+                     const RunContext        &context);
+
       void
       run() override;
+
+      /// After run(): the recorded time series and the headline figures.
+      const std::vector<Sample> &
+      samples() const
+      {
+        return recorded_samples;
+      }
+      const RunSummary &
+      summary() const
+      {
+        return run_summary;
+      }
 
     private:
       void
       run_with_timer(dealii::TimerOutput                         &timer,
                      const std::chrono::steady_clock::time_point &start);
 
-      RunContext        context;
-      ContactParameters parameters;
+      RunContext          context;
+      ContactParameters   parameters;
+      std::vector<Sample> recorded_samples;
+      RunSummary          run_summary;
     };
   } // namespace contact
 } // namespace tribodyn

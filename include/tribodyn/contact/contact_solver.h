@@ -10,7 +10,9 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/la_parallel_vector.h>
+#include <fstream>
 #include <functional>
+#include <memory>
 #include <string>
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/contact/friction.h>
@@ -52,6 +54,18 @@ namespace tribodyn
       double stick_fraction = 0, slip_fraction = 0, separation_fraction = 0;
     };
 
+    /**
+     * Name of a contact regime from the time fractions of the statuses:
+     * a status counts when its fraction is above @p threshold
+     * ("slip", "slip-separation", "stick-slip", "stick-slip-separation",
+     * "stick", "stick-separation", "separation"; "none" if nothing does).
+     */
+    std::string
+    classify_regime(const double stick,
+                    const double slip,
+                    const double separation,
+                    const double threshold);
+
     /// Headline figures of a run (summary.json).
     struct RunSummary
     {
@@ -62,11 +76,14 @@ namespace tribodyn
       double stick_fraction = 0, slip_fraction = 0, separation_fraction = 0;
       double M_stick_fraction = 0, M_slip_fraction = 0,
              M_separation_fraction = 0;
-      std::string  regime;
-      unsigned int n_samples_averaged   = 0;
-      double       wall_time_s          = 0;
-      double       time_loop_s          = 0;
-      double       dof_steps_per_second = 0;
+      std::string regime;
+      /// Regime from the time fractions of all contact node-samples.
+      std::string  regime_contact_face;
+      double       normal_force_dominant_frequency_hz = 0;
+      unsigned int n_samples_averaged                 = 0;
+      double       wall_time_s                        = 0;
+      double       time_loop_s                        = 0;
+      double       dof_steps_per_second               = 0;
     };
 
     /**
@@ -165,6 +182,13 @@ namespace tribodyn
       set_displacement(
         const std::function<dealii::Tensor<1, 2>(const dealii::Point<2> &)>
           &field);
+      /// Add the velocity field @p field (evaluated at the nodes) to the
+      /// initial velocity of the next run() (after setup(); held dofs stay
+      /// at rest). Used by the beam-vibration verification.
+      void
+      set_initial_velocity_field(
+        const std::function<dealii::Tensor<1, 2>(const dealii::Point<2> &)>
+          &field);
       /// Testing aid: largest |internal force| entry for the current
       /// displacement (no damping), and the largest von Mises stress of the
       /// cell-centre stresses.
@@ -230,6 +254,7 @@ namespace tribodyn
       std::vector<double>        mass, mass_inverse, unit_load;
       std::vector<unsigned char> component;
       std::vector<unsigned int>  top_x_dofs; // held dofs (local indices)
+      std::vector<double>        initial_velocity_field; // owned dofs, or empty
       std::vector<unsigned int>  top_y_dofs;
 
       // Cells: 8 local dof indices each, material index, element data.
@@ -262,7 +287,24 @@ namespace tribodyn
         double        x;
         double        lambda_n = 0, lambda_t = 0, tau = 0;
         ContactStatus status = separated;
+        /// |slip increment| / dt of the last step (local slip rate).
+        double slip_rate = 0;
       };
+      /// Plane height under a node at x (current position) when the plane
+      /// has moved by @p plane_x: 0 for a flat plane, in [-A, 0] with the
+      /// waviness (y = -gap + this).
+      double
+      plane_height(const double x, const double plane_x) const;
+      /// The friction constants of node @p node for this step (per-node
+      /// decay for the local slip rate) and its tau before the step (state
+      /// on re-contact).
+      template <FrictionLaw law>
+      double
+      previous_tau(const ContactNode &node,
+                   const double       trial,
+                   const double       lambda_n) const;
+      double
+                               node_decay(const ContactNode &node) const;
       std::vector<ContactNode> contact_nodes;
       unsigned int             n_contact_nodes_global = 0;
       int                      point_M_index          = -1; // local, or -1
@@ -271,7 +313,11 @@ namespace tribodyn
       double      dt = 0, h = 0, dt_critical = 0, dt_cfl = 0, omega_maximum = 0;
       double      mass_total = 0;
       std::string material_text;
-      FrictionStep  friction_step;
+      FrictionStep friction_step;
+      // Plane motion over the current step (t_n -> t_{n+1}): displacement
+      // and position at t_{n+1}; decay of the regularized law for the
+      // plane speed of this step; L* for the local slip rate.
+      double plane_slide = 0, plane_x_next = 0, step_decay = 0, slip_length = 0;
       unsigned long step_count         = 0;
       unsigned int  pgs_iterations_max = 0;
 
@@ -281,7 +327,16 @@ namespace tribodyn
       double scale_energy = 0; // largest energy seen (for the error)
 
       std::vector<Sample> history;
-      double              run_wall_time = 0, loop_wall_time = 0;
+      /// Space-time series of the contact face (rank 0 writes).
+      void
+      write_contact_face_row(const double time);
+      std::vector<std::unique_ptr<std::ofstream>> face_files;
+      std::vector<std::string>                    face_paths;
+      void
+      open_contact_face_files(const std::string &dir);
+      void
+             close_contact_face_files();
+      double run_wall_time = 0, loop_wall_time = 0;
     };
   } // namespace contact
 } // namespace tribodyn

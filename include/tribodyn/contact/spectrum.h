@@ -8,7 +8,8 @@ namespace tribodyn
 {
   namespace contact
   {
-    /// In-place radix-2 FFT; the size of @p data must be a power of two.
+    /// In-place forward discrete Fourier transform (FFTW), any size:
+    /// X_k = sum_j x_j exp(-2 pi i j k / n).
     void
     fft(std::vector<std::complex<double>> &data);
 

@@ -3,6 +3,7 @@
 
 #include <map>
 #include <memory>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,8 +13,9 @@ namespace tribodyn
   /**
    * A small JSON value used to write `summary.json`. Objects keep their keys
    * in insertion order so that the file reads in the order the run produced
-   * it. Numbers are written with 17 significant digits (round-trip exact);
-   * non-finite numbers are written as null (JSON has no NaN).
+   * it. Written by nlohmann-json: numbers with the shortest representation
+   * that reads back exactly (round-trip), non-finite numbers as null (JSON
+   * has no NaN).
    */
   class JsonValue
   {
@@ -60,6 +62,10 @@ namespace tribodyn
     dump(const unsigned int indent = 0) const;
 
   private:
+    /// The tree as an nlohmann::ordered_json (the writer behind dump()).
+    nlohmann::ordered_json
+    to_library() const;
+
     Type                                           value_type;
     bool                                           bool_value   = false;
     double                                         number_value = 0;

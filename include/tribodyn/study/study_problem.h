@@ -1,0 +1,125 @@
+#ifndef tribodyn_study_study_problem_h
+#define tribodyn_study_study_problem_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <string>
+#include <tribodyn/contact/contact_parameters.h>
+#include <tribodyn/core/problem.h>
+#include <vector>
+
+namespace tribodyn
+{
+  namespace study
+  {
+    /// The pin models a study compares (seed 001 Table 2).
+    enum class PinModel
+    {
+      homogeneous_matrix, ///< matrix properties only
+      homogenized, ///< constants of homogenization runs on the morphologies
+      meso         ///< the heterogeneous pin, one run per morphology
+    };
+
+    /// Name used in the tables ("homogeneous matrix", "homogenized", "meso").
+    std::string
+    to_string(const PinModel model);
+
+    /// Subsection "Study".
+    struct StudyParameters
+    {
+      std::vector<double>   pressures = {0.5e6, 2.5e6, 5e6};
+      std::vector<PinModel> models
+        = {PinModel::homogeneous_matrix, PinModel::homogenized, PinModel::meso};
+      unsigned int n_morphologies     = 6;
+      unsigned int first_seed         = 1;
+      unsigned int repeats            = 1;
+      double       perturbation       = 1e-6;
+      std::string  boundary_condition = "KUBC";
+      unsigned int ranks_per_case     = 1;
+      bool         write_case_fields  = false;
+      std::string  plot_script        = "auto";
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /// One run of a study.
+    struct StudyCase
+    {
+      unsigned int pressure_index = 0;
+      PinModel     model          = PinModel::meso;
+      unsigned int seed           = 1; ///< morphology seed (meso)
+      unsigned int repeat         = 0; ///< 0: unperturbed
+      std::string  name;
+    };
+
+    /// What a case reports back to the study (one row of cases.csv).
+    struct CaseResult
+    {
+      double mu_mean = 0, mu_stderr = 0, mu_naive_stderr = 0;
+      double plateau_found = 0;
+      double stick = 0, slip = 0, separation = 0;
+      double M_stick = 0, M_slip = 0, M_separation = 0;
+      double mu_contact_mean = 0, dominant_frequency_hz = 0;
+      double wall_time_s = 0, n_dofs = 0, n_samples = 0;
+
+      static constexpr unsigned int size = 16;
+      void
+      to(double *v) const;
+      void
+      from(const double *v);
+    };
+
+    /**
+     * `set Problem = study`: seed 001's Table 2 study. Sweeps the pressures
+     * x pin models (x morphologies for the meso pin) x repeats, chains the
+     * homogenization runs that give the homogenized pin its constants, runs
+     * every case (spread over groups of MPI ranks), and writes table2.csv,
+     * table2.md, cases.csv, summary.json and the plots (scripts/plot_study).
+     * See doc/user_guide/study.md.
+     */
+    class StudyProblem : public Problem
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      StudyProblem(dealii::ParameterHandler &prm, const RunContext &context);
+
+      void
+      run() override;
+
+      /// The cases of the study in the order they are numbered.
+      const std::vector<StudyCase> &
+      cases() const
+      {
+        return study_cases;
+      }
+
+    private:
+      /// Run the homogenization of each morphology on the rank groups and
+      /// set the homogenized material (averaged apparent stiffness).
+      void
+      homogenize(const MPI_Comm group, const unsigned int n_groups);
+      contact::ContactParameters
+      case_parameters(const StudyCase &c) const;
+      void
+      write_tables(const std::vector<CaseResult> &results,
+                   const double                   wall_time) const;
+
+      RunContext                 context;
+      StudyParameters            parameters;
+      contact::ContactParameters base;
+      /// The study's parameter file as text (fed to the homogenization runs).
+      std::string            prm_text;
+      std::vector<StudyCase> study_cases;
+      /// The homogenized pin: stiffness, out-of-plane row, density.
+      contact::VoigtStiffness homogenized_C;
+      dealii::Tensor<1, 3>    homogenized_c_z;
+      double                  homogenized_density = 0;
+    };
+  } // namespace study
+} // namespace tribodyn
+
+#endif

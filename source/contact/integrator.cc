@@ -1,0 +1,444 @@
+// The beta2 time loop: internal forces, predictor, update (doc/theory/
+// contact.md section 2).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <tribodyn/contact/contact_solver.h>
+#include <tribodyn/contact/element_kernels.h>
+#include <tribodyn/contact/spectrum.h>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/output.h>
+#include <tribodyn/core/progress.h>
+
+namespace tribodyn
+{
+  namespace contact
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /// A number in [0, 1) from (seed, index) (splitmix64): the same on any
+      /// partition of the dofs.
+      double
+      uniform_hash(const std::uint64_t seed, const std::uint64_t index)
+      {
+        std::uint64_t z = seed * 0x9E3779B97F4A7C15ULL + index + 1;
+        z               = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z               = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        z               = z ^ (z >> 31);
+        return (z >> 11) * (1. / 9007199254740992.);
+      }
+    } // namespace
+    void
+    ContactSolver::internal_forces_small_strain()
+    {
+      if (single_material)
+        apply_element_stiffness<true>(
+          cell_dofs, cell_material, element_stiffness, w.begin(), r.begin());
+      else
+        apply_element_stiffness<false>(
+          cell_dofs, cell_material, element_stiffness, w.begin(), r.begin());
+    }
+
+
+    void
+    ContactSolver::internal_forces_large_deformation()
+    {
+      const double     *uv      = u.begin();
+      const double     *pv      = p.begin();
+      double           *rv      = r.begin();
+      const double      beta    = prm.time.damping;
+      const std::size_t n_cells = cell_material.size();
+      // Component of each local dof as a 0/1 mask (no branches below).
+      double is_y[8];
+      for (unsigned int i = 0; i < 8; ++i)
+        is_y[i] = dof_component[i];
+      for (std::size_t c = 0; c < n_cells; ++c)
+        {
+          const unsigned int *idx = &cell_dofs[8 * c];
+          const unsigned int  mat = cell_material[c];
+          const double C00 = stiffness[mat][0][0], C01 = stiffness[mat][0][1],
+                       C02 = stiffness[mat][0][2], C11 = stiffness[mat][1][1],
+                       C12 = stiffness[mat][1][2], C22 = stiffness[mat][2][2];
+          const double *K = element_stiffness[mat].data();
+          double        ue[8], pe[8], fe_[8] = {};
+          for (unsigned int j = 0; j < 8; ++j)
+            {
+              ue[j] = uv[idx[j]];
+              pe[j] = pv[idx[j]];
+            }
+          for (unsigned int q = 0; q < 4; ++q)
+            {
+              // Displacement gradient H[c][d] = sum_i u_i delta(c_i, c)
+              // dN/dx_d.
+              double Hx0 = 0, Hx1 = 0, Hy0 = 0, Hy1 = 0;
+              for (unsigned int i = 0; i < 8; ++i)
+                {
+                  const double ux = ue[i] * (1. - is_y[i]),
+                               uy = ue[i] * is_y[i];
+                  Hx0 += ux * grad_x[q][i];
+                  Hx1 += ux * grad_y[q][i];
+                  Hy0 += uy * grad_x[q][i];
+                  Hy1 += uy * grad_y[q][i];
+                }
+              const double F00 = 1 + Hx0, F01 = Hx1, F10 = Hy0, F11 = 1 + Hy1;
+              // Green-Lagrange strain (Voigt, 2 E_xy) and S = C E.
+              const double E00 = 0.5 * (F00 * F00 + F10 * F10 - 1.);
+              const double E11 = 0.5 * (F01 * F01 + F11 * F11 - 1.);
+              const double G01 = F00 * F01 + F10 * F11;
+              const double S0  = C00 * E00 + C01 * E11 + C02 * G01;
+              const double S1  = C01 * E00 + C11 * E11 + C12 * G01;
+              const double S2  = C02 * E00 + C12 * E11 + C22 * G01;
+              // First Piola-Kirchhoff P = F S.
+              const double P00 = F00 * S0 + F01 * S2, P01 = F00 * S2 + F01 * S1;
+              const double P10 = F10 * S0 + F11 * S2, P11 = F10 * S2 + F11 * S1;
+              for (unsigned int i = 0; i < 8; ++i)
+                {
+                  const double fx = P00 * grad_x_w[q][i] + P01 * grad_y_w[q][i];
+                  const double fy = P10 * grad_x_w[q][i] + P11 * grad_y_w[q][i];
+                  fe_[i] += fx + is_y[i] * (fy - fx);
+                }
+            }
+          for (unsigned int i = 0; i < 8; ++i)
+            {
+              double s = 0;
+              for (unsigned int j = 0; j < 8; ++j)
+                s += K[8 * i + j] * pe[j];
+              rv[idx[i]] += fe_[i] + beta * s;
+            }
+        }
+    }
+
+
+    void
+    ContactSolver::run(const std::string &output_directory,
+                       const double       progress_interval)
+    {
+      const bool         root    = Utilities::MPI::this_mpi_process(comm) == 0;
+      const auto         start   = std::chrono::steady_clock::now();
+      const unsigned int n_owned = mass.size();
+      const double       beta    = prm.time.damping;
+      const double       b2      = prm.time.beta2;
+      const bool         large
+        = prm.material.kinematics
+          == ContactMaterialParameters::Kinematics::large_deformation;
+
+      // Initial state: u_0 = 0, p_0 = v_0 (held dofs at rest), a = 0, and
+      // u_{-1} = u_0 - dt p_0 so that p_n = (u_n - u_{n-1})/dt (energy
+      // accounting).
+      {
+        double      *pv          = p.begin();
+        double       e0          = 0;
+        const auto  &partitioner = *u.get_partitioner();
+        const double noise       = prm.loading.velocity_perturbation;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            pv[i] = mass_inverse[i] == 0
+                      ? 0.
+                      : prm.loading.initial_velocity[component[i]];
+            if (!initial_velocity_field.empty() && mass_inverse[i] != 0)
+              pv[i] += initial_velocity_field[i];
+            if (noise > 0 && mass_inverse[i] != 0)
+              pv[i] += noise
+                       * (2.
+                            * uniform_hash(prm.loading.perturbation_seed,
+                                           partitioner.local_to_global(i))
+                          - 1.);
+            u.local_element(i)      = 0;
+            u_prev.local_element(i) = -dt * pv[i];
+            a.local_element(i)      = 0;
+            w.local_element(i)      = beta * pv[i];
+            e0 += 0.5 * mass[i] * pv[i] * pv[i];
+          }
+        energy_initial = Utilities::MPI::sum(e0, comm);
+      }
+      r             = 0;
+      step_count    = 0;
+      work_external = work_internal = work_contact = dissipation_friction = 0;
+      scale_energy = energy_initial;
+      history.clear();
+      for (ContactNode &node : contact_nodes)
+        node = ContactNode{node.ix, node.iy, node.m, node.x};
+
+      const bool                 write = !output_directory.empty();
+      std::unique_ptr<CsvWriter> friction_csv, point_csv, status_csv;
+      std::unique_ptr<PvdWriter> pvd;
+      if (write)
+        {
+          friction_csv = std::make_unique<CsvWriter>(
+            join_path(output_directory, "friction.csv"),
+            std::vector<std::string>{"time",
+                                     "normal_force",
+                                     "tangential_force",
+                                     "mu_global",
+                                     "contact_normal_force",
+                                     "contact_tangential_force",
+                                     "mu_contact",
+                                     "kinetic_energy",
+                                     "elastic_energy",
+                                     "external_work",
+                                     "contact_work",
+                                     "damping_dissipation",
+                                     "friction_dissipation",
+                                     "energy_balance_error",
+                                     "momentum_x",
+                                     "momentum_y"},
+            root);
+          point_csv = std::make_unique<CsvWriter>(
+            join_path(output_directory, "point_M.csv"),
+            std::vector<std::string>{"time",
+                                     "tangential_displacement",
+                                     "tangential_velocity",
+                                     "normal_displacement",
+                                     "normal_velocity",
+                                     "status"},
+            root);
+          status_csv = std::make_unique<CsvWriter>(
+            join_path(output_directory, "contact_status.csv"),
+            std::vector<std::string>{
+              "time", "stick_fraction", "slip_fraction", "separation_fraction"},
+            root);
+          pvd = std::make_unique<PvdWriter>(join_path(output_directory,
+                                                      "fields.pvd"),
+                                            root);
+          if (prm.output.contact_face_interval > 0)
+            open_contact_face_files(output_directory);
+        }
+      unsigned long sample_count = 0;
+
+      const double        end_time = prm.time.end_time;
+      const unsigned long n_steps
+        = static_cast<unsigned long>(std::ceil(end_time / dt - 1e-9));
+      ProgressReporter   progress(std::cout,
+                                root && progress_interval >= 0,
+                                n_steps * dt,
+                                std::max(0., progress_interval),
+                                "contact");
+      const unsigned int sample_every = prm.output.sample_interval;
+      const double       field_every  = prm.output.field_interval;
+      unsigned int       field_count  = 0;
+      double             next_field   = 0;
+      double             top_force    = 0;
+      double             loop_seconds = 0;
+      const auto         loop_start   = std::chrono::steady_clock::now();
+
+      for (unsigned long n = 0; n < n_steps; ++n)
+        {
+          const double t = n * dt;
+          const double s = prm.loading.pressure_at(t);
+          // Internal forces of u_n and the damping force beta K p_n.
+          add_internal_forces(large);
+
+          // Predictor: a* = M^-1 (f_n - r), u* = u_n + dt p_n + h a*.
+          {
+            const double *uv = u.begin();
+            const double *pv = p.begin();
+            const double *rv = r.begin();
+            double       *un = u_next.begin();
+            double       *av = a.begin();
+            const double *fv = unit_load.data();
+            const double *mi = mass_inverse.data();
+            for (unsigned int i = 0; i < n_owned; ++i)
+              {
+                const double ai = (s * fv[i] - rv[i]) * mi[i];
+                un[i]           = uv[i] + dt * pv[i] + h * ai;
+                av[i]           = ai;
+              }
+          }
+          const bool sample = (n % sample_every == 0) || n + 1 == n_steps;
+          if (sample)
+            {
+              // Reaction of the held top face: R = r - f (a = 0 there).
+              double f = 0;
+              if (prm.loading.top_held_in_x)
+                for (const unsigned int i : top_x_dofs)
+                  f += r.local_element(i) - s * unit_load[i];
+              top_force = Utilities::MPI::sum(f, comm);
+            }
+
+          // Contact and friction: multipliers at t_{n+1}.
+          solve_contact(t + dt);
+
+          // Velocities, energy accounting, next predictor velocity.
+          {
+            const double *uv = u.begin();
+            const double *up = u_prev.begin();
+            const double *un = u_next.begin();
+            const double *av = a.begin();
+            double       *pv = p.begin();
+            double       *wv = w.begin();
+            double       *rv = r.begin();
+            const double *fv = unit_load.data();
+            double        we = 0, wi = 0;
+            for (unsigned int i = 0; i < n_owned; ++i)
+              {
+                const double d = 0.5 * (un[i] - up[i]);
+                we += s * fv[i] * d;
+                wi += rv[i] * d;
+                const double pn = pv[i] + dt * av[i];
+                pv[i]           = pn;
+                wv[i]           = un[i] + beta * pn;
+                rv[i]           = 0;
+              }
+            (void)uv;
+            work_external += we;
+            work_internal += wi;
+          }
+          u_prev.swap(u); // u_prev = u_n
+          u.swap(u_next); // u = u_{n+1}
+          ++step_count;
+
+          if (sample)
+            {
+              const auto t0 = std::chrono::steady_clock::now();
+              record_sample(t);
+              if (write && prm.output.contact_face_interval > 0
+                  && sample_count % prm.output.contact_face_interval == 0)
+                write_contact_face_row(t);
+              ++sample_count;
+              Sample &smp          = history.back();
+              smp.tangential_force = top_force;
+              smp.mu_global = prm.loading.top_held_in_x && smp.normal_force > 0
+                                ? -(prm.loading.plane_velocity >= 0 ? 1. : -1.)
+                                    * top_force / smp.normal_force
+                                : smp.mu_contact;
+              if (write)
+                {
+                  friction_csv->add_row({smp.time,
+                                         smp.normal_force,
+                                         smp.tangential_force,
+                                         smp.mu_global,
+                                         smp.contact_normal_force,
+                                         smp.contact_tangential_force,
+                                         smp.mu_contact,
+                                         smp.kinetic_energy,
+                                         smp.elastic_energy,
+                                         smp.external_work,
+                                         smp.contact_work,
+                                         smp.damping_dissipation,
+                                         smp.friction_dissipation,
+                                         smp.energy_balance_error,
+                                         smp.momentum_x,
+                                         smp.momentum_y});
+                  point_csv->add_row({smp.time,
+                                      smp.M_ux,
+                                      smp.M_vx,
+                                      smp.M_uy,
+                                      smp.M_vy,
+                                      double(smp.M_status)});
+                  status_csv->add_row({smp.time,
+                                       smp.stick_fraction,
+                                       smp.slip_fraction,
+                                       smp.separation_fraction});
+                  friction_csv->flush();
+                  point_csv->flush();
+                  status_csv->flush();
+                }
+              std::ostringstream key;
+              key << "mu_global = " << std::fixed << std::setprecision(4)
+                  << smp.mu_global
+                  << "  stick/slip/sep = " << std::setprecision(2)
+                  << smp.stick_fraction << "/" << smp.slip_fraction << "/"
+                  << smp.separation_fraction;
+              progress.update(step_count, t + dt, key.str());
+              if (!std::isfinite(smp.kinetic_energy)
+                  || !std::isfinite(smp.mu_global))
+                throw RunError("The solution became non-finite at t = "
+                               + format_number(t) + " s (step "
+                               + std::to_string(n) + "): the run is unstable.");
+              loop_seconds -= std::chrono::duration<double>(
+                                std::chrono::steady_clock::now() - t0)
+                                .count();
+            }
+          if (write && field_every > 0 && t + 0.5 * dt >= next_field)
+            {
+              const auto         t0 = std::chrono::steady_clock::now();
+              TimerOutput::Scope scope(timer, "output fields");
+              // Fields at t_n: swap u_n back in for the writer.
+              u.swap(u_prev);
+              write_fields(output_directory, t, field_count);
+              u.swap(u_prev);
+              const std::string name
+                = "fields_" + Utilities::int_to_string(field_count, 5) + ".vtu";
+              pvd->add(t, name);
+              ++field_count;
+              next_field += field_every;
+              loop_seconds -= std::chrono::duration<double>(
+                                std::chrono::steady_clock::now() - t0)
+                                .count();
+            }
+        }
+      loop_seconds += std::chrono::duration<double>(
+                        std::chrono::steady_clock::now() - loop_start)
+                        .count();
+      loop_wall_time = loop_seconds;
+      progress.update(step_count, n_steps * dt, "", true);
+      if (write)
+        {
+          friction_csv->flush(true);
+          point_csv->flush(true);
+          status_csv->flush(true);
+          close_contact_face_files();
+        }
+      run_wall_time = std::chrono::duration<double>(
+                        std::chrono::steady_clock::now() - start)
+                        .count();
+      (void)b2;
+    }
+
+
+    void
+    ContactSolver::add_internal_forces(const bool large)
+    {
+      // r += K(u_n + beta p_n) (small strain: w holds u + beta p) or the
+      // total-Lagrangian internal forces of u and p; ghosts are refreshed
+      // first, contributions to ghost rows are sent to their owners after.
+      if (large)
+        {
+          u.update_ghost_values();
+          p.update_ghost_values();
+          internal_forces_large_deformation();
+        }
+      else
+        {
+          w.update_ghost_values();
+          internal_forces_small_strain();
+        }
+      r.compress(VectorOperation::add);
+    }
+
+
+    double
+    ContactSolver::max_internal_force()
+    {
+      r = 0;
+      const bool large
+        = prm.material.kinematics
+          == ContactMaterialParameters::Kinematics::large_deformation;
+      add_internal_forces(large);
+      const double result = r.linfty_norm();
+      r                   = 0;
+      return result;
+    }
+
+
+  } // namespace contact
+} // namespace tribodyn

@@ -1,0 +1,196 @@
+// Parameters of 'set Problem = study' (subsection Study) and the record a
+// case sends back to the study.
+
+#include <cmath>
+#include <deal.II/base/utilities.h>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/study/study_problem.h>
+
+namespace tribodyn
+{
+  namespace study
+  {
+    using dealii::ParameterHandler;
+    namespace Patterns = dealii::Patterns;
+
+    std::string
+    to_string(const PinModel model)
+    {
+      switch (model)
+        {
+          case PinModel::homogeneous_matrix:
+            return "homogeneous matrix";
+          case PinModel::homogenized:
+            return "homogenized";
+          default:
+            return "meso";
+        }
+    }
+
+
+    void
+    StudyParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Study");
+      prm.declare_entry("Pressures",
+                        "0.5e6, 2.5e6, 5e6",
+                        Patterns::Anything(),
+                        "Pressures P of the sweep (Pa), comma-separated. "
+                        "Replaces 'Loading/Pressure'. The seed's Table 2 "
+                        "uses 0.5e6, 2.5e6, 5e6.");
+      prm.declare_entry("Models",
+                        "homogeneous matrix, homogenized, meso",
+                        Patterns::MultipleSelection(
+                          "homogeneous matrix|homogenized|meso"),
+                        "Pin models: 'homogeneous matrix' (isotropic, "
+                        "'Material/Matrix'), 'homogenized' (anisotropic, "
+                        "the apparent stiffness averaged over homogenization "
+                        "runs on the study's morphologies, chained "
+                        "automatically), 'meso' (the heterogeneous pin, one "
+                        "run per morphology). 'Material/Type' is ignored.");
+      prm.declare_entry("Number of morphologies",
+                        "6",
+                        Patterns::Integer(1, 1000),
+                        "Morphologies (random seeds First random seed, +1, "
+                        "...) of the meso pin and of the homogenization "
+                        "runs. The seed uses six.");
+      prm.declare_entry("First random seed",
+                        "1",
+                        Patterns::Integer(0),
+                        "Random seed of the first morphology; replaces "
+                        "'Morphology/Random seed'.");
+      prm.declare_entry("Repeats",
+                        "1",
+                        Patterns::Integer(1, 1000),
+                        "Runs per (pressure, model, morphology): repeat r > "
+                        "0 adds a random initial velocity of amplitude "
+                        "'Perturbation amplitude' (seed r), sampling the "
+                        "chaotic sliding dynamics.");
+      prm.declare_entry("Perturbation amplitude",
+                        "1e-6",
+                        Patterns::Double(0),
+                        "Amplitude of the random initial velocity of the "
+                        "repeats (m/s).");
+      prm.declare_entry("Homogenization boundary condition",
+                        "KUBC",
+                        Patterns::Selection("KUBC|SUBC|periodic"),
+                        "Which apparent stiffness of the homogenization runs "
+                        "the homogenized pin uses.");
+      prm.declare_entry("MPI ranks per case",
+                        "1",
+                        Patterns::Integer(1),
+                        "Ranks of one case. With more ranks than this, "
+                        "MPI_COMM_WORLD is split into groups of this many "
+                        "ranks that run different cases at the same time.");
+      prm.declare_entry("Write case fields",
+                        "false",
+                        Patterns::Bool(),
+                        "Write the VTU fields of every case (at "
+                        "'Output/Field interval'); false: none.");
+      prm.declare_entry("Plot script",
+                        "auto",
+                        Patterns::Anything(),
+                        "Python script making the plots at the end: 'auto' "
+                        "looks for scripts/plot_study next to the build "
+                        "directory (skipped when python3 or matplotlib is "
+                        "missing), 'none' makes no plots, or a path.");
+      prm.leave_subsection();
+    }
+
+
+    void
+    StudyParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Study");
+      const std::string text = prm.get("Pressures");
+      pressures.clear();
+      for (const auto &item : dealii::Utilities::split_string_list(text, ','))
+        {
+          double value = 0;
+          try
+            {
+              value = dealii::Utilities::string_to_double(item);
+            }
+          catch (...)
+            {
+              throw InputError("Parameter 'Study/Pressures' must be a list of "
+                               "comma-separated pressures in Pa; got '"
+                               + text + "'.");
+            }
+          check_parameter_range("Study/Pressures", value, 0, 1e11, true, false);
+          pressures.push_back(value);
+        }
+      check_parameter(!pressures.empty(),
+                      "Study/Pressures",
+                      "at least one pressure");
+      models.clear();
+      for (const auto &item :
+           dealii::Utilities::split_string_list(prm.get("Models"), ','))
+        models.push_back(item == "homogeneous matrix"
+                           ? PinModel::homogeneous_matrix
+                         : item == "homogenized" ? PinModel::homogenized
+                                                 : PinModel::meso);
+      check_parameter(!models.empty(), "Study/Models", "at least one model");
+      n_morphologies     = prm.get_integer("Number of morphologies");
+      first_seed         = prm.get_integer("First random seed");
+      repeats            = prm.get_integer("Repeats");
+      perturbation       = prm.get_double("Perturbation amplitude");
+      boundary_condition = prm.get("Homogenization boundary condition");
+      ranks_per_case     = prm.get_integer("MPI ranks per case");
+      write_case_fields  = prm.get_bool("Write case fields");
+      plot_script        = prm.get("Plot script");
+      prm.leave_subsection();
+      if (repeats > 1)
+        check_parameter(perturbation > 0,
+                        "Study/Perturbation amplitude",
+                        "a positive amplitude when 'Study/Repeats' > 1 (the "
+                        "solver is deterministic: unperturbed repeats would "
+                        "be identical)");
+    }
+
+
+    void
+    CaseResult::to(double *v) const
+    {
+      const double x[size] = {mu_mean,
+                              mu_stderr,
+                              mu_naive_stderr,
+                              plateau_found,
+                              stick,
+                              slip,
+                              separation,
+                              M_stick,
+                              M_slip,
+                              M_separation,
+                              mu_contact_mean,
+                              dominant_frequency_hz,
+                              wall_time_s,
+                              n_dofs,
+                              n_samples,
+                              1.};
+      for (unsigned int i = 0; i < size; ++i)
+        v[i] = x[i];
+    }
+
+
+    void
+    CaseResult::from(const double *v)
+    {
+      mu_mean               = v[0];
+      mu_stderr             = v[1];
+      mu_naive_stderr       = v[2];
+      plateau_found         = v[3];
+      stick                 = v[4];
+      slip                  = v[5];
+      separation            = v[6];
+      M_stick               = v[7];
+      M_slip                = v[8];
+      M_separation          = v[9];
+      mu_contact_mean       = v[10];
+      dominant_frequency_hz = v[11];
+      wall_time_s           = v[12];
+      n_dofs                = v[13];
+      n_samples             = v[14];
+    }
+  } // namespace study
+} // namespace tribodyn

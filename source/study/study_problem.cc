@@ -1,0 +1,339 @@
+// The study driver: cases, homogenization chaining, MPI groups, results.
+// Tables and plots: study_tables.cc.
+
+#include <chrono>
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <tribodyn/contact/contact_problem.h>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/output.h>
+#include <tribodyn/homogenization/homogenization_problem.h>
+#include <tribodyn/study/blocking.h>
+#include <tribodyn/study/study_problem.h>
+
+namespace tribodyn
+{
+  namespace study
+  {
+    using dealii::ParameterHandler;
+
+    void
+    StudyProblem::declare_parameters(ParameterHandler &prm)
+    {
+      contact::ContactParameters::declare_parameters(prm);
+      StudyParameters::declare_parameters(prm);
+    }
+
+
+    StudyProblem::StudyProblem(ParameterHandler &prm, const RunContext &context)
+        : context(context)
+    {
+      base.parse_parameters(prm);
+      parameters.parse_parameters(prm);
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::ShortPRM);
+      prm_text = text.str();
+
+      // The same mesh for every model: the morphology's pixel grid times
+      // the subdivisions, which must be square.
+      const auto        &m  = base.morphology;
+      const unsigned int s  = base.geometry.subdivisions_per_pixel;
+      const double       hx = m.width / (m.n_pixels_x * s),
+                   hy       = m.height / (m.n_pixels_y * s);
+      if (std::abs(hx - hy) > 1e-6 * hx)
+        throw InputError(
+          "A study uses the same mesh for every model, the morphology's "
+          "pixel grid: its pixels must be square, but 'Morphology/Width' / "
+          "'Morphology/Pixels in x' = "
+          + format_number(m.width / m.n_pixels_x)
+          + " m differs from 'Morphology/Height' / 'Morphology/Pixels in y' "
+            "= "
+          + format_number(m.height / m.n_pixels_y)
+          + " m. Change 'Morphology/Pixels in y'.");
+      base.geometry.width     = m.width;
+      base.geometry.height    = m.height;
+      base.geometry.mesh_size = hx;
+      if (!parameters.write_case_fields)
+        base.output.field_interval = 0;
+
+      // Cases: pressure x model x morphology (meso) x repeat.
+      for (unsigned int p = 0; p < parameters.pressures.size(); ++p)
+        for (const PinModel model : parameters.models)
+          {
+            const unsigned int n_seeds
+              = model == PinModel::meso ? parameters.n_morphologies : 1;
+            for (unsigned int k = 0; k < n_seeds; ++k)
+              for (unsigned int r = 0; r < parameters.repeats; ++r)
+                {
+                  StudyCase c;
+                  c.pressure_index = p;
+                  c.model          = model;
+                  c.seed           = parameters.first_seed + k;
+                  c.repeat         = r;
+                  std::ostringstream name;
+                  name << "P" << parameters.pressures[p] / 1e6 << "MPa_"
+                       << (model == PinModel::homogeneous_matrix ? "matrix"
+                           : model == PinModel::homogenized      ? "homogenized"
+                                                                 : "meso");
+                  if (model == PinModel::meso)
+                    name << "_seed" << c.seed;
+                  if (parameters.repeats > 1)
+                    name << "_r" << r;
+                  c.name = name.str();
+                  study_cases.push_back(c);
+                }
+          }
+    }
+
+
+    void
+    StudyProblem::homogenize(const MPI_Comm group, const unsigned int n_groups)
+    {
+      const MPI_Comm     world = context.mpi_communicator;
+      const unsigned int color = dealii::Utilities::MPI::this_mpi_process(world)
+                                 / parameters.ranks_per_case;
+      const bool group_root
+        = dealii::Utilities::MPI::this_mpi_process(group) == 0;
+      const std::string root_dir
+        = join_path(context.output_directory, "homogenization");
+      std::vector<std::string> summaries;
+      for (unsigned int k = 0; k < parameters.n_morphologies; ++k)
+        {
+          const unsigned int seed = parameters.first_seed + k;
+          const std::string  dir
+            = join_path(root_dir, "seed" + std::to_string(seed));
+          summaries.push_back(join_path(dir, "summary.json"));
+          if (k % n_groups != std::min(color, n_groups - 1))
+            continue;
+          // The homogenization problem on the study's morphology parameters
+          // (and the two phases of 'Material/Matrix', 'Heterogeneity').
+          ParameterHandler hprm;
+          homogenization::HomogenizationProblem::declare_parameters(hprm);
+          hprm.parse_input_from_string(prm_text, "", true);
+          hprm.enter_subsection("Morphology");
+          hprm.set("Random seed", std::to_string(seed));
+          hprm.leave_subsection();
+          hprm.enter_subsection("Materials");
+          for (const auto &[name, phase] :
+               {std::make_pair(std::string("Matrix"), base.material.matrix),
+                std::make_pair(std::string("Heterogeneity"),
+                               base.material.heterogeneity)})
+            {
+              hprm.enter_subsection(name);
+              hprm.set("Young modulus", format_number(phase.youngs_modulus));
+              hprm.set("Poisson ratio", format_number(phase.poisson_ratio));
+              hprm.set("Density", format_number(phase.density));
+              hprm.leave_subsection();
+            }
+          hprm.leave_subsection();
+          hprm.enter_subsection("Cell problem");
+          hprm.set("Boundary conditions", parameters.boundary_condition);
+          hprm.set("Subdivisions per pixel",
+                   std::to_string(base.geometry.subdivisions_per_pixel));
+          hprm.leave_subsection();
+          hprm.enter_subsection("Output");
+          hprm.set("Write fields", false);
+          hprm.leave_subsection();
+          RunContext hc       = context;
+          hc.mpi_communicator = group;
+          hc.output_directory = dir;
+          if (group_root)
+            create_output_directory(dir);
+          MPI_Barrier(group);
+          homogenization::HomogenizationProblem problem(hprm, hc);
+          problem.run();
+        }
+      MPI_Barrier(world);
+
+      // Average of the apparent stiffnesses and of the densities.
+      homogenized_C       = 0;
+      homogenized_c_z     = 0;
+      homogenized_density = 0;
+      nlohmann::ordered_json record;
+      record["boundary_condition"] = parameters.boundary_condition;
+      for (const std::string &file : summaries)
+        {
+          dealii::Tensor<1, 3> cz;
+          homogenized_C += contact::read_homogenization_stiffness(
+            file, parameters.boundary_condition, cz);
+          homogenized_c_z += cz;
+          std::ifstream        in(file);
+          const nlohmann::json j = nlohmann::json::parse(in);
+          const double         f = j.at("volume_fraction").get<double>();
+          homogenized_density += (1. - f) * base.material.matrix.density
+                                 + f * base.material.heterogeneity.density;
+          record["summaries"].push_back(file);
+          record["volume_fractions"].push_back(f);
+        }
+      const double n = summaries.size();
+      homogenized_C /= n;
+      homogenized_c_z /= n;
+      homogenized_density /= n;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          record["C"][i].push_back(homogenized_C[i][j]);
+      record["density"] = homogenized_density;
+      if (dealii::Utilities::MPI::this_mpi_process(world) == 0)
+        write_file_atomically(join_path(root_dir, "homogenized_stiffness.json"),
+                              record.dump(2) + "\n");
+    }
+
+
+    contact::ContactParameters
+    StudyProblem::case_parameters(const StudyCase &c) const
+    {
+      using Type                   = contact::ContactMaterialParameters::Type;
+      contact::ContactParameters p = base;
+      p.loading.pressure           = parameters.pressures[c.pressure_index];
+      switch (c.model)
+        {
+          case PinModel::homogeneous_matrix:
+            p.material.type      = Type::isotropic;
+            p.material.isotropic = base.material.matrix;
+            break;
+          case PinModel::homogenized:
+            p.material.type                  = Type::anisotropic;
+            p.material.anisotropic_stiffness = homogenized_C;
+            p.material.anisotropic_c_z       = homogenized_c_z;
+            p.material.density               = homogenized_density;
+            break;
+          case PinModel::meso:
+            p.material.type          = Type::morphology;
+            p.morphology.random_seed = c.seed;
+            break;
+        }
+      if (c.repeat > 0)
+        {
+          p.loading.velocity_perturbation = parameters.perturbation;
+          p.loading.perturbation_seed     = c.repeat;
+        }
+      return p;
+    }
+
+
+    void
+    StudyProblem::run()
+    {
+      const auto         start = std::chrono::steady_clock::now();
+      const MPI_Comm     world = context.mpi_communicator;
+      const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(world);
+      const unsigned int n_ranks
+        = dealii::Utilities::MPI::n_mpi_processes(world);
+      dealii::ConditionalOStream pcout(std::cout, rank == 0);
+      const unsigned int         n_groups
+        = std::max(1u, n_ranks / parameters.ranks_per_case);
+      // Groups of ranks_per_case consecutive ranks (the remainder joins the
+      // last group).
+      const unsigned int color
+        = std::min(rank / parameters.ranks_per_case, n_groups - 1);
+      MPI_Comm group;
+      MPI_Comm_split(world, color, rank, &group);
+      const bool group_root
+        = dealii::Utilities::MPI::this_mpi_process(group) == 0;
+
+      pcout << "Study: " << study_cases.size() << " cases on " << n_groups
+            << " group(s) of ranks; mesh h = " << base.geometry.mesh_size
+            << " m for every model" << std::endl;
+
+      bool needs_homogenization = false;
+      for (const PinModel m : parameters.models)
+        needs_homogenization |= (m == PinModel::homogenized);
+      if (needs_homogenization)
+        homogenize(group, n_groups);
+
+      std::vector<double> local(study_cases.size() * CaseResult::size, 0.);
+      for (unsigned int i = 0; i < study_cases.size(); ++i)
+        {
+          if (i % n_groups != color)
+            continue;
+          const StudyCase &c  = study_cases[i];
+          RunContext       cc = context;
+          cc.mpi_communicator = group;
+          cc.output_directory
+            = join_path(join_path(context.output_directory, "cases"), c.name);
+          if (group_root)
+            {
+              create_output_directory(cc.output_directory);
+              std::cout << "Case " << i + 1 << "/" << study_cases.size() << ": "
+                        << c.name << std::endl;
+            }
+          MPI_Barrier(group);
+          const contact::ContactParameters cp = case_parameters(c);
+          contact::ContactProblem          problem(cp, cc);
+          problem.run();
+
+          // Blocking of mu_global over the averaging window.
+          const double        t0 = cp.output.average_start;
+          const double        t1 = cp.output.average_end < 0 ? cp.time.end_time
+                                                             : cp.output.average_end;
+          std::vector<double> mu;
+          for (const contact::Sample &s : problem.samples())
+            if (s.time >= t0 && s.time <= t1)
+              mu.push_back(s.mu_global);
+          // Base blocks of one period of mu_global's dominant oscillation
+          // (the pin's shear mode): each block averages whole cycles.
+          const contact::RunSummary &summary = problem.summary();
+          const auto                &series  = problem.samples();
+          const double               spacing = series.size() > 1
+                                                 ? series[1].time - series[0].time
+                                                 : cp.time.time_step;
+          const unsigned int         base_block
+            = summary.dominant_frequency_hz > 0 ? std::max<long>(
+                1, std::lround(1. / (summary.dominant_frequency_hz * spacing)))
+                                                : 1;
+          const BlockingResult       b = block_average(mu, 8, base_block);
+          const contact::RunSummary &s = summary;
+          CaseResult                 r;
+          r.mu_mean               = s.mu_global_mean;
+          r.mu_stderr             = b.stderr_of_mean;
+          r.mu_naive_stderr       = b.naive_stderr;
+          r.plateau_found         = b.plateau_found;
+          r.stick                 = s.stick_fraction;
+          r.slip                  = s.slip_fraction;
+          r.separation            = s.separation_fraction;
+          r.M_stick               = s.M_stick_fraction;
+          r.M_slip                = s.M_slip_fraction;
+          r.M_separation          = s.M_separation_fraction;
+          r.mu_contact_mean       = s.mu_contact_mean;
+          r.dominant_frequency_hz = s.dominant_frequency_hz;
+          r.wall_time_s           = s.wall_time_s;
+          r.n_samples             = mu.size();
+          if (group_root)
+            r.to(&local[i * CaseResult::size]);
+        }
+      std::vector<double> all(local.size());
+      MPI_Allreduce(
+        local.data(), all.data(), local.size(), MPI_DOUBLE, MPI_SUM, world);
+      MPI_Comm_free(&group);
+
+      std::vector<CaseResult> results(study_cases.size());
+      for (unsigned int i = 0; i < study_cases.size(); ++i)
+        results[i].from(&all[i * CaseResult::size]);
+      const double wall_time = std::chrono::duration<double>(
+                                 std::chrono::steady_clock::now() - start)
+                                 .count();
+      if (rank == 0)
+        write_tables(results, wall_time);
+      MPI_Barrier(world);
+    }
+
+
+    namespace
+    {
+      const bool registered = register_problem(
+        {"study",
+         "seed 001's Table 2 study: pressures x pin models (homogeneous "
+         "matrix, homogenized, meso with N morphologies) x repeats, with "
+         "error bars, tables and plots",
+         &StudyProblem::declare_parameters,
+         [](ParameterHandler &prm, const RunContext &context) {
+           return std::unique_ptr<Problem>(new StudyProblem(prm, context));
+         }});
+    } // namespace
+  }   // namespace study
+} // namespace tribodyn

@@ -1,0 +1,257 @@
+// The study's tables (table2.csv, table2.md, cases.csv), summary.json and
+// the call of the plot script. Definitions: doc/user_guide/study.md.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <deal.II/base/mpi.h>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <tribodyn/contact/contact_solver.h>
+#include <tribodyn/core/json.h>
+#include <tribodyn/core/output.h>
+#include <tribodyn/core/version.h>
+#include <tribodyn/study/study_problem.h>
+#include <unistd.h>
+
+namespace tribodyn
+{
+  namespace study
+  {
+    namespace
+    {
+      /// Seed 001, Table 2 (time-averaged mu_global) and the regimes of §3.
+      double
+      seed_mu(const double pressure, const PinModel model)
+      {
+        const double P = pressure / 1e6;
+        const int    k = std::abs(P - 0.5) < 1e-9   ? 0
+                         : std::abs(P - 2.5) < 1e-9 ? 1
+                         : std::abs(P - 5.) < 1e-9  ? 2
+                                                    : -1;
+        if (k < 0)
+          return std::nan("");
+        const double matrix[3] = {0.183, 0.234, 0.245},
+                     homog[3]  = {0.173, 0.213, 0.247},
+                     meso[3]   = {0.176, 0.210, 0.246};
+        return model == PinModel::homogeneous_matrix ? matrix[k]
+               : model == PinModel::homogenized      ? homog[k]
+                                                     : meso[k];
+      }
+
+
+      std::string
+      seed_regime(const double pressure)
+      {
+        const double P = pressure / 1e6;
+        return std::abs(P - 0.5) < 1e-9   ? "slip-separation"
+               : std::abs(P - 2.5) < 1e-9 ? "stick-slip-separation"
+               : std::abs(P - 5.) < 1e-9  ? "slip"
+                                          : "";
+      }
+
+
+      /// Directory of the running executable ("" if unknown).
+      std::string
+      executable_directory()
+      {
+        char          buffer[4096];
+        const ssize_t n
+          = readlink("/proc/self/exe", buffer, sizeof(buffer) - 1);
+        if (n <= 0)
+          return "";
+        std::string path(buffer, n);
+        return path.substr(0, path.find_last_of('/'));
+      }
+
+
+      bool
+      file_exists(const std::string &path)
+      {
+        return access(path.c_str(), R_OK) == 0;
+      }
+    } // namespace
+
+
+    void
+    StudyProblem::write_tables(const std::vector<CaseResult> &results,
+                               const double                   wall_time) const
+    {
+      const std::string &dir       = context.output_directory;
+      const double       threshold = base.output.regime_threshold;
+
+      // cases.csv: one row per run.
+      {
+        std::ostringstream out;
+        out << "case,pressure,model,seed,repeat,mu_mean,mu_stderr_blocking,"
+               "mu_stderr_naive,plateau_found,stick_fraction,slip_fraction,"
+               "separation_fraction,M_stick_fraction,M_slip_fraction,"
+               "M_separation_fraction,mu_contact_mean,dominant_frequency_hz,"
+               "wall_time_s\n"
+            << std::setprecision(8);
+        for (unsigned int i = 0; i < study_cases.size(); ++i)
+          {
+            const StudyCase  &c = study_cases[i];
+            const CaseResult &r = results[i];
+            out << c.name << "," << parameters.pressures[c.pressure_index]
+                << "," << to_string(c.model) << "," << c.seed << "," << c.repeat
+                << "," << r.mu_mean << "," << r.mu_stderr << ","
+                << r.mu_naive_stderr << "," << r.plateau_found << "," << r.stick
+                << "," << r.slip << "," << r.separation << "," << r.M_stick
+                << "," << r.M_slip << "," << r.M_separation << ","
+                << r.mu_contact_mean << "," << r.dominant_frequency_hz << ","
+                << r.wall_time_s << "\n";
+          }
+        write_file_atomically(join_path(dir, "cases.csv"), out.str());
+      }
+
+      // Table 2: per pressure and model. The mean over the n runs (equal
+      // windows) of the runs' time averages; its standard error combines
+      // the spread between runs (morphologies, repeats) and the blocking
+      // error of each run's time average:
+      //   se^2 = max(s_between^2 / n, sum_i se_i^2 / n^2),
+      // s_between the sample standard deviation of the run means (n >= 2).
+      std::ostringstream csv, md;
+      csv << "pressure,model,n_runs,mu_mean,mu_stderr,stick_fraction,"
+             "slip_fraction,separation_fraction,regime\n"
+          << std::setprecision(6);
+      md
+        << "# Table 2 (seed 001): time-averaged global friction coefficient\n\n"
+        << "mu_stderr combines morphologies/repeats and block averaging in "
+           "time; regime from the time fractions of all contact "
+           "node-samples (threshold "
+        << threshold << "). Seed values in the last columns.\n\n"
+        << "| P (MPa) | model | runs | mu_mean ± stderr | stick / slip / "
+           "separation | regime (contact face) | regime (point M) | seed "
+           "mu | seed regime |\n"
+        << "|---|---|---|---|---|---|---|---|---|\n";
+      JsonValue table = JsonValue::array();
+      for (unsigned int p = 0; p < parameters.pressures.size(); ++p)
+        for (const PinModel model : parameters.models)
+          {
+            std::vector<const CaseResult *> runs;
+            for (unsigned int i = 0; i < study_cases.size(); ++i)
+              if (study_cases[i].pressure_index == p
+                  && study_cases[i].model == model)
+                runs.push_back(&results[i]);
+            const double n = runs.size();
+            double mean = 0, fr[3] = {0, 0, 0}, M[3] = {0, 0, 0}, within = 0;
+            for (const CaseResult *r : runs)
+              {
+                mean += r->mu_mean / n;
+                fr[0] += r->stick / n;
+                fr[1] += r->slip / n;
+                fr[2] += r->separation / n;
+                M[0] += r->M_stick / n;
+                M[1] += r->M_slip / n;
+                M[2] += r->M_separation / n;
+                within += r->mu_stderr * r->mu_stderr / (n * n);
+              }
+            double between = 0;
+            if (runs.size() > 1)
+              {
+                for (const CaseResult *r : runs)
+                  between += (r->mu_mean - mean) * (r->mu_mean - mean);
+                between /= (n - 1.) * n;
+              }
+            const double      se = std::sqrt(std::max(between, within));
+            const std::string regime
+              = contact::classify_regime(fr[0], fr[1], fr[2], threshold);
+            const std::string regime_M
+              = contact::classify_regime(M[0], M[1], M[2], threshold);
+            const double P = parameters.pressures[p];
+            csv << P << "," << to_string(model) << "," << runs.size() << ","
+                << mean << "," << se << "," << fr[0] << "," << fr[1] << ","
+                << fr[2] << "," << regime << "\n";
+            const double       seed = seed_mu(P, model);
+            std::ostringstream row;
+            row << std::fixed << std::setprecision(3) << "| " << P / 1e6
+                << " | " << to_string(model) << " | " << runs.size() << " | "
+                << mean << " ± " << std::setprecision(4) << se << " | "
+                << std::setprecision(3) << fr[0] << " / " << fr[1] << " / "
+                << fr[2] << " | " << regime << " | " << regime_M << " | ";
+            if (std::isnan(seed))
+              row << "– | – |";
+            else
+              row << seed << " | " << seed_regime(P) << " |";
+            md << row.str() << "\n";
+            JsonValue entry              = JsonValue::object();
+            entry["pressure"]            = P;
+            entry["model"]               = to_string(model);
+            entry["n_runs"]              = runs.size();
+            entry["mu_mean"]             = mean;
+            entry["mu_stderr"]           = se;
+            entry["stick_fraction"]      = fr[0];
+            entry["slip_fraction"]       = fr[1];
+            entry["separation_fraction"] = fr[2];
+            entry["regime"]              = regime;
+            entry["regime_point_M"]      = regime_M;
+            entry["seed_mu"]             = seed;
+            table.push_back(entry);
+          }
+      write_file_atomically(join_path(dir, "table2.csv"), csv.str());
+      write_file_atomically(join_path(dir, "table2.md"), md.str());
+
+      JsonValue summary           = JsonValue::object();
+      summary["problem"]          = "study";
+      summary["tribodyn_version"] = version_string;
+      summary["n_mpi_ranks"]
+        = dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
+      summary["n_cases"]   = study_cases.size();
+      summary["mesh_size"] = base.geometry.mesh_size;
+      summary["end_time"]  = base.time.end_time;
+      summary["averaging_window"]
+        = json_array({base.output.average_start,
+                      base.output.average_end < 0 ? base.time.end_time
+                                                  : base.output.average_end});
+      summary["regime_threshold"] = threshold;
+      summary["table2"]           = table;
+      double case_time            = 0;
+      for (const CaseResult &r : results)
+        case_time += r.wall_time_s;
+      summary["sum_of_case_wall_times_s"] = case_time;
+      summary["wall_time_s"]              = wall_time;
+      write_file_atomically(join_path(dir, "summary.json"),
+                            summary.dump() + "\n");
+      std::cout << "\n"
+                << md.str() << "\nStudy written to " << dir
+                << "/ (table2.csv, table2.md, cases.csv, summary.json, "
+                   "cases/*/)"
+                << std::endl;
+
+      // Plots.
+      std::string script = parameters.plot_script;
+      if (script == "none")
+        return;
+      // Debian's python3-matplotlib belongs to /usr/bin/python3 (another
+      // python3 first in PATH may not have it).
+      const std::string python
+        = file_exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+      if (script == "auto")
+        {
+          script = executable_directory() + "/../scripts/plot_study";
+          if (!file_exists(script))
+            {
+              std::cout << "No plots: scripts/plot_study not found next to "
+                           "the executable (set 'Study/Plot script')."
+                        << std::endl;
+              return;
+            }
+          if (std::system(
+                (python + " -c 'import matplotlib' >/dev/null 2>&1").c_str())
+              != 0)
+            {
+              std::cout << "No plots: python3 with matplotlib is not "
+                           "available (Debian: python3-matplotlib)."
+                        << std::endl;
+              return;
+            }
+        }
+      const std::string command = python + " '" + script + "' '" + dir + "'";
+      if (std::system(command.c_str()) != 0)
+        std::cout << "The plot script failed: " << command << std::endl;
+    }
+  } // namespace study
+} // namespace tribodyn
