@@ -103,7 +103,7 @@ main(int argc, char **argv)
     return run.solver->summarize("").mu_global_mean;
   };
   const double base = mean(common);
-  for (const std::string variant :
+  for (const std::string &variant :
        {std::string("subsection Loading\nset Plane start time = 5e-6\nend"),
         std::string("subsection Loading\nset Surface imperfection amplitude "
                     "= 0.1e-6\nend"),
