@@ -74,7 +74,8 @@ namespace tribodyn
       }
     } // namespace
 
-    static_assert(prop::n == 20, "migration property count");
+    static_assert(prop::n == 20,
+                  "AutomatonSystem::migration_properties must equal prop::n");
 
 
     void
@@ -184,6 +185,8 @@ namespace tribodyn
       // automata that crossed a periodic face go to their new owner point
       // to point, with the same record.
       particles->clear_particles();
+      Assert(particles->n_properties_per_particle() == prop::n,
+             dealii::ExcInternalError());
       std::vector<double>              props(prop::n);
       std::vector<std::vector<double>> out_automata(nb_ranks.size());
       for (unsigned int k = 0; k < n_owned; ++k)

@@ -407,7 +407,7 @@ namespace tribodyn
       group_value(const BoundaryGroup &g, const double t) const;
 
       /// Particle properties of a migrating automaton (see rebuild.cc).
-      static constexpr unsigned int migration_properties = 22;
+      static constexpr unsigned int migration_properties = 20;
 
       const Parameters &prm;
       MPI_Comm          comm;
