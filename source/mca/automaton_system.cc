@@ -240,7 +240,7 @@ namespace tribodyn
             u[k][c] += dx[k][c];
           }
       current_time = t + dt;
-      evaluate_pairs(dt, true);
+      evaluate_pairs(dt);
       apply_boundary_forces(current_time);
       half_kick();
       apply_kinematic_constraints(current_time);

@@ -13,9 +13,8 @@ namespace tribodyn
   namespace mca
   {
     void
-    AutomatonSystem::evaluate_pairs(const double step_dt, const bool integrate)
+    AutomatonSystem::evaluate_pairs(const double step_dt)
     {
-      (void)integrate;
       // Ghost kinematics: x, dx, w from their owners.
       if (neighbours.active())
         {

@@ -20,6 +20,9 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from series_compare import largest_relative_difference  # noqa: E402
+
 build, prefix = sys.argv[1], sys.argv[2]
 interface = float(sys.argv[3]) if len(sys.argv) > 4 else None
 band = float(sys.argv[4]) if len(sys.argv) > 4 else 0
@@ -75,14 +78,7 @@ if reference:
         report(same_shape, "%d ranks: same rows and columns (%d, %d)" % (n, len(a), len(b)))
         if not same_shape:
             continue
-        worst, name = 0.0, ""
-        for c in range(len(a[0])):
-            col_a = [float(r[c]) for r in a[1:]]
-            col_b = [float(r[c]) for r in b[1:]]
-            scale = max(max(abs(x) for x in col_a), 1e-300)
-            d = max(abs(x - y) for x, y in zip(col_a, col_b)) / scale
-            if d > worst:
-                worst, name = d, a[0][c]
+        worst, name = largest_relative_difference(a, b)
         report(worst <= 1e-9, "%d ranks: largest relative difference %.3g (%s; tolerance 1e-9)"
                % (n, worst, name or "-"))
         s = json.load(open(os.path.join(folder, "summary.json")))

@@ -9,6 +9,9 @@ import csv
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from series_compare import largest_relative_difference  # noqa: E402
+
 build = os.path.dirname(sys.argv[1])
 tests = sys.argv[2:4] if len(sys.argv) > 4 else ["mca_ranks_1", "mca_ranks_2"]
 folder = sys.argv[4] if len(sys.argv) > 4 else "output-mca-friction-small"
@@ -19,14 +22,7 @@ for test in tests:
 a, b = rows
 ok = len(a) == len(b) and len(a) > 5 and a[0] == b[0]
 print(("PASS  " if ok else "FAIL  ") + "same rows and columns (%d, %d)" % (len(a), len(b)))
-worst = 0
-for c in range(len(a[0])):
-    col_a = [float(r[c]) for r in a[1:]]
-    col_b = [float(r[c]) for r in b[1:]]
-    scale = max(max(abs(x) for x in col_a), 1e-300)
-    d = max(abs(x - y) for x, y in zip(col_a, col_b)) / scale
-    if d > worst:
-        worst, name = d, a[0][c]
+worst, name = largest_relative_difference(a, b)
 good = worst <= 1e-9
 print(("PASS  " if good else "FAIL  ") + "largest relative difference %.3g (tolerance 1e-9)" % worst)
 sys.exit(0 if ok and good else 1)

@@ -282,7 +282,7 @@ namespace tribodyn
                 v[k][c] = du[c] / pseudo_dt;
               }
           }
-        evaluate_pairs(pseudo_dt, false);
+        evaluate_pairs(pseudo_dt);
       }
 
       // ---- pair access (tests)
@@ -353,7 +353,7 @@ namespace tribodyn
 
       // --- dynamics (pair_kernel.cc)
       void
-      evaluate_pairs(const double step, const bool integrate);
+      evaluate_pairs(const double step);
       template <bool rotations, bool plastic, bool bonds>
       void
       pair_kernel(const double step);
