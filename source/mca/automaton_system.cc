@@ -128,6 +128,20 @@ namespace tribodyn
           groups[k] = mask;
         }
       n_owned = n_local = n;
+      // Contacting parts and their inclusion automata (achieved fraction).
+      unsigned long long counts[2] = {0, 0};
+      for (const auto &a : packed)
+        if (a.part > 0)
+          {
+            ++counts[0];
+            counts[1] += a.part == 2;
+          }
+      dealii::Utilities::MPI::sum(
+        dealii::ArrayView<const unsigned long long>(counts, 2),
+        comm,
+        dealii::ArrayView<unsigned long long>(counts, 2));
+      n_part_automata   = counts[0];
+      n_part_inclusions = counts[1];
     }
 
 
@@ -177,6 +191,10 @@ namespace tribodyn
                 "(automatic).");
         }
 
+      wait_for_contact = false;
+      for (const auto &g : prm.boundary.groups)
+        wait_for_contact = wait_for_contact || g.switch_on_contact;
+
       // Group sizes are fixed: automata never change group.
       const unsigned int n_groups = prm.boundary.groups.size();
       group_size.assign(n_groups, 0);
@@ -214,22 +232,7 @@ namespace tribodyn
       const double t = current_time;
       // First half kick (f_tot holds pair + external forces of the last
       // step).
-      auto half_kick = [&]() {
-        for (unsigned int k = 0; k < n_owned; ++k)
-          {
-            const auto  &m = mc[mat[k]];
-            const double a = 0.5 * dt / m.mass;
-            for (unsigned int c = 0; c < 3; ++c)
-              v[k][c] += a * f_tot[k][c];
-            if (rotations)
-              {
-                const double b = 0.5 * dt / m.inertia;
-                for (unsigned int c = 0; c < 3; ++c)
-                  w[k][c] += b * torque[k][c];
-              }
-          }
-      };
-      half_kick();
+      half_kick_with_work();
       apply_kinematic_constraints(t + 0.5 * dt);
       // Drift.
       for (unsigned int k = 0; k < n_owned; ++k)
@@ -241,8 +244,9 @@ namespace tribodyn
           }
       current_time = t + dt;
       evaluate_pairs(dt);
+      detect_first_contact();
       apply_boundary_forces(current_time);
-      half_kick();
+      half_kick_with_work();
       apply_kinematic_constraints(current_time);
       ++n_steps_done;
       if (n_owned > 0 && !std::isfinite(v[0][0] + x[0][0]))
@@ -280,10 +284,19 @@ namespace tribodyn
             else if (in_contact[p])
               ++nu;
           }
-      double sums[4] = {kinetic, elastic, plastic_work, friction_work};
-      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 4),
+      double sums[7] = {kinetic,
+                        elastic,
+                        plastic_work,
+                        friction_work,
+                        load_work,
+                        damped_work,
+                        pair_work};
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 7),
                                   comm,
-                                  dealii::ArrayView<double>(sums, 4));
+                                  dealii::ArrayView<double>(sums, 7));
+      e.load_work                  = sums[4];
+      e.damped_work                = sums[5];
+      e.pair_work                  = sums[6];
       unsigned long long counts[2] = {nb, nu};
       dealii::Utilities::MPI::sum(
         dealii::ArrayView<const unsigned long long>(counts, 2),
@@ -343,6 +356,20 @@ namespace tribodyn
       std::vector<unsigned int> n(n_local, 0);
       for (unsigned int p = 0; p < pi.size(); ++p)
         if (bonded[p])
+          {
+            ++n[pi[p]];
+            ++n[pj[p]];
+          }
+      return n;
+    }
+
+
+    std::vector<unsigned int>
+    AutomatonSystem::unbonded_contact_counts() const
+    {
+      std::vector<unsigned int> n(n_local, 0);
+      for (unsigned int p = 0; p < pi.size(); ++p)
+        if (!bonded[p] && in_contact[p])
           {
             ++n[pi[p]];
             ++n[pj[p]];

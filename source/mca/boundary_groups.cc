@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <tribodyn/mca/automaton_system.h>
+#include <tribodyn/mca/vector_algebra.h>
 
 namespace tribodyn
 {
@@ -25,17 +26,24 @@ namespace tribodyn
     Vec3
     AutomatonSystem::group_value(const BoundaryGroup &g, const double t) const
     {
+      const bool   damping = g.type == BoundaryGroup::Type::damping;
+      const double ts
+        = g.switch_on_contact ? first_contact_time : g.switch_time;
       Vec3 value;
-      if (g.switch_time < 0 || t <= g.switch_time)
+      if (ts < 0 || t <= ts)
         {
           for (unsigned int c = 0; c < 3; ++c)
-            value[c] = g.value[c]
-                       * (g.type == BoundaryGroup::Type::damping ? 1 : ramp(t));
+            value[c] = g.value[c] * (damping ? 1 : ramp(t));
           return value;
         }
-      const double s = ramp(t - g.switch_time);
+      // Blend from the value reached at the switch to the second value; a
+      // component free after the switch ('*', NaN) is released at once.
+      const double s  = ramp(t - ts);
+      const double r0 = damping ? 1 : ramp(ts);
       for (unsigned int c = 0; c < 3; ++c)
-        value[c] = (1 - s) * g.value[c] + s * g.second_value[c];
+        value[c] = std::isnan(g.second_value[c])
+                     ? g.second_value[c]
+                     : (1 - s) * r0 * g.value[c] + s * g.second_value[c];
       return value;
     }
 
@@ -49,21 +57,116 @@ namespace tribodyn
       std::vector<Vec3> values(grp.size());
       for (unsigned int gi = 0; gi < grp.size(); ++gi)
         values[gi] = group_value(grp[gi], t);
+      // The kinetic energy a constraint adds or removes is work of the
+      // loads (the loading machine), recorded for the energy balance.
+      double work = 0;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           if (groups[k] == 0)
             continue;
+          const double before = dot(v[k], v[k]);
+          bool         set    = false;
           for (unsigned int gi = 0; gi < grp.size(); ++gi)
             if (groups[k] & (1u << gi))
               {
                 if (grp[gi].type == BoundaryGroup::Type::fixed)
-                  v[k] = {{0, 0, 0}};
+                  {
+                    v[k] = {{0, 0, 0}};
+                    set  = true;
+                  }
                 else if (grp[gi].type == BoundaryGroup::Type::velocity)
                   for (unsigned int c = 0; c < 3; ++c)
                     if (!std::isnan(values[gi][c]))
-                      v[k][c] = values[gi][c];
+                      {
+                        v[k][c] = values[gi][c];
+                        set     = true;
+                      }
               }
+          if (set)
+            work += 0.5 * mc[mat[k]].mass * (dot(v[k], v[k]) - before);
         }
+      load_work += work;
+    }
+
+
+    Vec3
+    AutomatonSystem::damping_force(const unsigned int k, const double t) const
+    {
+      const auto  &grp  = prm.boundary.groups;
+      const double mass = mc[mat[k]].mass;
+      Vec3         fd{{0, 0, 0}};
+      for (unsigned int c = 0; c < 3; ++c)
+        fd[c] = -prm.boundary.global_damping * mass * v[k][c];
+      if (groups[k] != 0)
+        for (unsigned int gi = 0; gi < grp.size(); ++gi)
+          if ((groups[k] & (1u << gi))
+              && grp[gi].type == BoundaryGroup::Type::damping)
+            {
+              const Vec3 coefficient = group_value(grp[gi], t);
+              for (unsigned int c = 0; c < 3; ++c)
+                fd[c] -= coefficient[c] * mass * v[k][c];
+            }
+      return fd;
+    }
+
+
+    void
+    AutomatonSystem::detect_first_contact()
+    {
+      if (!wait_for_contact || first_contact_time >= 0)
+        return;
+      // Before the bodies touch, every unbonded pair in contact joins the
+      // two bodies (pairs within a body start bonded).
+      unsigned int touching = 0;
+      for (unsigned int p = 0; p < pi.size() && !touching; ++p)
+        touching = !bonded[p] && in_contact[p];
+      if (n_ranks > 1)
+        touching = dealii::Utilities::MPI::max(touching, comm);
+      if (touching)
+        first_contact_time = current_time;
+    }
+
+
+    void
+    AutomatonSystem::half_kick_with_work()
+    {
+      // Velocity Verlet's half kick v += dt/2 F/m changes the kinetic
+      // energy by exactly dt/2 F.(v_before + v_after)/2: that is credited
+      // to the pair forces (f, torque), the damping (f_damp) and the loads
+      // (the rest of f_tot: applied forces and the loading plates'
+      // redistribution), so that kinetic energy = pair + load - damped work
+      // holds to round-off (see the energy-balance test).
+      const bool stale = f_damp_rebuild != rebuild_count;
+      double     wp = 0, wl = 0, wd = 0;
+      for (unsigned int k = 0; k < n_owned; ++k)
+        {
+          const auto  &m  = mc[mat[k]];
+          const double a  = 0.5 * dt / m.mass;
+          const Vec3   vb = v[k];
+          const Vec3   fd = stale ? damping_force(k, current_time) : f_damp[k];
+          for (unsigned int c = 0; c < 3; ++c)
+            v[k][c] += a * f_tot[k][c];
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              const double vm = 0.25 * dt * (vb[c] + v[k][c]);
+              wp += f[k][c] * vm;
+              wd -= fd[c] * vm;
+              wl += (f_tot[k][c] - f[k][c] - fd[c]) * vm;
+            }
+          if (rotations)
+            {
+              const double b  = 0.5 * dt / m.inertia;
+              const Vec3   wb = w[k];
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  w[k][c] += b * torque[k][c];
+                  wp += torque[k][c] * 0.25 * dt * (wb[c] + w[k][c]);
+                }
+            }
+        }
+      pair_work += wp;
+      load_work += wl;
+      damped_work += wd;
     }
 
 
@@ -72,8 +175,7 @@ namespace tribodyn
     {
       // Adds external and damping forces to the pair forces f, giving
       // f_tot (f is kept: it is the reaction the observers report).
-      const auto               &grp      = prm.boundary.groups;
-      const double              c_global = prm.boundary.global_damping;
+      const auto               &grp = prm.boundary.groups;
       std::vector<Vec3>         values(grp.size());
       std::vector<unsigned int> plates;
       for (unsigned int gi = 0; gi < grp.size(); ++gi)
@@ -83,25 +185,20 @@ namespace tribodyn
             plates.push_back(gi);
         }
       f_tot.resize(n_local);
+      f_damp.resize(n_local);
+      f_damp_rebuild = rebuild_count;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
-          f_tot[k]          = f[k];
-          const double mass = mc[mat[k]].mass;
-          if (c_global > 0)
-            for (unsigned int c = 0; c < 3; ++c)
-              f_tot[k][c] -= c_global * mass * v[k][c];
+          f_damp[k] = damping_force(k, t);
+          for (unsigned int c = 0; c < 3; ++c)
+            f_tot[k][c] = f[k][c] + f_damp[k][c];
           if (groups[k] == 0)
             continue;
           for (unsigned int gi = 0; gi < grp.size(); ++gi)
-            if (groups[k] & (1u << gi))
-              {
-                if (grp[gi].type == BoundaryGroup::Type::force)
-                  for (unsigned int c = 0; c < 3; ++c)
-                    f_tot[k][c] += values[gi][c] / group_size[gi];
-                else if (grp[gi].type == BoundaryGroup::Type::damping)
-                  for (unsigned int c = 0; c < 3; ++c)
-                    f_tot[k][c] -= values[gi][c] * mass * v[k][c];
-              }
+            if ((groups[k] & (1u << gi))
+                && grp[gi].type == BoundaryGroup::Type::force)
+              for (unsigned int c = 0; c < 3; ++c)
+                f_tot[k][c] += values[gi][c] / group_size[gi];
         }
       if (plates.empty())
         return;

@@ -40,7 +40,10 @@ namespace tribodyn
           "rigid loading plate under it and its reaction), damping (F = -v_k m "
           "u_k per component, coefficients in 1/s). "
           "'then T w' switches to the value w at time T (ramped smoothly "
-          "over the ramp time).");
+          "over the ramp time); 'then contact w' switches when the two "
+          "bodies first touch (an unbonded pair in contact). A component "
+          "given before 'then' may be '*' after it: it is released at the "
+          "switch.");
         prm.declare_entry("Ramp time",
                           "0",
                           Double(),
@@ -129,15 +132,21 @@ namespace tribodyn
                 check_parameter(t[expected] == "then",
                                 p,
                                 "expected 'then' in '" + entry + "'.");
-                g.switch_time = to_double(t[expected + 1], p, entry);
+                g.switch_on_contact = t[expected + 1] == "contact";
+                g.switch_time       = g.switch_on_contact
+                                        ? 0
+                                        : to_double(t[expected + 1], p, entry);
                 for (unsigned int d = 0; d < 3; ++d)
                   g.second_value[d] = to_double(t[expected + 2 + d], p, entry);
+                // A component may be released at the switch (prescribed
+                // before, '*' after), not taken over (its value before
+                // the switch would be unknown).
                 for (unsigned int d = 0; d < 3; ++d)
-                  check_parameter(std::isnan(g.second_value[d])
-                                    == std::isnan(g.value[d]),
+                  check_parameter(!std::isnan(g.value[d])
+                                    || std::isnan(g.second_value[d]),
                                   p,
-                                  "the free ('*') components must be the "
-                                  "same before and after 'then' ('"
+                                  "a component free ('*') before 'then' must "
+                                  "stay free after it ('"
                                     + entry + "').");
               }
             groups.push_back(g);

@@ -132,6 +132,7 @@ namespace tribodyn
                             "Initial gap: body 1 is shifted up by it (m).");
         }
         prm.leave_subsection();
+        declare_inclusion_parameters(prm);
       }
       prm.leave_subsection();
     }
@@ -278,8 +279,10 @@ namespace tribodyn
             "Geometry/Rough interface/Gap", interface_gap, 0, inf, false, true);
         }
         prm.leave_subsection();
+        parse_inclusion_parameters(prm, material_names, inclusions);
       }
       prm.leave_subsection();
+      generate_inclusion_layout();
     }
 
 

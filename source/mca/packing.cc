@@ -3,6 +3,7 @@
 #include <random>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/mca/automaton_system.h>
+#include <tribodyn/mca/inclusions.h>
 
 namespace tribodyn
 {
@@ -85,6 +86,31 @@ namespace tribodyn
     } // namespace
 
 
+    double
+    rough_surface_rise(const GeometryParameters &g, const double shift_y)
+    {
+      if (!g.rough_interface || g.roughness_amplitude == 0)
+        return 0;
+      const RoughSurface surface(g);
+      const double       Lx = g.domain_upper[0] - g.domain_lower[0];
+      const double       Ly = g.domain_upper[1] - g.domain_lower[1];
+      // The surface is a sum of six cosines: a grid of 1/64 of the shortest
+      // wavelength resolves its maximum to ~0.1 % of the amplitude.
+      const double h    = g.roughness_wavelength / 64;
+      const auto   nx   = static_cast<unsigned int>(std::ceil(Lx / h));
+      const auto   ny   = static_cast<unsigned int>(std::ceil(Ly / h));
+      double       rise = -1;
+      for (unsigned int i = 0; i <= nx; ++i)
+        for (unsigned int j = 0; j <= ny; ++j)
+          {
+            const double x = g.domain_lower[0] + i * Lx / nx;
+            const double y = g.domain_lower[1] + j * Ly / ny;
+            rise = std::max(rise, surface(x, y) - surface(x, y - shift_y));
+          }
+      return g.roughness_amplitude * rise;
+    }
+
+
     void
     pack_box(const GeometryParameters                           &g,
              const Point3                                       &lower,
@@ -119,6 +145,25 @@ namespace tribodyn
             = std::max(0L, static_cast<long>(std::floor((blo - o) / a)) - 1);
           hi[c] = std::min(n[c], static_cast<long>(std::ceil((bhi - o) / a)));
         }
+      // Body 1 of a rough interface may be shifted along y (periodic): its
+      // sites that land in [lower, upper] come from anywhere in y, so the
+      // whole y range is enumerated (the box test below keeps those that
+      // land in [lower, upper]).
+      const double shift_y = g.rough_interface ? g.interface_shift_y : 0.;
+      const double Ly      = g.domain_upper[1] - g.domain_lower[1];
+      auto         wrap_y  = [&](double y) {
+        if (shift_y == 0)
+          return y;
+        y += shift_y;
+        y -= Ly * std::floor((y - g.domain_lower[1]) / Ly);
+        return y;
+      };
+      if (shift_y != 0)
+        {
+          lo[1] = 0;
+          hi[1] = n[1];
+        }
+      const InclusionLayout *inclusions = g.inclusion_layout.get();
       for (long k = lo[2]; k <= hi[2]; ++k)
         for (long j = lo[1]; j <= hi[1]; ++j)
           for (long i = lo[0]; i <= hi[0]; ++i)
@@ -165,7 +210,10 @@ namespace tribodyn
                         + g.roughness_amplitude * surface(p[0], p[1]);
                     automaton.body = p[2] < h ? 0 : 1;
                     if (automaton.body == 1)
-                      automaton.position[2] += g.interface_gap;
+                      {
+                        automaton.position[2] += g.interface_gap;
+                        automaton.position[1] = wrap_y(p[1]);
+                      }
                   }
                 bool in_box = true;
                 for (unsigned int c = 0; c < 3; ++c)
@@ -186,6 +234,18 @@ namespace tribodyn
                           automaton.material = r.material;
                         }
                     }
+                if (inclusions && inclusions->in_part(p, automaton.body))
+                  {
+                    automaton.part  = 1;
+                    const int shape = inclusions->shape_at(p, automaton.body);
+                    if (shape == 1)
+                      removed = true;
+                    else if (shape == 0)
+                      {
+                        automaton.material = inclusions->material;
+                        automaton.part     = 2;
+                      }
+                  }
                 if (!removed)
                   add(automaton);
               }

@@ -20,6 +20,10 @@ namespace tribodyn
 
     using namespace parameter_tools;
 
+    void
+    apply_friction_loading(Parameters &p); // friction_loading.cc
+
+
     int
     material_index(const std::vector<std::string> &names,
                    const std::string              &name,
@@ -505,6 +509,21 @@ namespace tribodyn
           "within this fraction of its later mean for the rest of the run "
           "(and for at least a fifth of it); its mu is block-averaged from "
           "there, with a standard error.");
+        prm.declare_entry(
+          "Layer bin width",
+          "0",
+          Double(0),
+          "friction: bin width along the normal axis of the quasi-fluid "
+          "layer profile (unbonded contacts per automaton and plastic "
+          "strain against z, written to layer.csv at every series sample) "
+          "(m); 0 = the automaton size.");
+        prm.declare_entry(
+          "Layer threshold",
+          "0.5",
+          Double(0, 1),
+          "friction: the quasi-fluid layer is the z-range around the peak "
+          "of the profile where it exceeds this fraction of the peak (0.5: "
+          "full width at half maximum).");
       }
       prm.leave_subsection();
     }
@@ -529,6 +548,10 @@ namespace tribodyn
         averaging_start      = prm.get_double("Averaging start");
         smoothing_window     = prm.get_double("Smoothing window");
         steady_band          = prm.get_double("Steady band");
+        layer_bin_width      = prm.get_double("Layer bin width");
+        layer_threshold      = prm.get_double("Layer threshold");
+        check_parameter_range(
+          "Analysis/Layer threshold", layer_threshold, 0, 1, true, false);
         check_parameter_range("Analysis/Elastic fit fraction",
                               elastic_fit_fraction,
                               0,
@@ -568,6 +591,7 @@ namespace tribodyn
       TimeParameters::declare_parameters(prm);
       McaOutputParameters::declare_parameters(prm);
       AnalysisParameters::declare_parameters(prm);
+      FrictionLoadingParameters::declare_parameters(prm);
     }
 
 
@@ -594,6 +618,8 @@ namespace tribodyn
       time.parse_parameters(prm);
       output.parse_parameters(prm);
       analysis.parse_parameters(prm);
+      loading.parse_parameters(prm);
+      apply_friction_loading(*this);
 
       if (analysis.type == AnalysisParameters::Type::uniaxial
           || analysis.type == AnalysisParameters::Type::friction)

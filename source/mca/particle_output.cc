@@ -25,6 +25,7 @@ namespace tribodyn
       std::snprintf(tag, sizeof(tag), "%s_%04u", base.c_str(), number);
       const std::string         name    = tag;
       const auto                nbonded = bonded_neighbour_counts();
+      const auto                nfree   = unbonded_contact_counts();
       std::vector<unsigned int> selected;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
@@ -66,6 +67,7 @@ namespace tribodyn
       scalar("body", [&](unsigned k) { return double(body[k]); });
       scalar("bonded_neighbours",
              [&](unsigned k) { return double(nbonded[k]); });
+      scalar("unbonded_contacts", [&](unsigned k) { return double(nfree[k]); });
       scalar("plastic_strain", [&](unsigned k) { return eps_p[k]; });
       vector("velocity", [&](unsigned k) { return v[k]; });
       vector("displacement", [&](unsigned k) { return u[k]; });
@@ -120,6 +122,7 @@ namespace tribodyn
                                 "material",
                                 "body",
                                 "bonded_neighbours",
+                                "unbonded_contacts",
                                 "plastic_strain"})
             pv << "<PDataArray type=\"Float64\" Name=\"" << s << "\"/>\n";
           for (const char *s : {"velocity", "displacement", "angular_velocity"})
@@ -132,6 +135,85 @@ namespace tribodyn
                   "Name=\"von_mises\"/>\n";
           pv << "</PPointData>\n<PPoints><PDataArray type=\"Float64\" "
                 "NumberOfComponents=\"3\"/></PPoints>\n";
+          for (unsigned int r = 0; r < n_ranks; ++r)
+            pv << "<Piece Source=\"" << name << "." << r << ".vtu\"/>\n";
+          pv << "</PUnstructuredGrid>\n</VTKFile>\n";
+          write_file_atomically(join_path(directory, name + ".pvtu"), pv.str());
+        }
+      return name + ".pvtu";
+    }
+
+    std::string
+    AutomatonSystem::write_unbonded_pairs(const std::string &directory,
+                                          const std::string &base,
+                                          const unsigned int number,
+                                          const unsigned int axis,
+                                          const double       slab_lo,
+                                          const double       slab_hi) const
+    {
+      char tag[32];
+      std::snprintf(tag, sizeof(tag), "%s_%04u", base.c_str(), number);
+      const std::string name = tag;
+      // Each pair once (by the owner of i), both ends in the slab; the line
+      // goes from x_i to x_i + (x_j - x_i + image shift), so that pairs
+      // across a periodic face are short lines, not box-long ones.
+      std::vector<unsigned int> selected;
+      for (unsigned int p = 0; p < pi.size(); ++p)
+        {
+          if (bonded[p] || !in_contact[p] || !owned_i[p])
+            continue;
+          const double yi = cells.wrap(x[pi[p]])[axis];
+          const double yj = yi + pair_vector(p)[axis];
+          if (yi < slab_lo || yi > slab_hi || yj < slab_lo || yj > slab_hi)
+            continue;
+          selected.push_back(p);
+        }
+      std::ostringstream o;
+      o << std::setprecision(8);
+      o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
+           "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
+        << "<Piece NumberOfPoints=\"" << 2 * selected.size()
+        << "\" NumberOfCells=\"" << selected.size() << "\">\n";
+      o << "<CellData Scalars=\"sigma\">\n<DataArray type=\"Float64\" "
+           "Name=\"sigma\" format=\"ascii\">\n";
+      for (const unsigned int p : selected)
+        o << 0.5 * (sig_i[p] + sig_j[p]) << "\n";
+      o << "</DataArray>\n</CellData>\n<Points>\n<DataArray type=\"Float64\" "
+           "NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const unsigned int p : selected)
+        {
+          const Point3 xi = cells.wrap(x[pi[p]]);
+          const Vec3   dn = pair_vector(p);
+          o << xi[0] << " " << xi[1] << " " << xi[2] << "\n"
+            << xi[0] + dn[0] << " " << xi[1] + dn[1] << " " << xi[2] + dn[2]
+            << "\n";
+        }
+      o << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" "
+           "Name=\"connectivity\" format=\"ascii\">\n";
+      for (std::size_t k = 0; k < selected.size(); ++k)
+        o << 2 * k << " " << 2 * k + 1 << "\n";
+      o << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
+           "format=\"ascii\">\n";
+      for (std::size_t k = 0; k < selected.size(); ++k)
+        o << 2 * (k + 1) << "\n";
+      o << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+           "format=\"ascii\">\n";
+      for (std::size_t k = 0; k < selected.size(); ++k)
+        o << "3\n";
+      o << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</"
+           "VTKFile>\n";
+      write_file_atomically(
+        join_path(directory, name + "." + std::to_string(rank) + ".vtu"),
+        o.str());
+      if (rank == 0)
+        {
+          std::ostringstream pv;
+          pv << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" "
+                "version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                "<PUnstructuredGrid GhostLevel=\"0\">\n<PCellData "
+                "Scalars=\"sigma\">\n<PDataArray type=\"Float64\" "
+                "Name=\"sigma\"/>\n</PCellData>\n<PPoints><PDataArray "
+                "type=\"Float64\" NumberOfComponents=\"3\"/></PPoints>\n";
           for (unsigned int r = 0; r < n_ranks; ++r)
             pv << "<Piece Source=\"" << name << "." << r << ".vtu\"/>\n";
           pv << "</PUnstructuredGrid>\n</VTKFile>\n";

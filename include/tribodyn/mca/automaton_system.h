@@ -28,6 +28,9 @@ namespace tribodyn
       std::uint32_t id       = 0; ///< index of the FCC lattice site
       unsigned char material = 0;
       unsigned char body     = 0;
+      /// 1: in a contacting part of Geometry/Inclusions; 2: in a part and
+      /// converted by an inclusion (cylinder or void: voids are not added).
+      unsigned char part = 0;
     };
 
     /**
@@ -44,6 +47,16 @@ namespace tribodyn
              const Point3                                       &upper,
              const std::function<void(const PackedAutomaton &)> &add);
 
+    /**
+     * Largest rise max_{x,y} [h(x, y) - h(x, y - @p shift_y)] of the rough
+     * surface of @p geometry over its shifted copy (0 without a rough
+     * interface): the upper body of the staged friction loading, shifted by
+     * @p shift_y and lifted by more than this plus d, touches nowhere.
+     */
+    double
+    rough_surface_rise(const GeometryParameters &geometry,
+                       const double              shift_y);
+
     /// The whole packing (tests and small scenes), in id order.
     std::vector<PackedAutomaton>
     pack_automata(const GeometryParameters &geometry,
@@ -58,6 +71,14 @@ namespace tribodyn
       double             friction_work       = 0;
       unsigned long long n_bonded            = 0;
       unsigned long long n_unbonded_contacts = 0;
+      /// Work of the boundary groups (applied forces and prescribed
+      /// velocities, damping excluded) and energy removed by damping, both
+      /// since the start (see AutomatonSystem::step()).
+      double load_work   = 0;
+      double damped_work = 0;
+      /// Work of the pair forces and torques on the automata since the
+      /// start (minus the energy the pairs stored or dissipated).
+      double pair_work = 0;
     };
 
     /// Number of automata per rank for a partition (partition report).
@@ -185,6 +206,21 @@ namespace tribodyn
       /// global count since the start.
       unsigned long long
       n_dropped_bonds() const;
+      /// Time at which the two bodies first touched (an unbonded pair in
+      /// contact), when a boundary group switches on contact; -1 before.
+      double
+      contact_time() const
+      {
+        return first_contact_time;
+      }
+      /// Automata of the contacting parts (Geometry/Inclusions) and those
+      /// of them turned into the inclusion material, global, counted at
+      /// set-up (voids are removed: counted in neither).
+      std::pair<unsigned long long, unsigned long long>
+      contacting_part_counts() const
+      {
+        return {n_part_automata, n_part_inclusions};
+      }
       /// Bytes held by this rank's automata and pair arrays.
       std::size_t
       memory_consumption() const;
@@ -245,9 +281,29 @@ namespace tribodyn
       {
         return mat;
       }
+      const std::vector<Vec3> &
+      angular_velocities() const
+      {
+        return w;
+      }
       /// Number of bonded pairs of each local automaton (owned: complete).
       std::vector<unsigned int>
       bonded_neighbour_counts() const;
+      /// Number of unbonded pairs in contact of each local automaton
+      /// (owned: complete): the quasi-fluid layer indicator.
+      std::vector<unsigned int>
+      unbonded_contact_counts() const;
+
+      /// Write the unbonded pairs in contact whose both automata lie in
+      /// the slab [lo, hi] along @p axis as line cells (NAME_NNNN.pvtu +
+      /// one .vtu per rank; the seed's Fig. 3a connects them by lines).
+      std::string
+      write_unbonded_pairs(const std::string &directory,
+                           const std::string &base,
+                           const unsigned int number,
+                           const unsigned int axis,
+                           const double       slab_lo,
+                           const double       slab_hi) const;
 
       /// Set velocity and angular velocity of every local automaton from a
       /// function of the position (tests, initial conditions).
@@ -486,6 +542,28 @@ namespace tribodyn
 
       double             plastic_work = 0, friction_work = 0;
       unsigned long long dropped_bonds = 0;
+
+      // --- staged loading, contacting parts, energy bookkeeping
+      // (boundary_groups.cc)
+      /// Set first_contact_time once the bodies touch (collective).
+      void
+      detect_first_contact();
+      /// Velocity-Verlet half kick, recording the work of the pair forces
+      /// and torques, of the loads and of the damping over it.
+      void
+      half_kick_with_work();
+      /// Damping force -c m v of owned automaton @p k at time @p t (global
+      /// damping and damping groups).
+      Vec3
+             damping_force(const unsigned int k, const double t) const;
+      bool   wait_for_contact            = false;
+      double first_contact_time          = -1;
+      unsigned long long n_part_automata = 0, n_part_inclusions = 0;
+      double             load_work = 0, damped_work = 0, pair_work = 0;
+      /// Damping part of f_tot of each owned automaton (for damped_work),
+      /// valid while f_damp_rebuild == rebuild_count.
+      std::vector<Vec3> f_damp;
+      unsigned int      f_damp_rebuild = 0;
     };
   } // namespace mca
 } // namespace tribodyn

@@ -32,7 +32,20 @@ namespace tribodyn
              const std::vector<Vec3> &group_forces,
              const SystemEnergies    &energies);
 
-      /// friction.csv (by the root rank), summary keys, a line of figures.
+      /**
+       * Quasi-fluid layer at this sample: z-profiles (bins of Analysis/
+       * Layer bin width along the normal axis, over the automata's current
+       * extent) of the unbonded contacts per automaton and of the
+       * accumulated equivalent plastic strain; the layer
+       * (quasi_fluid_layer_profile()) of each. Collective.
+       */
+      void
+      record_layer(const double           time,
+                   const AutomatonSystem &system,
+                   const MPI_Comm         comm);
+
+      /// friction.csv and layer.csv (by the root rank), layer_profile.csv
+      /// (the last profiles), summary keys, a line of figures.
       void
       finish(const std::string &output_directory,
              const bool         root,
@@ -40,9 +53,22 @@ namespace tribodyn
              std::ostream      &figures) const;
 
     private:
+      /// layer.csv, layer_profile.csv and the layer's summary keys: means
+      /// over the samples from the start of the quasi-steady regime.
+      void
+      write_layer(const std::string      &output_directory,
+                  const bool              root,
+                  JsonValue              &summary,
+                  std::ostream           &figures,
+                  const FrictionAnalysis &fa) const;
+
       const Parameters   &prm;
       const int           loaded;
       std::vector<double> times, normal, tangential, bonded, unbonded;
+      /// layer.csv columns
+      std::vector<double> layer_times, layer_thickness, layer_center,
+        strain_thickness, strain_center, layer_peak;
+      LayerProfile last_contacts, last_strain;
     };
   } // namespace mca
 } // namespace tribodyn

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <deal.II/base/point.h>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -199,6 +200,35 @@ namespace tribodyn
       wrap(const dealii::Point<3> &p) const;
       std::size_t
       cell_of(const dealii::Point<3> &wrapped) const;
+    };
+
+
+    /**
+     * The inclusions of the packing (Geometry/Inclusions): per contacting
+     * part, the generated shapes, their index, the body whose automata they
+     * convert and the part's z-range (positions before the interface gap
+     * and shift).
+     */
+    struct InclusionLayout
+    {
+      struct Part
+      {
+        unsigned int                    body    = 0;
+        double                          z_lower = 0, z_upper = 0;
+        InclusionSet                    set;
+        std::unique_ptr<InclusionIndex> index;
+      };
+      std::vector<Part> parts;
+      /// Material given to automata inside a cylinder.
+      int material = 1;
+
+      /// Is the site @p p of body @p body in a contacting part?
+      bool
+      in_part(const dealii::Point<3> &p, const unsigned int body) const;
+      /// For a site of body @p body: -1 not in a shape, 0 in a cylinder,
+      /// 1 in a void.
+      int
+      shape_at(const dealii::Point<3> &p, const unsigned int body) const;
     };
 
 

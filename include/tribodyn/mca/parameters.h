@@ -2,8 +2,10 @@
 #define tribodyn_mca_parameters_h
 
 #include <array>
+#include <cstdint>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -120,6 +122,34 @@ namespace tribodyn
     };
 
 
+    struct InclusionLayout;
+
+    /**
+     * Subsection "Geometry/Inclusions": carbon cylinders and voids placed by
+     * the generator of inclusions.h in the contacting part of each body of
+     * a rough interface (seed 000 Sec. 2.2: cylinders of radius 10 nm and
+     * length 70 nm, about 2 % of each contacting part; Fig. 2b: voids).
+     * The contacting part of the lower body is z in [Height - Contacting
+     * part thickness, Height], of the upper body [Height, Height +
+     * thickness] (before the interface gap); a shape converts only the
+     * automata of its own body.
+     */
+    struct InclusionPackingParameters
+    {
+      bool          enabled         = false;
+      int           material        = 1;
+      double        part_thickness  = 0;
+      double        cylinder_radius = 10e-9;
+      double        cylinder_length = 70e-9;
+      std::string   orientation     = "isotropic";
+      double        volume_fraction = 0.02;
+      double        void_radius     = 20e-9;
+      double        void_fraction   = 0;
+      double        gap             = 0;
+      std::uint64_t seed            = 1;
+    };
+
+
     /**
      * Subsection "Geometry": automaton size, periodicity, bodies, regions,
      * optional rough interface between two bodies.
@@ -143,6 +173,19 @@ namespace tribodyn
       /// Initial gap added between the two bodies of a rough interface
       /// (body 1 is shifted up by it).
       double interface_gap = 0;
+      /// Shift of body 1 of a rough interface along y (wrapped into the
+      /// periodic box): the staged friction loading moves the bodies by
+      /// half the width so that asperities meet asperities.
+      double interface_shift_y = 0;
+
+      InclusionPackingParameters inclusions;
+      /// The generated inclusions (set by parse_parameters or
+      /// generate_inclusion_layout(); shared by copies, never modified).
+      std::shared_ptr<const InclusionLayout> inclusion_layout;
+      /// Run the generator for the current `inclusions` settings (the same
+      /// shapes on every rank: the generator is deterministic).
+      void
+      generate_inclusion_layout();
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -193,6 +236,49 @@ namespace tribodyn
       /// to chain e.g. approach then sliding; negative = none.
       double                switch_time  = -1;
       std::array<double, 3> second_value = {{0, 0, 0}};
+      /// The switch happens when the two bodies first touch ('then
+      /// contact'), not at switch_time. Components free ('*') after the
+      /// switch are released at the switch.
+      bool switch_on_contact = false;
+    };
+
+
+    /**
+     * Subsection "Friction loading": the staged loading of seed 000
+     * Sec. 2.2 for a rough interface between body 0 (below) and body 1
+     * (above). (1) The bodies are packed in full contact along the rough
+     * surface; (2) body 1 is separated along z by `Separation` and (3)
+     * shifted along y by `Shift` times the width (both rigid moves of a
+     * body not yet touching the other: done at the packing); (4) the top
+     * and bottom loading layers approach at -+`Approach velocity` along z
+     * until the bodies touch; (5) then the layers carry the normal force
+     * `Pressure` x area (rigid loading plates) and slide at +-`Sliding
+     * velocity` along y, both ramped smoothly over Boundary conditions/Ramp
+     * time from the moment of contact; x velocity of the layers is held at
+     * zero; viscous damping along z in both layers. Generated boundary
+     * groups: top, top_load, top_damping, bottom, bottom_load,
+     * bottom_damping.
+     */
+    struct FrictionLoadingParameters
+    {
+      bool enabled = false;
+      /// Gap along z before the approach (m); 0 = the largest rise of the
+      /// lower surface over the shifted upper one + 1.25 d.
+      double separation = 0;
+      /// Shift of body 1 along y as a fraction of the box width.
+      double shift_fraction = 0.5;
+      /// Loading layer thickness in automaton layers (spacing a/2).
+      unsigned int layer_layers      = 2;
+      double       approach_velocity = 5;
+      double       pressure          = 300e6;
+      double       sliding_velocity  = 10;
+      /// Damping along z in the loading layers (1/s); 0 = seed criterion.
+      double damping = 0;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
     };
 
 
@@ -275,6 +361,12 @@ namespace tribodyn
       double smoothing_window = 0;
       /// friction: relative band of the quasi-steady regime.
       double steady_band = 0.05;
+      /// friction: bin width of the quasi-fluid layer z-profile (m);
+      /// 0 = the automaton size.
+      double layer_bin_width = 0;
+      /// friction: the layer is where the profile exceeds this fraction of
+      /// its peak (0.5: full width at half maximum).
+      double layer_threshold = 0.5;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -293,6 +385,10 @@ namespace tribodyn
       TimeParameters                  time;
       McaOutputParameters             output;
       AnalysisParameters              analysis;
+      FrictionLoadingParameters       loading;
+      /// Derived by the friction loading: damping coefficient used and the
+      /// z-range of the two loading layers (for reports).
+      double loading_damping = 0;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
