@@ -132,26 +132,45 @@ namespace tribodyn
     {
       // Velocity Verlet's half kick v += dt/2 F/m changes the kinetic
       // energy by exactly dt/2 F.(v_before + v_after)/2: that is credited
-      // to the pair forces (f, torque), the damping (f_damp) and the loads
-      // (the rest of f_tot: applied forces and the loading plates'
-      // redistribution), so that kinetic energy = pair + load - damped work
-      // holds to round-off (see the energy-balance test).
-      const bool stale = f_damp_rebuild != rebuild_count;
-      double     wp = 0, wl = 0, wd = 0;
+      // to the damping (f_damp), the applied forces of the force groups
+      // and the pair forces and torques (the rest of f), so that kinetic
+      // energy = pair + load - damped work holds to round-off (energy test).
+      // A loading plate's redistribution of its forces among its automata
+      // does no work (they share one velocity), so it may be counted with
+      // the pair forces.
+      const auto       &grp   = prm.boundary.groups;
+      const bool        stale = f_damp_rebuild != rebuild_count;
+      std::vector<Vec3> load(grp.size(), Vec3{{0, 0, 0}});
+      for (unsigned int gi = 0; gi < grp.size(); ++gi)
+        if (grp[gi].type == BoundaryGroup::Type::force && group_size[gi] > 0)
+          {
+            load[gi] = group_value(grp[gi], current_time);
+            for (unsigned int c = 0; c < 3; ++c)
+              load[gi][c] /= group_size[gi];
+          }
+      double wp = 0, wl = 0, wd = 0;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           const auto  &m  = mc[mat[k]];
           const double a  = 0.5 * dt / m.mass;
           const Vec3   vb = v[k];
-          const Vec3   fd = stale ? damping_force(k, current_time) : f_damp[k];
+          // after a rebuild f_damp is in the old order: recompute it (from
+          // the current velocity: an O(dt) error at that step only)
+          const Vec3 fd = stale ? damping_force(k, current_time) : f_damp[k];
+          Vec3       fl{{0, 0, 0}};
+          if (groups[k] != 0)
+            for (unsigned int gi = 0; gi < grp.size(); ++gi)
+              if (groups[k] & (1u << gi))
+                for (unsigned int c = 0; c < 3; ++c)
+                  fl[c] += load[gi][c];
           for (unsigned int c = 0; c < 3; ++c)
-            v[k][c] += a * f_tot[k][c];
+            v[k][c] += a * f[k][c];
           for (unsigned int c = 0; c < 3; ++c)
             {
               const double vm = 0.25 * dt * (vb[c] + v[k][c]);
-              wp += f[k][c] * vm;
+              wp += (f[k][c] - fd[c] - fl[c]) * vm;
               wd -= fd[c] * vm;
-              wl += (f_tot[k][c] - f[k][c] - fd[c]) * vm;
+              wl += fl[c] * vm;
             }
           if (rotations)
             {
@@ -173,8 +192,10 @@ namespace tribodyn
     void
     AutomatonSystem::apply_boundary_forces(const double t)
     {
-      // Adds external and damping forces to the pair forces f, giving
-      // f_tot (f is kept: it is the reaction the observers report).
+      // Adds external and damping forces to the pair forces f, which then
+      // hold the total forces of the kicks; the pair-force reaction of each
+      // group (what the observers report) is summed first, per rank. The
+      // damping part is kept in f_damp for the energy bookkeeping.
       const auto               &grp = prm.boundary.groups;
       std::vector<Vec3>         values(grp.size());
       std::vector<unsigned int> plates;
@@ -184,21 +205,27 @@ namespace tribodyn
           if (grp[gi].type == BoundaryGroup::Type::force)
             plates.push_back(gi);
         }
-      f_tot.resize(n_local);
-      f_damp.resize(n_local);
+      group_reaction.assign(grp.size(), Vec3{{0, 0, 0}});
+      for (unsigned int k = 0; k < n_owned; ++k)
+        if (groups[k] != 0)
+          for (unsigned int gi = 0; gi < grp.size(); ++gi)
+            if (groups[k] & (1u << gi))
+              for (unsigned int c = 0; c < 3; ++c)
+                group_reaction[gi][c] += f[k][c];
+      f_damp.resize(n_owned);
       f_damp_rebuild = rebuild_count;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           f_damp[k] = damping_force(k, t);
           for (unsigned int c = 0; c < 3; ++c)
-            f_tot[k][c] = f[k][c] + f_damp[k][c];
+            f[k][c] += f_damp[k][c];
           if (groups[k] == 0)
             continue;
           for (unsigned int gi = 0; gi < grp.size(); ++gi)
             if ((groups[k] & (1u << gi))
                 && grp[gi].type == BoundaryGroup::Type::force)
               for (unsigned int c = 0; c < 3; ++c)
-                f_tot[k][c] += values[gi][c] / group_size[gi];
+                f[k][c] += values[gi][c] / group_size[gi];
         }
       if (plates.empty())
         return;
@@ -212,7 +239,7 @@ namespace tribodyn
             if (groups[k] & (1u << plates[q]))
               {
                 for (unsigned int c = 0; c < 3; ++c)
-                  sums[4 * q + c] += f_tot[k][c];
+                  sums[4 * q + c] += f[k][c];
                 sums[4 * q + 3] += mc[mat[k]].mass;
               }
       dealii::Utilities::MPI::sum(sums, comm, sums);
@@ -221,8 +248,7 @@ namespace tribodyn
           for (unsigned int q = 0; q < plates.size(); ++q)
             if ((groups[k] & (1u << plates[q])) && sums[4 * q + 3] > 0)
               for (unsigned int c = 0; c < 3; ++c)
-                f_tot[k][c]
-                  = mc[mat[k]].mass * sums[4 * q + c] / sums[4 * q + 3];
+                f[k][c] = mc[mat[k]].mass * sums[4 * q + c] / sums[4 * q + 3];
     }
 
 
@@ -249,8 +275,17 @@ namespace tribodyn
     std::vector<Vec3>
     AutomatonSystem::group_forces() const
     {
-      // f holds the pair forces only (the reaction of the group).
-      return sum_over_groups(f);
+      // the pair-force reactions summed at the last step
+      std::vector<double> sums(3 * group_reaction.size());
+      for (unsigned int gi = 0; gi < group_reaction.size(); ++gi)
+        for (unsigned int c = 0; c < 3; ++c)
+          sums[3 * gi + c] = group_reaction[gi][c];
+      dealii::Utilities::MPI::sum(sums, comm, sums);
+      std::vector<Vec3> out(prm.boundary.groups.size(), Vec3{{0, 0, 0}});
+      for (unsigned int gi = 0; gi < group_reaction.size(); ++gi)
+        for (unsigned int c = 0; c < 3; ++c)
+          out[gi][c] = sums[3 * gi + c];
+      return out;
     }
 
 
