@@ -386,8 +386,8 @@ namespace tribodyn
           pv.bonded = bonded[p];
           pv.sigma  = 0.5 * (sig_i[p] + sig_j[p]);
           for (unsigned int c = 0; c < 3; ++c)
-            pv.tau[c] = 0.5 * (tau_scale_i[p] + tau_scale_j[p])
-                        * tau.component[c][p];
+            pv.tau[c]
+              = 0.5 * (tau_scale_i[p] + tau_scale_j[p]) * tau.component[c][p];
           pv.heat     = heat.empty() ? 0. : heat[p];
           pv.distance = pair_distance(p);
           out.push_back(pv);

@@ -105,32 +105,33 @@ namespace tribodyn
                 }
             }
           double beta_sum = 0;
-          for_each_pair_of(
-            k, [&](const unsigned int p, const unsigned int side) {
-              double beta = 0;
-              if (bonded[p] || in_contact[p])
-                {
-                  if (full_rank)
-                    {
-                      double r;
-                      beta = g.dot(voigt(unit_normal(p, r)));
-                    }
-                  else
-                    beta = 3. / count;
-                }
-              (side ? beta_j : beta_i)[p] = beta;
-              beta_sum += std::abs(beta);
-            });
+          for_each_pair_of(k,
+                           [&](const unsigned int p, const unsigned int side) {
+                             double beta = 0;
+                             if (bonded[p] || in_contact[p])
+                               {
+                                 if (full_rank)
+                                   {
+                                     double r;
+                                     beta = g.dot(voigt(unit_normal(p, r)));
+                                   }
+                                 else
+                                   beta = 3. / count;
+                               }
+                             (side ? beta_j : beta_i)[p] = beta;
+                             beta_sum += std::abs(beta);
+                           });
           // Bound the many-body stiffness by its bulk value (sum of |beta|
           // = 3 in a complete FCC neighbourhood): sparse, nearly degenerate
           // neighbourhoods (e.g. around broken bonds) could otherwise make
           // an automaton far stiffer than the bulk and the explicit step
           // unstable.
           if (beta_sum > 3)
-            for_each_pair_of(
-              k, [&](const unsigned int p, const unsigned int side) {
-                (side ? beta_j : beta_i)[p] *= 3 / beta_sum;
-              });
+            for_each_pair_of(k,
+                             [&](const unsigned int p,
+                                 const unsigned int side) {
+                               (side ? beta_j : beta_i)[p] *= 3 / beta_sum;
+                             });
           if (!fabric_inverse.empty())
             fabric_inverse[k] = inverse_fabric(k);
           changed[k] = 0;

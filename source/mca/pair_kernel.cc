@@ -65,11 +65,13 @@ namespace tribodyn
         {
           const unsigned int i = pi[p], j = pj[p];
           const Vec3         dnew = pair_vector(p);
-          // displacement increments of the step: dt v (the drift)
+          // relative displacement of the step, dt (v_j - v_i): the drift
+          // moved each automaton by dt v; one product of the difference
+          // keeps a rigid motion exactly rigid (also with FMA contraction)
           Vec3 du, dold;
           for (unsigned int c = 0; c < 3; ++c)
             {
-              du[c]   = step_dt * v[j][c] - step_dt * v[i][c];
+              du[c]   = step_dt * (v[j][c] - v[i][c]);
               dold[c] = dnew[c] - du[c];
             }
           // (reciprocals multiplied: divisions are the dearest operations

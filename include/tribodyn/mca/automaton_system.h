@@ -556,8 +556,8 @@ namespace tribodyn
       /// the key of i, so k's form one block, i_pairs_first[k] ...
       /// + i_pairs_count[k]; as j: j_pairs[j_pairs_first[k] ...
       /// j_pairs_first[k + 1]] (CSR). 32 instead of 52 bytes a list of both.
-      std::vector<unsigned int>   i_pairs_first, j_pairs_first, j_pairs;
-      std::vector<std::uint16_t>  i_pairs_count;
+      std::vector<unsigned int>  i_pairs_first, j_pairs_first, j_pairs;
+      std::vector<std::uint16_t> i_pairs_count;
 
       /// Pair states kept over a rebuild, sorted by (id_i, id_j).
       struct PairState

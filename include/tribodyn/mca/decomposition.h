@@ -223,15 +223,15 @@ namespace tribodyn
       std::array<double, 3>                           period_{{0, 0, 0}};
       std::array<std::array<double, 3>, 27>           shifts;
 
-      unsigned int                                    n_owned = 0;
-      std::vector<std::array<unsigned int, 3>>        cell_index;
-      std::vector<unsigned int>                       cell_owner;
-      std::vector<CellIterator>                       cells;
+      unsigned int                             n_owned = 0;
+      std::vector<std::array<unsigned int, 3>> cell_index;
+      std::vector<unsigned int>                cell_owner;
+      std::vector<CellIterator>                cells;
       /// (key, local index) of the local cells, sorted by key: 16 bytes a
       /// cell (a hash map costs ~50)
       std::vector<std::pair<std::uint64_t, unsigned int>> local_of_key;
-      std::vector<unsigned int>                       ranks;
-      std::vector<std::vector<unsigned int>>          send_cells;
+      std::vector<unsigned int>                           ranks;
+      std::vector<std::vector<unsigned int>>              send_cells;
     };
 
 
