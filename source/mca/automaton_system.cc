@@ -245,10 +245,8 @@ namespace tribodyn
       half_kick();
       apply_kinematic_constraints(current_time);
       ++n_steps_done;
-      if (n_owned > 0 && !std::isfinite(v[0][0] + x[0][0]))
-        throw RunError("The velocities became NaN at step "
-                       + std::to_string(n_steps_done)
-                       + "; the time step is probably too large.");
+      // Finiteness and growth: checked by the driver after each step
+      // (count_unstable_automata(), source/mca/stability.cc).
     }
 
 

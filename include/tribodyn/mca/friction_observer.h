@@ -39,6 +39,13 @@ namespace tribodyn
              JsonValue         &summary,
              std::ostream      &figures) const;
 
+      /// The recorded series (checkpoints save and restore them).
+      std::vector<std::vector<double> *>
+      recorded_series()
+      {
+        return {&times, &normal, &tangential, &bonded, &unbonded};
+      }
+
     private:
       const Parameters   &prm;
       const int           loaded;
