@@ -363,6 +363,11 @@ namespace tribodyn
       // SIGTERM/SIGINT: polled between steps (checkpoint, clean stop).
       const InterruptHandlers interrupt_handlers;
       const auto              loop_start = std::chrono::steady_clock::now();
+      // A run that stops early keeps its friction series (friction.csv).
+      auto keep_friction_series = [&]() {
+        if (friction && friction_observer.recorded_series()[0]->size() >= 2)
+          friction_observer.write_series(out_dir, root);
+      };
       timer.enter_subsection("time steps");
       for (unsigned long s = first_step; s <= n_steps; ++s)
         {
@@ -374,7 +379,10 @@ namespace tribodyn
           const RunHealth health
             = agree_on_health(system.count_unstable_automata(v_limit), comm);
           if (health.badness > 0)
-            system.report_instability(v_limit);
+            {
+              keep_friction_series();
+              system.report_instability(v_limit);
+            }
           const bool regular = s % series_every == 0;
           const bool regular_output
             = regular && p.output.output_interval > 0 && s % output_every == 0;
@@ -395,7 +403,10 @@ namespace tribodyn
                 next_checkpoint += interval;
             }
           if (health.signal != 0)
-            InterruptHandlers::acknowledge();
+            {
+              InterruptHandlers::acknowledge();
+              keep_friction_series();
+            }
           if (health.signal != 0)
             throw Interrupted(
               health.signal,
