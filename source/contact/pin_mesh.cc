@@ -528,7 +528,10 @@ namespace tribodyn
               + " s): the explicit scheme would be unstable. Use a time step "
                 "of at most "
               + format_number(dt_critical)
-              + " s, or set 'Automatic time step = true'.");
+              + " s, or set 'Automatic time step = true'. (The critical "
+                "step scales with 'Geometry/Mesh size' and with the square "
+                "root of the materials' Density / Young modulus: check them "
+                "if it is unexpectedly small.)");
         }
       h                   = dt * dt * (0.5 + b2);
       friction_step.mu    = prm.contact.law == FrictionLaw::frictionless

@@ -140,7 +140,8 @@ namespace tribodyn
       if (n_global == 0)
         throw InputError(
           "The packing is empty: no FCC site of spacing Geometry/Automaton "
-          "size lies inside a body of Geometry/Bodies (or every one was "
+          "size lies inside a body of Geometry/Bodies within the box "
+          "Geometry/Domain lower and Domain upper (or every one was "
           "removed by a void region). Check the boxes and the automaton "
           "size.");
 

@@ -175,7 +175,12 @@ namespace tribodyn
         system.setup();
       }
       const double dt = system.time_step();
-      const auto   n_steps
+      check_parameter(p.time.end_time / dt < 1e12,
+                      "Time/End time",
+                      "the run would take " + format_number(p.time.end_time / dt)
+                        + " steps of dt = " + format_number(dt)
+                        + " s (limit 1e12): lower the end time.");
+      const auto n_steps
         = static_cast<unsigned long>(std::ceil(p.time.end_time / dt - 1e-9));
       pcout << "MCA: " << system.n_global_automata() << " automata, "
             << system.n_global_pairs() << " pairs, " << n_ranks
