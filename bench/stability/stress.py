@@ -103,7 +103,22 @@ end"""),
 subsection Time
   set Courant factor = 0.5
 end"""),
+    # long: 10^5 steps (minutes)
+    "mca_energy_drift_1e5": (os.path.join(ROOT, "bench/stability/"
+                                          "mca_energy_drift.prm"), ""),
 }
+
+
+def energy_drift(series, release=3e-11):
+    """Drift of kinetic + elastic energy after the release of the slab."""
+    import csv
+    rows = [r for r in csv.DictReader(open(series))
+            if float(r["time"]) >= release]
+    e = [float(r["kinetic_energy"]) + float(r["elastic_energy"]) for r in rows]
+    worst = max(abs(x - e[0]) for x in e) / e[0]
+    return (f"energy after the release {e[0]:.4g} J, at the end {e[-1]:.4g} J:"
+            f" drift {(e[-1] - e[0]) / e[0]:.3e}, largest deviation "
+            f"{worst:.3e} ({len(e)} samples)")
 
 
 def run(tribodyn, name, timeout=1800):
@@ -136,6 +151,9 @@ def run(tribodyn, name, timeout=1800):
             for k in keys if k in s)
     else:
         outcome = " ".join(err.split())[:400]
+    if name.startswith("mca_energy_drift") and code == 0:
+        outcome += "; " + energy_drift(os.path.join(work, "out",
+                                                    "series.csv"))
     print(f"| {name} | {code} | {wall:.1f} s | {outcome} |", flush=True)
 
 
