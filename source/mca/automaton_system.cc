@@ -46,6 +46,13 @@ namespace tribodyn
           k.inertia = k.mass * d * d / 10;
           mc.push_back(k);
         }
+      n_materials = mc.size();
+      for (const auto &a : mc)
+        for (const auto &b : mc)
+          {
+            const double ki = a.two_G / r0, kj = b.two_G / r0;
+            springs.push_back({ki, kj, 1. / (ki + kj)});
+          }
     }
 
 
@@ -53,18 +60,15 @@ namespace tribodyn
     AutomatonSystem::resize_automaton_arrays(const unsigned int n)
     {
       id.resize(n);
-      order.resize(n);
       cell_of.resize(n);
       x.resize(n);
-      x_at_rebuild.resize(n);
-      for (auto *vec : {&dx, &v, &w, &f, &f_tot, &torque, &u})
+      for (auto *vec : {&v, &w, &f, &torque, &u})
         vec->resize(n, {{0, 0, 0}});
       mat.resize(n, 0);
       body.resize(n, 0);
       groups.resize(n, 0);
       eps_p.resize(n, 0);
       sigma_y.resize(n, 0);
-      stress.resize(n, Sym3{{0, 0, 0, 0, 0, 0}});
     }
 
 
@@ -106,11 +110,14 @@ namespace tribodyn
       resize_automaton_arrays(n);
       for (unsigned int k = 0; k < n; ++k)
         {
-          const auto &a      = packed[k];
-          id[k]              = a.id;
-          x[k]               = a.position;
-          mat[k]             = a.material;
-          body[k]            = a.body;
+          const auto &a = packed[k];
+          id[k]         = a.id;
+          x[k]          = a.position;
+          mat[k]        = a.material;
+          body[k]       = a.body;
+          for (const Region &r : prm.interaction.elastic_regions)
+            if (r.contains(a.position))
+              body[k] |= elastic_flag;
           sigma_y[k]         = mc[a.material].yield0;
           cell_of[k]         = cells.local_cell(a.position);
           std::uint32_t mask = 0;
@@ -204,8 +211,15 @@ namespace tribodyn
       {
         double max_disp2 = 0;
         for (unsigned int k = 0; k < n_owned; ++k)
-          max_disp2
-            = std::max(max_disp2, x[k].distance_square(x_at_rebuild[k]));
+          {
+            double d2 = 0;
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                const double e = x[k][c] - x_at_rebuild[k][c];
+                d2 += e * e;
+              }
+            max_disp2 = std::max(max_disp2, d2);
+          }
         const double limit = 0.5 * prm.interaction.skin * d;
         if (n_ranks > 1)
           max_disp2 = dealii::Utilities::MPI::max(max_disp2, comm);
@@ -213,7 +227,7 @@ namespace tribodyn
           rebuild(false);
       }
       const double t = current_time;
-      // First half kick (f_tot holds pair + external forces of the last
+      // First half kick (f holds the pair and external forces of the last
       // step).
       auto half_kick = [&]() {
         for (unsigned int k = 0; k < n_owned; ++k)
@@ -221,7 +235,7 @@ namespace tribodyn
             const auto  &m = mc[mat[k]];
             const double a = 0.5 * dt / m.mass;
             for (unsigned int c = 0; c < 3; ++c)
-              v[k][c] += a * f_tot[k][c];
+              v[k][c] += a * f[k][c];
             if (rotations)
               {
                 const double b = 0.5 * dt / m.inertia;
@@ -232,13 +246,13 @@ namespace tribodyn
       };
       half_kick();
       apply_kinematic_constraints(t + 0.5 * dt);
-      // Drift.
+      // Drift (the pair kernel takes the increment as dt v again).
       for (unsigned int k = 0; k < n_owned; ++k)
         for (unsigned int c = 0; c < 3; ++c)
           {
-            dx[k][c] = dt * v[k][c];
-            x[k][c] += dx[k][c];
-            u[k][c] += dx[k][c];
+            const double dx = dt * v[k][c];
+            x[k][c] += dx;
+            u[k][c] += dx;
           }
       current_time = t + dt;
       evaluate_pairs(dt);
@@ -261,7 +275,7 @@ namespace tribodyn
           const auto &m = mc[mat[k]];
           kinetic += 0.5 * m.mass * dot(v[k], v[k])
                      + 0.5 * m.inertia * dot(w[k], w[k]);
-          const Sym3  &s  = stress[k];
+          const Sym3   s  = automaton_stress(k);
           const double sm = (s[0] + s[1] + s[2]) / 3;
           const double a = s[0] - sm, b = s[1] - sm, c = s[2] - sm;
           const double ss = a * a + b * b + c * c
@@ -272,7 +286,7 @@ namespace tribodyn
       for (unsigned int p = 0; p < pi.size(); ++p)
         // each pair counted once: by the owner of i (or of j when i is a
         // periodic image of an owned automaton on the same rank)
-        if (owned_i[p])
+        if (owned(pi[p]))
           {
             if (bonded[p])
               ++nb;
@@ -303,7 +317,7 @@ namespace tribodyn
     {
       unsigned long long n = 0;
       for (unsigned int p = 0; p < pi.size(); ++p)
-        n += owned_i[p];
+        n += owned(pi[p]);
       return dealii::Utilities::MPI::sum(n, comm);
     }
 
@@ -322,14 +336,14 @@ namespace tribodyn
       auto        add
         = [&](const auto &vec) { bytes += vec.capacity() * sizeof(vec[0]); };
       add(id), add(order), add(cell_of), add(x), add(x_at_rebuild);
-      for (const auto *vec : {&dx, &v, &w, &f, &f_tot, &torque, &u})
+      for (const auto *vec : {&v, &w, &f, &torque, &u})
         add(*vec);
       add(mat), add(body), add(groups), add(eps_p), add(sigma_y);
-      add(stress), add(kin), add(plast), add(sum_qs), add(dsm), add(acc_qse);
+      add(plast), add(bond_buffer), add(sum_qs), add(dsm);
       add(trial), add(fabric_inverse), add(changed);
       add(pi), add(pj), add(pshift), add(bonded), add(in_contact);
-      add(owned_i), add(owned_j), add(q_i), add(sig_i), add(sig_j);
-      add(heat), add(r_now), add(dr), add(tau_i), add(tau_j);
+      add(q_i), add(sig_i), add(sig_j), add(heat);
+      bytes += tau_i.memory_consumption() + tau_j.memory_consumption();
       add(beta_i), add(beta_j), add(kept_pairs), add(adjacency);
       add(adjacency_first);
       return bytes;
@@ -362,9 +376,9 @@ namespace tribodyn
           pv.bonded = bonded[p];
           pv.sigma  = 0.5 * (sig_i[p] + sig_j[p]);
           for (unsigned int c = 0; c < 3; ++c)
-            pv.tau[c] = 0.5 * (tau_i[p][c] + tau_j[p][c]);
+            pv.tau[c] = 0.5 * (tau_i.component[c][p] + tau_j.component[c][p]);
           pv.heat     = heat.empty() ? 0. : heat[p];
-          pv.distance = r_now[p];
+          pv.distance = pair_distance(p);
           out.push_back(pv);
         }
       return out;

@@ -70,8 +70,9 @@ namespace tribodyn
     void
     AutomatonSystem::apply_boundary_forces(const double t)
     {
-      // Adds external and damping forces to the pair forces f, giving
-      // f_tot (f is kept: it is the reaction the observers report).
+      // Adds external and damping forces to the pair forces f, which then
+      // hold the total forces of the kicks; the pair-force reaction of each
+      // group (what the observers report) is summed first, per rank.
       const auto               &grp      = prm.boundary.groups;
       const double              c_global = prm.boundary.global_damping;
       std::vector<Vec3>         values(grp.size());
@@ -82,25 +83,34 @@ namespace tribodyn
           if (grp[gi].type == BoundaryGroup::Type::force)
             plates.push_back(gi);
         }
-      f_tot.resize(n_local);
+      group_reaction.assign(grp.size(), Vec3{{0, 0, 0}});
+      for (unsigned int k = 0; k < n_owned; ++k)
+        if (groups[k] != 0)
+          for (unsigned int gi = 0; gi < grp.size(); ++gi)
+            if (groups[k] & (1u << gi))
+              for (unsigned int c = 0; c < 3; ++c)
+                group_reaction[gi][c] += f[k][c];
+      if (c_global > 0)
+        for (unsigned int k = 0; k < n_owned; ++k)
+          {
+            const double mass = mc[mat[k]].mass;
+            for (unsigned int c = 0; c < 3; ++c)
+              f[k][c] -= c_global * mass * v[k][c];
+          }
       for (unsigned int k = 0; k < n_owned; ++k)
         {
-          f_tot[k]          = f[k];
-          const double mass = mc[mat[k]].mass;
-          if (c_global > 0)
-            for (unsigned int c = 0; c < 3; ++c)
-              f_tot[k][c] -= c_global * mass * v[k][c];
           if (groups[k] == 0)
             continue;
+          const double mass = mc[mat[k]].mass;
           for (unsigned int gi = 0; gi < grp.size(); ++gi)
             if (groups[k] & (1u << gi))
               {
                 if (grp[gi].type == BoundaryGroup::Type::force)
                   for (unsigned int c = 0; c < 3; ++c)
-                    f_tot[k][c] += values[gi][c] / group_size[gi];
+                    f[k][c] += values[gi][c] / group_size[gi];
                 else if (grp[gi].type == BoundaryGroup::Type::damping)
                   for (unsigned int c = 0; c < 3; ++c)
-                    f_tot[k][c] -= values[gi][c] * mass * v[k][c];
+                    f[k][c] -= values[gi][c] * mass * v[k][c];
               }
         }
       if (plates.empty())
@@ -115,7 +125,7 @@ namespace tribodyn
             if (groups[k] & (1u << plates[q]))
               {
                 for (unsigned int c = 0; c < 3; ++c)
-                  sums[4 * q + c] += f_tot[k][c];
+                  sums[4 * q + c] += f[k][c];
                 sums[4 * q + 3] += mc[mat[k]].mass;
               }
       dealii::Utilities::MPI::sum(sums, comm, sums);
@@ -124,8 +134,7 @@ namespace tribodyn
           for (unsigned int q = 0; q < plates.size(); ++q)
             if ((groups[k] & (1u << plates[q])) && sums[4 * q + 3] > 0)
               for (unsigned int c = 0; c < 3; ++c)
-                f_tot[k][c]
-                  = mc[mat[k]].mass * sums[4 * q + c] / sums[4 * q + 3];
+                f[k][c] = mc[mat[k]].mass * sums[4 * q + c] / sums[4 * q + 3];
     }
 
 
@@ -152,8 +161,17 @@ namespace tribodyn
     std::vector<Vec3>
     AutomatonSystem::group_forces() const
     {
-      // f holds the pair forces only (the reaction of the group).
-      return sum_over_groups(f);
+      // the pair-force reactions summed at the last step
+      std::vector<double> sums(3 * group_reaction.size());
+      for (unsigned int gi = 0; gi < group_reaction.size(); ++gi)
+        for (unsigned int c = 0; c < 3; ++c)
+          sums[3 * gi + c] = group_reaction[gi][c];
+      dealii::Utilities::MPI::sum(sums, comm, sums);
+      std::vector<Vec3> out(prm.boundary.groups.size(), Vec3{{0, 0, 0}});
+      for (unsigned int gi = 0; gi < group_reaction.size(); ++gi)
+        for (unsigned int c = 0; c < 3; ++c)
+          out[gi][c] = sums[3 * gi + c];
+      return out;
     }
 
 

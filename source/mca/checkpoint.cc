@@ -10,9 +10,10 @@
 // array of AutomatonSystem that lives from one step to the next is added,
 // removed or renamed, update the list (the ctest mca_restart_* tests compare
 // a resumed run with an uninterrupted one and fail if something is missed).
-// Per-step scratch buffers (kin, plast, bond_buffer, sum_qs, dsm, acc_qse,
-// trial) and the rebuild's transient lists (kept_pairs, old_pairs,
-// old_flags) are rebuilt before use and are not saved.
+// Per-step scratch buffers (plast, bond_buffer, sum_qs, dsm, trial) and the
+// rebuild's transient lists (kept_pairs, old_pairs, old_flags) are rebuilt
+// before use and are not saved; the material constants (mc, springs) come
+// from the parameters.
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 #include <boost/serialization/array.hpp>
@@ -53,6 +54,12 @@ namespace tribodyn
         else
           ar << vec;
       }
+      void
+      put(boost::archive::binary_oarchive &ar, const VectorArray &a)
+      {
+        for (const auto &c : a.component)
+          put(ar, c);
+      }
       template <typename T>
       void
       get(boost::archive::binary_iarchive &ar, T &value)
@@ -75,6 +82,12 @@ namespace tribodyn
         else
           ar >> vec;
       }
+      void
+      get(boost::archive::binary_iarchive &ar, VectorArray &a)
+      {
+        for (auto &c : a.component)
+          get(ar, c);
+      }
     } // namespace
 
 // The state of AutomatonSystem carried from one step to the next.
@@ -86,15 +99,14 @@ namespace tribodyn
   apply(dropped_bonds) apply(any_changed)                                     \
   /* automata: owned first, then ghosts */                                    \
   apply(id) apply(order) apply(cell_of) apply(x) apply(x_at_rebuild)          \
-  apply(dx) apply(v) apply(w) apply(f) apply(f_tot) apply(torque) apply(u)    \
+  apply(v) apply(w) apply(f) apply(torque) apply(u)                           \
   apply(mat) apply(body) apply(groups) apply(eps_p) apply(sigma_y)            \
-  apply(stress) apply(fabric_inverse) apply(changed)                          \
+  apply(group_reaction) apply(fabric_inverse) apply(changed)                  \
   /* pairs */                                                                 \
   apply(pi) apply(pj) apply(pshift) apply(bonded) apply(in_contact)           \
-  apply(owned_i) apply(owned_j) apply(q_i) apply(sig_i) apply(sig_j)          \
-  apply(heat) apply(r_now) apply(dr) apply(tau_i) apply(tau_j)                \
+  apply(q_i) apply(sig_i) apply(sig_j) apply(heat) apply(tau_i) apply(tau_j)  \
   apply(beta_i) apply(beta_j) apply(adjacency_first) apply(adjacency)
-// clang-format on
+    // clang-format on
 
 
     void

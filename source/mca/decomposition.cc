@@ -359,11 +359,14 @@ namespace tribodyn
 
 
     void
-    NeighbourExchange::update(double *data, const unsigned int width) const
+    NeighbourExchange::update(std::initializer_list<Field> fields) const
     {
       const unsigned int n_nb = ranks.size();
       if (n_nb == 0)
         return;
+      unsigned int width = 0;
+      for (const Field &field : fields)
+        width += field.width;
       for (unsigned int n = 0; n < n_nb; ++n)
         {
           recv_buffers[n].resize((ghost_offset[n + 1] - ghost_offset[n])
@@ -382,9 +385,10 @@ namespace tribodyn
           buf.resize(send_indices[n].size() * width);
           double *out = buf.data();
           for (const unsigned int k : send_indices[n])
-            out = std::copy(data + std::size_t(k) * width,
-                            data + std::size_t(k + 1) * width,
-                            out);
+            for (const Field &field : fields)
+              out = std::copy(field.data + std::size_t(k) * field.width,
+                              field.data + std::size_t(k + 1) * field.width,
+                              out);
           MPI_Isend(buf.data(),
                     buf.size(),
                     MPI_DOUBLE,
@@ -395,9 +399,17 @@ namespace tribodyn
         }
       MPI_Waitall(2 * n_nb, requests.data(), MPI_STATUSES_IGNORE);
       for (unsigned int n = 0; n < n_nb; ++n)
-        std::copy(recv_buffers[n].begin(),
-                  recv_buffers[n].end(),
-                  data + std::size_t(ghost_offset[n]) * width);
+        {
+          const double *in = recv_buffers[n].data();
+          for (unsigned int k = ghost_offset[n]; k < ghost_offset[n + 1]; ++k)
+            for (const Field &field : fields)
+              {
+                std::copy(in,
+                          in + field.width,
+                          field.data + std::size_t(k) * field.width);
+                in += field.width;
+              }
+        }
     }
   } // namespace mca
 } // namespace tribodyn

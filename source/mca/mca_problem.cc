@@ -277,8 +277,6 @@ namespace tribodyn
 
       auto write_outputs = [&]() {
         dealii::TimerOutput::Scope scope(timer, "output");
-        if (need_stress)
-          system.compute_automaton_stresses();
         if (p.output.write_particles)
           pvd.add(system.time(),
                   system.write_particles(
@@ -305,17 +303,16 @@ namespace tribodyn
       std::string key_figure;
       auto        record_series = [&]() {
         dealii::TimerOutput::Scope scope(timer, "series");
-        system.compute_automaton_stresses();
-        const SystemEnergies e      = system.energies();
-        const auto           forces = system.group_forces();
-        const auto           disp   = system.group_displacements();
-        std::vector<double>  row    = {system.time(),
-                                       e.kinetic,
-                                       e.elastic,
-                                       e.plastic_work,
-                                       e.friction_work,
-                                       double(e.n_bonded),
-                                       double(e.n_unbonded_contacts)};
+        const SystemEnergies       e      = system.energies();
+        const auto                 forces = system.group_forces();
+        const auto                 disp   = system.group_displacements();
+        std::vector<double>        row    = {system.time(),
+                                             e.kinetic,
+                                             e.elastic,
+                                             e.plastic_work,
+                                             e.friction_work,
+                                             double(e.n_bonded),
+                                             double(e.n_unbonded_contacts)};
         for (unsigned int g = 0; g < forces.size(); ++g)
           {
             for (unsigned int c = 0; c < 3; ++c)

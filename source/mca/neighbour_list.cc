@@ -12,7 +12,7 @@ namespace tribodyn
 {
   namespace mca
   {
-    std::vector<double>
+    void
     AutomatonSystem::build_pair_list()
     {
       // Automata of each local cell (owned and ghost), CSR.
@@ -82,26 +82,14 @@ namespace tribodyn
       pi.resize(n_pairs);
       pj.resize(n_pairs);
       pshift.resize(n_pairs);
-      owned_i.resize(n_pairs);
-      owned_j.resize(n_pairs);
       for (unsigned int p = 0; p < n_pairs; ++p)
         {
-          pi[p]      = found[p].i;
-          pj[p]      = found[p].j;
-          pshift[p]  = found[p].shift;
-          owned_i[p] = found[p].i < n_owned;
-          owned_j[p] = found[p].j < n_owned;
+          pi[p]     = found[p].i;
+          pj[p]     = found[p].j;
+          pshift[p] = found[p].shift;
         }
       std::vector<Candidate>().swap(found);
-      std::vector<double> r(n_pairs);
-      for (unsigned int p = 0; p < n_pairs; ++p)
-        {
-          const Vec3 dn = pair_vector(p);
-          r[p]          = std::sqrt(dot(dn, dn));
-        }
       pi.shrink_to_fit(), pj.shrink_to_fit(), pshift.shrink_to_fit();
-      owned_i.shrink_to_fit(), owned_j.shrink_to_fit();
-      return r;
     }
   } // namespace mca
 } // namespace tribodyn

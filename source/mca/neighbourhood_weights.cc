@@ -34,14 +34,18 @@ namespace tribodyn
         {
           beta_i.assign(n_pairs, 0);
           beta_j.assign(n_pairs, 0);
-          fabric_inverse.assign(n_local, Sym3{{1, 1, 1, 0, 0, 0}});
+          // stored only where the stress is needed every step
+          if (plastic_scene || bond_scene)
+            fabric_inverse.assign(n_owned, Sym3{{1, 1, 1, 0, 0, 0}});
+          else
+            std::vector<Sym3>().swap(fabric_inverse);
           // pairs of each owned automaton (CSR): rebuilt with the pair list
           adjacency_first.assign(n_owned + 1, 0);
           for (unsigned int p = 0; p < n_pairs; ++p)
             {
-              if (owned_i[p])
+              if (owned(pi[p]))
                 ++adjacency_first[pi[p] + 1];
-              if (owned_j[p])
+              if (owned(pj[p]))
                 ++adjacency_first[pj[p] + 1];
             }
           for (unsigned int k = 0; k < n_owned; ++k)
@@ -51,9 +55,9 @@ namespace tribodyn
                                          adjacency_first.end() - 1);
           for (unsigned int p = 0; p < n_pairs; ++p)
             {
-              if (owned_i[p])
+              if (owned(pi[p]))
                 adjacency[fill[pi[p]]++] = 2 * p;
-              if (owned_j[p])
+              if (owned(pj[p]))
                 adjacency[fill[pj[p]]++] = 2 * p + 1;
             }
         }
@@ -65,25 +69,20 @@ namespace tribodyn
         {
           if (!all && !changed[k])
             continue;
-          // A = sum_j N_j N_j^T, fabric B = sum_j (q S / V) n n, over the
-          // interacting pairs (bonded or in contact)
-          Matrix6         A     = Matrix6::Zero();
-          Eigen::Matrix3d B     = Eigen::Matrix3d::Zero();
-          unsigned int    count = 0;
+          // A = sum_j N_j N_j^T over the interacting pairs (bonded or in
+          // contact)
+          Matrix6      A     = Matrix6::Zero();
+          unsigned int count = 0;
           for (unsigned int a = adjacency_first[k]; a < adjacency_first[k + 1];
                ++a)
             {
               const unsigned int p = adjacency[a] / 2;
               if (!bonded[p] && !in_contact[p])
                 continue;
-              const Vec3   dn = pair_vector(p);
-              const double r  = std::sqrt(dot(dn, dn));
-              const Vec3   n{{dn[0] / r, dn[1] / r, dn[2] / r}};
-              const auto   N = voigt(n);
+              double     r;
+              const Vec3 n = unit_normal(p, r);
+              const auto N = voigt(n);
               A.noalias() += N * N.transpose();
-              const double q = (adjacency[a] & 1) ? r - q_i[p] : q_i[p];
-              const Eigen::Vector3d nv(n[0], n[1], n[2]);
-              B.noalias() += (q * S / V) * nv * nv.transpose();
               ++count;
             }
           // Least-squares weights of the volumetric strain: beta_j = g.N_j
@@ -116,9 +115,8 @@ namespace tribodyn
                 {
                   if (full_rank)
                     {
-                      const Vec3   dn = pair_vector(p);
-                      const double r  = std::sqrt(dot(dn, dn));
-                      beta = g.dot(voigt({{dn[0] / r, dn[1] / r, dn[2] / r}}));
+                      double r;
+                      beta = g.dot(voigt(unit_normal(p, r)));
                     }
                   else
                     beta = 3. / count;
@@ -139,22 +137,40 @@ namespace tribodyn
                 const unsigned int p = adjacency[a] / 2;
                 ((adjacency[a] & 1) ? beta_j : beta_i)[p] *= 3 / beta_sum;
               }
-          // Inverse fabric, for well-conditioned fabrics only (complete
-          // FCC: B = I); otherwise eq. (4) as is: B^-1 of a nearly planar
-          // neighbourhood would blow the stress (and the radial return's
-          // mean stress) up.
-          const double tr3 = B.trace() / 3;
-          Sym3         binv{{1, 1, 1, 0, 0, 0}};
-          if (B.determinant() > 0.1 * tr3 * tr3 * tr3)
-            {
-              const Eigen::Matrix3d Bi = B.inverse();
-              binv                     = {
-                                    {Bi(0, 0), Bi(1, 1), Bi(2, 2), Bi(1, 2), Bi(0, 2), Bi(0, 1)}};
-            }
-          fabric_inverse[k] = binv;
-          changed[k]        = 0;
+          if (!fabric_inverse.empty())
+            fabric_inverse[k] = inverse_fabric(k);
+          changed[k] = 0;
         }
       any_changed = false;
+    }
+
+
+    Sym3
+    AutomatonSystem::inverse_fabric(const unsigned int k) const
+    {
+      // B = sum_j (q S / V) n n over the interacting pairs (complete FCC:
+      // B = I). Inverted for well-conditioned fabrics only; otherwise
+      // eq. (4) as is: B^-1 of a nearly planar neighbourhood would blow the
+      // stress (and the radial return's mean stress) up.
+      Eigen::Matrix3d B = Eigen::Matrix3d::Zero();
+      for (unsigned int a = adjacency_first[k]; a < adjacency_first[k + 1]; ++a)
+        {
+          const unsigned int p = adjacency[a] / 2;
+          if (!bonded[p] && !in_contact[p])
+            continue;
+          double                r;
+          const Vec3            n = unit_normal(p, r);
+          const double          q = (adjacency[a] & 1) ? r - q_i[p] : q_i[p];
+          const Eigen::Vector3d nv(n[0], n[1], n[2]);
+          B.noalias() += (q * S / V) * nv * nv.transpose();
+        }
+      const double tr3 = B.trace() / 3;
+      if (B.determinant() > 0.1 * tr3 * tr3 * tr3)
+        {
+          const Eigen::Matrix3d Bi = B.inverse();
+          return {{Bi(0, 0), Bi(1, 1), Bi(2, 2), Bi(1, 2), Bi(0, 2), Bi(0, 1)}};
+        }
+      return {{1, 1, 1, 0, 0, 0}};
     }
 
 
@@ -163,7 +179,8 @@ namespace tribodyn
     {
       // sym(B^-1 T) of the full (unsymmetric) T = B sigma: at surfaces B is
       // anisotropic and sym(B^-1 sym(T)) would not recover sigma
-      const Sym3     &b = fabric_inverse[k];
+      const Sym3 b
+        = fabric_inverse.empty() ? inverse_fabric(k) : fabric_inverse[k];
       Eigen::Matrix3d Bi, T;
       Bi << b[0], b[5], b[4], b[5], b[1], b[3], b[4], b[3], b[2];
       T << t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8];
@@ -183,51 +200,58 @@ namespace tribodyn
     {
       // Seed eq. (4): T^i += (q_ij S / V_i) n_ij (x) F_ij / S, for each
       // owned side of the pair (q_ji = r_ij - q_ij); sigma^i = sym(B^-1 T).
-      const Vec3 n = unit_normal(p);
-      if (owned_i[p])
+      double     r;
+      const Vec3 n = unit_normal(p, r);
+      if (owned(pi[p]) && !elastic(pi[p]))
         {
           Vec3 t;
           for (unsigned int c = 0; c < 3; ++c)
-            t[c] = sig_i[p] * n[c] + tau_i[p][c];
+            t[c] = sig_i[p] * n[c] + tau_i.component[c][p];
           add_outer(target[pi[p]], q_i[p] * S / V, n, t);
         }
-      if (owned_j[p])
+      if (owned(pj[p]) && !elastic(pj[p]))
         {
           Vec3 t;
           for (unsigned int c = 0; c < 3; ++c)
-            t[c] = sig_j[p] * n[c] + tau_j[p][c];
-          add_outer(target[pj[p]], (r_now[p] - q_i[p]) * S / V, n, t);
+            t[c] = sig_j[p] * n[c] + tau_j.component[c][p];
+          add_outer(target[pj[p]], (r - q_i[p]) * S / V, n, t);
         }
     }
 
 
-    void
-    AutomatonSystem::compute_automaton_stresses()
+    Sym3
+    AutomatonSystem::automaton_stress(const unsigned int k) const
     {
-      // Per automaton over its pairs (in pair order, the order of the pair
+      // Over the automaton's pairs, in pair order (the order of the pair
       // loop): no tensor array of all automata is needed.
-      stress.resize(n_local);
-      for (unsigned int k = 0; k < n_owned; ++k)
+      Mat3 t{{0, 0, 0, 0, 0, 0, 0, 0, 0}};
+      for (unsigned int a = adjacency_first[k]; a < adjacency_first[k + 1]; ++a)
         {
-          Mat3 t{{0, 0, 0, 0, 0, 0, 0, 0, 0}};
-          for (unsigned int a = adjacency_first[k]; a < adjacency_first[k + 1];
-               ++a)
-            {
-              const unsigned int p = adjacency[a] / 2;
-              if (!bonded[p] && !in_contact[p])
-                continue;
-              const Vec3   n    = unit_normal(p);
-              const bool   is_j = adjacency[a] & 1;
-              const double sg   = is_j ? sig_j[p] : sig_i[p];
-              const Vec3  &tau  = is_j ? tau_j[p] : tau_i[p];
-              const double q    = is_j ? r_now[p] - q_i[p] : q_i[p];
-              Vec3         traction;
-              for (unsigned int c = 0; c < 3; ++c)
-                traction[c] = sg * n[c] + tau[c];
-              add_outer(t, q * S / V, n, traction);
-            }
-          stress[k] = fabric_corrected(k, t);
+          const unsigned int p = adjacency[a] / 2;
+          if (!bonded[p] && !in_contact[p])
+            continue;
+          double       r;
+          const Vec3   n    = unit_normal(p, r);
+          const bool   is_j = adjacency[a] & 1;
+          const double sg   = is_j ? sig_j[p] : sig_i[p];
+          const Vec3   tau  = is_j ? tau_j[p] : tau_i[p];
+          const double q    = is_j ? r - q_i[p] : q_i[p];
+          Vec3         traction;
+          for (unsigned int c = 0; c < 3; ++c)
+            traction[c] = sg * n[c] + tau[c];
+          add_outer(t, q * S / V, n, traction);
         }
+      return fabric_corrected(k, t);
+    }
+
+
+    std::vector<Sym3>
+    AutomatonSystem::stresses() const
+    {
+      std::vector<Sym3> out(n_owned);
+      for (unsigned int k = 0; k < n_owned; ++k)
+        out[k] = automaton_stress(k);
+      return out;
     }
   } // namespace mca
 } // namespace tribodyn

@@ -15,26 +15,10 @@ namespace tribodyn
     void
     AutomatonSystem::evaluate_pairs(const double step_dt)
     {
-      // Ghost kinematics: x, dx, w from their owners.
-      if (neighbours.active())
-        {
-          kin.resize(static_cast<std::size_t>(n_local) * 9);
-          for (unsigned int k = 0; k < n_owned; ++k)
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                kin[9 * k + c]     = x[k][c];
-                kin[9 * k + 3 + c] = dx[k][c];
-                kin[9 * k + 6 + c] = w[k][c];
-              }
-          neighbours.update(kin.data(), 9);
-          for (unsigned int k = n_owned; k < n_local; ++k)
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                x[k][c]  = kin[9 * k + c];
-                dx[k][c] = kin[9 * k + 3 + c];
-                w[k][c]  = kin[9 * k + 6 + c];
-              }
-        }
+      // Ghost kinematics: x, v, w from their owners (one message per
+      // neighbour rank).
+      if (neighbours.active() && n_local > 0)
+        neighbours.update({{&x[0][0], 3}, {v[0].data(), 3}, {w[0].data(), 3}});
       // Neighbourhoods that changed at the last step (contacts, bonds).
       if (any_changed)
         update_neighbourhood_weights(false);
@@ -67,7 +51,6 @@ namespace tribodyn
       const double       inv_r0  = 1. / r0;
       if constexpr (plastic)
         sum_qs.assign(n_local, 0);
-      acc_qse.assign(n_local, 0);
       dsm.assign(n_local, 0);
       // Contact and bond changes of this step mark both automata.
       auto mark = [&](const unsigned int p) {
@@ -82,26 +65,31 @@ namespace tribodyn
         {
           const unsigned int i = pi[p], j = pj[p];
           const Vec3         dnew = pair_vector(p);
-          Vec3               dold;
+          // displacement increments of the step: dt v (the drift)
+          Vec3 du, dold;
           for (unsigned int c = 0; c < 3; ++c)
-            dold[c] = dnew[c] - (dx[j][c] - dx[i][c]);
-          const double r  = std::sqrt(dot(dnew, dnew));
-          const double ro = std::sqrt(dot(dold, dold));
+            {
+              du[c]   = step_dt * v[j][c] - step_dt * v[i][c];
+              dold[c] = dnew[c] - du[c];
+            }
+          // (reciprocals multiplied: divisions are the dearest operations
+          // of this loop)
+          const double r = std::sqrt(dot(dnew, dnew)), inv_r = 1. / r;
+          const double ro = std::sqrt(dot(dold, dold)), inv_ro = 1. / ro;
           Vec3         n, nm, sum, diff;
           for (unsigned int c = 0; c < 3; ++c)
             {
-              n[c]    = dnew[c] / r;
-              nm[c]   = n[c] + dold[c] / ro;
+              n[c]    = dnew[c] * inv_r;
+              nm[c]   = n[c] + dold[c] * inv_ro;
               sum[c]  = dnew[c] + dold[c];
               diff[c] = dnew[c] - dold[c];
             }
-          const double nmn = std::sqrt(dot(nm, nm));
+          const double inv_nmn = 1. / std::sqrt(dot(nm, nm));
           for (unsigned int c = 0; c < 3; ++c)
-            nm[c] /= nmn;
-          double dr_p = dot(diff, sum) / (r + ro), r_prev = ro;
-          r_now[p]        = r;
-          const double ki = mc[mat[i]].two_G * inv_r0,
-                       kj = mc[mat[j]].two_G * inv_r0;
+            nm[c] *= inv_nmn;
+          double               dr_p = dot(diff, sum) / (r + ro), r_prev = ro;
+          const SeriesSprings &k  = springs[mat[i] * n_materials + mat[j]];
+          const double         ki = k.ki, kj = k.kj;
 
           if (!bonded[p])
             {
@@ -112,9 +100,9 @@ namespace tribodyn
                     mark(p);
                   in_contact[p] = 0;
                   sig_i[p] = sig_j[p] = 0;
-                  tau_i[p] = tau_j[p] = {{0, 0, 0}};
-                  q_i[p]              = r / 2;
-                  dr[p]               = 0;
+                  tau_i.set(p, {{0, 0, 0}});
+                  tau_j.set(p, {{0, 0, 0}});
+                  q_i[p] = r / 2;
                   continue;
                 }
               if (!in_contact[p])
@@ -130,9 +118,6 @@ namespace tribodyn
           const double qi = q_i[p], qj = r_prev - qi;
 
           // Tangential: relative displacement of the contact points.
-          Vec3 du;
-          for (unsigned int c = 0; c < 3; ++c)
-            du[c] = dx[j][c] - dx[i][c];
           if constexpr (rot)
             {
               Vec3 th;
@@ -148,9 +133,10 @@ namespace tribodyn
           // rotate the stored shear stresses into the new tangent plane,
           // keeping their magnitudes (both sides are parallel: they are set
           // equal below and only scaled afterwards, so one factor serves)
+          Vec3 ti = tau_i[p], tj = tau_j[p];
           {
-            const Vec3 &ref = dot(tau_i[p], tau_i[p]) > 0 ? tau_i[p] : tau_j[p];
-            const double t2 = dot(ref, ref);
+            const Vec3  &ref = dot(ti, ti) > 0 ? ti : tj;
+            const double t2  = dot(ref, ref);
             if (t2 > 0)
               {
                 const double tn = dot(ref, n);
@@ -161,7 +147,7 @@ namespace tribodyn
                     p2 += e * e;
                   }
                 const double s = p2 > 1e-12 * t2 ? std::sqrt(t2 / p2) : 0.;
-                for (Vec3 *tp : {&tau_i[p], &tau_j[p]})
+                for (Vec3 *tp : {&ti, &tj})
                   {
                     Vec3        &t   = *tp;
                     const double tnt = dot(t, n);
@@ -172,34 +158,33 @@ namespace tribodyn
           }
           {
             // series springs of the two halves: one shear stress
-            const double inv = 1. / (ki + kj);
+            const double inv = k.inv_sum;
+            Vec3         tn;
             for (unsigned int c = 0; c < 3; ++c)
-              {
-                const double tn
-                  = (kj * tau_i[p][c] + ki * tau_j[p][c] + ki * kj * du[c])
-                    * inv;
-                tau_i[p][c] = tn;
-                tau_j[p][c] = tn;
-              }
+              tn[c] = (kj * ti[c] + ki * tj[c] + ki * kj * du[c]) * inv;
+            tau_i.set(p, tn);
+            tau_j.set(p, tn);
           }
           // Normal split: equal elastic increments 2G de from both sides
-          // (series springs); the many-body parts D dsm of the two sides
-          // differ and the force uses the mean of the two sides.
-          const double dqi = kj * dr_p / (ki + kj);
-          dr[p]            = dr_p;
+          // (series springs), applied now; the many-body parts D dsm of the
+          // two sides differ (added once dsm is known) and the force uses
+          // the mean of the two sides.
+          const double dqi = kj * dr_p * k.inv_sum;
           q_i[p]           = qi + dqi;
+          sig_i[p] += ki * dqi;
+          sig_j[p] += kj * (dr_p - dqi);
           const double qin = qi + dqi, qjn = r - qin;
-          if (owned_i[p])
+          if (owned(i))
             {
               if constexpr (plastic)
                 sum_qs[i] += qin * S;
-              acc_qse[i] += beta_i[p] * dqi * inv_r0;
+              dsm[i] += beta_i[p] * dqi * inv_r0;
             }
-          if (owned_j[p])
+          if (owned(j))
             {
               if constexpr (plastic)
                 sum_qs[j] += qjn * S;
-              acc_qse[j] += beta_j[p] * (dr_p - dqi) * inv_r0;
+              dsm[j] += beta_j[p] * (dr_p - dqi) * inv_r0;
             }
         }
 
@@ -208,7 +193,7 @@ namespace tribodyn
       // squares) to its pairs' normal strains: dtheta = sum_j beta_ij
       // deps_ij (beta = 1/4 in a complete FCC neighbourhood).
       for (unsigned int k = 0; k < n_owned; ++k)
-        dsm[k] = mc[mat[k]].K * acc_qse[k];
+        dsm[k] *= mc[mat[k]].K;
       if (neighbours.active())
         neighbours.update(dsm.data(), 1);
 
@@ -217,13 +202,11 @@ namespace tribodyn
           f[k]      = {{0, 0, 0}};
           torque[k] = {{0, 0, 0}};
         }
-      // Elastic update of the side stresses of pair p.
+      // Many-body part of the elastic update of the side stresses.
       auto elastic_update = [&](const unsigned int p) {
         const unsigned int i = pi[p], j = pj[p];
-        const double       ki = mc[mat[i]].two_G, kj = mc[mat[j]].two_G;
-        const double       dqi = kj * dr[p] / (ki + kj);
-        sig_i[p] += ki * dqi * inv_r0 + mc[mat[i]].D * dsm[i];
-        sig_j[p] += kj * (dr[p] - dqi) * inv_r0 + mc[mat[j]].D * dsm[j];
+        sig_i[p] += mc[mat[i]].D * dsm[i];
+        sig_j[p] += mc[mat[j]].D * dsm[j];
       };
 
       // Pass B (plastic scenes): trial side stresses and trial tensors,
@@ -236,11 +219,18 @@ namespace tribodyn
               if (!bonded[p] && !in_contact[p])
                 continue;
               elastic_update(p);
-              add_pair_stress(p, trial);
+              // automata of elastic regions need no trial stress
+              if (!elastic(pi[p]) || !elastic(pj[p]))
+                add_pair_stress(p, trial);
             }
           plast.assign(static_cast<std::size_t>(n_local) * 3, 0.);
           for (unsigned int k = 0; k < n_owned; ++k)
             {
+              if (elastic(k))
+                {
+                  plast[3 * k + 1] = 1; // M = 1: no plastic correction
+                  continue;
+                }
               const auto  &m  = mc[mat[k]];
               const Sym3   s  = fabric_corrected(k, trial[k]);
               const double sm = (s[0] + s[1] + s[2]) / 3;
@@ -271,7 +261,10 @@ namespace tribodyn
           if (!bonded[p] && !in_contact[p])
             continue;
           const unsigned int i = pi[p], j = pj[p];
-          const double       qi = q_i[p], qj = r_now[p] - qi;
+          double             r;
+          const Vec3         n  = unit_normal(p, r);
+          const double       qi = q_i[p], qj = r - qi;
+          Vec3               ti = tau_i[p], tj = tau_j[p];
           if constexpr (plastic)
             {
               const double smi = plast[3 * i], Mi = plast[3 * i + 1];
@@ -280,13 +273,13 @@ namespace tribodyn
                 {
                   sig_i[p] = smi + Mi * (sig_i[p] - smi);
                   for (unsigned int c = 0; c < 3; ++c)
-                    tau_i[p][c] *= Mi;
+                    ti[c] *= Mi;
                 }
               if (Mj < 1)
                 {
                   sig_j[p] = smj + Mj * (sig_j[p] - smj);
                   for (unsigned int c = 0; c < 3; ++c)
-                    tau_j[p][c] *= Mj;
+                    tj[c] *= Mj;
                 }
               // Plastic heat for bond formation: only heat generated while
               // the pair is unbonded counts (seed §2.1).
@@ -299,13 +292,13 @@ namespace tribodyn
           if (!bonded[p])
             {
               // no tension; Amontons-Coulomb on each side
-              sig_i[p]        = std::min(sig_i[p], 0.);
-              sig_j[p]        = std::min(sig_j[p], 0.);
-              const double ki = mc[mat[i]].two_G * inv_r0,
-                           kj = mc[mat[j]].two_G * inv_r0;
+              sig_i[p]                = std::min(sig_i[p], 0.);
+              sig_j[p]                = std::min(sig_j[p], 0.);
+              const SeriesSprings &k  = springs[mat[i] * n_materials + mat[j]];
+              const double         ki = k.ki, kj = k.kj;
               for (const int side : {0, 1})
                 {
-                  Vec3        &t     = side == 0 ? tau_i[p] : tau_j[p];
+                  Vec3        &t     = side == 0 ? ti : tj;
                   const double limit = -mu * (side == 0 ? sig_i[p] : sig_j[p]);
                   const double tn    = std::sqrt(dot(t, t));
                   if (tn > limit)
@@ -314,7 +307,7 @@ namespace tribodyn
                       // work of the slip (tn - limit) / k_series of this
                       // side's half of the pair force, counted by the
                       // owner of that side
-                      if (side == 0 ? owned_i[p] : owned_j[p])
+                      if (owned(side == 0 ? i : j))
                         friction_work += 0.5 * S * limit * (tn - limit)
                                          * (ki + kj) / (ki * kj);
                       for (unsigned int c = 0; c < 3; ++c)
@@ -322,18 +315,22 @@ namespace tribodyn
                     }
                 }
             }
-          const Vec3   n  = unit_normal(p);
+          if (plastic || !bonded[p])
+            {
+              tau_i.set(p, ti);
+              tau_j.set(p, tj);
+            }
           const double sn = 0.5 * (sig_i[p] + sig_j[p]);
           Vec3         ft, F;
           for (unsigned int c = 0; c < 3; ++c)
             {
-              ft[c] = 0.5 * S * (tau_i[p][c] + tau_j[p][c]);
+              ft[c] = 0.5 * S * (ti[c] + tj[c]);
               F[c]  = S * sn * n[c] + ft[c];
             }
           Vec3 nxf;
           if constexpr (rot)
             nxf = cross(n, ft);
-          if (owned_i[p])
+          if (owned(i))
             {
               for (unsigned int c = 0; c < 3; ++c)
                 f[i][c] += F[c];
@@ -341,7 +338,7 @@ namespace tribodyn
                 for (unsigned int c = 0; c < 3; ++c)
                   torque[i][c] += qi * nxf[c];
             }
-          if (owned_j[p])
+          if (owned(j))
             {
               for (unsigned int c = 0; c < 3; ++c)
                 f[j][c] -= F[c];
@@ -362,15 +359,27 @@ namespace tribodyn
     {
       // Bond switching (takes effect at the next step), from the automata's
       // stress tensors (eq. 4) exchanged with the neighbours.
-      compute_automaton_stresses();
       // member buffer: no allocation per step
       std::vector<double> &ex = bond_buffer;
       ex.assign(static_cast<std::size_t>(n_local) * 7, 0.);
       for (unsigned int k = 0; k < n_owned; ++k)
         {
-          for (unsigned int c = 0; c < 6; ++c)
-            ex[7 * k + c] = stress[k][c];
           ex[7 * k + 6] = sigma_y[k];
+          // an automaton of an elastic region with only elastic partners
+          // takes part in no bond check: its stress is not needed
+          bool needed = !elastic(k);
+          for (unsigned int a = adjacency_first[k];
+               a < adjacency_first[k + 1] && !needed;
+               ++a)
+            {
+              const unsigned int p = adjacency[a] / 2;
+              needed = !elastic((adjacency[a] & 1) ? pi[p] : pj[p]);
+            }
+          if (!needed)
+            continue;
+          const Sym3 s = automaton_stress(k);
+          for (unsigned int c = 0; c < 6; ++c)
+            ex[7 * k + c] = s[c];
         }
       if (neighbours.active())
         neighbours.update(ex.data(), 7);
@@ -379,8 +388,12 @@ namespace tribodyn
       for (unsigned int p = 0; p < n_pairs; ++p)
         {
           const unsigned int i = pi[p], j = pj[p];
-          const Vec3         n  = unit_normal(p);
-          const double       sn = 0.5 * (sig_i[p] + sig_j[p]);
+          if (elastic(i) && elastic(j))
+            continue; // no bond switching inside elastic regions
+          double       r;
+          const Vec3   n  = unit_normal(p, r);
+          const double sn = 0.5 * (sig_i[p] + sig_j[p]);
+          const Vec3   ti = tau_i[p], tj = tau_j[p];
           if (bonded[p] && prm.interaction.bond_breaking)
             {
               Sym3 s;
@@ -395,8 +408,7 @@ namespace tribodyn
               const double snn = dot(sn_vec, n);
               Vec3         corr;
               for (unsigned int c = 0; c < 3; ++c)
-                corr[c] = 0.5 * (tau_i[p][c] + tau_j[p][c])
-                          - (sn_vec[c] - snn * n[c]);
+                corr[c] = 0.5 * (ti[c] + tj[c]) - (sn_vec[c] - snn * n[c]);
               add_sym(s, sn - snn, n, n);
               add_sym(s, 1, n, corr);
               add_sym(s, 1, corr, n);
@@ -405,7 +417,7 @@ namespace tribodyn
               if (von_mises(s) >= limit)
                 {
                   bonded[p]     = 0;
-                  in_contact[p] = r_now[p] < d;
+                  in_contact[p] = r < d;
                   if (!heat.empty())
                     heat[p] = 0;
                   changed[i] = changed[j] = 1;
@@ -417,7 +429,7 @@ namespace tribodyn
             {
               const double sy = std::min(ex[7 * i + 6], ex[7 * j + 6]);
               const double Eb
-                = std::min(mc[mat[i]].w_b, mc[mat[j]].w_b) * S * r_now[p];
+                = std::min(mc[mat[i]].w_b, mc[mat[j]].w_b) * S * r;
               const double h = heat.empty() ? 0. : heat[p];
               if (sn <= -sy && h >= heat_fraction * Eb)
                 {

@@ -281,6 +281,17 @@ namespace tribodyn
                           "(d_i + d_j)/2 + skin d and is rebuilt when an "
                           "automaton has moved more than skin d / 2. In "
                           "(0, 1].");
+        prm.declare_entry(
+          "Elastic regions",
+          "",
+          Patterns::Anything(),
+          "Boxes 'x0 y0 z0 x1 y1 z1' (m), separated by ';', whose automata "
+          "(by their initial positions, with periodic images) are declared "
+          "elastic: they skip the plastic return, and their pairs with "
+          "other elastic automata skip the bond breaking and formation "
+          "checks. For the parts of a scene far from the friction zone "
+          "(the seed's bases), where nothing yields or breaks: they then "
+          "cost what an elastic block costs. Empty: none.");
       }
       prm.leave_subsection();
     }
@@ -299,6 +310,20 @@ namespace tribodyn
         bond_formation_heat_fraction
           = prm.get_double("Bond formation heat fraction");
         skin = prm.get_double("Skin");
+        elastic_regions.clear();
+        for (const std::string &entry : split(prm.get("Elastic regions"), ';'))
+          {
+            const auto t = tokens(entry);
+            if (t.size() != 6)
+              throw InputError(
+                "Parameter 'Interaction/Elastic regions': the entry '" + entry
+                + "' must read 'x0 y0 z0 x1 y1 z1' (a box, m).");
+            Region r;
+            r.shape = Region::Shape::box;
+            r.a     = read_point(t, 0, "Interaction/Elastic regions", entry);
+            r.b     = read_point(t, 3, "Interaction/Elastic regions", entry);
+            elastic_regions.push_back(r);
+          }
         check_parameter_range("Interaction/Friction coefficient",
                               friction_coefficient,
                               0,

@@ -23,8 +23,11 @@ namespace tribodyn
     {
       char tag[32];
       std::snprintf(tag, sizeof(tag), "%s_%04u", base.c_str(), number);
-      const std::string         name    = tag;
-      const auto                nbonded = bonded_neighbour_counts();
+      const std::string name    = tag;
+      const auto        nbonded = bonded_neighbour_counts();
+      // stresses are not stored: computed for this output only
+      const std::vector<Sym3> stress
+        = with_stress ? stresses() : std::vector<Sym3>();
       std::vector<unsigned int> selected;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
@@ -63,10 +66,13 @@ namespace tribodyn
       scalar("id", [&](unsigned k) { return static_cast<double>(id[k]); });
       scalar("rank", [&](unsigned) { return static_cast<double>(rank); });
       scalar("material", [&](unsigned k) { return double(mat[k]); });
-      scalar("body", [&](unsigned k) { return double(body[k]); });
+      scalar("body", [&](unsigned k) { return double(body_index(k)); });
       scalar("bonded_neighbours",
              [&](unsigned k) { return double(nbonded[k]); });
       scalar("plastic_strain", [&](unsigned k) { return eps_p[k]; });
+      const bool with_elastic = !prm.interaction.elastic_regions.empty();
+      if (with_elastic)
+        scalar("elastic", [&](unsigned k) { return double(elastic(k)); });
       vector("velocity", [&](unsigned k) { return v[k]; });
       vector("displacement", [&](unsigned k) { return u[k]; });
       vector("angular_velocity", [&](unsigned k) { return w[k]; });
@@ -122,6 +128,8 @@ namespace tribodyn
                                 "bonded_neighbours",
                                 "plastic_strain"})
             pv << "<PDataArray type=\"Float64\" Name=\"" << s << "\"/>\n";
+          if (with_elastic)
+            pv << "<PDataArray type=\"Float64\" Name=\"elastic\"/>\n";
           for (const char *s : {"velocity", "displacement", "angular_velocity"})
             pv << "<PDataArray type=\"Float64\" Name=\"" << s
                << "\" NumberOfComponents=\"3\"/>\n";

@@ -19,7 +19,7 @@ namespace tribodyn
       // Layout of the particle properties of a migrating automaton.
       namespace prop
       {
-        constexpr unsigned int v = 0, w = 3, f_tot = 6, torque = 9, u = 12,
+        constexpr unsigned int v = 0, w = 3, f = 6, torque = 9, u = 12,
                                mat = 15, body = 16, groups = 17, eps_p = 18,
                                sigma_y = 19, n = 20;
       } // namespace prop
@@ -85,9 +85,14 @@ namespace tribodyn
         migrate();
       order_owned_automata();
       exchange_ghosts();
-      x_at_rebuild                = x;
-      const std::vector<double> r = build_pair_list();
-      restore_pair_states(initial, r);
+      x_at_rebuild.resize(n_owned);
+      for (unsigned int k = 0; k < n_owned; ++k)
+        for (unsigned int c = 0; c < 3; ++c)
+          x_at_rebuild[k][c] = static_cast<float>(x[k][c]);
+      build_pair_list();
+      // the order keys are needed again at the next rebuild only
+      std::vector<std::uint64_t>().swap(order);
+      restore_pair_states(initial);
       changed.assign(n_local, 1);
       update_neighbourhood_weights(true);
       ++rebuild_count;
@@ -97,17 +102,18 @@ namespace tribodyn
     void
     AutomatonSystem::migrate()
     {
-      // Identity of the old pairs (their states are restored by key).
-      const unsigned int                                   n_old = pi.size();
-      std::vector<std::pair<std::uint64_t, std::uint32_t>> old_key(n_old);
+      // Identity of the old pairs (their states are restored by ids).
+      const unsigned int n_old = pi.size();
+      old_pairs.resize(n_old);
       old_flags.resize(n_old);
       for (unsigned int p = 0; p < n_old; ++p)
         {
-          old_key[p]   = {pair_key(id[pi[p]], id[pj[p]]), p};
-          old_flags[p] = id[pi[p]] > id[pj[p]] ? 1 : 0;
+          const std::uint32_t a = id[pi[p]], b = id[pj[p]];
+          old_pairs[p] = {std::min(a, b), std::max(a, b), p};
+          old_flags[p] = a > b ? 1 : 0;
           // a bonded pair now beyond the pair-list range drops out of every
           // rank's list: its bond is lost (counted once, by i's owner)
-          if (bonded[p] && owned_i[p])
+          if (bonded[p] && owned(pi[p]))
             {
               const Vec3 dn = pair_vector(p);
               if (dot(dn, dn) >= range * range)
@@ -131,8 +137,9 @@ namespace tribodyn
                 lost << " automaton " << id[k] << " at (" << x[k] << ")";
               continue;
             }
+          // x itself is wrapped once the pair states are packed (they use
+          // the pair vectors, whose image shifts refer to unwrapped x)
           crossed[k]     = !(p == x[k]);
-          x[k]           = p;
           new_cell[k]    = c;
           destination[k] = cells.owner(c);
         }
@@ -158,24 +165,31 @@ namespace tribodyn
             {
               const bool swap = id[pi[p]] > id[pj[p]];
               PairState  s;
-              s.key     = old_key[p].first;
-              s.r       = r_now[p];
+              s.key     = pair_key(id[pi[p]], id[pj[p]]);
               s.bonded  = bonded[p];
               s.contact = in_contact[p];
-              s.q       = swap ? r_now[p] - q_i[p] : q_i[p];
-              s.sig_i   = swap ? sig_j[p] : sig_i[p];
-              s.sig_j   = swap ? sig_i[p] : sig_j[p];
-              s.heat    = heat.empty() ? 0. : heat[p];
+              // q of the automaton of smaller id
+              s.q     = swap ? pair_distance(p) - q_i[p] : q_i[p];
+              s.sig_i = swap ? sig_j[p] : sig_i[p];
+              s.sig_j = swap ? sig_i[p] : sig_j[p];
+              s.heat  = heat.empty() ? 0. : heat[p];
+              // the shear stresses are odd under relabelling (they follow
+              // x_j - x_i): a swap negates them
               for (unsigned int c = 0; c < 3; ++c)
                 {
-                  s.tau_i[c] = swap ? tau_j[p][c] : tau_i[p][c];
-                  s.tau_j[c] = swap ? tau_i[p][c] : tau_j[p][c];
+                  const double a = tau_i.component[c][p],
+                               b = tau_j.component[c][p];
+                  s.tau_i[c]     = swap ? -b : a;
+                  s.tau_j[c]     = swap ? -a : b;
                 }
               auto &buf = out_pairs[cells.neighbour_index(destination[k])];
               const auto *raw = reinterpret_cast<const double *>(&s);
               buf.insert(buf.end(), raw, raw + width);
             }
       const auto in_pairs = neighbours.exchange(out_pairs, 81);
+      for (unsigned int k = 0; k < n_owned; ++k)
+        if (new_cell[k] != Decomposition::invalid)
+          x[k] = cells.wrap(x[k]);
 
       // The departing automata travel as particles of deal.II's
       // ParticleHandler: inserted in the (owned) cell they were in and
@@ -196,7 +210,7 @@ namespace tribodyn
               {
                 props[prop::v + c]      = v[k][c];
                 props[prop::w + c]      = w[k][c];
-                props[prop::f_tot + c]  = f_tot[k][c];
+                props[prop::f + c]      = f[k][c];
                 props[prop::torque + c] = torque[k][c];
                 props[prop::u + c]      = u[k][c];
               }
@@ -237,7 +251,7 @@ namespace tribodyn
                 cell_of[kept] = cell_of[k];
                 v[kept]       = v[k];
                 w[kept]       = w[k];
-                f_tot[kept]   = f_tot[k];
+                f[kept]       = f[k];
                 torque[kept]  = torque[k];
                 u[kept]       = u[k];
                 mat[kept]     = mat[k];
@@ -267,7 +281,7 @@ namespace tribodyn
           {
             v[k][c]      = props[prop::v + c];
             w[k][c]      = props[prop::w + c];
-            f_tot[k][c]  = props[prop::f_tot + c];
+            f[k][c]      = props[prop::f + c];
             torque[k][c] = props[prop::torque + c];
             u[k][c]      = props[prop::u + c];
           }
@@ -311,11 +325,13 @@ namespace tribodyn
                 [](const PairState &a, const PairState &b) {
                   return a.key < b.key;
                 });
-      // This rank's old pairs by key (their states stay in the pair arrays
-      // until restore_pair_states() gathers them); the top bit of the index
-      // says that the old pair had i = the larger id.
-      old_pairs = std::move(old_key);
-      std::sort(old_pairs.begin(), old_pairs.end());
+      // This rank's old pairs by ids (their states stay in the pair arrays
+      // until restore_pair_states() gathers them).
+      std::sort(old_pairs.begin(),
+                old_pairs.end(),
+                [](const OldPair &a, const OldPair &b) {
+                  return a.lo != b.lo ? a.lo < b.lo : a.hi < b.hi;
+                });
     }
 
 
@@ -339,9 +355,10 @@ namespace tribodyn
           vec[k] = copy[perm[k]];
       };
       permute(id), permute(cell_of), permute(x), permute(v), permute(w);
-      permute(f_tot), permute(torque), permute(u), permute(mat);
+      permute(f), permute(torque), permute(u), permute(mat);
       permute(body), permute(groups), permute(eps_p), permute(sigma_y);
       permute(cell_curve);
+      order.resize(n_owned);
       for (unsigned int k = 0, rank_in_cell = 0; k < n_owned; ++k)
         {
           rank_in_cell = (k > 0 && cell_curve[k] == cell_curve[k - 1])
@@ -386,6 +403,7 @@ namespace tribodyn
         offsets[n + 1] = offsets[n] + in[n].size() / ghost_field::n;
       n_local = offsets[n_nb];
       resize_automaton_arrays(n_local);
+      order.resize(n_local);
       unsigned int n_bad = 0;
       for (unsigned int n = 0; n < n_nb; ++n)
         for (unsigned int g = 0, k = offsets[n]; k < offsets[n + 1]; ++g, ++k)
@@ -400,7 +418,7 @@ namespace tribodyn
             cell_of[k] = cells.local_cell(x[k]);
             if (cell_of[k] == Decomposition::invalid)
               ++n_bad;
-            dx[k] = w[k] = {{0, 0, 0}};
+            v[k] = w[k] = {{0, 0, 0}};
           }
       throw_collectively(comm,
                          n_bad > 0,
@@ -411,8 +429,7 @@ namespace tribodyn
 
 
     void
-    AutomatonSystem::restore_pair_states(const bool                 initial,
-                                         const std::vector<double> &r)
+    AutomatonSystem::restore_pair_states(const bool initial)
     {
       const unsigned int n_pairs = pi.size();
       // Source of each new pair's state: an old pair of this rank, a
@@ -422,38 +439,119 @@ namespace tribodyn
       std::vector<std::uint32_t> source(n_pairs, none);
       std::vector<unsigned char> swap(n_pairs, 0);
       if (!initial)
+        for (unsigned int p = 0; p < n_pairs; ++p)
+          {
+            const std::uint32_t a = id[pi[p]], b = id[pj[p]];
+            const std::uint32_t lo = std::min(a, b), hi = std::max(a, b);
+            const bool          flip = a > b;
+            const auto          it
+              = std::lower_bound(old_pairs.begin(),
+                                 old_pairs.end(),
+                                 OldPair{lo, hi, 0},
+                                 [](const OldPair &x, const OldPair &y) {
+                                   return x.lo != y.lo ? x.lo < y.lo
+                                                       : x.hi < y.hi;
+                                 });
+            if (it != old_pairs.end() && it->lo == lo && it->hi == hi)
+              {
+                source[p] = it->index;
+                swap[p]   = ((old_flags[it->index] & 1) != 0) != flip;
+                continue;
+              }
+            const std::uint64_t key = pair_key(a, b);
+            const auto          jt
+              = std::lower_bound(kept_pairs.begin(),
+                                 kept_pairs.end(),
+                                 key,
+                                 [](const PairState &s, const std::uint64_t k) {
+                                   return s.key < k;
+                                 });
+            if (jt != kept_pairs.end() && jt->key == key)
+              {
+                source[p] = received | (jt - kept_pairs.begin());
+                swap[p]   = flip; // received states are in id order
+              }
+          }
+      std::vector<OldPair>().swap(old_pairs);
+      std::vector<unsigned char>().swap(old_flags);
+
+      // Each field is remapped into scratch arrays and swapped in: at most
+      // two scratch arrays of one double per pair live at a time (the
+      // memory peak of a rebuild).
+      std::vector<double> new_a, new_b;
+      // Remap the side pair (field_i, field_j): value(state, side) of a
+      // received state; odd fields change sign when the sides swap.
+      auto remap_sides = [&](std::vector<double> &field_i,
+                             std::vector<double> &field_j,
+                             const auto          &received_value,
+                             const bool           odd) {
+        new_a.assign(n_pairs, 0.);
+        new_b.assign(n_pairs, 0.);
+        const double sign = odd ? -1. : 1.;
+        for (unsigned int p = 0; p < n_pairs; ++p)
+          {
+            const std::uint32_t o = source[p];
+            if (o == none)
+              continue;
+            double a, b;
+            if (o & received)
+              {
+                a = received_value(kept_pairs[o & ~received], 0);
+                b = received_value(kept_pairs[o & ~received], 1);
+              }
+            else
+              a = field_i[o], b = field_j[o];
+            new_a[p] = swap[p] ? sign * b : a;
+            new_b[p] = swap[p] ? sign * a : b;
+          }
+        field_i.swap(new_a);
+        field_j.swap(new_b);
+      };
+      for (unsigned int c = 0; c < 3; ++c)
+        remap_sides(
+          tau_i.component[c],
+          tau_j.component[c],
+          [c](const PairState &st, const int side) {
+            return side == 0 ? st.tau_i[c] : st.tau_j[c];
+          },
+          true);
+      remap_sides(
+        sig_i,
+        sig_j,
+        [](const PairState &st, const int side) {
+          return side == 0 ? st.sig_i : st.sig_j;
+        },
+        false);
+
+      // q of automaton i (q_j = r - q_i), the plastic heat
+      new_a.resize(n_pairs);
+      for (unsigned int p = 0; p < n_pairs; ++p)
         {
+          const std::uint32_t o = source[p];
+          const double        r = pair_distance(p);
+          double              q = r / 2;
+          if (o != none)
+            q = (o & received) ? kept_pairs[o & ~received].q : q_i[o];
+          new_a[p] = swap[p] ? r - q : q;
+        }
+      q_i.swap(new_a);
+      if (!heat.empty() || bond_scene)
+        {
+          new_a.assign(n_pairs, 0.);
           for (unsigned int p = 0; p < n_pairs; ++p)
             {
-              const std::uint64_t key  = pair_key(id[pi[p]], id[pj[p]]);
-              const bool          flip = id[pi[p]] > id[pj[p]];
-              const auto          it
-                = std::lower_bound(old_pairs.begin(),
-                                   old_pairs.end(),
-                                   std::make_pair(key, std::uint32_t(0)));
-              if (it != old_pairs.end() && it->first == key)
-                {
-                  source[p] = it->second;
-                  swap[p]   = ((old_flags[it->second] & 1) != 0) != flip;
-                  continue;
-                }
-              const auto jt = std::lower_bound(kept_pairs.begin(),
-                                               kept_pairs.end(),
-                                               key,
-                                               [](const PairState    &s,
-                                                  const std::uint64_t k) {
-                                                 return s.key < k;
-                                               });
-              if (jt != kept_pairs.end() && jt->key == key)
-                {
-                  source[p] = received | (jt - kept_pairs.begin());
-                  swap[p]   = flip; // received states are in id order
-                }
+              const std::uint32_t o = source[p];
+              if (o != none)
+                new_a[p] = (o & received) ? kept_pairs[o & ~received].heat
+                           : heat.empty() ? 0.
+                                          : heat[o];
             }
+          heat.swap(new_a);
         }
+      std::vector<double>().swap(new_a);
+      std::vector<double>().swap(new_b);
 
-      // New state arrays, one field at a time.
-      const bool keep_heat = !heat.empty() || bond_scene;
+      // bonds and contacts (initially: pairs of a body at contact distance)
       {
         std::vector<unsigned char> b(n_pairs, 0), c(n_pairs, 0);
         for (unsigned int p = 0; p < n_pairs; ++p)
@@ -463,8 +561,10 @@ namespace tribodyn
               {
                 if (initial)
                   {
-                    b[p] = body[pi[p]] == body[pj[p]] && r[p] < d * (1 + 1e-6);
-                    c[p] = r[p] < d * (1 + 1e-6);
+                    const double r = pair_distance(p);
+                    b[p]           = body_index(pi[p]) == body_index(pj[p])
+                           && r < d * (1 + 1e-6);
+                    c[p] = r < d * (1 + 1e-6);
                   }
               }
             else if (o & received)
@@ -481,72 +581,7 @@ namespace tribodyn
         bonded.swap(b);
         in_contact.swap(c);
       }
-      {
-        std::vector<double> q(n_pairs), si(n_pairs, 0.), sj(n_pairs, 0.),
-          ht(keep_heat ? n_pairs : 0, 0.);
-        for (unsigned int p = 0; p < n_pairs; ++p)
-          {
-            const std::uint32_t o = source[p];
-            if (o == none)
-              {
-                q[p] = r[p] / 2;
-                continue;
-              }
-            double qq, a, b, hh;
-            if (o & received)
-              {
-                const PairState &st = kept_pairs[o & ~received];
-                qq = st.q, a = st.sig_i, b = st.sig_j, hh = st.heat;
-                if (swap[p])
-                  qq = st.r - qq;
-              }
-            else
-              {
-                qq = q_i[o], a = sig_i[o], b = sig_j[o];
-                hh = heat.empty() ? 0. : heat[o];
-                if (swap[p])
-                  qq = r_now[o] - qq;
-              }
-            q[p]  = qq;
-            si[p] = swap[p] ? b : a;
-            sj[p] = swap[p] ? a : b;
-            if (keep_heat)
-              ht[p] = hh;
-          }
-        q_i.swap(q);
-        sig_i.swap(si);
-        sig_j.swap(sj);
-        heat.swap(ht);
-      }
-      {
-        std::vector<Vec3> ti(n_pairs, Vec3{{0, 0, 0}}),
-          tj(n_pairs, Vec3{{0, 0, 0}});
-        for (unsigned int p = 0; p < n_pairs; ++p)
-          {
-            const std::uint32_t o = source[p];
-            if (o == none)
-              continue;
-            Vec3 a, b;
-            if (o & received)
-              {
-                const PairState &st = kept_pairs[o & ~received];
-                for (unsigned int c = 0; c < 3; ++c)
-                  a[c] = st.tau_i[c], b[c] = st.tau_j[c];
-              }
-            else
-              a = tau_i[o], b = tau_j[o];
-            ti[p] = swap[p] ? b : a;
-            tj[p] = swap[p] ? a : b;
-          }
-        tau_i.swap(ti);
-        tau_j.swap(tj);
-      }
-      r_now = r;
-
-      dr.assign(n_pairs, 0.);
       std::vector<PairState>().swap(kept_pairs);
-      std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(old_pairs);
-      std::vector<unsigned char>().swap(old_flags);
     }
   } // namespace mca
 } // namespace tribodyn

@@ -52,7 +52,7 @@ namespace
     for (unsigned int k = 0; k < system.n_owned_automata(); ++k)
       if (deep[k])
         {
-          out.push_back(system.stresses()[k]);
+          out.push_back(system.automaton_stress(k));
           ++n_interior;
         }
     return out;

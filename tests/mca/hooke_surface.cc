@@ -44,7 +44,7 @@ namespace
     Result     r;
     for (unsigned int k = 0; k < system.n_owned_automata(); ++k)
       {
-        r.stress.push_back(system.stresses()[k]);
+        r.stress.push_back(system.automaton_stress(k));
         r.neighbours.push_back(counts[k]);
       }
     return r;

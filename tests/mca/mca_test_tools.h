@@ -66,7 +66,7 @@ namespace tribodyn_test
   }
 
   /// Impose u = sign * eps x on every automaton in one pseudo-step (no
-  /// rotation), evaluate the pairs and the automaton stresses.
+  /// rotation) and evaluate the pairs.
   inline void
   impose_affine_strain(AutomatonSystem &system,
                        const double     eps[3][3],
@@ -83,7 +83,6 @@ namespace tribodyn_test
           }
       },
       1e-9);
-    system.compute_automaton_stresses();
   }
 
   inline double

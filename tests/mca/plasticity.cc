@@ -121,17 +121,17 @@ namespace
             dtheta = {{0, 0, 0}};
           },
           1e-9);
-        e_old   = e;
-        lat_old = lat;
-        system.compute_automaton_stresses();
-        double sz = 0, sx = 0, nd = 0, epm = 0;
+        e_old             = e;
+        lat_old           = lat;
+        const auto stress = system.stresses();
+        double     sz = 0, sx = 0, nd = 0, epm = 0;
         for (unsigned int q = 0; q < system.n_owned_automata(); ++q)
           if (deep[q])
             {
-              sz += -system.stresses()[q][2];
+              sz += -stress[q][2];
               sx = std::max(sx,
-                            std::max(std::abs(system.stresses()[q][0]),
-                                     std::abs(system.stresses()[q][1])));
+                            std::max(std::abs(stress[q][0]),
+                                     std::abs(stress[q][1])));
               epm += system.plastic_strains()[q];
               nd += 1;
             }

@@ -54,10 +54,10 @@ namespace
             }
         },
         1e-9);
-    system.compute_automaton_stresses();
-    double worst = 0;
+    const auto stress = system.stresses();
+    double     worst  = 0;
     for (unsigned int k = 0; k < system.n_owned_automata(); ++k)
-      worst = std::max(worst, sym_norm(system.stresses()[k]));
+      worst = std::max(worst, sym_norm(stress[k]));
     return worst;
   }
 } // namespace

@@ -165,10 +165,13 @@ namespace tribodyn
       void
       load_state(boost::archive::binary_iarchive &archive);
 
-      /// Recompute the stress tensor, pressure and von Mises stress of every
-      /// owned automaton from the current pair stresses (seed eq. 4).
+      /// Rebuild the pair list now (migration, ghosts, pair states carried
+      /// over), as step() does when an automaton moved more than skin/2.
       void
-      compute_automaton_stresses();
+      rebuild_pair_list()
+      {
+        rebuild(false);
+      }
 
       SystemEnergies
       energies() const;
@@ -252,11 +255,14 @@ namespace tribodyn
       {
         return id;
       }
-      const std::vector<Sym3> &
-      stresses() const
-      {
-        return stress;
-      }
+      /// Stress tensors of the owned automata (seed eq. 4, with the fabric
+      /// correction), computed now from the pair stresses: not stored, so
+      /// that an elastic scene keeps no tensor per automaton.
+      std::vector<Sym3>
+      stresses() const;
+      /// The same for owned automaton @p k.
+      Sym3
+      automaton_stress(const unsigned int k) const;
       const std::vector<Vec3> &
       velocities() const
       {
@@ -302,7 +308,6 @@ namespace tribodyn
             motion(x[k], du, dtheta);
             for (unsigned int c = 0; c < 3; ++c)
               {
-                dx[k][c] = du[c];
                 x[k][c] += du[c];
                 u[k][c] += du[c];
                 w[k][c] = dtheta[c] / pseudo_dt;
@@ -368,13 +373,12 @@ namespace tribodyn
       /// Receive the ghosts from the neighbour ranks.
       void
       exchange_ghosts();
-      /// Pair list of the owned automata (neighbour_list.cc); returns the
-      /// pair distances.
-      std::vector<double>
-      build_pair_list();
-      /// Restore the pair states kept over a rebuild (@p r: distances).
+      /// Pair list of the owned automata (neighbour_list.cc).
       void
-      restore_pair_states(const bool initial, const std::vector<double> &r);
+      build_pair_list();
+      /// Restore the pair states kept over a rebuild.
+      void
+      restore_pair_states(const bool initial);
       void
       resize_automaton_arrays(const unsigned int n);
 
@@ -398,13 +402,42 @@ namespace tribodyn
                  (x[j][2] - x[i][2]) + s[2]}};
       }
 
-      /// Unit normal n_ij of pair @p p at the last evaluation (r_now).
-      Vec3
-      unit_normal(const unsigned int p) const
+      /// Distance |x_j - x_i| of pair @p p (the same bits as at the last
+      /// evaluation of the pairs: positions change only in the drift).
+      double
+      pair_distance(const unsigned int p) const
       {
-        const Vec3   dn  = pair_vector(p);
-        const double inv = 1. / r_now[p];
+        const Vec3 dn = pair_vector(p);
+        return std::sqrt(dot(dn, dn));
+      }
+      /// Unit normal n_ij of pair @p p; @p r receives the distance.
+      Vec3
+      unit_normal(const unsigned int p, double &r) const
+      {
+        const Vec3 dn    = pair_vector(p);
+        r                = std::sqrt(dot(dn, dn));
+        const double inv = 1. / r;
         return {{dn[0] * inv, dn[1] * inv, dn[2] * inv}};
+      }
+      /// Bit of body[k] marking an automaton of an elastic region.
+      static constexpr unsigned char elastic_flag = 0x80;
+      /// Body index of local automaton @p k.
+      unsigned int
+      body_index(const unsigned int k) const
+      {
+        return body[k] & ~elastic_flag;
+      }
+      /// Does local automaton @p k belong to an elastic region?
+      bool
+      elastic(const unsigned int k) const
+      {
+        return (body[k] & elastic_flag) != 0;
+      }
+      /// Is local automaton @p k owned by this rank?
+      bool
+      owned(const unsigned int k) const
+      {
+        return k < n_owned;
       }
 
       // --- neighbourhood weights (neighbourhood_weights.cc)
@@ -415,9 +448,14 @@ namespace tribodyn
       Sym3
       fabric_corrected(const unsigned int k, const Mat3 &t) const;
       /// Add the eq.-(4) stress contributions of pair @p p to the owned
-      /// automata of the pair in @p target (indexed by local automaton).
+      /// automata of the pair in @p target (indexed by local automaton),
+      /// except automata of elastic regions (the plastic trial stress).
       void
       add_pair_stress(const unsigned int p, std::vector<Mat3> &target) const;
+      /// Fabric tensor B = sum_j (q S / V) n n of automaton @p k's
+      /// interacting pairs, inverted when well conditioned (else identity).
+      Sym3
+      inverse_fabric(const unsigned int k) const;
 
       // --- boundary groups (boundary_groups.cc)
       void
@@ -453,6 +491,15 @@ namespace tribodyn
         MaterialParameters m;
       };
       std::vector<MaterialConstants> mc;
+      /// Normal stiffnesses k = 2G / r0 of the two halves of a pair of
+      /// materials (i, j), and 1 / (k_i + k_j), by mat_i * n_materials +
+      /// mat_j.
+      struct SeriesSprings
+      {
+        double ki, kj, inv_sum;
+      };
+      std::vector<SeriesSprings> springs;
+      unsigned int               n_materials = 0;
       bool   plastic_scene = false, bond_scene = false, rotations = true;
       double d = 0, r0 = 0, S = 0, V = 0, range = 0;
 
@@ -466,22 +513,34 @@ namespace tribodyn
       unsigned int               n_owned = 0, n_local = 0;
       std::vector<std::uint32_t> id;
       /// Global order key: curve index of the cell << 16 | rank of the id
-      /// within the cell.
+      /// within the cell (lives during a rebuild only).
       std::vector<std::uint64_t> order;
       std::vector<unsigned int>  cell_of; ///< local cell (at the rebuild)
-      std::vector<Point3>        x, x_at_rebuild;
-      std::vector<Vec3>          dx, v, w, f, f_tot, torque, u;
+      std::vector<Point3>        x;
+      /// Positions at the last rebuild, for the skin test only (single
+      /// precision: a test against skin d / 2).
+      std::vector<std::array<float, 3>> x_at_rebuild;
+      /// v: velocity (the drift of a step is dt v); f: pair forces, then
+      /// (apply_boundary_forces) the total force of the kicks.
+      std::vector<Vec3> v, w, f, torque, u;
+      /// material index; body index, with elastic_flag for the automata
+      /// of elastic regions
       std::vector<unsigned char> mat, body;
       std::vector<std::uint32_t> groups;
       std::vector<double>        eps_p, sigma_y;
-      std::vector<Sym3>          stress;
+      /// Pair-force reaction of each boundary group on this rank (sum of
+      /// f over the group's owned automata before the loads are added).
+      std::vector<Vec3> group_reaction;
       /// Per-step exchange buffers (stride given by their use).
-      std::vector<double> kin;         ///< x(3) dx(3) w(3)
       std::vector<double> plast;       ///< sigma_m trial, M, heat share
       std::vector<double> bond_buffer; ///< stress tensor (6), yield stress
-      std::vector<double> sum_qs, dsm, acc_qse;
+      /// sum_qs: plastic-heat shares; dsm: the volumetric strain increment,
+      /// then the mean-stress increment of each automaton.
+      std::vector<double> sum_qs, dsm;
       std::vector<Mat3>   trial;
-      std::vector<Sym3>   fabric_inverse;
+      /// Inverse fabric tensors (plastic and bond scenes, which need the
+      /// stress every step; otherwise computed when a stress is asked).
+      std::vector<Sym3> fabric_inverse;
       /// Owned automata whose contacts or bonds changed (weights stale).
       std::vector<unsigned char> changed;
       bool                       any_changed = true;
@@ -489,10 +548,11 @@ namespace tribodyn
       // --- pairs (flat arrays indexed by pair; i has the smaller key)
       std::vector<std::uint32_t> pi, pj;
       std::vector<unsigned char> pshift; ///< image shift code of x_j
-      std::vector<unsigned char> bonded, in_contact, owned_i, owned_j;
-      std::vector<double>        q_i, sig_i, sig_j, heat, r_now, dr;
-      std::vector<Vec3>          tau_i, tau_j;
-      std::vector<double>        beta_i, beta_j;
+      std::vector<unsigned char> bonded, in_contact;
+      std::vector<double>        q_i, sig_i, sig_j, heat;
+      /// Shear stresses of the two sides (odd under i <-> j).
+      VectorArray         tau_i, tau_j;
+      std::vector<double> beta_i, beta_j;
       /// Pairs of each owned automaton: 2 p + side (side 1: the automaton
       /// is j of pair p), CSR.
       std::vector<unsigned int> adjacency_first, adjacency;
@@ -501,12 +561,18 @@ namespace tribodyn
       struct PairState
       {
         std::uint64_t key; ///< smaller id << 32 | larger id
-        double        bonded, contact, q, r, sig_i, sig_j, heat;
+        double        bonded, contact, q, sig_i, sig_j, heat;
         double        tau_i[3], tau_j[3];
       };
       std::vector<PairState> kept_pairs;
-      /// This rank's old pairs by key (index into the old pair arrays).
-      std::vector<std::pair<std::uint64_t, std::uint32_t>> old_pairs;
+      /// This rank's old pairs by their ids (12 bytes each: this list is
+      /// part of the memory peak of a rebuild).
+      struct OldPair
+      {
+        std::uint32_t lo, hi; ///< smaller and larger id
+        std::uint32_t index;  ///< into the old pair arrays
+      };
+      std::vector<OldPair> old_pairs;
       /// Per old pair: bit 0 = i had the larger id; bit 1 = bonded and
       /// counted here (i owned).
       std::vector<unsigned char> old_flags;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
+#include <initializer_list>
 #include <tribodyn/mca/parameters.h>
 #include <unordered_map>
 #include <vector>
@@ -243,10 +244,26 @@ namespace tribodyn
       set_ghost_lists(std::vector<std::vector<unsigned int>> send_indices,
                       std::vector<unsigned int>              ghost_offset);
 
-      /// Copy @p width doubles per automaton of @p data (array over local
-      /// automata, stride @p width) from owners to ghosts.
+      /// One per-automaton field of a ghost update: @p width doubles per
+      /// local automaton at @p data (stride @p width).
+      struct Field
+      {
+        double      *data;
+        unsigned int width;
+      };
+
+      /// Copy the given fields from owners to ghosts, all in one message
+      /// per neighbour (no array of all local automata is packed: only the
+      /// automata sent are gathered).
       void
-      update(double *data, const unsigned int width) const;
+      update(std::initializer_list<Field> fields) const;
+
+      /// The same for one field.
+      void
+      update(double *data, const unsigned int width) const
+      {
+        update({Field{data, width}});
+      }
 
       bool
       active() const

@@ -165,6 +165,9 @@ namespace tribodyn
       double bond_formation_heat_fraction = 0.5;
       /// Pair-list skin as a fraction of the automaton size.
       double skin = 0.2;
+      /// Boxes whose automata are declared elastic (no plastic return, no
+      /// bond switching between two of them).
+      std::vector<Region> elastic_regions;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -3,6 +3,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 namespace tribodyn
 {
@@ -19,6 +21,12 @@ namespace tribodyn
     dot(const Vec3 &a, const Vec3 &b)
     {
       return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    inline Vec3
+    negated(const Vec3 &a)
+    {
+      return {{-a[0], -a[1], -a[2]}};
     }
 
     inline Vec3
@@ -49,6 +57,46 @@ namespace tribodyn
         for (unsigned int b = 0; b < 3; ++b)
           m[3 * a + b] += c * n[a] * t[b];
     }
+
+    /**
+     * An array of 3-vectors stored as three arrays of components
+     * (structure of arrays): streamed by the pair loops, and remapped one
+     * component at a time at a pair-list rebuild, so that no second copy
+     * of the whole array is ever needed.
+     */
+    struct VectorArray
+    {
+      std::array<std::vector<double>, 3> component;
+
+      Vec3
+      operator[](const std::size_t p) const
+      {
+        return {{component[0][p], component[1][p], component[2][p]}};
+      }
+      void
+      set(const std::size_t p, const Vec3 &t)
+      {
+        for (unsigned int c = 0; c < 3; ++c)
+          component[c][p] = t[c];
+      }
+      std::size_t
+      size() const
+      {
+        return component[0].size();
+      }
+      /// Resize to @p n vectors of zeros.
+      void
+      assign(const std::size_t n)
+      {
+        for (auto &a : component)
+          a.assign(n, 0.);
+      }
+      std::size_t
+      memory_consumption() const
+      {
+        return 3 * component[0].capacity() * sizeof(double);
+      }
+    };
 
     /// Von Mises equivalent stress sqrt(3 J2).
     inline double
