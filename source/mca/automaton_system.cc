@@ -68,7 +68,8 @@ namespace tribodyn
       body.resize(n, 0);
       groups.resize(n, 0);
       eps_p.resize(n, 0);
-      sigma_y.resize(n, 0);
+      if (plastic_scene)
+        sigma_y.resize(n, 0);
     }
 
 
@@ -118,7 +119,6 @@ namespace tribodyn
           for (const Region &r : prm.interaction.elastic_regions)
             if (r.contains(a.position))
               body[k] |= elastic_flag;
-          sigma_y[k]         = mc[a.material].yield0;
           cell_of[k]         = cells.local_cell(a.position);
           std::uint32_t mask = 0;
           for (unsigned int gi = 0; gi < prm.boundary.groups.size(); ++gi)
@@ -168,6 +168,14 @@ namespace tribodyn
           }
       bond_scene
         = prm.interaction.bond_breaking || prm.interaction.bond_formation;
+      // current yield stresses: plastic scenes only (otherwise the initial
+      // ones of the materials)
+      if (plastic_scene)
+        {
+          sigma_y.resize(n_owned);
+          for (unsigned int k = 0; k < n_owned; ++k)
+            sigma_y[k] = mc[mat[k]].yield0;
+        }
       critical_dt = d / c_max;
       if (prm.time.time_step == 0)
         dt = prm.time.courant * critical_dt;
@@ -343,9 +351,10 @@ namespace tribodyn
       add(trial), add(fabric_inverse), add(changed);
       add(pi), add(pj), add(pshift), add(bonded), add(in_contact);
       add(q_i), add(sig_i), add(sig_j), add(heat);
-      bytes += tau_i.memory_consumption() + tau_j.memory_consumption();
-      add(beta_i), add(beta_j), add(kept_pairs), add(adjacency);
-      add(adjacency_first);
+      add(tau_scale_i), add(tau_scale_j);
+      bytes += tau.memory_consumption();
+      add(beta_i), add(beta_j), add(kept_pairs), add(i_pairs_first);
+      add(i_pairs_count), add(j_pairs_first), add(j_pairs);
       return bytes;
     }
 
@@ -376,7 +385,8 @@ namespace tribodyn
           pv.bonded = bonded[p];
           pv.sigma  = 0.5 * (sig_i[p] + sig_j[p]);
           for (unsigned int c = 0; c < 3; ++c)
-            pv.tau[c] = 0.5 * (tau_i.component[c][p] + tau_j.component[c][p]);
+            pv.tau[c] = 0.5 * (tau_scale_i[p] + tau_scale_j[p])
+                        * tau.component[c][p];
           pv.heat     = heat.empty() ? 0. : heat[p];
           pv.distance = pair_distance(p);
           out.push_back(pv);

@@ -153,71 +153,76 @@ namespace tribodyn
       cell_index.clear();
       cell_owner.clear();
       local_of_key.clear();
+      const std::size_t n_local = owned.size() + ghost.size();
+      cells.reserve(n_local);
+      cell_index.reserve(n_local);
+      cell_owner.reserve(n_local);
+      local_of_key.reserve(n_local);
       for (const auto *list : {&owned, &ghost})
         for (const auto &entry : *list)
           {
             std::array<unsigned int, 3> ijk;
             structured_cell(entry.second->center(), ijk);
-            local_of_key[key(ijk)] = cells.size();
+            local_of_key.emplace_back(key(ijk), cells.size());
             cells.push_back(entry.second);
             cell_index.push_back(ijk);
             cell_owner.push_back(entry.second->subdomain_id());
           }
+      std::sort(local_of_key.begin(), local_of_key.end());
 
-      // Neighbours of the owned cells (periodic images included).
-      cell_neighbours.assign(n_owned, {});
+      // Ranks owning neighbours of the owned cells (periodic images
+      // included), and the owned cells each of them needs as ghosts.
       std::vector<std::vector<unsigned int>> cells_for_rank;
       ranks.clear();
       for (unsigned int c = 0; c < n_owned; ++c)
-        {
-          for (int oz = -1; oz <= 1; ++oz)
-            for (int oy = -1; oy <= 1; ++oy)
-              for (int ox = -1; ox <= 1; ++ox)
-                {
-                  const int                   o[3] = {ox, oy, oz};
-                  std::array<unsigned int, 3> nb;
-                  int                         s[3]  = {0, 0, 0};
-                  bool                        valid = true;
-                  for (unsigned int d = 0; d < 3; ++d)
-                    {
-                      int v = static_cast<int>(cell_index[c][d]) + o[d];
-                      if (v < 0 || v >= static_cast<int>(n_cells[d]))
-                        {
-                          if (!periodic_[d])
-                            valid = false;
-                          s[d] = v < 0 ? -1 : 1;
-                          v -= s[d] * static_cast<int>(n_cells[d]);
-                        }
-                      nb[d] = v;
-                    }
-                  if (!valid)
-                    continue;
-                  const unsigned int lc = local_cell(nb);
-                  if (lc == invalid)
-                    throw RunError(
-                      "Internal error: a neighbour cell of an owned cell is "
-                      "not in this rank's ghost layer (periodic "
-                      "connectivity of the p4est mesh).");
-                  const unsigned char code
-                    = (s[0] + 1) + 3 * (s[1] + 1) + 9 * (s[2] + 1);
-                  cell_neighbours[c].push_back({lc, code});
-                  const unsigned int r = cell_owner[lc];
-                  if (r == rank)
-                    continue;
-                  auto it = std::lower_bound(ranks.begin(), ranks.end(), r);
-                  const unsigned int n = it - ranks.begin();
-                  if (it == ranks.end() || *it != r)
-                    {
-                      ranks.insert(it, r);
-                      cells_for_rank.insert(cells_for_rank.begin() + n,
-                                            std::vector<unsigned int>());
-                    }
-                  if (cells_for_rank[n].empty()
-                      || cells_for_rank[n].back() != c)
-                    cells_for_rank[n].push_back(c);
-                }
-        }
+        for_each_neighbour(c, [&](const Neighbour &nb) {
+          const unsigned int r = cell_owner[nb.cell];
+          if (r == rank)
+            return;
+          auto it = std::lower_bound(ranks.begin(), ranks.end(), r);
+          const unsigned int n = it - ranks.begin();
+          if (it == ranks.end() || *it != r)
+            {
+              ranks.insert(it, r);
+              cells_for_rank.insert(cells_for_rank.begin() + n,
+                                    std::vector<unsigned int>());
+            }
+          if (cells_for_rank[n].empty() || cells_for_rank[n].back() != c)
+            cells_for_rank[n].push_back(c);
+        });
       send_cells = std::move(cells_for_rank);
+    }
+
+
+    bool
+    Decomposition::neighbour(const unsigned int c,
+                             const unsigned int o,
+                             Neighbour         &nb) const
+    {
+      const int                   offset[3] = {static_cast<int>(o % 3) - 1,
+                                               static_cast<int>(o / 3 % 3) - 1,
+                                               static_cast<int>(o / 9) - 1};
+      std::array<unsigned int, 3> ijk;
+      int                         s[3] = {0, 0, 0};
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          int v = static_cast<int>(cell_index[c][d]) + offset[d];
+          if (v < 0 || v >= static_cast<int>(n_cells[d]))
+            {
+              if (!periodic_[d])
+                return false;
+              s[d] = v < 0 ? -1 : 1;
+              v -= s[d] * static_cast<int>(n_cells[d]);
+            }
+          ijk[d] = v;
+        }
+      nb.cell = local_cell(ijk);
+      if (nb.cell == invalid)
+        throw RunError("Internal error: a neighbour cell of an owned cell is "
+                       "not in this rank's ghost layer (periodic connectivity "
+                       "of the p4est mesh).");
+      nb.shift = (s[0] + 1) + 3 * (s[1] + 1) + 9 * (s[2] + 1);
+      return true;
     }
 
 
@@ -252,8 +257,17 @@ namespace tribodyn
     unsigned int
     Decomposition::local_cell(const std::array<unsigned int, 3> &ijk) const
     {
-      const auto it = local_of_key.find(key(ijk));
-      return it == local_of_key.end() ? invalid : it->second;
+      const std::uint64_t k  = key(ijk);
+      const auto          it = std::lower_bound(
+        local_of_key.begin(),
+        local_of_key.end(),
+        k,
+        [](const std::pair<std::uint64_t, unsigned int> &e,
+           const std::uint64_t                           v) {
+          return e.first < v;
+        });
+      return it == local_of_key.end() || it->first != k ? invalid :
+                                                          it->second;
     }
 
 

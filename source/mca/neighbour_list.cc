@@ -36,39 +36,38 @@ namespace tribodyn
       found.reserve(std::size_t(n_owned) * 7);
       const double range2 = range * range;
       for (unsigned int c = 0; c < cells.n_owned_cells(); ++c)
-        for (const auto &nb : cells.neighbours(c))
-          {
-            const auto &s = cells.shift_vector(nb.shift);
-            for (unsigned int ia = first[c]; ia < first[c + 1]; ++ia)
-              {
-                const unsigned int a = members[ia];
-                for (unsigned int ib = first[nb.cell]; ib < first[nb.cell + 1];
-                     ++ib)
-                  {
-                    const unsigned int b = members[ib];
-                    // an owned-owned pair is found from both sides: keep
-                    // it once, from the automaton of smaller key
-                    if (b < n_owned && order[b] <= order[a])
-                      continue;
-                    double r2 = 0;
-                    Vec3   dn;
-                    for (unsigned int e = 0; e < 3; ++e)
-                      {
-                        dn[e] = (x[b][e] - x[a][e]) + s[e];
-                        r2 += dn[e] * dn[e];
-                      }
-                    if (r2 >= range2)
-                      continue;
-                    // i is the automaton of smaller key: the same pair and
-                    // orientation on every rank and partition
-                    if (order[a] < order[b])
-                      found.push_back({a, b, nb.shift});
-                    else
-                      found.push_back(
-                        {b, a, Decomposition::opposite_shift(nb.shift)});
-                  }
-              }
-          }
+        cells.for_each_neighbour(c, [&](const Decomposition::Neighbour &nb) {
+          const auto &s = cells.shift_vector(nb.shift);
+          for (unsigned int ia = first[c]; ia < first[c + 1]; ++ia)
+            {
+              const unsigned int a = members[ia];
+              for (unsigned int ib = first[nb.cell]; ib < first[nb.cell + 1];
+                   ++ib)
+                {
+                  const unsigned int b = members[ib];
+                  // an owned-owned pair is found from both sides: keep it
+                  // once, from the automaton of smaller key
+                  if (b < n_owned && order[b] <= order[a])
+                    continue;
+                  double r2 = 0;
+                  Vec3   dn;
+                  for (unsigned int e = 0; e < 3; ++e)
+                    {
+                      dn[e] = (x[b][e] - x[a][e]) + s[e];
+                      r2 += dn[e] * dn[e];
+                    }
+                  if (r2 >= range2)
+                    continue;
+                  // i is the automaton of smaller key: the same pair and
+                  // orientation on every rank and partition
+                  if (order[a] < order[b])
+                    found.push_back({a, b, nb.shift});
+                  else
+                    found.push_back(
+                      {b, a, Decomposition::opposite_shift(nb.shift)});
+                }
+            }
+        });
       // Order of the pairs: by the keys of i then j, so that every
       // automaton sums its pairs' forces in the same order on any
       // partition (the results do not depend on the number of ranks).

@@ -39,27 +39,30 @@ namespace tribodyn
             fabric_inverse.assign(n_owned, Sym3{{1, 1, 1, 0, 0, 0}});
           else
             std::vector<Sym3>().swap(fabric_inverse);
-          // pairs of each owned automaton (CSR): rebuilt with the pair list
-          adjacency_first.assign(n_owned + 1, 0);
+          // pairs of each owned automaton: rebuilt with the pair list
+          i_pairs_first.assign(n_owned, 0);
+          i_pairs_count.assign(n_owned, 0);
+          j_pairs_first.assign(n_owned + 1, 0);
           for (unsigned int p = 0; p < n_pairs; ++p)
             {
               if (owned(pi[p]))
-                ++adjacency_first[pi[p] + 1];
+                {
+                  if (i_pairs_count[pi[p]]++ == 0)
+                    i_pairs_first[pi[p]] = p;
+                  Assert(i_pairs_first[pi[p]] + i_pairs_count[pi[p]] == p + 1,
+                         dealii::ExcInternalError());
+                }
               if (owned(pj[p]))
-                ++adjacency_first[pj[p] + 1];
+                ++j_pairs_first[pj[p] + 1];
             }
           for (unsigned int k = 0; k < n_owned; ++k)
-            adjacency_first[k + 1] += adjacency_first[k];
-          adjacency.resize(adjacency_first[n_owned]);
-          std::vector<unsigned int> fill(adjacency_first.begin(),
-                                         adjacency_first.end() - 1);
+            j_pairs_first[k + 1] += j_pairs_first[k];
+          j_pairs.resize(j_pairs_first[n_owned]);
+          std::vector<unsigned int> fill(j_pairs_first.begin(),
+                                         j_pairs_first.end() - 1);
           for (unsigned int p = 0; p < n_pairs; ++p)
-            {
-              if (owned(pi[p]))
-                adjacency[fill[pi[p]]++] = 2 * p;
-              if (owned(pj[p]))
-                adjacency[fill[pj[p]]++] = 2 * p + 1;
-            }
+            if (owned(pj[p]))
+              j_pairs[fill[pj[p]]++] = p;
         }
       using Matrix6 = Eigen::Matrix<double, 6, 6>;
       using Vector6 = Eigen::Matrix<double, 6, 1>;
@@ -73,18 +76,15 @@ namespace tribodyn
           // contact)
           Matrix6      A     = Matrix6::Zero();
           unsigned int count = 0;
-          for (unsigned int a = adjacency_first[k]; a < adjacency_first[k + 1];
-               ++a)
-            {
-              const unsigned int p = adjacency[a] / 2;
-              if (!bonded[p] && !in_contact[p])
-                continue;
-              double     r;
-              const Vec3 n = unit_normal(p, r);
-              const auto N = voigt(n);
-              A.noalias() += N * N.transpose();
-              ++count;
-            }
+          for_each_pair_of(k, [&](const unsigned int p, const unsigned int) {
+            if (!bonded[p] && !in_contact[p])
+              return;
+            double     r;
+            const Vec3 n = unit_normal(p, r);
+            const auto N = voigt(n);
+            A.noalias() += N * N.transpose();
+            ++count;
+          });
           // Least-squares weights of the volumetric strain: beta_j = g.N_j
           // with A g = (1 1 1 0 0 0), for well-conditioned neighbourhoods
           // (bulk: |g| ~ 1); otherwise an equal share of the trace.
@@ -105,12 +105,9 @@ namespace tribodyn
                 }
             }
           double beta_sum = 0;
-          for (unsigned int a = adjacency_first[k]; a < adjacency_first[k + 1];
-               ++a)
-            {
-              const unsigned int p    = adjacency[a] / 2;
-              const bool         side = adjacency[a] & 1;
-              double             beta = 0;
+          for_each_pair_of(
+            k, [&](const unsigned int p, const unsigned int side) {
+              double beta = 0;
               if (bonded[p] || in_contact[p])
                 {
                   if (full_rank)
@@ -123,20 +120,17 @@ namespace tribodyn
                 }
               (side ? beta_j : beta_i)[p] = beta;
               beta_sum += std::abs(beta);
-            }
+            });
           // Bound the many-body stiffness by its bulk value (sum of |beta|
           // = 3 in a complete FCC neighbourhood): sparse, nearly degenerate
           // neighbourhoods (e.g. around broken bonds) could otherwise make
           // an automaton far stiffer than the bulk and the explicit step
           // unstable.
           if (beta_sum > 3)
-            for (unsigned int a = adjacency_first[k];
-                 a < adjacency_first[k + 1];
-                 ++a)
-              {
-                const unsigned int p = adjacency[a] / 2;
-                ((adjacency[a] & 1) ? beta_j : beta_i)[p] *= 3 / beta_sum;
-              }
+            for_each_pair_of(
+              k, [&](const unsigned int p, const unsigned int side) {
+                (side ? beta_j : beta_i)[p] *= 3 / beta_sum;
+              });
           if (!fabric_inverse.empty())
             fabric_inverse[k] = inverse_fabric(k);
           changed[k] = 0;
@@ -153,17 +147,15 @@ namespace tribodyn
       // eq. (4) as is: B^-1 of a nearly planar neighbourhood would blow the
       // stress (and the radial return's mean stress) up.
       Eigen::Matrix3d B = Eigen::Matrix3d::Zero();
-      for (unsigned int a = adjacency_first[k]; a < adjacency_first[k + 1]; ++a)
-        {
-          const unsigned int p = adjacency[a] / 2;
-          if (!bonded[p] && !in_contact[p])
-            continue;
-          double                r;
-          const Vec3            n = unit_normal(p, r);
-          const double          q = (adjacency[a] & 1) ? r - q_i[p] : q_i[p];
-          const Eigen::Vector3d nv(n[0], n[1], n[2]);
-          B.noalias() += (q * S / V) * nv * nv.transpose();
-        }
+      for_each_pair_of(k, [&](const unsigned int p, const unsigned int side) {
+        if (!bonded[p] && !in_contact[p])
+          return;
+        double                r;
+        const Vec3            n = unit_normal(p, r);
+        const double          q = side ? r - q_i[p] : q_i[p];
+        const Eigen::Vector3d nv(n[0], n[1], n[2]);
+        B.noalias() += (q * S / V) * nv * nv.transpose();
+      });
       const double tr3 = B.trace() / 3;
       if (B.determinant() > 0.1 * tr3 * tr3 * tr3)
         {
@@ -206,14 +198,14 @@ namespace tribodyn
         {
           Vec3 t;
           for (unsigned int c = 0; c < 3; ++c)
-            t[c] = sig_i[p] * n[c] + tau_i.component[c][p];
+            t[c] = sig_i[p] * n[c] + tau_scale_i[p] * tau.component[c][p];
           add_outer(target[pi[p]], q_i[p] * S / V, n, t);
         }
       if (owned(pj[p]) && !elastic(pj[p]))
         {
           Vec3 t;
           for (unsigned int c = 0; c < 3; ++c)
-            t[c] = sig_j[p] * n[c] + tau_j.component[c][p];
+            t[c] = sig_j[p] * n[c] + tau_scale_j[p] * tau.component[c][p];
           add_outer(target[pj[p]], (r - q_i[p]) * S / V, n, t);
         }
     }
@@ -225,22 +217,19 @@ namespace tribodyn
       // Over the automaton's pairs, in pair order (the order of the pair
       // loop): no tensor array of all automata is needed.
       Mat3 t{{0, 0, 0, 0, 0, 0, 0, 0, 0}};
-      for (unsigned int a = adjacency_first[k]; a < adjacency_first[k + 1]; ++a)
-        {
-          const unsigned int p = adjacency[a] / 2;
-          if (!bonded[p] && !in_contact[p])
-            continue;
-          double       r;
-          const Vec3   n    = unit_normal(p, r);
-          const bool   is_j = adjacency[a] & 1;
-          const double sg   = is_j ? sig_j[p] : sig_i[p];
-          const Vec3   tau  = is_j ? tau_j[p] : tau_i[p];
-          const double q    = is_j ? r - q_i[p] : q_i[p];
-          Vec3         traction;
-          for (unsigned int c = 0; c < 3; ++c)
-            traction[c] = sg * n[c] + tau[c];
-          add_outer(t, q * S / V, n, traction);
-        }
+      for_each_pair_of(k, [&](const unsigned int p, const unsigned int is_j) {
+        if (!bonded[p] && !in_contact[p])
+          return;
+        double       r;
+        const Vec3   n     = unit_normal(p, r);
+        const double sg    = is_j ? sig_j[p] : sig_i[p];
+        const Vec3   shear = side_shear(p, is_j);
+        const double q     = is_j ? r - q_i[p] : q_i[p];
+        Vec3         traction;
+        for (unsigned int c = 0; c < 3; ++c)
+          traction[c] = sg * n[c] + shear[c];
+        add_outer(t, q * S / V, n, traction);
+      });
       return fabric_corrected(k, t);
     }
 

@@ -100,9 +100,9 @@ namespace tribodyn
                     mark(p);
                   in_contact[p] = 0;
                   sig_i[p] = sig_j[p] = 0;
-                  tau_i.set(p, {{0, 0, 0}});
-                  tau_j.set(p, {{0, 0, 0}});
-                  q_i[p] = r / 2;
+                  tau.set(p, {{0, 0, 0}});
+                  tau_scale_i[p] = tau_scale_j[p] = 1;
+                  q_i[p]                          = r / 2;
                   continue;
                 }
               if (!in_contact[p])
@@ -130,40 +130,35 @@ namespace tribodyn
           const double dun = dot(du, nm);
           for (unsigned int c = 0; c < 3; ++c)
             du[c] -= dun * nm[c];
-          // rotate the stored shear stresses into the new tangent plane,
-          // keeping their magnitudes (both sides are parallel: they are set
-          // equal below and only scaled afterwards, so one factor serves)
-          Vec3 ti = tau_i[p], tj = tau_j[p];
+          // rotate the stored shear stress into the new tangent plane,
+          // keeping its magnitude (both sides are multiples of it)
+          Vec3 t = tau[p];
           {
-            const Vec3  &ref = dot(ti, ti) > 0 ? ti : tj;
-            const double t2  = dot(ref, ref);
+            const double t2 = dot(t, t);
             if (t2 > 0)
               {
-                const double tn = dot(ref, n);
+                const double tn = dot(t, n);
                 double       p2 = 0;
                 for (unsigned int c = 0; c < 3; ++c)
                   {
-                    const double e = ref[c] - tn * n[c];
-                    p2 += e * e;
+                    t[c] -= tn * n[c];
+                    p2 += t[c] * t[c];
                   }
                 const double s = p2 > 1e-12 * t2 ? std::sqrt(t2 / p2) : 0.;
-                for (Vec3 *tp : {&ti, &tj})
-                  {
-                    Vec3        &t   = *tp;
-                    const double tnt = dot(t, n);
-                    for (unsigned int c = 0; c < 3; ++c)
-                      t[c] = s * (t[c] - tnt * n[c]);
-                  }
+                for (unsigned int c = 0; c < 3; ++c)
+                  t[c] *= s;
               }
           }
           {
             // series springs of the two halves: one shear stress
+            // (kj tau_i + ki tau_j + ki kj du) / (ki + kj)
             const double inv = k.inv_sum;
+            const double mix = kj * tau_scale_i[p] + ki * tau_scale_j[p];
             Vec3         tn;
             for (unsigned int c = 0; c < 3; ++c)
-              tn[c] = (kj * ti[c] + ki * tj[c] + ki * kj * du[c]) * inv;
-            tau_i.set(p, tn);
-            tau_j.set(p, tn);
+              tn[c] = (mix * t[c] + ki * kj * du[c]) * inv;
+            tau.set(p, tn);
+            tau_scale_i[p] = tau_scale_j[p] = 1;
           }
           // Normal split: equal elastic increments 2G de from both sides
           // (series springs), applied now; the many-body parts D dsm of the
@@ -264,7 +259,8 @@ namespace tribodyn
           double             r;
           const Vec3         n  = unit_normal(p, r);
           const double       qi = q_i[p], qj = r - qi;
-          Vec3               ti = tau_i[p], tj = tau_j[p];
+          const Vec3         t  = tau[p];
+          double             ai = tau_scale_i[p], aj = tau_scale_j[p];
           if constexpr (plastic)
             {
               const double smi = plast[3 * i], Mi = plast[3 * i + 1];
@@ -272,14 +268,12 @@ namespace tribodyn
               if (Mi < 1)
                 {
                   sig_i[p] = smi + Mi * (sig_i[p] - smi);
-                  for (unsigned int c = 0; c < 3; ++c)
-                    ti[c] *= Mi;
+                  ai *= Mi;
                 }
               if (Mj < 1)
                 {
                   sig_j[p] = smj + Mj * (sig_j[p] - smj);
-                  for (unsigned int c = 0; c < 3; ++c)
-                    tj[c] *= Mj;
+                  aj *= Mj;
                 }
               // Plastic heat for bond formation: only heat generated while
               // the pair is unbonded counts (seed §2.1).
@@ -296,11 +290,12 @@ namespace tribodyn
               sig_j[p]                = std::min(sig_j[p], 0.);
               const SeriesSprings &k  = springs[mat[i] * n_materials + mat[j]];
               const double         ki = k.ki, kj = k.kj;
+              const double         t_norm = std::sqrt(dot(t, t));
               for (const int side : {0, 1})
                 {
-                  Vec3        &t     = side == 0 ? ti : tj;
+                  double      &a     = side == 0 ? ai : aj;
                   const double limit = -mu * (side == 0 ? sig_i[p] : sig_j[p]);
-                  const double tn    = std::sqrt(dot(t, t));
+                  const double tn    = std::abs(a) * t_norm;
                   if (tn > limit)
                     {
                       const double s = tn > 0 ? limit / tn : 0;
@@ -310,21 +305,21 @@ namespace tribodyn
                       if (owned(side == 0 ? i : j))
                         friction_work += 0.5 * S * limit * (tn - limit)
                                          * (ki + kj) / (ki * kj);
-                      for (unsigned int c = 0; c < 3; ++c)
-                        t[c] *= s;
+                      a *= s;
                     }
                 }
             }
           if (plastic || !bonded[p])
             {
-              tau_i.set(p, ti);
-              tau_j.set(p, tj);
+              tau_scale_i[p] = ai;
+              tau_scale_j[p] = aj;
             }
           const double sn = 0.5 * (sig_i[p] + sig_j[p]);
+          const double am = 0.5 * S * (ai + aj);
           Vec3         ft, F;
           for (unsigned int c = 0; c < 3; ++c)
             {
-              ft[c] = 0.5 * S * (ti[c] + tj[c]);
+              ft[c] = am * t[c];
               F[c]  = S * sn * n[c] + ft[c];
             }
           Vec3 nxf;
@@ -364,17 +359,15 @@ namespace tribodyn
       ex.assign(static_cast<std::size_t>(n_local) * 7, 0.);
       for (unsigned int k = 0; k < n_owned; ++k)
         {
-          ex[7 * k + 6] = sigma_y[k];
+          ex[7 * k + 6] = plastic_scene ? sigma_y[k] : mc[mat[k]].yield0;
           // an automaton of an elastic region with only elastic partners
           // takes part in no bond check: its stress is not needed
           bool needed = !elastic(k);
-          for (unsigned int a = adjacency_first[k];
-               a < adjacency_first[k + 1] && !needed;
-               ++a)
-            {
-              const unsigned int p = adjacency[a] / 2;
-              needed = !elastic((adjacency[a] & 1) ? pi[p] : pj[p]);
-            }
+          if (!needed)
+            for_each_pair_of(
+              k, [&](const unsigned int p, const unsigned int side) {
+                needed = needed || !elastic(side ? pi[p] : pj[p]);
+              });
           if (!needed)
             continue;
           const Sym3 s = automaton_stress(k);
@@ -393,7 +386,7 @@ namespace tribodyn
           double       r;
           const Vec3   n  = unit_normal(p, r);
           const double sn = 0.5 * (sig_i[p] + sig_j[p]);
-          const Vec3   ti = tau_i[p], tj = tau_j[p];
+          const double am = 0.5 * (tau_scale_i[p] + tau_scale_j[p]);
           if (bonded[p] && prm.interaction.bond_breaking)
             {
               Sym3 s;
@@ -408,7 +401,7 @@ namespace tribodyn
               const double snn = dot(sn_vec, n);
               Vec3         corr;
               for (unsigned int c = 0; c < 3; ++c)
-                corr[c] = 0.5 * (ti[c] + tj[c]) - (sn_vec[c] - snn * n[c]);
+                corr[c] = am * tau.component[c][p] - (sn_vec[c] - snn * n[c]);
               add_sym(s, sn - snn, n, n);
               add_sym(s, 1, n, corr);
               add_sym(s, 1, corr, n);

@@ -173,15 +173,12 @@ namespace tribodyn
               s.sig_i = swap ? sig_j[p] : sig_i[p];
               s.sig_j = swap ? sig_i[p] : sig_j[p];
               s.heat  = heat.empty() ? 0. : heat[p];
-              // the shear stresses are odd under relabelling (they follow
-              // x_j - x_i): a swap negates them
+              // the shear stress is odd under relabelling (it follows
+              // x_j - x_i): a swap negates it and exchanges the sides
               for (unsigned int c = 0; c < 3; ++c)
-                {
-                  const double a = tau_i.component[c][p],
-                               b = tau_j.component[c][p];
-                  s.tau_i[c]     = swap ? -b : a;
-                  s.tau_j[c]     = swap ? -a : b;
-                }
+                s.tau[c] = swap ? -tau.component[c][p] : tau.component[c][p];
+              s.tau_scale_i = swap ? tau_scale_j[p] : tau_scale_i[p];
+              s.tau_scale_j = swap ? tau_scale_i[p] : tau_scale_j[p];
               auto &buf = out_pairs[cells.neighbour_index(destination[k])];
               const auto *raw = reinterpret_cast<const double *>(&s);
               buf.insert(buf.end(), raw, raw + width);
@@ -218,7 +215,7 @@ namespace tribodyn
             props[prop::body]    = body[k];
             props[prop::groups]  = groups[k];
             props[prop::eps_p]   = eps_p[k];
-            props[prop::sigma_y] = sigma_y[k];
+            props[prop::sigma_y] = plastic_scene ? sigma_y[k] : 0.;
             if (crossed[k])
               {
                 auto &buf = out_automata[cells.neighbour_index(destination[k])];
@@ -258,7 +255,8 @@ namespace tribodyn
                 body[kept]    = body[k];
                 groups[kept]  = groups[k];
                 eps_p[kept]   = eps_p[k];
-                sigma_y[kept] = sigma_y[k];
+                if (plastic_scene)
+                  sigma_y[kept] = sigma_y[k];
               }
             ++kept;
           }
@@ -289,7 +287,8 @@ namespace tribodyn
         body[k]    = static_cast<unsigned char>(props[prop::body]);
         groups[k]  = static_cast<std::uint32_t>(props[prop::groups]);
         eps_p[k]   = props[prop::eps_p];
-        sigma_y[k] = props[prop::sigma_y];
+        if (plastic_scene)
+          sigma_y[k] = props[prop::sigma_y];
         ++k;
       };
       for (const auto &particle : *particles)
@@ -356,7 +355,9 @@ namespace tribodyn
       };
       permute(id), permute(cell_of), permute(x), permute(v), permute(w);
       permute(f), permute(torque), permute(u), permute(mat);
-      permute(body), permute(groups), permute(eps_p), permute(sigma_y);
+      permute(body), permute(groups), permute(eps_p);
+      if (plastic_scene)
+        permute(sigma_y);
       permute(cell_curve);
       order.resize(n_owned);
       for (unsigned int k = 0, rank_in_cell = 0; k < n_owned; ++k)
@@ -480,14 +481,13 @@ namespace tribodyn
       // memory peak of a rebuild).
       std::vector<double> new_a, new_b;
       // Remap the side pair (field_i, field_j): value(state, side) of a
-      // received state; odd fields change sign when the sides swap.
+      // received state; the sides exchange when the pair is relabelled.
       auto remap_sides = [&](std::vector<double> &field_i,
                              std::vector<double> &field_j,
                              const auto          &received_value,
-                             const bool           odd) {
-        new_a.assign(n_pairs, 0.);
-        new_b.assign(n_pairs, 0.);
-        const double sign = odd ? -1. : 1.;
+                             const double         default_value) {
+        new_a.assign(n_pairs, default_value);
+        new_b.assign(n_pairs, default_value);
         for (unsigned int p = 0; p < n_pairs; ++p)
           {
             const std::uint32_t o = source[p];
@@ -501,27 +501,42 @@ namespace tribodyn
               }
             else
               a = field_i[o], b = field_j[o];
-            new_a[p] = swap[p] ? sign * b : a;
-            new_b[p] = swap[p] ? sign * a : b;
+            new_a[p] = swap[p] ? b : a;
+            new_b[p] = swap[p] ? a : b;
           }
         field_i.swap(new_a);
         field_j.swap(new_b);
       };
-      for (unsigned int c = 0; c < 3; ++c)
-        remap_sides(
-          tau_i.component[c],
-          tau_j.component[c],
-          [c](const PairState &st, const int side) {
-            return side == 0 ? st.tau_i[c] : st.tau_j[c];
-          },
-          true);
       remap_sides(
         sig_i,
         sig_j,
         [](const PairState &st, const int side) {
           return side == 0 ? st.sig_i : st.sig_j;
         },
-        false);
+        0.);
+      remap_sides(
+        tau_scale_i,
+        tau_scale_j,
+        [](const PairState &st, const int side) {
+          return side == 0 ? st.tau_scale_i : st.tau_scale_j;
+        },
+        1.);
+      // the shear stress vector: odd under relabelling
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          new_a.assign(n_pairs, 0.);
+          for (unsigned int p = 0; p < n_pairs; ++p)
+            {
+              const std::uint32_t o = source[p];
+              if (o == none)
+                continue;
+              const double t = (o & received) ?
+                                 kept_pairs[o & ~received].tau[c] :
+                                 tau.component[c][o];
+              new_a[p]       = swap[p] ? -t : t;
+            }
+          tau.component[c].swap(new_a);
+        }
 
       // q of automaton i (q_j = r - q_i), the plastic heat
       new_a.resize(n_pairs);

@@ -433,6 +433,27 @@ namespace tribodyn
       {
         return (body[k] & elastic_flag) != 0;
       }
+      /// Shear stress of side @p side (0: i, 1: j) of pair @p p.
+      Vec3
+      side_shear(const unsigned int p, const unsigned int side) const
+      {
+        const double a = side == 0 ? tau_scale_i[p] : tau_scale_j[p];
+        return {{a * tau.component[0][p],
+                 a * tau.component[1][p],
+                 a * tau.component[2][p]}};
+      }
+      /// Call @p f(p, side) for each pair p of owned automaton @p k (side 0:
+      /// k is the pair's i, 1: its j), as i first, in pair order.
+      template <typename F>
+      void
+      for_each_pair_of(const unsigned int k, const F &f) const
+      {
+        const unsigned int first = i_pairs_first[k];
+        for (unsigned int p = first; p < first + i_pairs_count[k]; ++p)
+          f(p, 0u);
+        for (unsigned int a = j_pairs_first[k]; a < j_pairs_first[k + 1]; ++a)
+          f(j_pairs[a], 1u);
+      }
       /// Is local automaton @p k owned by this rank?
       bool
       owned(const unsigned int k) const
@@ -550,19 +571,27 @@ namespace tribodyn
       std::vector<unsigned char> pshift; ///< image shift code of x_j
       std::vector<unsigned char> bonded, in_contact;
       std::vector<double>        q_i, sig_i, sig_j, heat;
-      /// Shear stresses of the two sides (odd under i <-> j).
-      VectorArray         tau_i, tau_j;
+      /// Shear stresses: tau_i = tau_scale_i tau, tau_j = tau_scale_j tau.
+      /// The two sides' shear stresses are always parallel (the series
+      /// springs set them equal; the plastic correction and the Coulomb
+      /// limit of each side only scale them), so one vector (odd under
+      /// i <-> j) and two factors hold both: 40 instead of 48 bytes.
+      VectorArray         tau;
+      std::vector<double> tau_scale_i, tau_scale_j;
       std::vector<double> beta_i, beta_j;
-      /// Pairs of each owned automaton: 2 p + side (side 1: the automaton
-      /// is j of pair p), CSR.
-      std::vector<unsigned int> adjacency_first, adjacency;
+      /// Pairs of each owned automaton k. As i: the pairs are ordered by
+      /// the key of i, so k's form one block, i_pairs_first[k] ...
+      /// + i_pairs_count[k]; as j: j_pairs[j_pairs_first[k] ...
+      /// j_pairs_first[k + 1]] (CSR). 32 instead of 52 bytes a list of both.
+      std::vector<unsigned int>   i_pairs_first, j_pairs_first, j_pairs;
+      std::vector<std::uint16_t>  i_pairs_count;
 
       /// Pair states kept over a rebuild, sorted by (id_i, id_j).
       struct PairState
       {
         std::uint64_t key; ///< smaller id << 32 | larger id
         double        bonded, contact, q, sig_i, sig_j, heat;
-        double        tau_i[3], tau_j[3];
+        double        tau[3], tau_scale_i, tau_scale_j;
       };
       std::vector<PairState> kept_pairs;
       /// This rank's old pairs by their ids (12 bytes each: this list is

@@ -139,11 +139,20 @@ namespace tribodyn
       Point3
       wrap(const Point3 &p) const;
 
-      /// The neighbours of owned cell @p c, itself included (shift none).
-      const std::vector<Neighbour> &
-      neighbours(const unsigned int c) const
+      /// Call @p f(Neighbour) for each neighbour of owned cell @p c, itself
+      /// included (shift none). Computed when asked (pair-list rebuilds
+      /// only): stored lists would cost ~230 bytes per cell, ~100 per
+      /// automaton.
+      template <typename F>
+      void
+      for_each_neighbour(const unsigned int c, const F &f) const
       {
-        return cell_neighbours[c];
+        for (unsigned int o = 0; o < 27; ++o)
+          {
+            Neighbour nb;
+            if (neighbour(c, o, nb))
+              f(nb);
+          }
       }
       /// Image shift vector of a shift code.
       const std::array<double, 3> &
@@ -187,6 +196,13 @@ namespace tribodyn
       }
 
     private:
+      /// Neighbour @p o (offset code, 0...26 like the shift codes) of owned
+      /// cell @p c; false where a non-periodic side has none.
+      bool
+      neighbour(const unsigned int c,
+                const unsigned int o,
+                Neighbour         &nb) const;
+
       std::uint64_t
       key(const std::array<unsigned int, 3> &ijk) const
       {
@@ -211,8 +227,9 @@ namespace tribodyn
       std::vector<std::array<unsigned int, 3>>        cell_index;
       std::vector<unsigned int>                       cell_owner;
       std::vector<CellIterator>                       cells;
-      std::unordered_map<std::uint64_t, unsigned int> local_of_key;
-      std::vector<std::vector<Neighbour>>             cell_neighbours;
+      /// (key, local index) of the local cells, sorted by key: 16 bytes a
+      /// cell (a hash map costs ~50)
+      std::vector<std::pair<std::uint64_t, unsigned int>> local_of_key;
       std::vector<unsigned int>                       ranks;
       std::vector<std::vector<unsigned int>>          send_cells;
     };
