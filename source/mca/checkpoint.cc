@@ -104,8 +104,10 @@ namespace tribodyn
   apply(group_reaction) apply(fabric_inverse) apply(changed)                  \
   /* pairs */                                                                 \
   apply(pi) apply(pj) apply(pshift) apply(bonded) apply(in_contact)           \
-  apply(q_i) apply(sig_i) apply(sig_j) apply(heat) apply(tau_i) apply(tau_j)  \
-  apply(beta_i) apply(beta_j) apply(adjacency_first) apply(adjacency)
+  apply(q_i) apply(sig_i) apply(sig_j) apply(heat) apply(tau)                 \
+  apply(tau_scale_i) apply(tau_scale_j)                                       \
+  apply(beta_i) apply(beta_j) apply(i_pairs_first) apply(i_pairs_count)      \
+  apply(j_pairs_first) apply(j_pairs)
     // clang-format on
 
 

@@ -4,7 +4,9 @@
 Runs a parameter file three times, each in its own output directory:
   A: uninterrupted to 2T;
   B: to T with Checkpoint/Interval = T/2 (checkpoints at T/2 and T),
-     then resumed (Checkpoint/Resume = true) to 2T.
+     then resumed (Checkpoint/Resume = true) to 2T, after the files of the
+     other slot (the T/2 checkpoint) were overwritten with garbage, as a
+     crash while writing a next checkpoint would leave them.
 and checks that B's CSV series have exactly A's rows (no duplicate, no
 missing row) with equal values, and that every figure of summary.json is
 equal, except wall-clock timings and memory. Tolerance: 0 (bit for bit:
@@ -124,6 +126,16 @@ def main():
     latest = open(os.path.join(b, "checkpoint", "latest")).read()
     print("checkpoint after the first part:",
           " ".join(l for l in latest.splitlines()[1:6]))
+    # A crash while writing the next checkpoint: it would go to the other
+    # slot, whose files are then partial; 'latest' still names the complete
+    # one, from which the run must resume.
+    slot = [l for l in latest.splitlines() if l.startswith("slot = ")][0][7:]
+    other = os.path.join(b, "checkpoint", f"slot_{1 - int(slot)}")
+    for name in (os.listdir(other) if os.path.isdir(other) else []):
+        with open(os.path.join(other, name), "wb") as f:
+            f.write(b"partial")
+        with open(os.path.join(other, name + ".tmp"), "wb") as f:
+            f.write(b"partial")
     out = run(launcher, tribodyn, "b2.prm", work)
     if "Resuming from the checkpoint" not in out:
         sys.exit("FAIL: the second part did not resume")
