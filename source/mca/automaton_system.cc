@@ -147,7 +147,8 @@ namespace tribodyn
       if (n_global == 0)
         throw InputError(
           "The packing is empty: no FCC site of spacing Geometry/Automaton "
-          "size lies inside a body of Geometry/Bodies (or every one was "
+          "size lies inside a body of Geometry/Bodies within the box "
+          "Geometry/Domain lower and Domain upper (or every one was "
           "removed by a void region). Check the boxes and the automaton "
           "size.");
 
@@ -267,10 +268,8 @@ namespace tribodyn
       half_kick();
       apply_kinematic_constraints(current_time);
       ++n_steps_done;
-      if (n_owned > 0 && !std::isfinite(v[0][0] + x[0][0]))
-        throw RunError("The velocities became NaN at step "
-                       + std::to_string(n_steps_done)
-                       + "; the time step is probably too large.");
+      // Finiteness and growth: checked by the driver after each step
+      // (count_unstable_automata(), source/mca/stability.cc).
     }
 
 

@@ -16,6 +16,15 @@
 #include <tribodyn/mca/vector_algebra.h>
 #include <vector>
 
+namespace boost
+{
+  namespace archive
+  {
+    class binary_oarchive;
+    class binary_iarchive;
+  } // namespace archive
+} // namespace boost
+
 namespace tribodyn
 {
   namespace mca
@@ -137,6 +146,24 @@ namespace tribodyn
       /// One velocity-Verlet step.
       void
       step();
+
+      // ---- stability and checkpoints (source/mca/stability.cc,
+      // source/mca/checkpoint.cc)
+      /// Owned automata whose velocity or rotation speed |w| d/2 is not
+      /// finite or above @p limit (m/s).
+      unsigned int
+      count_unstable_automata(const double limit) const;
+      /// Collective: throw RunError naming the worst automaton of all
+      /// ranks (id, position, material, groups, speed) and the likely cause.
+      [[noreturn]] void
+      report_instability(const double limit) const;
+      /// The whole state between two steps (the arrays listed once in
+      /// source/mca/checkpoint.cc); load_state() after setup(), on the same
+      /// number of ranks, restores it exactly.
+      void
+      save_state(boost::archive::binary_oarchive &archive) const;
+      void
+      load_state(boost::archive::binary_iarchive &archive);
 
       /// Rebuild the pair list now (migration, ghosts, pair states carried
       /// over), as step() does when an automaton moved more than skin/2.

@@ -287,6 +287,17 @@ namespace tribodyn
       {
         return !ranks.empty();
       }
+      /// The lists given to set_ghost_lists() (checkpoints).
+      const std::vector<std::vector<unsigned int>> &
+      ghost_send_indices() const
+      {
+        return send_indices;
+      }
+      const std::vector<unsigned int> &
+      ghost_offsets() const
+      {
+        return ghost_offset;
+      }
       const std::vector<unsigned int> &
       neighbour_ranks() const
       {

@@ -39,6 +39,18 @@ namespace tribodyn
              JsonValue         &summary,
              std::ostream      &figures) const;
 
+      /// friction.csv of the samples so far (by the root rank; also when a
+      /// run stops early); returns the analysis.
+      FrictionAnalysis
+      write_series(const std::string &output_directory, const bool root) const;
+
+      /// The recorded series (checkpoints save and restore them).
+      std::vector<std::vector<double> *>
+      recorded_series()
+      {
+        return {&times, &normal, &tangential, &bonded, &unbonded};
+      }
+
     private:
       const Parameters   &prm;
       const int           loaded;
