@@ -350,11 +350,14 @@ namespace tribodyn
       static PartitionFigures
       partition_report(const Parameters &prm, const unsigned int n_ranks);
 
-      /// Memory per owned and per ghost automaton of an elastic bonded
-      /// block (memory_consumption() / n_owned on one rank, bench/mca), for
-      /// the partition report's estimate.
-      static constexpr double bytes_per_owned_automaton = 1000;
-      static constexpr double bytes_per_ghost_automaton = 300;
+      /// Memory per owned and per ghost automaton for the partition
+      /// report's estimate, measured (bench/mca/compare.py --memory): peak
+      /// RSS per automaton of a 256 000-automaton elastic block on one rank
+      /// (955 B), and the increase on two ranks divided by the ghosts
+      /// (1118 B per owned automaton with 0.12 ghosts per owned one: the
+      /// ghost's own arrays and its pairs, stored on both ranks).
+      static constexpr double bytes_per_owned_automaton = 960;
+      static constexpr double bytes_per_ghost_automaton = 1400;
 
     private:
       // --- set-up and rebuild (automaton_system.cc, rebuild.cc)
