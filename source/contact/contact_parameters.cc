@@ -99,7 +99,8 @@ namespace tribodyn
                             false,
                             "The mesh needs at least one element across the "
                             "pin ('Geometry/Width' = "
-                              + format_number(width) + " m, 'Geometry/Height' = "
+                              + format_number(width)
+                              + " m, 'Geometry/Height' = "
                               + format_number(height) + " m).");
       const double n_cells
         = std::round(width / mesh_size) * std::round(height / mesh_size);

@@ -32,9 +32,9 @@ namespace tribodyn
   IsotropicElasticMaterial::parse_parameters(dealii::ParameterHandler &prm,
                                              const std::string        &section)
   {
-    youngs_modulus   = prm.get_double("Young modulus");
-    poisson_ratio    = prm.get_double("Poisson ratio");
-    density          = prm.get_double("Density");
+    youngs_modulus = prm.get_double("Young modulus");
+    poisson_ratio  = prm.get_double("Poisson ratio");
+    density        = prm.get_double("Density");
     check_parameter_range(section + "/Young modulus",
                           youngs_modulus,
                           0,

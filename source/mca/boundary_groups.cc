@@ -83,13 +83,7 @@ namespace tribodyn
           if (grp[gi].type == BoundaryGroup::Type::force)
             plates.push_back(gi);
         }
-      group_reaction.assign(grp.size(), Vec3{{0, 0, 0}});
-      for (unsigned int k = 0; k < n_owned; ++k)
-        if (groups[k] != 0)
-          for (unsigned int gi = 0; gi < grp.size(); ++gi)
-            if (groups[k] & (1u << gi))
-              for (unsigned int c = 0; c < 3; ++c)
-                group_reaction[gi][c] += f[k][c];
+      group_reaction = local_group_sums(f);
       if (c_global > 0)
         for (unsigned int k = 0; k < n_owned; ++k)
           {
@@ -139,16 +133,28 @@ namespace tribodyn
 
 
     std::vector<Vec3>
-    AutomatonSystem::sum_over_groups(const std::vector<Vec3> &field) const
+    AutomatonSystem::local_group_sums(const std::vector<Vec3> &field) const
     {
-      const unsigned int  n_groups = prm.boundary.groups.size();
-      std::vector<double> sums(3 * n_groups, 0.);
+      const unsigned int n_groups = prm.boundary.groups.size();
+      std::vector<Vec3>  sums(n_groups, Vec3{{0, 0, 0}});
       for (unsigned int k = 0; k < n_owned; ++k)
         if (groups[k] != 0)
           for (unsigned int gi = 0; gi < n_groups; ++gi)
             if (groups[k] & (1u << gi))
               for (unsigned int c = 0; c < 3; ++c)
-                sums[3 * gi + c] += field[k][c];
+                sums[gi][c] += field[k][c];
+      return sums;
+    }
+
+
+    std::vector<Vec3>
+    AutomatonSystem::global_group_sums(const std::vector<Vec3> &local) const
+    {
+      const unsigned int  n_groups = prm.boundary.groups.size();
+      std::vector<double> sums(3 * n_groups, 0.);
+      for (unsigned int gi = 0; gi < local.size(); ++gi)
+        for (unsigned int c = 0; c < 3; ++c)
+          sums[3 * gi + c] = local[gi][c];
       dealii::Utilities::MPI::sum(sums, comm, sums);
       std::vector<Vec3> out(n_groups);
       for (unsigned int gi = 0; gi < n_groups; ++gi)
@@ -159,19 +165,17 @@ namespace tribodyn
 
 
     std::vector<Vec3>
+    AutomatonSystem::sum_over_groups(const std::vector<Vec3> &field) const
+    {
+      return global_group_sums(local_group_sums(field));
+    }
+
+
+    std::vector<Vec3>
     AutomatonSystem::group_forces() const
     {
       // the pair-force reactions summed at the last step
-      std::vector<double> sums(3 * group_reaction.size());
-      for (unsigned int gi = 0; gi < group_reaction.size(); ++gi)
-        for (unsigned int c = 0; c < 3; ++c)
-          sums[3 * gi + c] = group_reaction[gi][c];
-      dealii::Utilities::MPI::sum(sums, comm, sums);
-      std::vector<Vec3> out(prm.boundary.groups.size(), Vec3{{0, 0, 0}});
-      for (unsigned int gi = 0; gi < group_reaction.size(); ++gi)
-        for (unsigned int c = 0; c < 3; ++c)
-          out[gi][c] = sums[3 * gi + c];
-      return out;
+      return global_group_sums(group_reaction);
     }
 
 

@@ -188,8 +188,7 @@ namespace tribodyn
         check_parameter(n_fcc_cells <= 1e10,
                         "Geometry/Domain lower and Domain upper",
                         "the box holds " + format_number(n_fcc_cells)
-                          + " FCC cells of a = d sqrt(2) = "
-                          + format_number(a)
+                          + " FCC cells of a = d sqrt(2) = " + format_number(a)
                           + " m (limit 1e10): shrink the box or enlarge "
                             "'Geometry/Automaton size'.");
         bodies.clear();

@@ -177,7 +177,8 @@ namespace tribodyn
       const double dt = system.time_step();
       check_parameter(p.time.end_time / dt < 1e12,
                       "Time/End time",
-                      "the run would take " + format_number(p.time.end_time / dt)
+                      "the run would take "
+                        + format_number(p.time.end_time / dt)
                         + " steps of dt = " + format_number(dt)
                         + " s (limit 1e12): lower the end time.");
       const auto n_steps

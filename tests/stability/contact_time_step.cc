@@ -196,9 +196,9 @@ main(int argc, char **argv)
       const Outcome o = run(factor, "0", 10000, false);
       if (is_root())
         std::cout << "(f) " << factor << " x critical, forced: "
-                  << (o.unstable ? "stopped after " + std::to_string(o.steps)
-                                     + " steps"
-                                 : "stable over 10^4 steps")
+                  << (o.unstable
+                        ? "stopped after " + std::to_string(o.steps) + " steps"
+                        : "stable over 10^4 steps")
                   << std::endl;
       if (o.unstable)
         check_message(o, "(f)");

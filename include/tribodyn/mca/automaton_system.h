@@ -488,6 +488,11 @@ namespace tribodyn
       /// each boundary group, over all ranks.
       std::vector<Vec3>
       sum_over_groups(const std::vector<Vec3> &field) const;
+      /// The same on this rank only, and the sum over ranks of such sums.
+      std::vector<Vec3>
+      local_group_sums(const std::vector<Vec3> &field) const;
+      std::vector<Vec3>
+      global_group_sums(const std::vector<Vec3> &local) const;
       void
       apply_kinematic_constraints(const double t);
       double
