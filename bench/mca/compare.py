@@ -104,6 +104,7 @@ def main():
     parser.add_argument("--work", default="bench-mca-work")
     args = parser.parse_args()
     args.tribodyn = os.path.abspath(args.tribodyn)
+    args.work = os.path.abspath(args.work)
     os.makedirs(args.work, exist_ok=True)
     print("load average before:", open("/proc/loadavg").read().split()[:3])
 

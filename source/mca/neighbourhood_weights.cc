@@ -187,31 +187,6 @@ namespace tribodyn
     }
 
 
-    void
-    AutomatonSystem::add_pair_stress(const unsigned int p,
-                                     std::vector<Mat3> &target) const
-    {
-      // Seed eq. (4): T^i += (q_ij S / V_i) n_ij (x) F_ij / S, for each
-      // owned side of the pair (q_ji = r_ij - q_ij); sigma^i = sym(B^-1 T).
-      double     r;
-      const Vec3 n = unit_normal(p, r);
-      if (owned(pi[p]) && !elastic(pi[p]))
-        {
-          Vec3 t;
-          for (unsigned int c = 0; c < 3; ++c)
-            t[c] = sig_i[p] * n[c] + tau_scale_i[p] * tau.component[c][p];
-          add_outer(target[pi[p]], q_i[p] * S / V, n, t);
-        }
-      if (owned(pj[p]) && !elastic(pj[p]))
-        {
-          Vec3 t;
-          for (unsigned int c = 0; c < 3; ++c)
-            t[c] = sig_j[p] * n[c] + tau_scale_j[p] * tau.component[c][p];
-          add_outer(target[pj[p]], (r - q_i[p]) * S / V, n, t);
-        }
-    }
-
-
     Sym3
     AutomatonSystem::automaton_stress(const unsigned int k) const
     {

@@ -471,11 +471,16 @@ namespace tribodyn
       update_neighbourhood_weights(const bool all);
       Sym3
       fabric_corrected(const unsigned int k, const Mat3 &t) const;
-      /// Add the eq.-(4) stress contributions of pair @p p to the owned
-      /// automata of the pair in @p target (indexed by local automaton),
-      /// except automata of elastic regions (the plastic trial stress).
+      /// Add the eq.-(4) stress contributions of pair @p p (unit normal
+      /// @p n, distance @p r) to the owned automata of the pair in @p target
+      /// (indexed by local automaton); with @p skip_elastic not to automata
+      /// of elastic regions (the plastic trial stress needs none).
       void
-      add_pair_stress(const unsigned int p, std::vector<Mat3> &target) const;
+      add_pair_stress(const unsigned int p,
+                      const Vec3        &n,
+                      const double       r,
+                      std::vector<Mat3> &target,
+                      const bool         skip_elastic) const;
       /// Fabric tensor B = sum_j (q S / V) n n of automaton @p k's
       /// interacting pairs, inverted when well conditioned (else identity).
       Sym3
@@ -566,7 +571,9 @@ namespace tribodyn
       /// sum_qs: plastic-heat shares; dsm: the volumetric strain increment,
       /// then the mean-stress increment of each automaton.
       std::vector<double> sum_qs, dsm;
-      std::vector<Mat3>   trial;
+      /// Stress tensors T (eq. 4) of the owned automata: the plastic
+      /// trial in pass B, the final one in pass C of bond scenes.
+      std::vector<Mat3> trial;
       /// Inverse fabric tensors (plastic and bond scenes, which need the
       /// stress every step; otherwise computed when a stress is asked).
       std::vector<Sym3> fabric_inverse;
