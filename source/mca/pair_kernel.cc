@@ -54,10 +54,21 @@ namespace tribodyn
             {dn[0][b] * inv_r[b], dn[1][b] * inv_r[b], dn[2][b] * inv_r[b]}};
         }
       };
+
+      /// 3 J2, the square of the von Mises stress: the bond criterion
+      /// compares it with the squared strength (no square root per pair).
+      inline double
+      von_mises_squared(const Sym3 &s)
+      {
+        const double m = (s[0] + s[1] + s[2]) / 3;
+        const double a = s[0] - m, b = s[1] - m, c = s[2] - m;
+        return 1.5 * (a * a + b * b + c * c)
+               + 3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+      }
     } // namespace
 
 
-    void
+    inline void
     AutomatonSystem::add_pair_stress(const unsigned int p,
                                      const Vec3        &n,
                                      const double       r,
@@ -572,7 +583,7 @@ namespace tribodyn
                   add_sym(s, 1, corr, n);
                   const double limit
                     = std::min(mc[mat[i]].sigma_b, mc[mat[j]].sigma_b);
-                  if (von_mises(s) >= limit)
+                  if (von_mises_squared(s) >= limit * limit)
                     {
                       bonded[p]     = 0;
                       in_contact[p] = r < d;
