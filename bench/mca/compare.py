@@ -4,7 +4,7 @@ against LAMMPS's granular FCC benchmark, side by side in one run, and the
 memory per automaton.
 
 usage: compare.py --tribodyn build/tribodyn [--steps 300] [--ranks 1,2]
-                  [--memory] [--work DIR]
+                  [--memory] [--large] [--friction] [--repeat N] [--work DIR]
 
 Rates: an elastic bonded FCC block of 29 x 29 x 30 cells (100,920 automata
 of d = 1 mm, periodic in x and y; make_block.py), time-step loop only
@@ -14,6 +14,11 @@ pair_style gran/hooke/history, fix nve/sphere, the same time step and number
 of steps; its 'Loop time'. The ratio tribodyn / LAMMPS is printed. Both run
 one after the other on the same machine, so they see the same load; check
 that the machine is idle (uptime) before quoting figures.
+
+--large: the 10^6 block (63^3 cells, 1,000,188 automata, 40 steps) on 1 and
+2 ranks, for the parallel efficiency at size. --friction: the friction scene
+of the examples (plasticity, bonds, contacts). --repeat N: N alternating runs
+of each rate, medians reported (a shared virtual machine drifts by 10-30 %).
 
 --memory: peak resident set size of a ~2.56e5-automaton block (40 x 40 x 40
 cells) minus that of a tiny one (4 x 4 x 4), per automaton, on one rank,
@@ -25,6 +30,7 @@ import os
 import re
 import resource
 import shutil
+import statistics
 import subprocess
 import sys
 
@@ -53,6 +59,30 @@ def tribodyn_block(args, cells_xy, cells_z, steps, ranks, name):
     rss = peak_rss_kb(command, args.work)
     summary = json.load(open(os.path.join(args.work, "out_" + name, "summary.json")))
     return summary, rss
+
+
+def spread(values):
+    """' (min .. max of n runs)' when there are several runs."""
+    if len(values) < 2:
+        return ""
+    return " (%.3e .. %.3e over %d runs)" % (min(values), max(values), len(values))
+
+
+def tribodyn_friction_scene(args):
+    """The friction scene of the examples, its output redirected to the work dir."""
+    source = os.path.join(here, "..", "..", "prm", "mca", "two_body_friction.prm")
+    prm = os.path.join(args.work, "friction_scene.prm")
+    out = os.path.join(args.work, "out_friction_scene")
+    with open(source) as f, open(prm, "w") as g:
+        for line in f:
+            if re.match(r"\s*set Output directory\s*=", line):
+                line = "  set Output directory = %s\n" % out
+            g.write(line)
+    run = subprocess.run([args.tribodyn, prm], cwd=args.work, env=env, capture_output=True,
+                         text=True)
+    if run.returncode != 0:
+        sys.exit("failed: friction scene\n" + run.stderr[-2000:])
+    return json.load(open(os.path.join(out, "summary.json")))
 
 
 def lammps_rate(args, steps):
@@ -102,26 +132,66 @@ def main():
     parser.add_argument("--ranks", default="1,2")
     parser.add_argument("--memory", action="store_true")
     parser.add_argument("--work", default="bench-mca-work")
+    parser.add_argument("--repeat", type=int, default=1,
+                        help="runs of each rate (alternating); medians reported")
+    parser.add_argument("--large", action="store_true",
+                        help="also the 10^6 block (63 x 63 x 63 cells, 40 steps) on 1 and 2 ranks")
+    parser.add_argument("--friction", action="store_true",
+                        help="also the friction scene prm/mca/two_body_friction.prm")
     args = parser.parse_args()
     args.tribodyn = os.path.abspath(args.tribodyn)
+    args.work = os.path.abspath(args.work)
     os.makedirs(args.work, exist_ok=True)
     print("load average before:", open("/proc/loadavg").read().split()[:3])
 
-    rates = {}
-    for ranks in [int(r) for r in args.ranks.split(",")]:
-        s, _ = tribodyn_block(args, 29, 30, args.steps, ranks, "block_1e5_%d" % ranks)
-        rates[ranks] = s["automaton_steps_per_second_per_rank"]
-        print("tribodyn  %d automata, %d rank(s): %.3e automaton-steps/s per core"
-              % (s["n_automata"], ranks, rates[ranks]))
+    # Repeats alternate tribodyn and LAMMPS so that both see the same drift
+    # of a shared (virtual) machine; the medians are reported.
+    runs = {}
+    lammps_runs = []
+    for _ in range(args.repeat):
+        for ranks in [int(r) for r in args.ranks.split(",")]:
+            s, _ = tribodyn_block(args, 29, 30, args.steps, ranks, "block_1e5_%d" % ranks)
+            runs.setdefault(ranks, []).append(s["automaton_steps_per_second_per_rank"])
+            n_block = s["n_automata"]
+        lammps = lammps_rate(args, args.steps)
+        if lammps is not None:
+            lammps_runs.append(lammps)
+    rates = {ranks: statistics.median(r) for ranks, r in runs.items()}
+    for ranks, rate in rates.items():
+        print("tribodyn  %d automata, %d rank(s): %.3e automaton-steps/s per core%s"
+              % (n_block, ranks, rate, spread(runs[ranks])))
     if 1 in rates and 2 in rates:
         print("tribodyn  1 -> 2 ranks parallel efficiency: %.0f %%" % (100 * rates[2] / rates[1]))
-    lammps = lammps_rate(args, args.steps)
-    if lammps is None:
+    if not lammps_runs:
         print("LAMMPS    not installed (apt-get install lammps): no side-by-side figure")
     else:
-        print("LAMMPS    100920 spheres, gran/hooke/history, 1 proc: %.3e atom-steps/s" % lammps)
+        lammps = statistics.median(lammps_runs)
+        print("LAMMPS    100920 spheres, gran/hooke/history, 1 proc: %.3e atom-steps/s%s"
+              % (lammps, spread(lammps_runs)))
         if 1 in rates:
             print("ratio     tribodyn / LAMMPS = %.2f (target >= 0.75)" % (rates[1] / lammps))
+
+    if args.large:
+        large_runs = {}
+        for _ in range(args.repeat):
+            for ranks in [1, 2]:
+                s, _ = tribodyn_block(args, 63, 63, 40, ranks, "block_1e6_%d" % ranks)
+                large_runs.setdefault(ranks, []).append(s["automaton_steps_per_second_per_rank"])
+        large = {ranks: statistics.median(r) for ranks, r in large_runs.items()}
+        for ranks in [1, 2]:
+            print("tribodyn  %d automata, %d rank(s), 40 steps: %.3e automaton-steps/s per core%s"
+                  % (s["n_automata"], ranks, large[ranks], spread(large_runs[ranks])))
+        print("tribodyn  1 -> 2 ranks parallel efficiency (10^6 block): %.0f %% (target >= 90)"
+              % (100 * large[2] / large[1]))
+
+    if args.friction:
+        friction = []
+        for _ in range(args.repeat):
+            s = tribodyn_friction_scene(args)
+            friction.append(s["automaton_steps_per_second_per_rank"])
+        print("tribodyn  friction scene prm/mca/two_body_friction.prm (%d automata, plasticity, "
+              "bonds, contacts): %.3e automaton-steps/s (target >= 1.5e6)%s"
+              % (s["n_automata"], statistics.median(friction), spread(friction)))
 
     if args.memory:
         tiny, rss_tiny = tribodyn_block(args, 4, 4, 20, 1, "memory_tiny")

@@ -98,7 +98,10 @@ namespace tribodyn
                             true,
                             false,
                             "The mesh needs at least one element across the "
-                            "pin.");
+                            "pin ('Geometry/Width' = "
+                              + format_number(width)
+                              + " m, 'Geometry/Height' = "
+                              + format_number(height) + " m).");
       const double n_cells
         = std::round(width / mesh_size) * std::round(height / mesh_size);
       check_parameter(n_cells <= 2e8,

@@ -22,6 +22,7 @@ namespace tribodyn
     ContactProblem::declare_parameters(ParameterHandler &prm)
     {
       ContactParameters::declare_parameters(prm);
+      CheckpointParameters::declare_parameters(prm);
     }
 
 
@@ -30,6 +31,10 @@ namespace tribodyn
         : context(context)
     {
       parameters.parse_parameters(prm);
+      checkpoint.parse_parameters(prm);
+      checkpoint_lines
+        = resumable_parameter_lines(prm, "Time integration/End time");
+      checkpoints_on = true;
     }
 
 
@@ -97,6 +102,8 @@ namespace tribodyn
 
       ContactSolver solver(comm, parameters, timer);
       solver.setup();
+      if (checkpoints_on)
+        solver.enable_checkpoints(checkpoint, checkpoint_lines);
       const unsigned long n_steps = static_cast<unsigned long>(
         std::ceil(parameters.time.end_time / solver.time_step() - 1e-9));
       pcout << "Pin: " << solver.material_description() << "\n"

@@ -23,6 +23,7 @@
 #include <tribodyn/contact/contact_solver.h>
 #include <tribodyn/contact/element_kernels.h>
 #include <tribodyn/contact/spectrum.h>
+#include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/progress.h>
@@ -129,118 +130,272 @@ namespace tribodyn
 
 
     void
-    ContactSolver::run(const std::string &output_directory,
-                       const double       progress_interval)
+    ContactSolver::set_initial_state()
     {
-      const bool         root    = Utilities::MPI::this_mpi_process(comm) == 0;
-      const auto         start   = std::chrono::steady_clock::now();
-      const unsigned int n_owned = mass.size();
-      const double       beta    = prm.time.damping;
-      const double       b2      = prm.time.beta2;
-      const bool         large
-        = prm.material.kinematics
-          == ContactMaterialParameters::Kinematics::large_deformation;
-
-      // Initial state: u_0 = 0, p_0 = v_0 (held dofs at rest), a = 0, and
-      // u_{-1} = u_0 - dt p_0 so that p_n = (u_n - u_{n-1})/dt (energy
-      // accounting).
-      {
-        double      *pv          = p.begin();
-        double       e0          = 0;
-        const auto  &partitioner = *u.get_partitioner();
-        const double noise       = prm.loading.velocity_perturbation;
-        for (unsigned int i = 0; i < n_owned; ++i)
-          {
-            pv[i] = mass_inverse[i] == 0
-                      ? 0.
-                      : prm.loading.initial_velocity[component[i]];
-            if (!initial_velocity_field.empty() && mass_inverse[i] != 0)
-              pv[i] += initial_velocity_field[i];
-            if (noise > 0 && mass_inverse[i] != 0)
-              pv[i] += noise
-                       * (2.
-                            * uniform_hash(prm.loading.perturbation_seed,
-                                           partitioner.local_to_global(i))
-                          - 1.);
-            u.local_element(i)      = 0;
-            u_prev.local_element(i) = -dt * pv[i];
-            a.local_element(i)      = 0;
-            w.local_element(i)      = beta * pv[i];
-            e0 += 0.5 * mass[i] * pv[i] * pv[i];
-          }
-        energy_initial = Utilities::MPI::sum(e0, comm);
-      }
-      r             = 0;
-      step_count    = 0;
+      // u_0 = 0, p_0 = v_0 (held dofs at rest), a = 0, and u_{-1} = u_0 -
+      // dt p_0 so that p_n = (u_n - u_{n-1})/dt (energy accounting).
+      const unsigned int n_owned     = mass.size();
+      const double       beta        = prm.time.damping;
+      double            *pv          = p.begin();
+      double             e0          = 0;
+      const auto        &partitioner = *u.get_partitioner();
+      const double       noise       = prm.loading.velocity_perturbation;
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          pv[i] = mass_inverse[i] == 0
+                    ? 0.
+                    : prm.loading.initial_velocity[component[i]];
+          if (!initial_velocity_field.empty() && mass_inverse[i] != 0)
+            pv[i] += initial_velocity_field[i];
+          if (noise > 0 && mass_inverse[i] != 0)
+            pv[i] += noise
+                     * (2.
+                          * uniform_hash(prm.loading.perturbation_seed,
+                                         partitioner.local_to_global(i))
+                        - 1.);
+          u.local_element(i)      = 0;
+          u_prev.local_element(i) = -dt * pv[i];
+          a.local_element(i)      = 0;
+          w.local_element(i)      = beta * pv[i];
+          e0 += 0.5 * mass[i] * pv[i] * pv[i];
+        }
+      energy_initial = Utilities::MPI::sum(e0, comm);
+      r              = 0;
+      step_count     = 0;
       work_external = work_internal = work_contact = dissipation_friction = 0;
       scale_energy = energy_initial;
       history.clear();
       for (ContactNode &node : contact_nodes)
         node = ContactNode{node.ix, node.iy, node.m, node.x};
+    }
 
-      const bool                 write = !output_directory.empty();
+
+    void
+    ContactSolver::enable_checkpoints(
+      const CheckpointParameters     &parameters,
+      const std::vector<std::string> &parameter_lines)
+    {
+      checkpoints_on        = true;
+      checkpoint            = parameters;
+      checkpoint_parameters = parameter_lines;
+    }
+
+
+    double
+    ContactSolver::velocity_limit() const
+    {
+      const auto &L = prm.loading;
+      return c_maximum + std::abs(L.plane_velocity) + L.initial_velocity.norm()
+             + L.velocity_perturbation;
+    }
+
+
+    void
+    ContactSolver::run(const std::string &output_directory,
+                       const double       progress_interval)
+    {
+      const bool         root    = Utilities::MPI::this_mpi_process(comm) == 0;
+      const bool         several = Utilities::MPI::n_mpi_processes(comm) > 1;
+      const auto         start   = std::chrono::steady_clock::now();
+      const unsigned int n_owned = mass.size();
+      const double       beta    = prm.time.damping;
+      const bool         large
+        = prm.material.kinematics
+          == ContactMaterialParameters::Kinematics::large_deformation;
+      const bool write = !output_directory.empty();
+      // SIGTERM/SIGINT: polled between steps (checkpoint, clean stop).
+      const InterruptHandlers interrupt_handlers;
+
+      // Initial state, or the state of the latest checkpoint.
+      LoopState                        loop;
+      std::unique_ptr<CheckpointStore> store;
+      if (write && checkpoints_on)
+        store = std::make_unique<CheckpointStore>(output_directory,
+                                                  "contact",
+                                                  comm);
+      const bool resumed = store && checkpoint.resume;
+      if (resumed)
+        {
+          CheckpointInfo info;
+          load_state(store->read(checkpoint_parameters, info), loop);
+          if (root)
+            std::cout << "Resuming from the checkpoint at t = " << info.time
+                      << " s (step " << info.step << ")" << std::endl;
+        }
+      else
+        {
+          set_initial_state();
+          if (store)
+            store->discard();
+        }
+      steps_at_start = step_count;
+
       std::unique_ptr<CsvWriter> friction_csv, point_csv, status_csv;
       std::unique_ptr<PvdWriter> pvd;
       if (write)
         {
-          friction_csv = std::make_unique<CsvWriter>(
-            join_path(output_directory, "friction.csv"),
-            std::vector<std::string>{"time",
-                                     "normal_force",
-                                     "tangential_force",
-                                     "mu_global",
-                                     "contact_normal_force",
-                                     "contact_tangential_force",
-                                     "mu_contact",
-                                     "kinetic_energy",
-                                     "elastic_energy",
-                                     "external_work",
-                                     "contact_work",
-                                     "damping_dissipation",
-                                     "friction_dissipation",
-                                     "energy_balance_error",
-                                     "momentum_x",
-                                     "momentum_y"},
-            root);
-          point_csv = std::make_unique<CsvWriter>(
-            join_path(output_directory, "point_M.csv"),
-            std::vector<std::string>{"time",
-                                     "tangential_displacement",
-                                     "tangential_velocity",
-                                     "normal_displacement",
-                                     "normal_velocity",
-                                     "status"},
-            root);
-          status_csv = std::make_unique<CsvWriter>(
-            join_path(output_directory, "contact_status.csv"),
-            std::vector<std::string>{
-              "time", "stick_fraction", "slip_fraction", "separation_fraction"},
-            root);
+          auto csv = [&](const char                     *name,
+                         const std::vector<std::string> &columns) {
+            const std::string path = join_path(output_directory, name);
+            return resumed ? std::make_unique<CsvWriter>(path,
+                                                         columns,
+                                                         root,
+                                                         loop.csv_rows)
+                           : std::make_unique<CsvWriter>(path, columns, root);
+          };
+          friction_csv = csv("friction.csv",
+                             {"time",
+                              "normal_force",
+                              "tangential_force",
+                              "mu_global",
+                              "contact_normal_force",
+                              "contact_tangential_force",
+                              "mu_contact",
+                              "kinetic_energy",
+                              "elastic_energy",
+                              "external_work",
+                              "contact_work",
+                              "damping_dissipation",
+                              "friction_dissipation",
+                              "energy_balance_error",
+                              "momentum_x",
+                              "momentum_y"});
+          point_csv    = csv("point_M.csv",
+                          {"time",
+                              "tangential_displacement",
+                              "tangential_velocity",
+                              "normal_displacement",
+                              "normal_velocity",
+                              "status"});
+          status_csv   = csv(
+            "contact_status.csv",
+            {"time", "stick_fraction", "slip_fraction", "separation_fraction"});
           pvd = std::make_unique<PvdWriter>(join_path(output_directory,
                                                       "fields.pvd"),
                                             root);
+          pvd->restore(loop.pvd);
           if (prm.output.contact_face_interval > 0)
-            open_contact_face_files(output_directory);
+            open_contact_face_files(output_directory,
+                                    resumed ? long(loop.face_rows) : -1);
         }
-      unsigned long sample_count = 0;
 
       const double        end_time = prm.time.end_time;
       const unsigned long n_steps
         = static_cast<unsigned long>(std::ceil(end_time / dt - 1e-9));
-      ProgressReporter   progress(std::cout,
+      if (resumed && step_count >= n_steps)
+        throw InputError("Nothing to resume: the checkpoint is at step "
+                         + std::to_string(step_count)
+                         + " (t = " + format_number(step_count * dt)
+                         + " s), at or beyond 'Time integration/End time' = "
+                         + format_number(end_time)
+                         + " s. Raise the end time to continue the run.");
+      ProgressReporter progress(std::cout,
                                 root && progress_interval >= 0,
                                 n_steps * dt,
                                 std::max(0., progress_interval),
                                 "contact");
+      progress.set_start_time(step_count * dt);
       const unsigned int sample_every = prm.output.sample_interval;
       const double       field_every  = prm.output.field_interval;
-      unsigned int       field_count  = 0;
-      double             next_field   = 0;
-      double             top_force    = 0;
-      double             loop_seconds = 0;
-      const auto         loop_start   = std::chrono::steady_clock::now();
+      const double       v_limit      = velocity_limit();
+      const double       interval     = checkpoint.interval;
+      double             next_checkpoint
+        = interval > 0
+            ? (std::floor(step_count * dt / interval + 1e-9) + 1) * interval
+            : std::numeric_limits<double>::max();
+      double     top_force    = 0;
+      double     loop_seconds = 0;
+      double     n_bad        = 0;
+      const auto loop_start   = std::chrono::steady_clock::now();
 
-      for (unsigned long n = 0; n < n_steps; ++n)
+      // Record the sample of step n (time t), its rows and the progress.
+      auto take_sample = [&](const unsigned long n, const double t) {
+        const auto t0 = std::chrono::steady_clock::now();
+        record_sample(t);
+        if (write && prm.output.contact_face_interval > 0
+            && loop.sample_count % prm.output.contact_face_interval == 0)
+          {
+            write_contact_face_row(t);
+            ++loop.face_rows;
+          }
+        ++loop.sample_count;
+        Sample &smp          = history.back();
+        smp.tangential_force = top_force;
+        smp.mu_global        = prm.loading.top_held_in_x && smp.normal_force > 0
+                                 ? -(prm.loading.plane_velocity >= 0 ? 1. : -1.)
+                              * top_force / smp.normal_force
+                                 : smp.mu_contact;
+        if (write)
+          {
+            friction_csv->add_row({smp.time,
+                                   smp.normal_force,
+                                   smp.tangential_force,
+                                   smp.mu_global,
+                                   smp.contact_normal_force,
+                                   smp.contact_tangential_force,
+                                   smp.mu_contact,
+                                   smp.kinetic_energy,
+                                   smp.elastic_energy,
+                                   smp.external_work,
+                                   smp.contact_work,
+                                   smp.damping_dissipation,
+                                   smp.friction_dissipation,
+                                   smp.energy_balance_error,
+                                   smp.momentum_x,
+                                   smp.momentum_y});
+            point_csv->add_row({smp.time,
+                                smp.M_ux,
+                                smp.M_vx,
+                                smp.M_uy,
+                                smp.M_vy,
+                                double(smp.M_status)});
+            status_csv->add_row({smp.time,
+                                 smp.stick_fraction,
+                                 smp.slip_fraction,
+                                 smp.separation_fraction});
+            friction_csv->flush();
+            point_csv->flush();
+            status_csv->flush();
+          }
+        std::ostringstream key;
+        key << "mu_global = " << std::fixed << std::setprecision(4)
+            << smp.mu_global << "  stick/slip/sep = " << std::setprecision(2)
+            << smp.stick_fraction << "/" << smp.slip_fraction << "/"
+            << smp.separation_fraction;
+        progress.update(step_count, t + dt, key.str());
+        if (!std::isfinite(smp.kinetic_energy) || !std::isfinite(smp.mu_global))
+          throw RunError("The solution became non-finite at t = "
+                         + format_number(t) + " s (step " + std::to_string(n)
+                         + "): the run is unstable.");
+        loop_seconds -= std::chrono::duration<double>(
+                          std::chrono::steady_clock::now() - t0)
+                          .count();
+      };
+      // Flush the series and save the state after step_count steps.
+      auto save_checkpoint = [&]() {
+        if (!store)
+          return;
+        const auto t0 = std::chrono::steady_clock::now();
+        if (write)
+          {
+            friction_csv->flush(true);
+            point_csv->flush(true);
+            status_csv->flush(true);
+            for (auto &f : face_files)
+              f->flush();
+          }
+        loop.csv_rows = write ? friction_csv->n_rows() : 0;
+        loop.pvd      = write ? pvd->entries() : loop.pvd;
+        store->write(save_state(loop),
+                     step_count,
+                     step_count * dt,
+                     checkpoint_parameters);
+        loop_seconds -= std::chrono::duration<double>(
+                          std::chrono::steady_clock::now() - t0)
+                          .count();
+      };
+
+      for (unsigned long n = step_count; n < n_steps; ++n)
         {
           const double t = n * dt;
           const double s = prm.loading.pressure_at(t);
@@ -263,8 +418,9 @@ namespace tribodyn
                 av[i]           = ai;
               }
           }
-          const bool sample = (n % sample_every == 0) || n + 1 == n_steps;
-          if (sample)
+          const bool regular = n % sample_every == 0;
+          const bool last    = n + 1 == n_steps;
+          if (regular || last)
             {
               // Reaction of the held top face: R = r - f (a = 0 there).
               double f = 0;
@@ -277,9 +433,9 @@ namespace tribodyn
           // Contact and friction: multipliers at t_{n+1}.
           solve_contact(t + dt);
 
-          // Velocities, energy accounting, next predictor velocity.
+          // Velocities, energy accounting, next predictor velocity; count
+          // the dofs whose velocity is not finite or implausibly large.
           {
-            const double *uv = u.begin();
             const double *up = u_prev.begin();
             const double *un = u_next.begin();
             const double *av = a.begin();
@@ -288,6 +444,7 @@ namespace tribodyn
             double       *rv = r.begin();
             const double *fv = unit_load.data();
             double        we = 0, wi = 0;
+            unsigned int  bad = 0;
             for (unsigned int i = 0; i < n_owned; ++i)
               {
                 const double d = 0.5 * (un[i] - up[i]);
@@ -297,94 +454,79 @@ namespace tribodyn
                 pv[i]           = pn;
                 wv[i]           = un[i] + beta * pn;
                 rv[i]           = 0;
+                bad += !(std::abs(pn) <= v_limit);
               }
-            (void)uv;
             work_external += we;
             work_internal += wi;
+            n_bad += bad;
           }
           u_prev.swap(u); // u_prev = u_n
           u.swap(u_next); // u = u_{n+1}
           ++step_count;
 
-          if (sample)
+          // Stability and interruption: agreed by all ranks before the
+          // state is sampled or saved.
+          int signal = 0;
+          if (!several || regular || last
+              || step_count % health_check_interval == 0)
             {
-              const auto t0 = std::chrono::steady_clock::now();
-              record_sample(t);
-              if (write && prm.output.contact_face_interval > 0
-                  && sample_count % prm.output.contact_face_interval == 0)
-                write_contact_face_row(t);
-              ++sample_count;
-              Sample &smp          = history.back();
-              smp.tangential_force = top_force;
-              smp.mu_global = prm.loading.top_held_in_x && smp.normal_force > 0
-                                ? -(prm.loading.plane_velocity >= 0 ? 1. : -1.)
-                                    * top_force / smp.normal_force
-                                : smp.mu_contact;
-              if (write)
-                {
-                  friction_csv->add_row({smp.time,
-                                         smp.normal_force,
-                                         smp.tangential_force,
-                                         smp.mu_global,
-                                         smp.contact_normal_force,
-                                         smp.contact_tangential_force,
-                                         smp.mu_contact,
-                                         smp.kinetic_energy,
-                                         smp.elastic_energy,
-                                         smp.external_work,
-                                         smp.contact_work,
-                                         smp.damping_dissipation,
-                                         smp.friction_dissipation,
-                                         smp.energy_balance_error,
-                                         smp.momentum_x,
-                                         smp.momentum_y});
-                  point_csv->add_row({smp.time,
-                                      smp.M_ux,
-                                      smp.M_vx,
-                                      smp.M_uy,
-                                      smp.M_vy,
-                                      double(smp.M_status)});
-                  status_csv->add_row({smp.time,
-                                       smp.stick_fraction,
-                                       smp.slip_fraction,
-                                       smp.separation_fraction});
-                  friction_csv->flush();
-                  point_csv->flush();
-                  status_csv->flush();
-                }
-              std::ostringstream key;
-              key << "mu_global = " << std::fixed << std::setprecision(4)
-                  << smp.mu_global
-                  << "  stick/slip/sep = " << std::setprecision(2)
-                  << smp.stick_fraction << "/" << smp.slip_fraction << "/"
-                  << smp.separation_fraction;
-              progress.update(step_count, t + dt, key.str());
-              if (!std::isfinite(smp.kinetic_energy)
-                  || !std::isfinite(smp.mu_global))
-                throw RunError("The solution became non-finite at t = "
-                               + format_number(t) + " s (step "
-                               + std::to_string(n) + "): the run is unstable.");
-              loop_seconds -= std::chrono::duration<double>(
-                                std::chrono::steady_clock::now() - t0)
-                                .count();
+              const RunHealth health = agree_on_health(n_bad, comm);
+              if (health.badness > 0)
+                report_instability(n, t + dt);
+              n_bad  = 0;
+              signal = health.signal;
             }
-          if (write && field_every > 0 && t + 0.5 * dt >= next_field)
+          if (regular)
+            take_sample(n, t);
+          if (write && field_every > 0 && t + 0.5 * dt >= loop.next_field)
             {
               const auto         t0 = std::chrono::steady_clock::now();
               TimerOutput::Scope scope(timer, "output fields");
               // Fields at t_n: swap u_n back in for the writer.
               u.swap(u_prev);
-              write_fields(output_directory, t, field_count);
+              write_fields(output_directory, t, loop.field_count);
               u.swap(u_prev);
               const std::string name
-                = "fields_" + Utilities::int_to_string(field_count, 5) + ".vtu";
+                = "fields_" + Utilities::int_to_string(loop.field_count, 5)
+                  + ".vtu";
               pvd->add(t, name);
-              ++field_count;
-              next_field += field_every;
+              ++loop.field_count;
+              loop.next_field += field_every;
               loop_seconds -= std::chrono::duration<double>(
                                 std::chrono::steady_clock::now() - t0)
                                 .count();
             }
+          // Checkpoint at the interval, at the end and on a signal: before
+          // the end-of-run sample, which a longer run would not take.
+          if ((interval > 0
+               && (step_count * dt >= next_checkpoint - 0.5 * dt || last))
+              || signal != 0)
+            {
+              save_checkpoint();
+              while (next_checkpoint <= step_count * dt + 0.5 * dt)
+                next_checkpoint += interval;
+            }
+          if (signal != 0)
+            {
+              if (write)
+                {
+                  friction_csv->flush(true);
+                  point_csv->flush(true);
+                  status_csv->flush(true);
+                }
+              InterruptHandlers::acknowledge();
+              throw Interrupted(
+                signal,
+                "signal " + std::to_string(signal) + " received at step "
+                  + std::to_string(step_count)
+                  + " (t = " + format_number(step_count * dt) + " s)"
+                  + (store ? "; the state was saved in '" + store->directory()
+                               + "': continue with 'Checkpoint/Resume = "
+                                 "true'."
+                           : " (no checkpoint: no output directory)."));
+            }
+          if (last && !regular)
+            take_sample(n, t);
         }
       loop_seconds += std::chrono::duration<double>(
                         std::chrono::steady_clock::now() - loop_start)
@@ -401,7 +543,6 @@ namespace tribodyn
       run_wall_time = std::chrono::duration<double>(
                         std::chrono::steady_clock::now() - start)
                         .count();
-      (void)b2;
     }
 
 

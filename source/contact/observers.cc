@@ -24,6 +24,7 @@
 #include <tribodyn/contact/contact_solver.h>
 #include <tribodyn/contact/element_kernels.h>
 #include <tribodyn/contact/spectrum.h>
+#include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/progress.h>
@@ -406,12 +407,13 @@ namespace tribodyn
                                           "spectrum_normal_force.csv"),
                                 normal_text.str());
         }
-      s.wall_time_s = run_wall_time;
-      s.time_loop_s = loop_wall_time;
-      s.dof_steps_per_second
-        = loop_wall_time > 0
-            ? static_cast<double>(n_dofs()) * step_count / loop_wall_time
-            : 0.;
+      s.wall_time_s          = run_wall_time;
+      s.time_loop_s          = loop_wall_time;
+      s.dof_steps_per_second = loop_wall_time > 0
+                                 ? static_cast<double>(n_dofs())
+                                     * (step_count - steps_at_start)
+                                     / loop_wall_time
+                                 : 0.;
       return s;
     }
 
@@ -429,7 +431,8 @@ namespace tribodyn
     }
 
     void
-    ContactSolver::open_contact_face_files(const std::string &dir)
+    ContactSolver::open_contact_face_files(const std::string &dir,
+                                           const long         resume_rows)
     {
       face_files.clear();
       face_paths.clear();
@@ -453,13 +456,19 @@ namespace tribodyn
                                      "contact_face_status.csv"})
         {
           face_paths.push_back(join_path(dir, name));
+          const std::string part = face_paths.back() + ".part";
+          // A resumed run continues the rows of the checkpointed run: from
+          // the unfinished file if it was interrupted, else the final one.
+          std::string kept = header.str() + "\n";
+          if (resume_rows >= 0)
+            kept = read_csv_rows(std::ifstream(part) ? part : face_paths.back(),
+                                 static_cast<std::size_t>(resume_rows));
           // Written under a temporary name, renamed when complete.
-          face_files.push_back(
-            std::make_unique<std::ofstream>(face_paths.back() + ".part"));
+          face_files.push_back(std::make_unique<std::ofstream>(part));
           if (!*face_files.back())
-            throw InputError("Cannot write '" + face_paths.back()
-                             + ".part'; check the output directory.");
-          *face_files.back() << header.str() << "\n" << std::setprecision(8);
+            throw InputError("Cannot write '" + part
+                             + "'; check the output directory.");
+          *face_files.back() << kept << std::setprecision(8);
         }
     }
 

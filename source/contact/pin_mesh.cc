@@ -505,6 +505,7 @@ namespace tribodyn
                                      / density[mat]));
         }
       dt_cfl          = std::min(cell_hx, cell_hy) / c_max;
+      c_maximum       = c_max;
       const double b2 = prm.time.beta2;
       const double xi = prm.time.damping * omega_maximum / 2.;
       dt_critical = (std::sqrt(2. * b2 + xi * xi) - xi) / (b2 * omega_maximum);
@@ -514,7 +515,7 @@ namespace tribodyn
         {
           if (prm.time.automatic_time_step)
             dt = prm.time.safety_factor * dt_critical;
-          else
+          else if (prm.time.refuse_unstable_time_step)
             throw InputError(
               "'Time integration/Time step' = " + format_number(dt)
               + " s is above the critical time step "
@@ -527,7 +528,10 @@ namespace tribodyn
               + " s): the explicit scheme would be unstable. Use a time step "
                 "of at most "
               + format_number(dt_critical)
-              + " s, or set 'Automatic time step = true'.");
+              + " s, or set 'Automatic time step = true'. (The critical "
+                "step scales with 'Geometry/Mesh size' and with the square "
+                "root of the materials' Density / Young modulus: check them "
+                "if it is unexpectedly small.)");
         }
       h                   = dt * dt * (0.5 + b2);
       friction_step.mu    = prm.contact.law == FrictionLaw::frictionless

@@ -1,3 +1,4 @@
+#include <cstdio>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -5,6 +6,7 @@
 #include <iostream>
 #include <sstream>
 #include <tribodyn/core/application.h>
+#include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/global_parameters.h>
 #include <tribodyn/core/output.h>
@@ -212,6 +214,10 @@ namespace tribodyn
           write_file_atomically(join_path(global.output_directory,
                                           "parameters.prm"),
                                 used.str());
+          // summary.json exists only for a run that completed: a failed
+          // or interrupted run must not leave an older run's summary.
+          std::remove(
+            join_path(global.output_directory, "summary.json").c_str());
         }
       MPI_Barrier(comm);
 
@@ -274,11 +280,20 @@ namespace tribodyn
           std::cerr << "tribodyn: error: " << e.what() << std::endl;
         return exit_code::input_error;
       }
+    catch (const Interrupted &e)
+      {
+        if (root)
+          std::cerr << "tribodyn: interrupted: " << e.what() << std::endl;
+        return exit_code::interrupted_base + e.signal_number;
+      }
     catch (const RunError &e)
       {
         if (root)
           std::cerr << "tribodyn: the run stopped: " << e.what()
-                    << " The outputs written so far are kept." << std::endl;
+                    << " The outputs written so far are kept (the CSV series "
+                       "up to the last recorded row); no summary.json is "
+                       "written for a run that did not complete."
+                    << std::endl;
         return exit_code::run_error;
       }
     catch (const dealii::ExceptionBase &e)

@@ -32,17 +32,17 @@ namespace tribodyn
   IsotropicElasticMaterial::parse_parameters(dealii::ParameterHandler &prm,
                                              const std::string        &section)
   {
-    youngs_modulus   = prm.get_double("Young modulus");
-    poisson_ratio    = prm.get_double("Poisson ratio");
-    density          = prm.get_double("Density");
-    const double inf = std::numeric_limits<double>::max();
+    youngs_modulus = prm.get_double("Young modulus");
+    poisson_ratio  = prm.get_double("Poisson ratio");
+    density        = prm.get_double("Density");
     check_parameter_range(section + "/Young modulus",
                           youngs_modulus,
                           0,
-                          inf,
+                          max_youngs_modulus,
                           true,
-                          true,
-                          "Young's modulus is in Pa and must be positive.");
+                          false,
+                          "Young's modulus is in Pa and must be positive "
+                          "(the limit, 10 TPa, is eight times diamond's).");
     check_parameter_range(section + "/Poisson ratio",
                           poisson_ratio,
                           -1,
@@ -54,10 +54,11 @@ namespace tribodyn
     check_parameter_range(section + "/Density",
                           density,
                           0,
-                          inf,
+                          max_density,
                           true,
-                          true,
-                          "The density is in kg/m^3 and must be positive.");
+                          false,
+                          "The density is in kg/m^3 and must be positive "
+                          "(the limit is four times osmium's).");
   }
 
 

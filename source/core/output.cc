@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <sstream>
 #include <sys/stat.h>
+#include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
 #include <unistd.h>
@@ -109,6 +110,32 @@ namespace tribodyn
   }
 
 
+  CsvWriter::CsvWriter(const std::string              &path,
+                       const std::vector<std::string> &columns,
+                       const bool                      active,
+                       const std::size_t               rows_kept,
+                       const double min_seconds_between_flushes)
+      : path_name(path)
+      , n_columns(columns.size())
+      , row_count(rows_kept)
+      , is_active(active)
+      , min_interval(min_seconds_between_flushes)
+  {
+    if (!is_active)
+      return;
+    std::string header;
+    for (unsigned int i = 0; i < columns.size(); ++i)
+      header += (i > 0 ? "," : "") + columns[i];
+    text = read_csv_rows(path, rows_kept);
+    if (text.compare(0, header.size() + 1, header + "\n") != 0)
+      throw InputError("Cannot resume: the header of '" + path
+                       + "' differs from this run's columns. Start afresh "
+                         "with 'Checkpoint/Resume = false'.");
+    dirty = true;
+    flush(true);
+  }
+
+
   CsvWriter::~CsvWriter()
   {
     try
@@ -138,6 +165,7 @@ namespace tribodyn
                              + std::to_string(labels.size() + values.size())
                              + " entries for " + std::to_string(n_columns)
                              + " columns in " + path_name);
+    ++row_count;
     if (!is_active)
       return;
     std::ostringstream row;
@@ -184,6 +212,15 @@ namespace tribodyn
       : path_name(path)
       , is_active(active)
   {
+  }
+
+
+  void
+  PvdWriter::restore(const std::vector<std::pair<double, std::string>> &entries)
+  {
+    records.clear();
+    for (const auto &e : entries)
+      add(e.first, e.second);
   }
 
 

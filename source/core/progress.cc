@@ -48,8 +48,13 @@ namespace tribodyn
     line << label << ": step " << step << "  t = " << std::setprecision(4)
          << std::scientific << time << " s  " << std::fixed
          << std::setprecision(1) << 100. * fraction << " %";
-    if (fraction > 0 && fraction < 1)
-      line << "  ETA " << format_duration(elapsed * (1 - fraction) / fraction);
+    // Fraction of this run's part of the simulated time (resumed runs
+    // start at start_time).
+    const double done = end_time > start_time
+                          ? (time - start_time) / (end_time - start_time)
+                          : 1.0;
+    if (done > 0 && done < 1)
+      line << "  ETA " << format_duration(elapsed * (1 - done) / done);
     line << "  elapsed " << format_duration(elapsed);
     if (!key_figure.empty())
       line << "  " << key_figure;

@@ -161,7 +161,8 @@ namespace tribodyn
       if (n_global == 0)
         throw InputError(
           "The packing is empty: no FCC site of spacing Geometry/Automaton "
-          "size lies inside a body of Geometry/Bodies (or every one was "
+          "size lies inside a body of Geometry/Bodies within the box "
+          "Geometry/Domain lower and Domain upper (or every one was "
           "removed by a void region). Check the boxes and the automaton "
           "size.");
 
@@ -207,8 +208,12 @@ namespace tribodyn
         }
 
       wait_for_contact = false;
+      damping_on       = prm.boundary.global_damping > 0;
       for (const auto &g : prm.boundary.groups)
-        wait_for_contact = wait_for_contact || g.switch_on_contact;
+        {
+          wait_for_contact = wait_for_contact || g.switch_on_contact;
+          damping_on = damping_on || g.type == BoundaryGroup::Type::damping;
+        }
 
       // Group sizes are fixed: automata never change group.
       const unsigned int n_groups = prm.boundary.groups.size();
@@ -271,10 +276,8 @@ namespace tribodyn
       half_kick_with_work();
       apply_kinematic_constraints(current_time);
       ++n_steps_done;
-      if (n_owned > 0 && !std::isfinite(v[0][0] + x[0][0]))
-        throw RunError("The velocities became NaN at step "
-                       + std::to_string(n_steps_done)
-                       + "; the time step is probably too large.");
+      // Finiteness and growth: checked by the driver after each step
+      // (count_unstable_automata(), source/mca/stability.cc).
     }
 
 
@@ -368,7 +371,7 @@ namespace tribodyn
       add(tau_scale_i), add(tau_scale_j);
       bytes += tau.memory_consumption();
       add(beta_i), add(beta_j), add(kept_pairs), add(i_pairs_first);
-      add(i_pairs_count), add(j_pairs_first), add(j_pairs);
+      add(i_pairs_count), add(j_pairs_first), add(j_pairs), add(f_damp);
       return bytes;
     }
 
@@ -413,8 +416,8 @@ namespace tribodyn
           pv.bonded = bonded[p];
           pv.sigma  = 0.5 * (sig_i[p] + sig_j[p]);
           for (unsigned int c = 0; c < 3; ++c)
-            pv.tau[c] = 0.5 * (tau_scale_i[p] + tau_scale_j[p])
-                        * tau.component[c][p];
+            pv.tau[c]
+              = 0.5 * (tau_scale_i[p] + tau_scale_j[p]) * tau.component[c][p];
           pv.heat     = heat.empty() ? 0. : heat[p];
           pv.distance = pair_distance(p);
           out.push_back(pv);

@@ -90,7 +90,8 @@ namespace tribodyn
 
 
     Vec3
-    AutomatonSystem::damping_force(const unsigned int k, const double t) const
+    AutomatonSystem::damping_force(const unsigned int       k,
+                                   const std::vector<Vec3> &values) const
     {
       const auto  &grp  = prm.boundary.groups;
       const double mass = mc[mat[k]].mass;
@@ -101,11 +102,8 @@ namespace tribodyn
         for (unsigned int gi = 0; gi < grp.size(); ++gi)
           if ((groups[k] & (1u << gi))
               && grp[gi].type == BoundaryGroup::Type::damping)
-            {
-              const Vec3 coefficient = group_value(grp[gi], t);
-              for (unsigned int c = 0; c < 3; ++c)
-                fd[c] -= coefficient[c] * mass * v[k][c];
-            }
+            for (unsigned int c = 0; c < 3; ++c)
+              fd[c] -= values[gi][c] * mass * v[k][c];
       return fd;
     }
 
@@ -138,9 +136,11 @@ namespace tribodyn
       // A loading plate's redistribution of its forces among its automata
       // does no work (they share one velocity), so it may be counted with
       // the pair forces.
-      const auto       &grp   = prm.boundary.groups;
-      const bool        stale = f_damp_rebuild != rebuild_count;
-      std::vector<Vec3> load(grp.size(), Vec3{{0, 0, 0}});
+      const auto &grp = prm.boundary.groups;
+      const bool  stale
+        = damping_on
+          && (f_damp_rebuild != rebuild_count || f_damp.size() != n_owned);
+      std::vector<Vec3> load(grp.size(), Vec3{{0, 0, 0}}), values;
       for (unsigned int gi = 0; gi < grp.size(); ++gi)
         if (grp[gi].type == BoundaryGroup::Type::force && group_size[gi] > 0)
           {
@@ -148,6 +148,9 @@ namespace tribodyn
             for (unsigned int c = 0; c < 3; ++c)
               load[gi][c] /= group_size[gi];
           }
+      if (stale)
+        for (const auto &g : grp)
+          values.push_back(group_value(g, current_time));
       double wp = 0, wl = 0, wd = 0;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
@@ -156,7 +159,9 @@ namespace tribodyn
           const Vec3   vb = v[k];
           // after a rebuild f_damp is in the old order: recompute it (from
           // the current velocity: an O(dt) error at that step only)
-          const Vec3 fd = stale ? damping_force(k, current_time) : f_damp[k];
+          const Vec3 fd = !damping_on ? Vec3{{0, 0, 0}}
+                          : stale     ? damping_force(k, values)
+                                      : f_damp[k];
           Vec3       fl{{0, 0, 0}};
           if (groups[k] != 0)
             for (unsigned int gi = 0; gi < grp.size(); ++gi)
@@ -194,8 +199,7 @@ namespace tribodyn
     {
       // Adds external and damping forces to the pair forces f, which then
       // hold the total forces of the kicks; the pair-force reaction of each
-      // group (what the observers report) is summed first, per rank. The
-      // damping part is kept in f_damp for the energy bookkeeping.
+      // group (what the observers report) is summed first, per rank.
       const auto               &grp = prm.boundary.groups;
       std::vector<Vec3>         values(grp.size());
       std::vector<unsigned int> plates;
@@ -205,20 +209,22 @@ namespace tribodyn
           if (grp[gi].type == BoundaryGroup::Type::force)
             plates.push_back(gi);
         }
-      group_reaction.assign(grp.size(), Vec3{{0, 0, 0}});
-      for (unsigned int k = 0; k < n_owned; ++k)
-        if (groups[k] != 0)
-          for (unsigned int gi = 0; gi < grp.size(); ++gi)
-            if (groups[k] & (1u << gi))
-              for (unsigned int c = 0; c < 3; ++c)
-                group_reaction[gi][c] += f[k][c];
-      f_damp.resize(n_owned);
-      f_damp_rebuild = rebuild_count;
+      group_reaction = local_group_sums(f);
+      // Scenes with damping keep its part of f in f_damp (energy
+      // bookkeeping of the next half kicks); others hold no such array.
+      if (damping_on)
+        {
+          f_damp.resize(n_owned);
+          f_damp_rebuild = rebuild_count;
+        }
       for (unsigned int k = 0; k < n_owned; ++k)
         {
-          f_damp[k] = damping_force(k, t);
-          for (unsigned int c = 0; c < 3; ++c)
-            f[k][c] += f_damp[k][c];
+          if (damping_on)
+            {
+              f_damp[k] = damping_force(k, values);
+              for (unsigned int c = 0; c < 3; ++c)
+                f[k][c] += f_damp[k][c];
+            }
           if (groups[k] == 0)
             continue;
           for (unsigned int gi = 0; gi < grp.size(); ++gi)
@@ -253,16 +259,28 @@ namespace tribodyn
 
 
     std::vector<Vec3>
-    AutomatonSystem::sum_over_groups(const std::vector<Vec3> &field) const
+    AutomatonSystem::local_group_sums(const std::vector<Vec3> &field) const
     {
-      const unsigned int  n_groups = prm.boundary.groups.size();
-      std::vector<double> sums(3 * n_groups, 0.);
+      const unsigned int n_groups = prm.boundary.groups.size();
+      std::vector<Vec3>  sums(n_groups, Vec3{{0, 0, 0}});
       for (unsigned int k = 0; k < n_owned; ++k)
         if (groups[k] != 0)
           for (unsigned int gi = 0; gi < n_groups; ++gi)
             if (groups[k] & (1u << gi))
               for (unsigned int c = 0; c < 3; ++c)
-                sums[3 * gi + c] += field[k][c];
+                sums[gi][c] += field[k][c];
+      return sums;
+    }
+
+
+    std::vector<Vec3>
+    AutomatonSystem::global_group_sums(const std::vector<Vec3> &local) const
+    {
+      const unsigned int  n_groups = prm.boundary.groups.size();
+      std::vector<double> sums(3 * n_groups, 0.);
+      for (unsigned int gi = 0; gi < local.size(); ++gi)
+        for (unsigned int c = 0; c < 3; ++c)
+          sums[3 * gi + c] = local[gi][c];
       dealii::Utilities::MPI::sum(sums, comm, sums);
       std::vector<Vec3> out(n_groups);
       for (unsigned int gi = 0; gi < n_groups; ++gi)
@@ -273,19 +291,17 @@ namespace tribodyn
 
 
     std::vector<Vec3>
+    AutomatonSystem::sum_over_groups(const std::vector<Vec3> &field) const
+    {
+      return global_group_sums(local_group_sums(field));
+    }
+
+
+    std::vector<Vec3>
     AutomatonSystem::group_forces() const
     {
       // the pair-force reactions summed at the last step
-      std::vector<double> sums(3 * group_reaction.size());
-      for (unsigned int gi = 0; gi < group_reaction.size(); ++gi)
-        for (unsigned int c = 0; c < 3; ++c)
-          sums[3 * gi + c] = group_reaction[gi][c];
-      dealii::Utilities::MPI::sum(sums, comm, sums);
-      std::vector<Vec3> out(prm.boundary.groups.size(), Vec3{{0, 0, 0}});
-      for (unsigned int gi = 0; gi < group_reaction.size(); ++gi)
-        for (unsigned int c = 0; c < 3; ++c)
-          out[gi][c] = sums[3 * gi + c];
-      return out;
+      return global_group_sums(group_reaction);
     }
 
 

@@ -257,17 +257,14 @@ namespace tribodyn
     unsigned int
     Decomposition::local_cell(const std::array<unsigned int, 3> &ijk) const
     {
-      const std::uint64_t k  = key(ijk);
-      const auto          it = std::lower_bound(
-        local_of_key.begin(),
-        local_of_key.end(),
-        k,
-        [](const std::pair<std::uint64_t, unsigned int> &e,
-           const std::uint64_t                           v) {
-          return e.first < v;
-        });
-      return it == local_of_key.end() || it->first != k ? invalid :
-                                                          it->second;
+      const std::uint64_t k = key(ijk);
+      const auto          it
+        = std::lower_bound(local_of_key.begin(),
+                           local_of_key.end(),
+                           k,
+                           [](const std::pair<std::uint64_t, unsigned int> &e,
+                              const std::uint64_t v) { return e.first < v; });
+      return it == local_of_key.end() || it->first != k ? invalid : it->second;
     }
 
 

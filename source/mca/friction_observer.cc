@@ -38,6 +38,39 @@ namespace tribodyn
     }
 
 
+    FrictionAnalysis
+    FrictionObserver::write_series(const std::string &output_directory,
+                                   const bool         root) const
+    {
+      FrictionAnalysisParameters ap;
+      ap.smoothing_window     = prm.analysis.smoothing_window > 0
+                                  ? prm.analysis.smoothing_window
+                                  : 0.1 * prm.time.end_time;
+      ap.steady_relative_band = prm.analysis.steady_band;
+      const FrictionAnalysis fa
+        = analyse_friction(times, normal, tangential, ap);
+      CsvWriter csv(join_path(output_directory, "friction.csv"),
+                    {"time",
+                     "normal_force",
+                     "tangential_force",
+                     "mu",
+                     "mu_smoothed",
+                     "n_bonded",
+                     "n_unbonded"},
+                    root);
+      for (std::size_t k = 0; k < times.size(); ++k)
+        csv.add_row({times[k],
+                     normal[k],
+                     tangential[k],
+                     fa.mu[k],
+                     fa.mu_smoothed[k],
+                     bonded[k],
+                     unbonded[k]});
+      csv.flush(true);
+      return fa;
+    }
+
+
     void
     FrictionObserver::record_layer(const double           time,
                                    const AutomatonSystem &system,
@@ -159,33 +192,7 @@ namespace tribodyn
     {
       if (times.size() < 2)
         return;
-      FrictionAnalysisParameters ap;
-      ap.smoothing_window     = prm.analysis.smoothing_window > 0
-                                  ? prm.analysis.smoothing_window
-                                  : 0.1 * prm.time.end_time;
-      ap.steady_relative_band = prm.analysis.steady_band;
-      const FrictionAnalysis fa
-        = analyse_friction(times, normal, tangential, ap);
-      {
-        CsvWriter csv(join_path(output_directory, "friction.csv"),
-                      {"time",
-                       "normal_force",
-                       "tangential_force",
-                       "mu",
-                       "mu_smoothed",
-                       "n_bonded",
-                       "n_unbonded"},
-                      root);
-        for (std::size_t k = 0; k < times.size(); ++k)
-          csv.add_row({times[k],
-                       normal[k],
-                       tangential[k],
-                       fa.mu[k],
-                       fa.mu_smoothed[k],
-                       bonded[k],
-                       unbonded[k]});
-        csv.flush(true);
-      }
+      const FrictionAnalysis fa = write_series(output_directory, root);
       // the plain mean from Averaging start (as before), and the steady mu
       double       sum = 0;
       unsigned int n   = 0;

@@ -160,7 +160,8 @@ namespace tribodyn
           {
             const double      L = domain_upper[d] - domain_lower[d];
             const std::string name
-              = std::string("Geometry/Domain upper (") + "xyz"[d] + ")";
+              = std::string("Geometry/Domain lower and Domain upper (")
+                + "xyz"[d] + ")";
             check_parameter(L > 0,
                             name,
                             "the domain must have a positive length in "
@@ -180,6 +181,17 @@ namespace tribodyn
               }
           }
 
+        // The background mesh has cells of about the automaton size: a box
+        // of more than 1e10 FCC cells (~4e10 automata) is a unit mistake.
+        double n_fcc_cells = 1;
+        for (unsigned int d = 0; d < 3; ++d)
+          n_fcc_cells *= (domain_upper[d] - domain_lower[d]) / a;
+        check_parameter(n_fcc_cells <= 1e10,
+                        "Geometry/Domain lower and Domain upper",
+                        "the box holds " + format_number(n_fcc_cells)
+                          + " FCC cells of a = d sqrt(2) = " + format_number(a)
+                          + " m (limit 1e10): shrink the box or enlarge "
+                            "'Geometry/Automaton size'.");
         bodies.clear();
         for (const std::string &entry : split(prm.get("Bodies"), ';'))
           {

@@ -1,10 +1,19 @@
+#include "analyses.h"
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 #include <chrono>
 #include <cmath>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
+#include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
@@ -12,9 +21,7 @@
 #include <tribodyn/core/version.h>
 #include <tribodyn/mca/automaton_system.h>
 #include <tribodyn/mca/friction_observer.h>
-#include <tribodyn/mca/inclusions.h>
 #include <tribodyn/mca/mca_problem.h>
-#include <tribodyn/mca/scene_analyses.h>
 
 namespace tribodyn
 {
@@ -24,6 +31,7 @@ namespace tribodyn
     McaProblem::declare_parameters(dealii::ParameterHandler &prm)
     {
       Parameters::declare_parameters(prm);
+      CheckpointParameters::declare_parameters(prm);
     }
 
 
@@ -60,99 +68,67 @@ namespace tribodyn
         : context(context)
     {
       parameters.parse_parameters(prm);
+      checkpoint.parse_parameters(prm);
+      checkpoint_lines = resumable_parameter_lines(prm, "Time/End time");
     }
 
 
     namespace
     {
-      /// Staged loading and inclusions: what the set-up produced.
-      void
-      report_scene(const AutomatonSystem      &system,
-                   const Parameters           &p,
-                   dealii::ConditionalOStream &out)
+      /// This rank's checkpoint: the automata, the observers' series, the
+      /// outputs written so far.
+      std::string
+      save_checkpoint_blob(const AutomatonSystem                    &system,
+                           const std::vector<std::vector<double> *> &observed,
+                           const unsigned int                    output_number,
+                           const std::size_t                     series_rows,
+                           const std::vector<const PvdWriter *> &pvds)
       {
-        if (p.loading.enabled)
-          out << "Friction loading: separation " << p.geometry.interface_gap
-              << " m, shift " << p.geometry.interface_shift_y
-              << " m along y, damping of the loading layers "
-              << p.loading_damping << " 1/s"
-              << (p.loading.damping > 0 ? " (given)"
-                                        : " (seed criterion c_p / (2 h))")
-              << std::endl;
-        if (const auto *layout = p.geometry.inclusion_layout.get())
-          {
-            const auto counts = system.contacting_part_counts();
-            out << "Inclusions:";
-            for (const auto &part : layout->parts)
-              out << " body " << part.body << ": " << part.set.n_cylinders
-                  << " cylinders (" << 100 * part.set.cylinder_volume_fraction
-                  << " % of the "
-                  << "part's box), " << part.set.n_voids << " voids ("
-                  << 100 * part.set.void_volume_fraction << " %);";
-            out << " automata: " << counts.second << " of " << counts.first
-                << " in the contacting parts = "
-                << 100. * counts.second / std::max(1ull, counts.first) << " %"
-                << std::endl;
-          }
+        std::ostringstream out(std::ios::binary);
+        {
+          boost::archive::binary_oarchive ar(out);
+          system.save_state(ar);
+          ar << output_number << series_rows;
+          for (const auto *pvd : pvds)
+            ar << pvd->entries();
+          for (const auto *series : observed)
+            ar << *series;
+        }
+        return out.str();
       }
 
 
       void
-      add_scene_keys(const AutomatonSystem &system,
-                     const Parameters      &p,
-                     JsonValue             &summary)
+      load_checkpoint(const std::string                        &blob,
+                      AutomatonSystem                          &system,
+                      const std::vector<std::vector<double> *> &observed,
+                      unsigned int                             &output_number,
+                      std::size_t                              &series_rows,
+                      const std::vector<PvdWriter *>           &pvds)
       {
-        summary["contact_time"] = system.contact_time() >= 0
-                                    ? JsonValue(system.contact_time())
-                                    : JsonValue();
-        if (p.loading.enabled)
+        std::istringstream in(blob, std::ios::binary);
+        try
           {
-            summary["loading_damping"]    = p.loading_damping;
-            summary["loading_separation"] = p.geometry.interface_gap;
-            summary["loading_shift_y"]    = p.geometry.interface_shift_y;
-          }
-        if (const auto *layout = p.geometry.inclusion_layout.get())
-          {
-            const auto counts = system.contacting_part_counts();
-            summary["inclusion_volume_fraction"]
-              = double(counts.second) / std::max(1ull, counts.first);
-            double f = 0, fv = 0;
-            for (const auto &part : layout->parts)
+            boost::archive::binary_iarchive ar(in);
+            system.load_state(ar);
+            ar >> output_number >> series_rows;
+            for (auto *pvd : pvds)
               {
-                f += part.set.cylinder_volume_fraction / layout->parts.size();
-                fv += part.set.void_volume_fraction / layout->parts.size();
+                std::vector<std::pair<double, std::string>> entries;
+                ar >> entries;
+                pvd->restore(entries);
               }
-            summary["inclusion_volume_fraction_generated"] = f;
-            summary["void_volume_fraction_generated"]      = fv;
+            for (auto *series : observed)
+              ar >> *series;
           }
-        else
-          summary["inclusion_volume_fraction"] = 0.;
-      }
-
-
-      /// Energy balance since the start (the scene starts at rest and
-      /// unstressed): kinetic + elastic + plastic + friction + damped =
-      /// work of the loads; and the pairs' side of it (their work on the
-      /// automata against what they stored or dissipated).
-      void
-      add_energy_balance(const SystemEnergies &e,
-                         JsonValue            &summary,
-                         std::ostream         &figures)
-      {
-        const double stored = e.kinetic + e.elastic + e.plastic_work
-                              + e.friction_work + e.damped_work;
-        summary["load_work"]               = e.load_work;
-        summary["damped_work"]             = e.damped_work;
-        summary["pair_work"]               = e.pair_work;
-        summary["energy_balance_residual"] = stored - e.load_work;
-        summary["energy_balance_relative"]
-          = e.load_work != 0 ? (stored - e.load_work) / std::abs(e.load_work)
-                             : 0.;
-        figures << "Energy: load work " << e.load_work << " J = kinetic "
-                << e.kinetic << " + elastic " << e.elastic << " + plastic "
-                << e.plastic_work << " + friction " << e.friction_work
-                << " + damped " << e.damped_work << " J + residual "
-                << e.load_work - stored << " J" << std::endl;
+        catch (const boost::archive::archive_exception &e)
+          {
+            throw InputError(std::string("The checkpoint cannot be read (")
+                             + e.what()
+                             + "): it is damaged or from another version of "
+                               "tribodyn. Start afresh with "
+                               "'Checkpoint/Resume = false'.");
+          }
       }
     } // namespace
 
@@ -160,16 +136,38 @@ namespace tribodyn
     void
     McaProblem::run()
     {
+      const MPI_Comm comm = context.mpi_communicator;
+      const bool     root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      dealii::ConditionalOStream pcout(std::cout, root);
+      auto                       timer = std::make_unique<dealii::TimerOutput>(
+        comm,
+        pcout,
+        dealii::TimerOutput::summary,
+        dealii::TimerOutput::wall_times);
+      try
+        {
+          run_with_timer(*timer);
+        }
+      catch (...)
+        {
+          // No timing table (and no MPI exchange in its destructor while an
+          // exception is in flight) for a run that failed.
+          timer->disable_output();
+          timer.reset();
+          throw;
+        }
+    }
+
+
+    void
+    McaProblem::run_with_timer(dealii::TimerOutput &timer)
+    {
       const auto     start = std::chrono::steady_clock::now();
       const MPI_Comm comm  = context.mpi_communicator;
       const bool     root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
       const unsigned int n_ranks
         = dealii::Utilities::MPI::n_mpi_processes(comm);
       dealii::ConditionalOStream pcout(std::cout, root);
-      dealii::TimerOutput        timer(comm,
-                                pcout,
-                                dealii::TimerOutput::summary,
-                                dealii::TimerOutput::wall_times);
       const std::string         &out_dir = context.output_directory;
       const Parameters          &p       = parameters;
 
@@ -179,7 +177,13 @@ namespace tribodyn
         system.setup();
       }
       const double dt = system.time_step();
-      const auto   n_steps
+      check_parameter(p.time.end_time / dt < 1e12,
+                      "Time/End time",
+                      "the run would take "
+                        + format_number(p.time.end_time / dt)
+                        + " steps of dt = " + format_number(dt)
+                        + " s (limit 1e12): lower the end time.");
+      const auto n_steps
         = static_cast<unsigned long>(std::ceil(p.time.end_time / dt - 1e-9));
       report_scene(system, p, pcout);
       pcout << "MCA: " << system.n_global_automata() << " automata, "
@@ -210,7 +214,6 @@ namespace tribodyn
           loaded = g;
       if (friction)
         columns.push_back("mu");
-      CsvWriter series(join_path(out_dir, "series.csv"), columns, root);
       PvdWriter pvd(join_path(out_dir, "particles.pvd"), root);
       PvdWriter pvd_slab(join_path(out_dir, "cross_section.pvd"), root);
       PvdWriter pvd_pairs(join_path(out_dir, "unbonded_pairs.pvd"), root);
@@ -225,6 +228,15 @@ namespace tribodyn
       bool             staged = false;
       for (const auto &g : p.boundary.groups)
         staged = staged || g.switch_on_contact;
+      // The series of the observers (saved in checkpoints).
+      std::vector<std::vector<double> *> observed
+        = friction_observer.recorded_series();
+      for (auto *a : uniaxial ? uniaxial->recorded_series()
+                              : std::vector<std::vector<double> *>())
+        observed.push_back(a);
+      for (auto *a : pulse ? pulse->recorded_series()
+                           : std::vector<std::vector<double> *>())
+        observed.push_back(a);
 
       const unsigned long series_every
         = p.output.series_interval > 0
@@ -240,6 +252,38 @@ namespace tribodyn
             : n_steps;
       unsigned int output_number = 0;
       const bool   need_stress   = p.output.write_stress;
+
+      // A fresh start, or the state of the latest checkpoint.
+      CheckpointStore            store(out_dir, "mca", comm);
+      std::unique_ptr<CsvWriter> series;
+      const std::string          series_path = join_path(out_dir, "series.csv");
+      if (checkpoint.resume)
+        {
+          CheckpointInfo info;
+          std::size_t    rows = 0;
+          load_checkpoint(store.read(checkpoint_lines, info),
+                          system,
+                          observed,
+                          output_number,
+                          rows,
+                          {&pvd, &pvd_slab, &pvd_pairs});
+          if (system.step_number() >= n_steps)
+            throw InputError("Nothing to resume: the checkpoint is at step "
+                             + std::to_string(system.step_number())
+                             + " (t = " + format_number(system.time())
+                             + " s), at or beyond 'Time/End time' = "
+                             + format_number(p.time.end_time)
+                             + " s. Raise the end time to continue the run.");
+          series
+            = std::make_unique<CsvWriter>(series_path, columns, root, rows);
+          pcout << "Resuming from the checkpoint at t = " << info.time
+                << " s (step " << info.step << ")" << std::endl;
+        }
+      else
+        {
+          store.discard();
+          series = std::make_unique<CsvWriter>(series_path, columns, root);
+        }
 
       auto write_outputs = [&]() {
         dealii::TimerOutput::Scope scope(timer, "output");
@@ -311,41 +355,112 @@ namespace tribodyn
             row.push_back(mu);
             key_figure = "mu = " + format_number(mu);
           }
-        series.add_row(row);
-        series.flush();
+        series->add_row(row);
+        series->flush();
         if (uniaxial)
           uniaxial->record();
       };
 
+      // Flush the series and save the state after the current step.
+      auto save_checkpoint = [&]() {
+        dealii::TimerOutput::Scope scope(timer, "checkpoint");
+        series->flush(true);
+        store.write(save_checkpoint_blob(system,
+                                         observed,
+                                         output_number,
+                                         series->n_rows(),
+                                         {&pvd, &pvd_slab, &pvd_pairs}),
+                    system.step_number(),
+                    system.time(),
+                    checkpoint_lines);
+      };
+
       ProgressReporter progress(
         std::cout, root, p.time.end_time, context.progress_interval, "mca");
-      write_outputs();
-      record_series();
-      const auto loop_start = std::chrono::steady_clock::now();
-      {
-        dealii::TimerOutput::Scope scope(timer, "time steps");
-        for (unsigned long s = 1; s <= n_steps; ++s)
-          {
-            system.step();
-            if (pulse)
-              pulse->record(system.time());
-            if (s % series_every == 0 || s == n_steps)
-              {
-                timer.leave_subsection("time steps");
-                record_series();
-                if (s % output_every == 0 || s == n_steps)
-                  write_outputs();
-                timer.enter_subsection("time steps");
-              }
-            progress.update(s, system.time(), key_figure);
-          }
-      }
-      const double loop_seconds
+      progress.set_start_time(system.time());
+      const unsigned long first_step = system.step_number() + 1;
+      if (first_step == 1)
+        {
+          write_outputs();
+          record_series();
+        }
+      // Blow-up limit: twice the largest P-wave speed (d / critical dt).
+      const double v_limit
+        = 2 * p.geometry.automaton_size / system.critical_time_step();
+      const double interval = checkpoint.interval;
+      double       next_checkpoint
+        = interval > 0
+            ? (std::floor(system.time() / interval + 1e-9) + 1) * interval
+            : std::numeric_limits<double>::max();
+      // SIGTERM/SIGINT: polled between steps (checkpoint, clean stop).
+      const InterruptHandlers interrupt_handlers;
+      const auto              loop_start = std::chrono::steady_clock::now();
+      // A run that stops early keeps its friction series (friction.csv).
+      auto keep_friction_series = [&]() {
+        if (friction && friction_observer.recorded_series()[0]->size() >= 2)
+          friction_observer.write_series(out_dir, root);
+      };
+      timer.enter_subsection("time steps");
+      for (unsigned long s = first_step; s <= n_steps; ++s)
+        {
+          system.step();
+          if (pulse)
+            pulse->record(system.time());
+          // Every step: finiteness and speed of the automata, and signals,
+          // agreed by all ranks (one small MPI_Allreduce).
+          const RunHealth health
+            = agree_on_health(system.count_unstable_automata(v_limit), comm);
+          if (health.badness > 0)
+            {
+              keep_friction_series();
+              system.report_instability(v_limit);
+            }
+          const bool regular = s % series_every == 0;
+          const bool regular_output
+            = regular && p.output.output_interval > 0 && s % output_every == 0;
+          const bool last = s == n_steps;
+          timer.leave_subsection("time steps");
+          if (regular)
+            record_series();
+          if (regular_output)
+            write_outputs();
+          // Checkpoint at the interval, at the end and on a signal: before
+          // the end-of-run outputs, which a longer run would not write.
+          if ((interval > 0
+               && (system.time() >= next_checkpoint - 0.5 * dt || last))
+              || health.signal != 0)
+            {
+              save_checkpoint();
+              while (next_checkpoint <= system.time() + 0.5 * dt)
+                next_checkpoint += interval;
+            }
+          if (health.signal != 0)
+            {
+              InterruptHandlers::acknowledge();
+              keep_friction_series();
+            }
+          if (health.signal != 0)
+            throw Interrupted(
+              health.signal,
+              "signal " + std::to_string(health.signal) + " received at step "
+                + std::to_string(s) + " (t = " + format_number(system.time())
+                + " s); the state was saved in '" + store.directory()
+                + "': continue with 'Checkpoint/Resume = true'.");
+          if (last && !regular)
+            record_series();
+          if (last && !regular_output)
+            write_outputs();
+          timer.enter_subsection("time steps");
+          progress.update(s, system.time(), key_figure);
+        }
+      timer.leave_subsection("time steps");
+      const unsigned long steps_run = n_steps + 1 - first_step;
+      const double        loop_seconds
         = std::chrono::duration<double>(std::chrono::steady_clock::now()
                                         - loop_start)
             .count();
       progress.update(n_steps, system.time(), key_figure, true);
-      series.flush(true);
+      series->flush(true);
 
       const double wall = std::chrono::duration<double>(
                             std::chrono::steady_clock::now() - start)
@@ -384,10 +499,10 @@ namespace tribodyn
       summary["time_loop_s"] = loop_seconds;
       summary["automaton_steps_per_second"]
         = loop_seconds > 0
-            ? double(system.n_global_automata()) * n_steps / loop_seconds
+            ? double(system.n_global_automata()) * steps_run / loop_seconds
             : 0.;
       summary["automaton_steps_per_second_per_rank"]
-        = loop_seconds > 0 ? double(system.n_global_automata()) * n_steps
+        = loop_seconds > 0 ? double(system.n_global_automata()) * steps_run
                                / loop_seconds / n_ranks
                            : 0.;
       {
@@ -417,7 +532,7 @@ namespace tribodyn
         friction_observer.finish(out_dir, root, summary, figures);
       pcout << figures.str();
       pcout << "Throughput: "
-            << double(system.n_global_automata()) * n_steps
+            << double(system.n_global_automata()) * steps_run
                  / std::max(loop_seconds, 1e-300) / n_ranks
             << " automaton-steps/s per rank" << std::endl;
       if (root)

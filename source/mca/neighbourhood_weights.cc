@@ -105,32 +105,33 @@ namespace tribodyn
                 }
             }
           double beta_sum = 0;
-          for_each_pair_of(
-            k, [&](const unsigned int p, const unsigned int side) {
-              double beta = 0;
-              if (bonded[p] || in_contact[p])
-                {
-                  if (full_rank)
-                    {
-                      double r;
-                      beta = g.dot(voigt(unit_normal(p, r)));
-                    }
-                  else
-                    beta = 3. / count;
-                }
-              (side ? beta_j : beta_i)[p] = beta;
-              beta_sum += std::abs(beta);
-            });
+          for_each_pair_of(k,
+                           [&](const unsigned int p, const unsigned int side) {
+                             double beta = 0;
+                             if (bonded[p] || in_contact[p])
+                               {
+                                 if (full_rank)
+                                   {
+                                     double r;
+                                     beta = g.dot(voigt(unit_normal(p, r)));
+                                   }
+                                 else
+                                   beta = 3. / count;
+                               }
+                             (side ? beta_j : beta_i)[p] = beta;
+                             beta_sum += std::abs(beta);
+                           });
           // Bound the many-body stiffness by its bulk value (sum of |beta|
           // = 3 in a complete FCC neighbourhood): sparse, nearly degenerate
           // neighbourhoods (e.g. around broken bonds) could otherwise make
           // an automaton far stiffer than the bulk and the explicit step
           // unstable.
           if (beta_sum > 3)
-            for_each_pair_of(
-              k, [&](const unsigned int p, const unsigned int side) {
-                (side ? beta_j : beta_i)[p] *= 3 / beta_sum;
-              });
+            for_each_pair_of(k,
+                             [&](const unsigned int p,
+                                 const unsigned int side) {
+                               (side ? beta_j : beta_i)[p] *= 3 / beta_sum;
+                             });
           if (!fabric_inverse.empty())
             fabric_inverse[k] = inverse_fabric(k);
           changed[k] = 0;
@@ -183,31 +184,6 @@ namespace tribodyn
                0.5 * (P(1, 2) + P(2, 1)),
                0.5 * (P(0, 2) + P(2, 0)),
                0.5 * (P(0, 1) + P(1, 0))}};
-    }
-
-
-    void
-    AutomatonSystem::add_pair_stress(const unsigned int p,
-                                     std::vector<Mat3> &target) const
-    {
-      // Seed eq. (4): T^i += (q_ij S / V_i) n_ij (x) F_ij / S, for each
-      // owned side of the pair (q_ji = r_ij - q_ij); sigma^i = sym(B^-1 T).
-      double     r;
-      const Vec3 n = unit_normal(p, r);
-      if (owned(pi[p]) && !elastic(pi[p]))
-        {
-          Vec3 t;
-          for (unsigned int c = 0; c < 3; ++c)
-            t[c] = sig_i[p] * n[c] + tau_scale_i[p] * tau.component[c][p];
-          add_outer(target[pi[p]], q_i[p] * S / V, n, t);
-        }
-      if (owned(pj[p]) && !elastic(pj[p]))
-        {
-          Vec3 t;
-          for (unsigned int c = 0; c < 3; ++c)
-            t[c] = sig_j[p] * n[c] + tau_scale_j[p] * tau.component[c][p];
-          add_outer(target[pj[p]], (r - q_i[p]) * S / V, n, t);
-        }
     }
 
 

@@ -12,6 +12,88 @@ namespace tribodyn
 {
   namespace mca
   {
+    namespace
+    {
+      /**
+       * Pair vectors, distances and their reciprocals of a block of
+       * consecutive pairs. The square roots and divisions (the dearest
+       * operations of a pair pass) run in one branch-free loop that the
+       * compiler vectorizes; the branchy pair law then reads them.
+       */
+      struct NormalBlock
+      {
+        static constexpr unsigned int size = 64;
+        alignas(64) double dn[3][size];
+        alignas(64) double r[size], inv_r[size];
+
+        /// Fill entries 0 .. nb-1 from pairs p0 .. p0+nb-1.
+        template <class PairVector>
+        void
+        fill(const unsigned int p0,
+             const unsigned int nb,
+             const PairVector  &pair_vector)
+        {
+          for (unsigned int b = 0; b < nb; ++b)
+            {
+              const Vec3 v = pair_vector(p0 + b);
+              for (unsigned int c = 0; c < 3; ++c)
+                dn[c][b] = v[c];
+            }
+          for (unsigned int b = 0; b < nb; ++b)
+            {
+              r[b]     = std::sqrt(dn[0][b] * dn[0][b] + dn[1][b] * dn[1][b]
+                               + dn[2][b] * dn[2][b]);
+              inv_r[b] = 1. / r[b];
+            }
+        }
+
+        Vec3
+        normal(const unsigned int b) const
+        {
+          return {
+            {dn[0][b] * inv_r[b], dn[1][b] * inv_r[b], dn[2][b] * inv_r[b]}};
+        }
+      };
+
+      /// 3 J2, the square of the von Mises stress: the bond criterion
+      /// compares it with the squared strength (no square root per pair).
+      inline double
+      von_mises_squared(const Sym3 &s)
+      {
+        const double m = (s[0] + s[1] + s[2]) / 3;
+        const double a = s[0] - m, b = s[1] - m, c = s[2] - m;
+        return 1.5 * (a * a + b * b + c * c)
+               + 3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+      }
+    } // namespace
+
+
+    inline void
+    AutomatonSystem::add_pair_stress(const unsigned int p,
+                                     const Vec3        &n,
+                                     const double       r,
+                                     std::vector<Mat3> &target,
+                                     const bool         skip_elastic) const
+    {
+      // Seed eq. (4): T^i += (q_ij S / V_i) n_ij (x) F_ij / S, for each
+      // owned side of the pair (q_ji = r_ij - q_ij); sigma^i = sym(B^-1 T).
+      // (In the kernel's translation unit so that the passes inline it.)
+      if (owned(pi[p]) && !(skip_elastic && elastic(pi[p])))
+        {
+          Vec3 t;
+          for (unsigned int c = 0; c < 3; ++c)
+            t[c] = sig_i[p] * n[c] + tau_scale_i[p] * tau.component[c][p];
+          add_outer(target[pi[p]], q_i[p] * S / V, n, t);
+        }
+      if (owned(pj[p]) && !(skip_elastic && elastic(pj[p])))
+        {
+          Vec3 t;
+          for (unsigned int c = 0; c < 3; ++c)
+            t[c] = sig_j[p] * n[c] + tau_scale_j[p] * tau.component[c][p];
+          add_outer(target[pj[p]], (r - q_i[p]) * S / V, n, t);
+        }
+    }
+
     void
     AutomatonSystem::evaluate_pairs(const double step_dt)
     {
@@ -60,126 +142,169 @@ namespace tribodyn
       };
 
       // Pass A: geometry, tangential stresses, split of the normal
-      // increment, volumetric strain increments of both sides.
-      for (unsigned int p = 0; p < n_pairs; ++p)
+      // increment, volumetric strain increments of both sides. The pairs
+      // go in blocks: the square roots and divisions of a block (the
+      // dearest operations of the pass) run in one branch-free loop that
+      // the compiler vectorizes; the branchy pair law then reads them.
+      constexpr unsigned int block = NormalBlock::size;
+      alignas(64) double     b_dnew[3][block], b_du[3][block];
+      alignas(64) double     b_r[block], b_ro[block], b_inv_r[block],
+        b_inv_ro[block], b_inv_nm[block], b_dr[block], b_t[3][block],
+        b_wi[3][block], b_wj[3][block], b_dsm_i[block], b_dsm_j[block];
+      for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
         {
-          const unsigned int i = pi[p], j = pj[p];
-          const Vec3         dnew = pair_vector(p);
-          // displacement increments of the step: dt v (the drift)
-          Vec3 du, dold;
-          for (unsigned int c = 0; c < 3; ++c)
+          const unsigned int nb = std::min(block, n_pairs - p0);
+          for (unsigned int b = 0; b < nb; ++b)
             {
-              du[c]   = step_dt * v[j][c] - step_dt * v[i][c];
-              dold[c] = dnew[c] - du[c];
-            }
-          // (reciprocals multiplied: divisions are the dearest operations
-          // of this loop)
-          const double r = std::sqrt(dot(dnew, dnew)), inv_r = 1. / r;
-          const double ro = std::sqrt(dot(dold, dold)), inv_ro = 1. / ro;
-          Vec3         n, nm, sum, diff;
-          for (unsigned int c = 0; c < 3; ++c)
-            {
-              n[c]    = dnew[c] * inv_r;
-              nm[c]   = n[c] + dold[c] * inv_ro;
-              sum[c]  = dnew[c] + dold[c];
-              diff[c] = dnew[c] - dold[c];
-            }
-          const double inv_nmn = 1. / std::sqrt(dot(nm, nm));
-          for (unsigned int c = 0; c < 3; ++c)
-            nm[c] *= inv_nmn;
-          double               dr_p = dot(diff, sum) / (r + ro), r_prev = ro;
-          const SeriesSprings &k  = springs[mat[i] * n_materials + mat[j]];
-          const double         ki = k.ki, kj = k.kj;
-
-          if (!bonded[p])
-            {
-              if (r >= d)
-                {
-                  // separated: no interaction
-                  if (in_contact[p])
-                    mark(p);
-                  in_contact[p] = 0;
-                  sig_i[p] = sig_j[p] = 0;
-                  tau.set(p, {{0, 0, 0}});
-                  tau_scale_i[p] = tau_scale_j[p] = 1;
-                  q_i[p]                          = r / 2;
-                  continue;
-                }
-              if (!in_contact[p])
-                {
-                  // touching now: only the overlap counts, from r = d
-                  in_contact[p] = 1;
-                  mark(p);
-                  q_i[p] = d / 2;
-                  r_prev = d;
-                  dr_p   = r - d;
-                }
-            }
-          const double qi = q_i[p], qj = r_prev - qi;
-
-          // Tangential: relative displacement of the contact points.
-          if constexpr (rot)
-            {
-              Vec3 th;
+              const unsigned int p = p0 + b, i = pi[p], j = pj[p];
+              const Vec3         dnew = pair_vector(p);
+              // relative displacement of the step, dt (v_j - v_i): the
+              // drift moved each automaton by dt v; one product of the
+              // difference keeps a rigid motion exactly rigid (also with
+              // FMA contraction)
               for (unsigned int c = 0; c < 3; ++c)
-                th[c] = step_dt * (qi * w[i][c] + qj * w[j][c]);
-              const Vec3 rc = cross(th, nm);
-              for (unsigned int c = 0; c < 3; ++c)
-                du[c] -= rc[c];
-            }
-          const double dun = dot(du, nm);
-          for (unsigned int c = 0; c < 3; ++c)
-            du[c] -= dun * nm[c];
-          // rotate the stored shear stress into the new tangent plane,
-          // keeping its magnitude (both sides are multiples of it)
-          Vec3 t = tau[p];
-          {
-            const double t2 = dot(t, t);
-            if (t2 > 0)
-              {
-                const double tn = dot(t, n);
-                double       p2 = 0;
+                {
+                  b_dnew[c][b] = dnew[c];
+                  b_du[c][b]   = step_dt * (v[j][c] - v[i][c]);
+                }
+              // (the scattered loads of the block in one loop, where the
+              // processor overlaps their cache misses)
+              if constexpr (rot)
                 for (unsigned int c = 0; c < 3; ++c)
                   {
-                    t[c] -= tn * n[c];
-                    p2 += t[c] * t[c];
+                    b_wi[c][b] = w[i][c];
+                    b_wj[c][b] = w[j][c];
                   }
-                const double s = p2 > 1e-12 * t2 ? std::sqrt(t2 / p2) : 0.;
-                for (unsigned int c = 0; c < 3; ++c)
-                  t[c] *= s;
-              }
-          }
-          {
-            // series springs of the two halves: one shear stress
-            // (kj tau_i + ki tau_j + ki kj du) / (ki + kj)
-            const double inv = k.inv_sum;
-            const double mix = kj * tau_scale_i[p] + ki * tau_scale_j[p];
-            Vec3         tn;
-            for (unsigned int c = 0; c < 3; ++c)
-              tn[c] = (mix * t[c] + ki * kj * du[c]) * inv;
-            tau.set(p, tn);
-            tau_scale_i[p] = tau_scale_j[p] = 1;
-          }
-          // Normal split: equal elastic increments 2G de from both sides
-          // (series springs), applied now; the many-body parts D dsm of the
-          // two sides differ (added once dsm is known) and the force uses
-          // the mean of the two sides.
-          const double dqi = kj * dr_p * k.inv_sum;
-          q_i[p]           = qi + dqi;
-          sig_i[p] += ki * dqi;
-          sig_j[p] += kj * (dr_p - dqi);
-          const double qin = qi + dqi, qjn = r - qin;
-          if (owned(i))
-            {
-              if constexpr (plastic)
-                sum_qs[i] += qin * S;
-              dsm[i] += beta_i[p] * dqi * inv_r0;
+              __builtin_prefetch(&dsm[j], 1);
             }
-          if (owned(j))
+          for (unsigned int b = 0; b < nb; ++b)
             {
-              if constexpr (plastic)
-                sum_qs[j] += qjn * S;
-              dsm[j] += beta_j[p] * (dr_p - dqi) * inv_r0;
+              const double xn = b_dnew[0][b], yn = b_dnew[1][b],
+                           zn = b_dnew[2][b];
+              const double xo = xn - b_du[0][b], yo = yn - b_du[1][b],
+                           zo    = zn - b_du[2][b];
+              const double r     = std::sqrt(xn * xn + yn * yn + zn * zn);
+              const double ro    = std::sqrt(xo * xo + yo * yo + zo * zo);
+              const double inv_r = 1. / r, inv_ro = 1. / ro;
+              // mid-step normal n + n_old, normalized below
+              const double mx = xn * inv_r + xo * inv_ro,
+                           my = yn * inv_r + yo * inv_ro,
+                           mz = zn * inv_r + zo * inv_ro;
+              b_r[b]          = r;
+              b_ro[b]         = ro;
+              b_inv_r[b]      = inv_r;
+              b_inv_ro[b]     = inv_ro;
+              b_inv_nm[b]     = 1. / std::sqrt(mx * mx + my * my + mz * mz);
+              // r - ro without cancellation: (dnew - dold).(dnew + dold)
+              // / (r + ro)
+              b_dr[b] = ((xn - xo) * (xn + xo) + (yn - yo) * (yn + yo)
+                         + (zn - zo) * (zn + zo))
+                        / (r + ro);
+              // the stored shear stress rotated into the new tangent
+              // plane, keeping its magnitude (both sides are multiples of
+              // it); a stress (nearly) along the new normal is dropped
+              const double tx = tau.component[0][p0 + b],
+                           ty = tau.component[1][p0 + b],
+                           tz = tau.component[2][p0 + b];
+              const double t2 = tx * tx + ty * ty + tz * tz;
+              const double tn = (tx * xn + ty * yn + tz * zn) * inv_r;
+              const double px = tx - tn * xn * inv_r, py = ty - tn * yn * inv_r,
+                           pz = tz - tn * zn * inv_r;
+              const double p2 = px * px + py * py + pz * pz;
+              const double s
+                = p2 > 1e-12 * t2 ? std::sqrt(t2 / std::max(p2, 1e-300)) : 0.;
+              b_t[0][b] = px * s;
+              b_t[1][b] = py * s;
+              b_t[2][b] = pz * s;
+            }
+          for (unsigned int b = 0; b < nb; ++b)
+            {
+              const unsigned int p = p0 + b, i = pi[p], j = pj[p];
+              const double       r = b_r[b], ro = b_ro[b];
+              Vec3               n, nm, du;
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  n[c]  = b_dnew[c][b] * b_inv_r[b];
+                  du[c] = b_du[c][b];
+                  nm[c] = (n[c] + (b_dnew[c][b] - du[c]) * b_inv_ro[b])
+                          * b_inv_nm[b];
+                }
+              double               dr_p = b_dr[b], r_prev = ro;
+              const SeriesSprings &k  = springs[mat[i] * n_materials + mat[j]];
+              const double         ki = k.ki, kj = k.kj;
+
+              if (!bonded[p])
+                {
+                  if (r >= d)
+                    {
+                      // separated: no interaction
+                      if (in_contact[p])
+                        mark(p);
+                      in_contact[p] = 0;
+                      sig_i[p] = sig_j[p] = 0;
+                      tau.set(p, {{0, 0, 0}});
+                      tau_scale_i[p] = tau_scale_j[p] = 1;
+                      q_i[p]                          = r / 2;
+                      continue;
+                    }
+                  if (!in_contact[p])
+                    {
+                      // touching now: only the overlap counts, from r = d
+                      in_contact[p] = 1;
+                      mark(p);
+                      q_i[p] = d / 2;
+                      r_prev = d;
+                      dr_p   = r - d;
+                    }
+                }
+              const double qi = q_i[p], qj = r_prev - qi;
+
+              // Tangential: relative displacement of the contact points.
+              if constexpr (rot)
+                {
+                  Vec3 th;
+                  for (unsigned int c = 0; c < 3; ++c)
+                    th[c] = step_dt * (qi * b_wi[c][b] + qj * b_wj[c][b]);
+                  const Vec3 rc = cross(th, nm);
+                  for (unsigned int c = 0; c < 3; ++c)
+                    du[c] -= rc[c];
+                }
+              const double dun = dot(du, nm);
+              for (unsigned int c = 0; c < 3; ++c)
+                du[c] -= dun * nm[c];
+              const Vec3 t{{b_t[0][b], b_t[1][b], b_t[2][b]}};
+              {
+                // series springs of the two halves: one shear stress
+                // (kj tau_i + ki tau_j + ki kj du) / (ki + kj)
+                const double inv = k.inv_sum;
+                const double mix = kj * tau_scale_i[p] + ki * tau_scale_j[p];
+                Vec3         tn;
+                for (unsigned int c = 0; c < 3; ++c)
+                  tn[c] = (mix * t[c] + ki * kj * du[c]) * inv;
+                tau.set(p, tn);
+                tau_scale_i[p] = tau_scale_j[p] = 1;
+              }
+              // Normal split: equal elastic increments 2G de from both sides
+              // (series springs), applied now; the many-body parts D dsm of the
+              // two sides differ (added once dsm is known) and the force uses
+              // the mean of the two sides.
+              const double dqi = kj * dr_p * k.inv_sum;
+              q_i[p]           = qi + dqi;
+              sig_i[p] += ki * dqi;
+              sig_j[p] += kj * (dr_p - dqi);
+              const double qin = qi + dqi, qjn = r - qin;
+              if (owned(i))
+                {
+                  if constexpr (plastic)
+                    sum_qs[i] += qin * S;
+                  dsm[i] += beta_i[p] * dqi * inv_r0;
+                }
+              if (owned(j))
+                {
+                  if constexpr (plastic)
+                    sum_qs[j] += qjn * S;
+                  dsm[j] += beta_j[p] * (dr_p - dqi) * inv_r0;
+                }
             }
         }
 
@@ -204,19 +329,29 @@ namespace tribodyn
         sig_j[p] += mc[mat[j]].D * dsm[j];
       };
 
+      NormalBlock nblock;
+      auto        pair_vector_of
+        = [this](const unsigned int p) { return pair_vector(p); };
+
       // Pass B (plastic scenes): trial side stresses and trial tensors,
       // radial return per automaton.
       if constexpr (plastic)
         {
           trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
-          for (unsigned int p = 0; p < n_pairs; ++p)
+          for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
             {
-              if (!bonded[p] && !in_contact[p])
-                continue;
-              elastic_update(p);
-              // automata of elastic regions need no trial stress
-              if (!elastic(pi[p]) || !elastic(pj[p]))
-                add_pair_stress(p, trial);
+              const unsigned int nb = std::min(block, n_pairs - p0);
+              nblock.fill(p0, nb, pair_vector_of);
+              for (unsigned int b = 0; b < nb; ++b)
+                {
+                  const unsigned int p = p0 + b;
+                  if (!bonded[p] && !in_contact[p])
+                    continue;
+                  elastic_update(p);
+                  // automata of elastic regions need no trial stress
+                  add_pair_stress(
+                    p, nblock.normal(b), nblock.r[b], trial, true);
+                }
             }
           plast.assign(static_cast<std::size_t>(n_local) * 3, 0.);
           for (unsigned int k = 0; k < n_owned; ++k)
@@ -250,96 +385,129 @@ namespace tribodyn
             neighbours.update(plast.data(), 3);
         }
 
-      // Pass C: plastic correction, contact constraints, forces, torques.
-      for (unsigned int p = 0; p < n_pairs; ++p)
+      // Pass C: plastic correction, contact constraints, forces, torques;
+      // in bond scenes also the final stress tensors (T of eq. 4) of the
+      // owned automata, which the bond criteria need.
+      if constexpr (bonds)
+        trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
+      // (blocks as in pass A: normals of a block in one vectorized loop).
+      for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
         {
-          if (!bonded[p] && !in_contact[p])
-            continue;
-          const unsigned int i = pi[p], j = pj[p];
-          double             r;
-          const Vec3         n  = unit_normal(p, r);
-          const double       qi = q_i[p], qj = r - qi;
-          const Vec3         t  = tau[p];
-          double             ai = tau_scale_i[p], aj = tau_scale_j[p];
-          if constexpr (plastic)
+          const unsigned int nb = std::min(block, n_pairs - p0);
+          nblock.fill(p0, nb, pair_vector_of);
+          for (unsigned int b = 0; b < nb; ++b)
             {
-              const double smi = plast[3 * i], Mi = plast[3 * i + 1];
-              const double smj = plast[3 * j], Mj = plast[3 * j + 1];
-              if (Mi < 1)
+              // scattered loads of the block together (see pass A)
+              const unsigned int i = pi[p0 + b], j = pj[p0 + b];
+              if constexpr (!plastic)
                 {
-                  sig_i[p] = smi + Mi * (sig_i[p] - smi);
-                  ai *= Mi;
+                  b_dsm_i[b] = mc[mat[i]].D * dsm[i];
+                  b_dsm_j[b] = mc[mat[j]].D * dsm[j];
                 }
-              if (Mj < 1)
-                {
-                  sig_j[p] = smj + Mj * (sig_j[p] - smj);
-                  aj *= Mj;
-                }
-              // Plastic heat for bond formation: only heat generated while
-              // the pair is unbonded counts (seed §2.1).
-              if (!heat.empty() && !bonded[p])
-                heat[p]
-                  += qi * S * plast[3 * i + 2] + qj * S * plast[3 * j + 2];
+              __builtin_prefetch(&f[j], 1);
+              if constexpr (rot)
+                __builtin_prefetch(&torque[j], 1);
             }
-          else
-            elastic_update(p);
-          if (!bonded[p])
+          for (unsigned int b = 0; b < nb; ++b)
             {
-              // no tension; Amontons-Coulomb on each side
-              sig_i[p]                = std::min(sig_i[p], 0.);
-              sig_j[p]                = std::min(sig_j[p], 0.);
-              const SeriesSprings &k  = springs[mat[i] * n_materials + mat[j]];
-              const double         ki = k.ki, kj = k.kj;
-              const double         t_norm = std::sqrt(dot(t, t));
-              for (const int side : {0, 1})
+              const unsigned int p = p0 + b;
+              if (!bonded[p] && !in_contact[p])
+                continue;
+              const unsigned int i = pi[p], j = pj[p];
+              const double       r  = nblock.r[b];
+              const Vec3         n  = nblock.normal(b);
+              const double       qi = q_i[p], qj = r - qi;
+              const Vec3         t  = tau[p];
+              double             ai = tau_scale_i[p], aj = tau_scale_j[p];
+              if constexpr (plastic)
                 {
-                  double      &a     = side == 0 ? ai : aj;
-                  const double limit = -mu * (side == 0 ? sig_i[p] : sig_j[p]);
-                  const double tn    = std::abs(a) * t_norm;
-                  if (tn > limit)
+                  const double smi = plast[3 * i], Mi = plast[3 * i + 1];
+                  const double smj = plast[3 * j], Mj = plast[3 * j + 1];
+                  if (Mi < 1)
                     {
-                      const double s = tn > 0 ? limit / tn : 0;
-                      // work of the slip (tn - limit) / k_series of this
-                      // side's half of the pair force, counted by the
-                      // owner of that side
-                      if (owned(side == 0 ? i : j))
-                        friction_work += 0.5 * S * limit * (tn - limit)
-                                         * (ki + kj) / (ki * kj);
-                      a *= s;
+                      sig_i[p] = smi + Mi * (sig_i[p] - smi);
+                      ai *= Mi;
+                    }
+                  if (Mj < 1)
+                    {
+                      sig_j[p] = smj + Mj * (sig_j[p] - smj);
+                      aj *= Mj;
+                    }
+                  // Plastic heat for bond formation: only heat generated while
+                  // the pair is unbonded counts (seed §2.1).
+                  if (!heat.empty() && !bonded[p])
+                    heat[p]
+                      += qi * S * plast[3 * i + 2] + qj * S * plast[3 * j + 2];
+                }
+              else
+                {
+                  // many-body part of the elastic update (gathered above)
+                  sig_i[p] += b_dsm_i[b];
+                  sig_j[p] += b_dsm_j[b];
+                }
+              if (!bonded[p])
+                {
+                  // no tension; Amontons-Coulomb on each side
+                  sig_i[p] = std::min(sig_i[p], 0.);
+                  sig_j[p] = std::min(sig_j[p], 0.);
+                  const SeriesSprings &k
+                    = springs[mat[i] * n_materials + mat[j]];
+                  const double ki = k.ki, kj = k.kj;
+                  const double t_norm = std::sqrt(dot(t, t));
+                  for (const int side : {0, 1})
+                    {
+                      double      &a = side == 0 ? ai : aj;
+                      const double limit
+                        = -mu * (side == 0 ? sig_i[p] : sig_j[p]);
+                      const double tn = std::abs(a) * t_norm;
+                      if (tn > limit)
+                        {
+                          const double s = tn > 0 ? limit / tn : 0;
+                          // work of the slip (tn - limit) / k_series of this
+                          // side's half of the pair force, counted by the
+                          // owner of that side
+                          if (owned(side == 0 ? i : j))
+                            friction_work += 0.5 * S * limit * (tn - limit)
+                                             * (ki + kj) / (ki * kj);
+                          a *= s;
+                        }
                     }
                 }
-            }
-          if (plastic || !bonded[p])
-            {
-              tau_scale_i[p] = ai;
-              tau_scale_j[p] = aj;
-            }
-          const double sn = 0.5 * (sig_i[p] + sig_j[p]);
-          const double am = 0.5 * S * (ai + aj);
-          Vec3         ft, F;
-          for (unsigned int c = 0; c < 3; ++c)
-            {
-              ft[c] = am * t[c];
-              F[c]  = S * sn * n[c] + ft[c];
-            }
-          Vec3 nxf;
-          if constexpr (rot)
-            nxf = cross(n, ft);
-          if (owned(i))
-            {
+              if (plastic || !bonded[p])
+                {
+                  tau_scale_i[p] = ai;
+                  tau_scale_j[p] = aj;
+                }
+              const double sn = 0.5 * (sig_i[p] + sig_j[p]);
+              const double am = 0.5 * S * (ai + aj);
+              Vec3         ft, F;
               for (unsigned int c = 0; c < 3; ++c)
-                f[i][c] += F[c];
+                {
+                  ft[c] = am * t[c];
+                  F[c]  = S * sn * n[c] + ft[c];
+                }
+              Vec3 nxf;
               if constexpr (rot)
-                for (unsigned int c = 0; c < 3; ++c)
-                  torque[i][c] += qi * nxf[c];
-            }
-          if (owned(j))
-            {
-              for (unsigned int c = 0; c < 3; ++c)
-                f[j][c] -= F[c];
-              if constexpr (rot)
-                for (unsigned int c = 0; c < 3; ++c)
-                  torque[j][c] += qj * nxf[c];
+                nxf = cross(n, ft);
+              if (owned(i))
+                {
+                  for (unsigned int c = 0; c < 3; ++c)
+                    f[i][c] += F[c];
+                  if constexpr (rot)
+                    for (unsigned int c = 0; c < 3; ++c)
+                      torque[i][c] += qi * nxf[c];
+                }
+              if (owned(j))
+                {
+                  for (unsigned int c = 0; c < 3; ++c)
+                    f[j][c] -= F[c];
+                  if constexpr (rot)
+                    for (unsigned int c = 0; c < 3; ++c)
+                      torque[j][c] += qj * nxf[c];
+                }
+              // the final stress tensors, for the bond criteria
+              if constexpr (bonds)
+                add_pair_stress(p, n, r, trial, false);
             }
         }
 
@@ -370,7 +538,7 @@ namespace tribodyn
               });
           if (!needed)
             continue;
-          const Sym3 s = automaton_stress(k);
+          const Sym3 s = fabric_corrected(k, trial[k]);
           for (unsigned int c = 0; c < 6; ++c)
             ex[7 * k + c] = s[c];
         }
@@ -378,59 +546,68 @@ namespace tribodyn
         neighbours.update(ex.data(), 7);
       const double heat_fraction = prm.interaction.bond_formation_heat_fraction;
       const unsigned int n_pairs = pi.size();
-      for (unsigned int p = 0; p < n_pairs; ++p)
+      NormalBlock        nblock;
+      auto               pair_vector_of
+        = [this](const unsigned int p) { return pair_vector(p); };
+      for (unsigned int p0 = 0; p0 < n_pairs; p0 += NormalBlock::size)
         {
-          const unsigned int i = pi[p], j = pj[p];
-          if (elastic(i) && elastic(j))
-            continue; // no bond switching inside elastic regions
-          double       r;
-          const Vec3   n  = unit_normal(p, r);
-          const double sn = 0.5 * (sig_i[p] + sig_j[p]);
-          const double am = 0.5 * (tau_scale_i[p] + tau_scale_j[p]);
-          if (bonded[p] && prm.interaction.bond_breaking)
+          const unsigned int nb = std::min(NormalBlock::size, n_pairs - p0);
+          nblock.fill(p0, nb, pair_vector_of);
+          for (unsigned int b = 0; b < nb; ++b)
             {
-              Sym3 s;
-              for (unsigned int c = 0; c < 6; ++c)
-                s[c] = 0.5 * (ex[7 * i + c] + ex[7 * j + c]);
-              // replace the normal and shear parts by the pair's own
-              const double sxx = s[0], syy = s[1], szz = s[2], syz = s[3],
-                           sxz = s[4], sxy = s[5];
-              Vec3         sn_vec{{sxx * n[0] + sxy * n[1] + sxz * n[2],
-                                   sxy * n[0] + syy * n[1] + syz * n[2],
-                                   sxz * n[0] + syz * n[1] + szz * n[2]}};
-              const double snn = dot(sn_vec, n);
-              Vec3         corr;
-              for (unsigned int c = 0; c < 3; ++c)
-                corr[c] = am * tau.component[c][p] - (sn_vec[c] - snn * n[c]);
-              add_sym(s, sn - snn, n, n);
-              add_sym(s, 1, n, corr);
-              add_sym(s, 1, corr, n);
-              const double limit
-                = std::min(mc[mat[i]].sigma_b, mc[mat[j]].sigma_b);
-              if (von_mises(s) >= limit)
+              const unsigned int p = p0 + b, i = pi[p], j = pj[p];
+              if (elastic(i) && elastic(j))
+                continue; // no bond switching inside elastic regions
+              const double r  = nblock.r[b];
+              const Vec3   n  = nblock.normal(b);
+              const double sn = 0.5 * (sig_i[p] + sig_j[p]);
+              const double am = 0.5 * (tau_scale_i[p] + tau_scale_j[p]);
+              if (bonded[p] && prm.interaction.bond_breaking)
                 {
-                  bonded[p]     = 0;
-                  in_contact[p] = r < d;
-                  if (!heat.empty())
-                    heat[p] = 0;
-                  changed[i] = changed[j] = 1;
-                  any_changed             = true;
+                  Sym3 s;
+                  for (unsigned int c = 0; c < 6; ++c)
+                    s[c] = 0.5 * (ex[7 * i + c] + ex[7 * j + c]);
+                  // replace the normal and shear parts by the pair's own
+                  const double sxx = s[0], syy = s[1], szz = s[2], syz = s[3],
+                               sxz = s[4], sxy = s[5];
+                  Vec3         sn_vec{{sxx * n[0] + sxy * n[1] + sxz * n[2],
+                                       sxy * n[0] + syy * n[1] + syz * n[2],
+                                       sxz * n[0] + syz * n[1] + szz * n[2]}};
+                  const double snn = dot(sn_vec, n);
+                  Vec3         corr;
+                  for (unsigned int c = 0; c < 3; ++c)
+                    corr[c]
+                      = am * tau.component[c][p] - (sn_vec[c] - snn * n[c]);
+                  add_sym(s, sn - snn, n, n);
+                  add_sym(s, 1, n, corr);
+                  add_sym(s, 1, corr, n);
+                  const double limit
+                    = std::min(mc[mat[i]].sigma_b, mc[mat[j]].sigma_b);
+                  if (von_mises_squared(s) >= limit * limit)
+                    {
+                      bonded[p]     = 0;
+                      in_contact[p] = r < d;
+                      if (!heat.empty())
+                        heat[p] = 0;
+                      changed[i] = changed[j] = 1;
+                      any_changed             = true;
+                    }
                 }
-            }
-          else if (!bonded[p] && in_contact[p]
-                   && prm.interaction.bond_formation)
-            {
-              const double sy = std::min(ex[7 * i + 6], ex[7 * j + 6]);
-              const double Eb
-                = std::min(mc[mat[i]].w_b, mc[mat[j]].w_b) * S * r;
-              const double h = heat.empty() ? 0. : heat[p];
-              if (sn <= -sy && h >= heat_fraction * Eb)
+              else if (!bonded[p] && in_contact[p]
+                       && prm.interaction.bond_formation)
                 {
-                  bonded[p] = 1;
-                  if (!heat.empty())
-                    heat[p] = 0;
-                  changed[i] = changed[j] = 1;
-                  any_changed             = true;
+                  const double sy = std::min(ex[7 * i + 6], ex[7 * j + 6]);
+                  const double Eb
+                    = std::min(mc[mat[i]].w_b, mc[mat[j]].w_b) * S * r;
+                  const double h = heat.empty() ? 0. : heat[p];
+                  if (sn <= -sy && h >= heat_fraction * Eb)
+                    {
+                      bonded[p] = 1;
+                      if (!heat.empty())
+                        heat[p] = 0;
+                      changed[i] = changed[j] = 1;
+                      any_changed             = true;
+                    }
                 }
             }
         }

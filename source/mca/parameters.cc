@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/material.h>
 #include <tribodyn/mca/parameters.h>
 
 namespace tribodyn
@@ -186,16 +187,16 @@ namespace tribodyn
       check_parameter_range(section + "/Density",
                             density,
                             0,
-                            inf,
+                            max_density,
                             true,
-                            true,
+                            false,
                             "The density is in kg/m^3.");
       check_parameter_range(section + "/Young modulus",
                             youngs_modulus,
                             0,
-                            inf,
+                            max_youngs_modulus,
                             true,
-                            true,
+                            false,
                             "Young's modulus is in Pa.");
       check_parameter_range(section + "/Poisson ratio",
                             poisson_ratio,

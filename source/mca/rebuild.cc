@@ -179,7 +179,7 @@ namespace tribodyn
                 s.tau[c] = swap ? -tau.component[c][p] : tau.component[c][p];
               s.tau_scale_i = swap ? tau_scale_j[p] : tau_scale_i[p];
               s.tau_scale_j = swap ? tau_scale_i[p] : tau_scale_j[p];
-              auto &buf = out_pairs[cells.neighbour_index(destination[k])];
+              auto &buf     = out_pairs[cells.neighbour_index(destination[k])];
               const auto *raw = reinterpret_cast<const double *>(&s);
               buf.insert(buf.end(), raw, raw + width);
             }
@@ -283,10 +283,10 @@ namespace tribodyn
             torque[k][c] = props[prop::torque + c];
             u[k][c]      = props[prop::u + c];
           }
-        mat[k]     = static_cast<unsigned char>(props[prop::mat]);
-        body[k]    = static_cast<unsigned char>(props[prop::body]);
-        groups[k]  = static_cast<std::uint32_t>(props[prop::groups]);
-        eps_p[k]   = props[prop::eps_p];
+        mat[k]    = static_cast<unsigned char>(props[prop::mat]);
+        body[k]   = static_cast<unsigned char>(props[prop::body]);
+        groups[k] = static_cast<std::uint32_t>(props[prop::groups]);
+        eps_p[k]  = props[prop::eps_p];
         if (plastic_scene)
           sigma_y[k] = props[prop::sigma_y];
         ++k;
@@ -530,9 +530,8 @@ namespace tribodyn
               const std::uint32_t o = source[p];
               if (o == none)
                 continue;
-              const double t = (o & received) ?
-                                 kept_pairs[o & ~received].tau[c] :
-                                 tau.component[c][o];
+              const double t = (o & received) ? kept_pairs[o & ~received].tau[c]
+                                              : tau.component[c][o];
               new_a[p]       = swap[p] ? -t : t;
             }
           tau.component[c].swap(new_a);

@@ -190,6 +190,19 @@ namespace tribodyn
                       "Beam/Mesh size",
                       "at most half of 'Beam/Height'");
       check_parameter_range("Beam/Amplitude", amplitude, 0, 1e3, true, false);
+      // Found by the parameter fuzzer (doc/stability.md): an absurd damping
+      // made the critical step vanish and the run blow up at step 0; an
+      // absurd number of periods ran into a wrong "too few zero crossings".
+      check_parameter_range("Beam/Damping coefficient",
+                            damping,
+                            0,
+                            1e-3,
+                            false,
+                            false,
+                            "It is the stiffness-proportional damping beta "
+                            "(s); the critical time step shrinks as "
+                            "1 / (beta omega_max^2).");
+      check_parameter_range("Beam/Periods", periods, 1, 1e4, false, false);
     }
 
 

@@ -143,6 +143,10 @@ namespace tribodyn
       /// refusing a time step above the critical one.
       bool   automatic_time_step = false;
       double safety_factor       = 0.9;
+      /// Refuse a time step above the critical one (InputError). Not a
+      /// parameter of the file: the stability tests turn it off to check
+      /// that the blow-up detection stops an unstable run.
+      bool refuse_unstable_time_step = true;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -6,6 +6,7 @@
 #include <deal.II/base/timer.h>
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/contact/contact_solver.h>
+#include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/problem.h>
 
 namespace tribodyn
@@ -51,10 +52,15 @@ namespace tribodyn
       run_with_timer(dealii::TimerOutput                         &timer,
                      const std::chrono::steady_clock::time_point &start);
 
-      RunContext          context;
-      ContactParameters   parameters;
-      std::vector<Sample> recorded_samples;
-      RunSummary          run_summary;
+      RunContext        context;
+      ContactParameters parameters;
+      /// Checkpoints (runs read from a parameter file only; the study
+      /// driver's cases have none).
+      bool                     checkpoints_on = false;
+      CheckpointParameters     checkpoint;
+      std::vector<std::string> checkpoint_lines;
+      std::vector<Sample>      recorded_samples;
+      RunSummary               run_summary;
     };
   } // namespace contact
 } // namespace tribodyn

@@ -16,6 +16,7 @@
 #include <string>
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/contact/friction.h>
+#include <tribodyn/core/checkpoint.h>
 #include <vector>
 
 namespace tribodyn
@@ -108,10 +109,29 @@ namespace tribodyn
       setup();
 
       /**
+       * Checkpoints of the next run() (called before it): periodic ones
+       * every @p parameters.interval of simulated time, one at the end and
+       * on SIGTERM/SIGINT; with @p parameters.resume, run() continues from
+       * the latest checkpoint of its output directory. @p parameter_lines
+       * identify the run (resumable_parameter_lines()).
+       */
+      void
+      enable_checkpoints(const CheckpointParameters     &parameters,
+                         const std::vector<std::string> &parameter_lines);
+
+      /**
        * Integrate to the end time. With a non-empty @p output_directory,
        * write friction.csv, point_M.csv, contact_status.csv, spectrum.csv,
        * fields_*.vtu + fields.pvd. @p progress_interval: seconds between
        * progress lines (negative: none).
+       *
+       * Every step, each rank checks that the velocities of its dofs are
+       * finite and below c_max + |V| + |v_0| (a material velocity near the
+       * wave speed means strains of order one: the scheme is unstable); the
+       * ranks agree on it every step on one rank, every
+       * health_check_interval steps and at each sample on several. An
+       * unstable run throws RunError naming the step, the time, the node
+       * and the likely cause, before the bad state is sampled.
        */
       void
       run(const std::string &output_directory,
@@ -132,6 +152,9 @@ namespace tribodyn
       {
         return dt;
       }
+      /// Steps between two collective stability checks on several ranks.
+      static constexpr unsigned int health_check_interval = 10;
+
       /// Critical dt of the damped beta2 scheme (element eigenvalue bound).
       double
       critical_time_step() const
@@ -198,6 +221,34 @@ namespace tribodyn
       max_von_mises();
 
     private:
+      /// Counters of run() that a checkpoint carries besides the solver
+      /// state (the rows of the series already written, the fields).
+      struct LoopState
+      {
+        unsigned long                               sample_count = 0;
+        unsigned int                                field_count  = 0;
+        double                                      next_field   = 0;
+        std::size_t                                 csv_rows     = 0;
+        std::size_t                                 face_rows    = 0;
+        std::vector<std::pair<double, std::string>> pvd;
+      };
+      /// Initial state u_0 = 0, p_0 = v_0 (run() without resume).
+      void
+      set_initial_state();
+      /// The state after step_count steps as a Boost binary archive, and
+      /// back (source/contact/checkpoint.cc; same ranks and mesh).
+      std::string
+      save_state(const LoopState &loop) const;
+      void
+      load_state(const std::string &blob, LoopState &loop);
+      /// Collective: find the worst dof and throw RunError describing the
+      /// instability found at step @p step (time @p time).
+      [[noreturn]] void
+      report_instability(const unsigned long step, const double time) const;
+      /// Velocity above which a dof counts as unstable (m/s).
+      double
+      velocity_limit() const;
+
       void
       make_mesh();
       void
@@ -310,15 +361,20 @@ namespace tribodyn
       int                      point_M_index          = -1; // local, or -1
       double                   point_M_x              = 0;
 
-      double      dt = 0, h = 0, dt_critical = 0, dt_cfl = 0, omega_maximum = 0;
-      double      mass_total = 0;
-      std::string material_text;
-      FrictionStep friction_step;
+      double dt = 0, h = 0, dt_critical = 0, dt_cfl = 0, omega_maximum = 0;
+      double c_maximum      = 0; ///< largest P-wave speed of the materials
+      bool   checkpoints_on = false;
+      CheckpointParameters     checkpoint;
+      std::vector<std::string> checkpoint_parameters;
+      double                   mass_total = 0;
+      std::string              material_text;
+      FrictionStep             friction_step;
       // Plane motion over the current step (t_n -> t_{n+1}): displacement
       // and position at t_{n+1}; decay of the regularized law for the
       // plane speed of this step; L* for the local slip rate.
       double plane_slide = 0, plane_x_next = 0, step_decay = 0, slip_length = 0;
       unsigned long step_count         = 0;
+      unsigned long steps_at_start     = 0; ///< step_count when run() began
       unsigned int  pgs_iterations_max = 0;
 
       // Energy accumulators (local sums; reduced when sampled).
@@ -332,8 +388,11 @@ namespace tribodyn
       write_contact_face_row(const double time);
       std::vector<std::unique_ptr<std::ofstream>> face_files;
       std::vector<std::string>                    face_paths;
+      /// Open the three space-time files (@p resume_rows >= 0: keep that
+      /// many rows of the checkpointed run's files).
       void
-      open_contact_face_files(const std::string &dir);
+      open_contact_face_files(const std::string &dir,
+                              const long         resume_rows = -1);
       void
              close_contact_face_files();
       double run_wall_time = 0, loop_wall_time = 0;

@@ -37,6 +37,10 @@ namespace tribodyn
     constexpr int input_error    = 2;
     constexpr int run_error      = 3;
     constexpr int internal_error = 4;
+    /// A run stopped by a signal after saving its state exits with
+    /// 128 + the signal number (130 for SIGINT, 143 for SIGTERM), as a
+    /// shell reports a process killed by that signal.
+    constexpr int interrupted_base = 128;
   } // namespace exit_code
 
   /**

@@ -12,6 +12,12 @@ namespace tribodyn
    * ratio nu and density rho (kg/m^3). Declared in a subsection of its own
    * ("Matrix", "Heterogeneity", ...).
    */
+  /// Largest accepted Young's modulus (Pa) and density (kg/m^3): beyond
+  /// any real material (diamond 1.2 TPa, osmium 22600 kg/m^3); larger values
+  /// are unit mistakes and make the critical time step vanish.
+  constexpr double max_youngs_modulus = 1e13;
+  constexpr double max_density        = 1e5;
+
   struct IsotropicElasticMaterial
   {
     double youngs_modulus = 30e9;

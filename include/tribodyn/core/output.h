@@ -42,6 +42,17 @@ namespace tribodyn
               const std::vector<std::string> &columns,
               const bool                      active,
               const double min_seconds_between_flushes = 2.0);
+    /**
+     * A resumed series: keep the first @p rows_kept rows of the existing
+     * file @p path (written by the checkpointed run; its later rows are
+     * dropped) and continue after them. InputError if the file has fewer
+     * rows or another header.
+     */
+    CsvWriter(const std::string              &path,
+              const std::vector<std::string> &columns,
+              const bool                      active,
+              const std::size_t               rows_kept,
+              const double min_seconds_between_flushes = 2.0);
     ~CsvWriter();
 
     CsvWriter(const CsvWriter &) = delete;
@@ -66,9 +77,18 @@ namespace tribodyn
     const std::string &
     path() const;
 
+    /// Rows in the series (kept from a checkpointed run plus added), on
+    /// every process.
+    std::size_t
+    n_rows() const
+    {
+      return row_count;
+    }
+
   private:
     std::string path_name;
     std::size_t n_columns       = 0;
+    std::size_t row_count       = 0;
     bool        is_active       = false;
     double      min_interval    = 2.0;
     double      last_flush_time = -1e300;
@@ -90,6 +110,17 @@ namespace tribodyn
     /// fields at time @p time.
     void
     add(const double time, const std::string &file_name);
+
+    /// The records so far (checkpoints).
+    const std::vector<std::pair<double, std::string>> &
+    entries() const
+    {
+      return records;
+    }
+
+    /// Resumed runs: start from the records of the checkpointed run.
+    void
+    restore(const std::vector<std::pair<double, std::string>> &entries);
 
   private:
     std::string                                 path_name;

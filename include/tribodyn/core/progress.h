@@ -30,6 +30,14 @@ namespace tribodyn
            const std::string  &key_figure = "",
            const bool          force      = false);
 
+    /// Resumed runs: the simulated time at which this run started (the
+    /// ETA extrapolates from there).
+    void
+    set_start_time(const double time)
+    {
+      start_time = time;
+    }
+
     /// Wall time since construction, in seconds.
     double
     elapsed_seconds() const;
@@ -42,6 +50,7 @@ namespace tribodyn
     const std::string                           label;
     const std::chrono::steady_clock::time_point start;
     double                                      last_report = -1e300;
+    double                                      start_time  = 0;
   };
 
   /// "1 h 02 min", "3 min 12 s", "4.2 s".

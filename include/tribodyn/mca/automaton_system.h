@@ -16,6 +16,15 @@
 #include <tribodyn/mca/vector_algebra.h>
 #include <vector>
 
+namespace boost
+{
+  namespace archive
+  {
+    class binary_oarchive;
+    class binary_iarchive;
+  } // namespace archive
+} // namespace boost
+
 namespace tribodyn
 {
   namespace mca
@@ -158,6 +167,24 @@ namespace tribodyn
       /// One velocity-Verlet step.
       void
       step();
+
+      // ---- stability and checkpoints (source/mca/stability.cc,
+      // source/mca/checkpoint.cc)
+      /// Owned automata whose velocity or rotation speed |w| d/2 is not
+      /// finite or above @p limit (m/s).
+      unsigned int
+      count_unstable_automata(const double limit) const;
+      /// Collective: throw RunError naming the worst automaton of all
+      /// ranks (id, position, material, groups, speed) and the likely cause.
+      [[noreturn]] void
+      report_instability(const double limit) const;
+      /// The whole state between two steps (the arrays listed once in
+      /// source/mca/checkpoint.cc); load_state() after setup(), on the same
+      /// number of ranks, restores it exactly.
+      void
+      save_state(boost::archive::binary_oarchive &archive) const;
+      void
+      load_state(boost::archive::binary_iarchive &archive);
 
       /// Rebuild the pair list now (migration, ghosts, pair states carried
       /// over), as step() does when an automaton moved more than skin/2.
@@ -379,11 +406,14 @@ namespace tribodyn
       static PartitionFigures
       partition_report(const Parameters &prm, const unsigned int n_ranks);
 
-      /// Memory per owned and per ghost automaton of an elastic bonded
-      /// block (memory_consumption() / n_owned on one rank, bench/mca), for
-      /// the partition report's estimate.
-      static constexpr double bytes_per_owned_automaton = 1000;
-      static constexpr double bytes_per_ghost_automaton = 300;
+      /// Memory per owned and per ghost automaton for the partition
+      /// report's estimate, measured (bench/mca/compare.py --memory): peak
+      /// RSS per automaton of a 256 000-automaton elastic block on one rank
+      /// (955 B), and the increase on two ranks divided by the ghosts
+      /// (1118 B per owned automaton with 0.12 ghosts per owned one: the
+      /// ghost's own arrays and its pairs, stored on both ranks).
+      static constexpr double bytes_per_owned_automaton = 960;
+      static constexpr double bytes_per_ghost_automaton = 1400;
 
     private:
       // --- set-up and rebuild (automaton_system.cc, rebuild.cc)
@@ -497,11 +527,16 @@ namespace tribodyn
       update_neighbourhood_weights(const bool all);
       Sym3
       fabric_corrected(const unsigned int k, const Mat3 &t) const;
-      /// Add the eq.-(4) stress contributions of pair @p p to the owned
-      /// automata of the pair in @p target (indexed by local automaton),
-      /// except automata of elastic regions (the plastic trial stress).
+      /// Add the eq.-(4) stress contributions of pair @p p (unit normal
+      /// @p n, distance @p r) to the owned automata of the pair in @p target
+      /// (indexed by local automaton); with @p skip_elastic not to automata
+      /// of elastic regions (the plastic trial stress needs none).
       void
-      add_pair_stress(const unsigned int p, std::vector<Mat3> &target) const;
+      add_pair_stress(const unsigned int p,
+                      const Vec3        &n,
+                      const double       r,
+                      std::vector<Mat3> &target,
+                      const bool         skip_elastic) const;
       /// Fabric tensor B = sum_j (q S / V) n n of automaton @p k's
       /// interacting pairs, inverted when well conditioned (else identity).
       Sym3
@@ -514,6 +549,11 @@ namespace tribodyn
       /// each boundary group, over all ranks.
       std::vector<Vec3>
       sum_over_groups(const std::vector<Vec3> &field) const;
+      /// The same on this rank only, and the sum over ranks of such sums.
+      std::vector<Vec3>
+      local_group_sums(const std::vector<Vec3> &field) const;
+      std::vector<Vec3>
+      global_group_sums(const std::vector<Vec3> &local) const;
       void
       apply_kinematic_constraints(const double t);
       double
@@ -587,7 +627,9 @@ namespace tribodyn
       /// sum_qs: plastic-heat shares; dsm: the volumetric strain increment,
       /// then the mean-stress increment of each automaton.
       std::vector<double> sum_qs, dsm;
-      std::vector<Mat3>   trial;
+      /// Stress tensors T (eq. 4) of the owned automata: the plastic
+      /// trial in pass B, the final one in pass C of bond scenes.
+      std::vector<Mat3> trial;
       /// Inverse fabric tensors (plastic and bond scenes, which need the
       /// stress every step; otherwise computed when a stress is asked).
       std::vector<Sym3> fabric_inverse;
@@ -612,8 +654,8 @@ namespace tribodyn
       /// the key of i, so k's form one block, i_pairs_first[k] ...
       /// + i_pairs_count[k]; as j: j_pairs[j_pairs_first[k] ...
       /// j_pairs_first[k + 1]] (CSR). 32 instead of 52 bytes a list of both.
-      std::vector<unsigned int>   i_pairs_first, j_pairs_first, j_pairs;
-      std::vector<std::uint16_t>  i_pairs_count;
+      std::vector<unsigned int>  i_pairs_first, j_pairs_first, j_pairs;
+      std::vector<std::uint16_t> i_pairs_count;
 
       /// Pair states kept over a rebuild, sorted by (id_i, id_j).
       struct PairState
@@ -647,16 +689,19 @@ namespace tribodyn
       /// and torques, of the loads and of the damping over it.
       void
       half_kick_with_work();
-      /// Damping force -c m v of owned automaton @p k at time @p t (global
-      /// damping and damping groups).
+      /// Damping force -c m v of owned automaton @p k (global damping and
+      /// damping groups; @p values: group_value() of every group).
       Vec3
-             damping_force(const unsigned int k, const double t) const;
-      bool   wait_for_contact            = false;
-      double first_contact_time          = -1;
+           damping_force(const unsigned int       k,
+                         const std::vector<Vec3> &values) const;
+      bool wait_for_contact = false;
+      /// Global damping or a damping group (f_damp is used).
+      bool               damping_on         = false;
+      double             first_contact_time = -1;
       unsigned long long n_part_automata = 0, n_part_inclusions = 0;
       double             load_work = 0, damped_work = 0, pair_work = 0;
-      /// Damping part of f_tot of each owned automaton (for damped_work),
-      /// valid while f_damp_rebuild == rebuild_count.
+      /// Damping part of f of each owned automaton (for damped_work), valid
+      /// while f_damp_rebuild == rebuild_count; empty without damping.
       std::vector<Vec3> f_damp;
       unsigned int      f_damp_rebuild = 0;
     };

@@ -223,15 +223,15 @@ namespace tribodyn
       std::array<double, 3>                           period_{{0, 0, 0}};
       std::array<std::array<double, 3>, 27>           shifts;
 
-      unsigned int                                    n_owned = 0;
-      std::vector<std::array<unsigned int, 3>>        cell_index;
-      std::vector<unsigned int>                       cell_owner;
-      std::vector<CellIterator>                       cells;
+      unsigned int                             n_owned = 0;
+      std::vector<std::array<unsigned int, 3>> cell_index;
+      std::vector<unsigned int>                cell_owner;
+      std::vector<CellIterator>                cells;
       /// (key, local index) of the local cells, sorted by key: 16 bytes a
       /// cell (a hash map costs ~50)
       std::vector<std::pair<std::uint64_t, unsigned int>> local_of_key;
-      std::vector<unsigned int>                       ranks;
-      std::vector<std::vector<unsigned int>>          send_cells;
+      std::vector<unsigned int>                           ranks;
+      std::vector<std::vector<unsigned int>>              send_cells;
     };
 
 
@@ -286,6 +286,17 @@ namespace tribodyn
       active() const
       {
         return !ranks.empty();
+      }
+      /// The lists given to set_ghost_lists() (checkpoints).
+      const std::vector<std::vector<unsigned int>> &
+      ghost_send_indices() const
+      {
+        return send_indices;
+      }
+      const std::vector<unsigned int> &
+      ghost_offsets() const
+      {
+        return ghost_offset;
       }
       const std::vector<unsigned int> &
       neighbour_ranks() const

@@ -52,6 +52,31 @@ namespace tribodyn
              JsonValue         &summary,
              std::ostream      &figures) const;
 
+      /// friction.csv of the samples so far (by the root rank; also when a
+      /// run stops early); returns the analysis.
+      FrictionAnalysis
+      write_series(const std::string &output_directory, const bool root) const;
+
+      /// The recorded series (checkpoints save and restore them); the
+      /// friction samples first (their size says whether any was taken).
+      /// The last layer profiles are not saved: the next sample, at the
+      /// latest the run's last, recomputes them.
+      std::vector<std::vector<double> *>
+      recorded_series()
+      {
+        return {&times,
+                &normal,
+                &tangential,
+                &bonded,
+                &unbonded,
+                &layer_times,
+                &layer_thickness,
+                &layer_center,
+                &strain_thickness,
+                &strain_center,
+                &layer_peak};
+      }
+
     private:
       /// layer.csv, layer_profile.csv and the layer's summary keys: means
       /// over the samples from the start of the quasi-steady regime.

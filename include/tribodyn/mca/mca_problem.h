@@ -2,6 +2,8 @@
 #define tribodyn_mca_mca_problem_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/problem.h>
 #include <tribodyn/mca/parameters.h>
 
@@ -33,8 +35,13 @@ namespace tribodyn
       run() override;
 
     private:
-      RunContext context;
-      Parameters parameters;
+      void
+      run_with_timer(dealii::TimerOutput &timer);
+
+      RunContext               context;
+      Parameters               parameters;
+      CheckpointParameters     checkpoint;
+      std::vector<std::string> checkpoint_lines;
     };
   } // namespace mca
 } // namespace tribodyn

@@ -1,0 +1,176 @@
+#ifndef tribodyn_core_checkpoint_h
+#define tribodyn_core_checkpoint_h
+
+#include <csignal>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace tribodyn
+{
+  /**
+   * Subsection "Checkpoint" of the long-running problems (contact, mca):
+   * how often the run's state is saved and whether a run continues from
+   * the latest saved state in its output directory.
+   */
+  struct CheckpointParameters
+  {
+    /// Simulated time between two checkpoints (s); 0: no periodic
+    /// checkpoints (SIGTERM/SIGINT still write one).
+    double interval = 0;
+    /// Continue from the latest checkpoint of the output directory.
+    bool resume = false;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /**
+   * The parameters of @p prm as "Section/Name = value" lines, without
+   * those a resumed run may change: @p end_time_entry (the problem's end
+   * time), the Checkpoint subsection and the global Progress interval.
+   * Stored in a checkpoint to check that a resumed run continues the same
+   * problem.
+   */
+  std::vector<std::string>
+  resumable_parameter_lines(dealii::ParameterHandler &prm,
+                            const std::string        &end_time_entry);
+
+  /// What a checkpoint says about itself (the `checkpoint/latest` file).
+  struct CheckpointInfo
+  {
+    std::string              problem;
+    unsigned long            step    = 0;
+    double                   time    = 0;
+    unsigned int             n_ranks = 0;
+    unsigned int             slot    = 0;
+    std::vector<std::string> parameters;
+  };
+
+  /**
+   * Checkpoints of a run in `OUTPUT/checkpoint/`: two slots `slot_0/` and
+   * `slot_1/` hold one file per rank (`rank_NNNN.bin`, a Boost binary
+   * archive written by the problem), and the small text file `latest`
+   * names the slot of the last complete checkpoint. A new checkpoint goes
+   * to the other slot (each file written under a temporary name, flushed to
+   * disk, renamed), then every rank reports success and rank 0 replaces
+   * `latest` atomically: a crash at any moment leaves the previous
+   * checkpoint usable.
+   */
+  class CheckpointStore
+  {
+  public:
+    CheckpointStore(const std::string &output_directory,
+                    const std::string &problem,
+                    const MPI_Comm     comm);
+
+    /// Fresh run: forget older checkpoints of the directory (so that a
+    /// later Resume cannot pick up another run's state).
+    void
+    discard();
+
+    /// Collective: store this rank's @p blob as the checkpoint of
+    /// (@p step, @p time) with the run's @p parameters.
+    void
+    write(const std::string              &blob,
+          const unsigned long             step,
+          const double                    time,
+          const std::vector<std::string> &parameters);
+
+    /**
+     * Collective: this rank's blob of the latest checkpoint. Throws
+     * InputError with the fix when there is none, when it was written by
+     * another number of ranks or another problem, or when @p parameters
+     * differ from the checkpointed run's (naming the parameters).
+     */
+    std::string
+    read(const std::vector<std::string> &parameters, CheckpointInfo &info);
+
+    /// Directory of the checkpoints.
+    const std::string &
+    directory() const
+    {
+      return path;
+    }
+
+  private:
+    std::string
+    rank_file(const unsigned int slot, const unsigned int rank) const;
+
+    std::string  path;
+    std::string  problem;
+    MPI_Comm     comm;
+    unsigned int next_slot = 0;
+  };
+
+  /**
+   * Keep the header and the first @p n_rows data lines of the CSV file
+   * @p path (resumed runs: the rows written after the checkpoint are
+   * dropped, so that the series has neither duplicates nor gaps). Reads
+   * @p path, or `path + ".part"` if it does not exist and @p partial_ok.
+   * Returns the text kept; throws InputError if the file has fewer rows.
+   */
+  std::string
+  read_csv_rows(const std::string &path,
+                const std::size_t  n_rows,
+                const bool         partial_ok = false);
+
+  // ---- interruptions
+
+  /**
+   * While an object of this class lives (the time loop of a long run),
+   * SIGTERM and SIGINT only set a flag: the loop polls it between steps
+   * (agree_on_health()), writes a checkpoint, flushes its outputs and
+   * throws Interrupted. The destructor restores the previous handlers and,
+   * if a signal arrived but was not acted upon, re-raises it.
+   */
+  class InterruptHandlers
+  {
+  public:
+    InterruptHandlers();
+    ~InterruptHandlers();
+    InterruptHandlers(const InterruptHandlers &) = delete;
+    InterruptHandlers &
+    operator=(const InterruptHandlers &)
+      = delete;
+
+    /// The run acted upon the signal (Interrupted thrown).
+    static void
+    acknowledge();
+
+  private:
+    struct sigaction previous_term, previous_int;
+  };
+
+  /// The signal received (SIGTERM, SIGINT) on this process, or 0.
+  int
+  local_interrupt_signal();
+
+  /// A run ended by SIGTERM or SIGINT after saving its state; exit code
+  /// 128 + signal.
+  class Interrupted : public std::runtime_error
+  {
+  public:
+    Interrupted(const int signal, const std::string &message);
+    int signal_number;
+  };
+
+  /**
+   * Health of a run as agreed by all ranks at a check: the largest
+   * "badness" of the ranks (0: fine) and the interrupt signal if any rank
+   * received one. One MPI_Allreduce (none on one rank).
+   */
+  struct RunHealth
+  {
+    double badness = 0;
+    int    signal  = 0;
+  };
+  RunHealth
+  agree_on_health(const double local_badness, const MPI_Comm comm);
+} // namespace tribodyn
+
+#endif

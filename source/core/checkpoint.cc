@@ -1,0 +1,471 @@
+// Checkpoint storage (two slots and an atomically replaced pointer file),
+// the Checkpoint parameters, CSV truncation for resumed runs, and the
+// SIGTERM/SIGINT handling of long runs (doc/user_guide.md, "Checkpoints").
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <iomanip>
+#include <set>
+#include <sstream>
+#include <tribodyn/core/checkpoint.h>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/output.h>
+#include <unistd.h>
+
+namespace tribodyn
+{
+  void
+  CheckpointParameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Checkpoint");
+    prm.declare_entry(
+      "Interval",
+      "0",
+      dealii::Patterns::Double(0.),
+      "Simulated time between two checkpoints of the run's state (s), "
+      "written to 'Output directory'/checkpoint/ (two slots, switched "
+      "atomically: a crash while writing leaves the previous checkpoint "
+      "usable). A checkpoint is also written at the end of the run when "
+      "the interval is > 0, and always on SIGTERM or SIGINT. 0: no "
+      "periodic checkpoints.");
+    prm.declare_entry(
+      "Resume",
+      "false",
+      dealii::Patterns::Bool(),
+      "true: continue from the latest checkpoint in 'Output directory' "
+      "(same parameters except the end time, which may be larger, and this "
+      "subsection; same number of MPI ranks). The CSV series are continued "
+      "without duplicate or missing rows and the run reaches the same "
+      "result as an uninterrupted one. false: start afresh (older "
+      "checkpoints of the directory are forgotten).");
+    prm.leave_subsection();
+  }
+
+
+  void
+  CheckpointParameters::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Checkpoint");
+    interval = prm.get_double("Interval");
+    resume   = prm.get_bool("Resume");
+    prm.leave_subsection();
+    check_parameter(std::isfinite(interval) && interval >= 0,
+                    "Checkpoint/Interval",
+                    "must be a finite time >= 0 (s); got "
+                      + format_number(interval) + ".");
+  }
+
+
+  std::vector<std::string>
+  resumable_parameter_lines(dealii::ParameterHandler &prm,
+                            const std::string        &end_time_entry)
+  {
+    std::ostringstream text;
+    prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
+    std::istringstream       in(text.str());
+    std::vector<std::string> sections, lines;
+    std::string              line;
+    auto                     trim = [](const std::string &s) {
+      const auto b = s.find_first_not_of(" \t");
+      const auto e = s.find_last_not_of(" \t\r");
+      return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+    };
+    while (std::getline(in, line))
+      {
+        line = trim(line);
+        if (line.rfind("subsection ", 0) == 0)
+          sections.push_back(trim(line.substr(11)));
+        else if (line == "end" && !sections.empty())
+          sections.pop_back();
+        else if (line.rfind("set ", 0) == 0)
+          {
+            const auto  eq   = line.find('=');
+            std::string name = trim(line.substr(4, eq - 4));
+            std::string path;
+            for (const auto &s : sections)
+              path += s + "/";
+            path += name;
+            if (path == end_time_entry || path == "Progress interval"
+                || path.rfind("Checkpoint/", 0) == 0)
+              continue;
+            lines.push_back(path + " = "
+                            + (eq == std::string::npos
+                                 ? std::string()
+                                 : trim(line.substr(eq + 1))));
+          }
+      }
+    return lines;
+  }
+
+
+  namespace
+  {
+    constexpr const char *format_line = "tribodyn checkpoint 1";
+
+    /// Write @p content to @p path through a temporary file that is
+    /// flushed to disk (fsync) before the rename: after the rename the
+    /// file is complete even if the machine stops.
+    void
+    write_durably(const std::string &path, const std::string &content)
+    {
+      const std::string temporary = path + ".tmp";
+      const int         fd
+        = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if (fd < 0)
+        throw RunError("Cannot write the checkpoint file '" + temporary
+                       + "': " + std::strerror(errno) + ".");
+      std::size_t done = 0;
+      while (done < content.size())
+        {
+          const ssize_t n
+            = ::write(fd, content.data() + done, content.size() - done);
+          if (n < 0 && errno == EINTR)
+            continue;
+          if (n <= 0)
+            {
+              const std::string reason = std::strerror(errno);
+              ::close(fd);
+              std::remove(temporary.c_str());
+              throw RunError("Writing the checkpoint file '" + temporary
+                             + "' failed (" + reason + "; disk full?).");
+            }
+          done += static_cast<std::size_t>(n);
+        }
+      const bool synced = ::fsync(fd) == 0;
+      ::close(fd);
+      if (!synced || std::rename(temporary.c_str(), path.c_str()) != 0)
+        {
+          std::remove(temporary.c_str());
+          throw RunError("Cannot complete the checkpoint file '" + path
+                         + "': " + std::strerror(errno) + ".");
+        }
+    }
+
+
+    std::string
+    read_whole_file(const std::string &path, bool &ok)
+    {
+      std::ifstream in(path, std::ios::binary);
+      ok = static_cast<bool>(in);
+      if (!ok)
+        return {};
+      std::ostringstream s;
+      s << in.rdbuf();
+      return s.str();
+    }
+
+
+    /// Throw RunError on every rank when one failed (message of the
+    /// lowest failing rank).
+    void
+    fail_collectively(const MPI_Comm comm, const std::string &local_error)
+    {
+      const unsigned int n  = dealii::Utilities::MPI::n_mpi_processes(comm);
+      const unsigned int me = dealii::Utilities::MPI::this_mpi_process(comm);
+      const unsigned int first
+        = dealii::Utilities::MPI::min(local_error.empty() ? n : me, comm);
+      if (first == n)
+        return;
+      throw RunError(dealii::Utilities::MPI::broadcast(
+        comm, me == first ? local_error : std::string(), first));
+    }
+  } // namespace
+
+
+  CheckpointStore::CheckpointStore(const std::string &output_directory,
+                                   const std::string &problem_name,
+                                   const MPI_Comm     communicator)
+      : path(join_path(output_directory, "checkpoint"))
+      , problem(problem_name)
+      , comm(communicator)
+  {
+  }
+
+
+  std::string
+  CheckpointStore::rank_file(const unsigned int slot,
+                             const unsigned int rank) const
+  {
+    std::ostringstream name;
+    name << "slot_" << slot << "/rank_" << std::setw(4) << std::setfill('0')
+         << rank << ".bin";
+    return join_path(path, name.str());
+  }
+
+
+  void
+  CheckpointStore::discard()
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      std::remove(join_path(path, "latest").c_str());
+    next_slot = 0;
+  }
+
+
+  void
+  CheckpointStore::write(const std::string              &blob,
+                         const unsigned long             step,
+                         const double                    time,
+                         const std::vector<std::string> &parameters)
+  {
+    const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int slot = next_slot;
+    std::string        error;
+    if (rank == 0)
+      try
+        {
+          create_output_directory(
+            join_path(path, "slot_" + std::to_string(slot)));
+        }
+      catch (const std::exception &e)
+        {
+          error = e.what();
+        }
+    fail_collectively(comm, error);
+    try
+      {
+        write_durably(rank_file(slot, rank), blob);
+      }
+    catch (const std::exception &e)
+      {
+        error = e.what();
+      }
+    fail_collectively(comm, error);
+    if (rank == 0)
+      {
+        std::ostringstream text;
+        text << format_line << "\nproblem = " << problem << "\nslot = " << slot
+             << "\nstep = " << step << "\ntime = " << std::setprecision(17)
+             << time
+             << "\nranks = " << dealii::Utilities::MPI::n_mpi_processes(comm)
+             << "\n";
+        for (const auto &p : parameters)
+          text << "parameter " << p << "\n";
+        try
+          {
+            write_durably(join_path(path, "latest"), text.str());
+          }
+        catch (const std::exception &e)
+          {
+            error = e.what();
+          }
+      }
+    fail_collectively(comm, error);
+    next_slot = 1 - slot;
+  }
+
+
+  std::string
+  CheckpointStore::read(const std::vector<std::string> &parameters,
+                        CheckpointInfo                 &info)
+  {
+    const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    const std::string  latest  = join_path(path, "latest");
+    bool               ok      = true;
+    std::string        text;
+    if (rank == 0)
+      text = read_whole_file(latest, ok);
+    text = dealii::Utilities::MPI::broadcast(comm, text, 0);
+    if (text.rfind(format_line, 0) != 0)
+      throw InputError(
+        "'Checkpoint/Resume = true' but there is no checkpoint in '" + path
+        + "' (file 'latest' missing or not a tribodyn checkpoint). Run "
+          "first with 'Checkpoint/Interval' > 0 (or stop a run with "
+          "SIGTERM), or set 'Checkpoint/Resume = false'.");
+
+    std::istringstream       in(text);
+    std::string              line;
+    std::vector<std::string> stored;
+    info = CheckpointInfo();
+    while (std::getline(in, line))
+      {
+        if (line.rfind("parameter ", 0) == 0)
+          stored.push_back(line.substr(10));
+        else if (line.rfind("problem = ", 0) == 0)
+          info.problem = line.substr(10);
+        else if (line.rfind("slot = ", 0) == 0)
+          info.slot = std::stoul(line.substr(7)) == 1 ? 1 : 0;
+        else if (line.rfind("step = ", 0) == 0)
+          info.step = std::stoul(line.substr(7));
+        else if (line.rfind("time = ", 0) == 0)
+          info.time = std::stod(line.substr(7));
+        else if (line.rfind("ranks = ", 0) == 0)
+          info.n_ranks = std::stoul(line.substr(8));
+      }
+    info.parameters = stored;
+    if (info.problem != problem)
+      throw InputError("The checkpoint in '" + path + "' belongs to a '"
+                       + info.problem + "' run, not to '" + problem
+                       + "': set 'Checkpoint/Resume = false' or choose "
+                         "another 'Output directory'.");
+    if (info.n_ranks != n_ranks)
+      throw InputError("The checkpoint in '" + path + "' was written by "
+                       + std::to_string(info.n_ranks)
+                       + " MPI rank(s); this run has " + std::to_string(n_ranks)
+                       + ". Resume with 'mpirun -np "
+                       + std::to_string(info.n_ranks)
+                       + "' (results are continued bit for "
+                         "bit on the same number of ranks only).");
+    if (stored != parameters)
+      {
+        const std::set<std::string> a(stored.begin(), stored.end()),
+          b(parameters.begin(), parameters.end());
+        std::set<std::string> names;
+        for (const auto &s : a)
+          if (!b.count(s))
+            names.insert(s.substr(0, s.find(" = ")));
+        for (const auto &s : b)
+          if (!a.count(s))
+            names.insert(s.substr(0, s.find(" = ")));
+        std::string list;
+        for (const auto &n : names)
+          list += (list.empty() ? "'" : ", '") + n + "'";
+        throw InputError(
+          "Cannot resume from the checkpoint in '" + path
+          + "': these parameters differ from the checkpointed run's: " + list
+          + ". A resumed run may change only 'End time' (to a larger value) "
+            "and the Checkpoint subsection; set the others back, or start "
+            "afresh with 'Checkpoint/Resume = false'.");
+      }
+
+    const std::string file = rank_file(info.slot, rank);
+    std::string       blob = read_whole_file(file, ok);
+    const bool all_ok = dealii::Utilities::MPI::min(ok ? 1u : 0u, comm) == 1u;
+    if (!all_ok)
+      throw InputError("The checkpoint in '" + path
+                       + "' is incomplete: a rank's file (e.g. '" + file
+                       + "') cannot be read. Start afresh with "
+                         "'Checkpoint/Resume = false'.");
+    next_slot = 1 - info.slot;
+    return blob;
+  }
+
+
+  std::string
+  read_csv_rows(const std::string &path,
+                const std::size_t  n_rows,
+                const bool         partial_ok)
+  {
+    std::ifstream in(path);
+    std::string   used = path;
+    if (!in && partial_ok)
+      {
+        used = path + ".part";
+        in.open(used);
+      }
+    if (!in)
+      throw InputError("Cannot resume: the series '" + path
+                       + "' of the checkpointed run is missing. Start afresh "
+                         "with 'Checkpoint/Resume = false'.");
+    std::string text, line;
+    std::size_t rows = 0;
+    if (std::getline(in, line))
+      text = line + "\n";
+    while (rows < n_rows && std::getline(in, line))
+      {
+        text += line + "\n";
+        ++rows;
+      }
+    if (rows < n_rows)
+      throw InputError("Cannot resume: '" + used + "' holds "
+                       + std::to_string(rows) + " rows, the checkpoint needs "
+                       + std::to_string(n_rows)
+                       + " (was the file changed?). Start afresh with "
+                         "'Checkpoint/Resume = false'.");
+    return text;
+  }
+
+
+  // ---- interruptions
+
+  namespace
+  {
+    volatile std::sig_atomic_t received_signal = 0;
+
+    void
+    record_signal(int signal_number)
+    {
+      // A second signal stops at once (no checkpoint): the usual
+      // "press Ctrl-C twice".
+      if (received_signal != 0)
+        {
+          std::signal(signal_number, SIG_DFL);
+          std::raise(signal_number);
+          return;
+        }
+      received_signal = signal_number;
+    }
+  } // namespace
+
+
+  namespace
+  {
+    bool acknowledged = false;
+  }
+
+
+  InterruptHandlers::InterruptHandlers()
+  {
+    received_signal = 0;
+    acknowledged    = false;
+    struct sigaction action;
+    std::memset(&action, 0, sizeof(action));
+    action.sa_handler = record_signal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;
+    sigaction(SIGTERM, &action, &previous_term);
+    sigaction(SIGINT, &action, &previous_int);
+  }
+
+
+  InterruptHandlers::~InterruptHandlers()
+  {
+    sigaction(SIGTERM, &previous_term, nullptr);
+    sigaction(SIGINT, &previous_int, nullptr);
+    const int pending = received_signal;
+    received_signal   = 0;
+    if (pending != 0 && !acknowledged)
+      std::raise(pending);
+  }
+
+
+  void
+  InterruptHandlers::acknowledge()
+  {
+    acknowledged = true;
+  }
+
+
+  int
+  local_interrupt_signal()
+  {
+    return received_signal;
+  }
+
+
+  Interrupted::Interrupted(const int signal, const std::string &message)
+      : std::runtime_error(message)
+      , signal_number(signal)
+  {
+  }
+
+
+  RunHealth
+  agree_on_health(const double local_badness, const MPI_Comm comm)
+  {
+    double values[2] = {local_badness >= 0 ? local_badness : 1e300,
+                        static_cast<double>(received_signal)};
+    if (dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
+      MPI_Allreduce(MPI_IN_PLACE, values, 2, MPI_DOUBLE, MPI_MAX, comm);
+    RunHealth h;
+    h.badness = values[0];
+    h.signal  = static_cast<int>(values[1]);
+    return h;
+  }
+} // namespace tribodyn

@@ -1,0 +1,166 @@
+// Checkpoints of the automata: the whole state of this rank between two
+// steps, as a Boost binary archive. Between two pair-list rebuilds the state
+// lives in the flat arrays of AutomatonSystem (the ParticleHandler is empty:
+// it only carries migrating automata during a rebuild), and the p4est mesh
+// and its partition are rebuilt identically by setup() on the same number
+// of ranks, so saving the arrays and restoring them after setup() continues
+// the run bit for bit.
+//
+// MCA_CHECKPOINT_STATE below is the ONE list of what is saved: when an
+// array of AutomatonSystem that lives from one step to the next is added,
+// removed or renamed, update the list (the ctest mca_restart_* tests compare
+// a resumed run with an uninterrupted one and fail if something is missed).
+// Per-step scratch buffers (plast, bond_buffer, sum_qs, dsm, trial) and the
+// rebuild's transient lists (kept_pairs, old_pairs, old_flags) are rebuilt
+// before use and are not saved; the material constants (mc, springs) come
+// from the parameters.
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/array.hpp>
+#include <boost/serialization/binary_object.hpp>
+#include <boost/serialization/vector.hpp>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/mca/automaton_system.h>
+#include <type_traits>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    namespace
+    {
+      constexpr unsigned int state_version = 1;
+
+      // Scalars and vectors of trivially copyable types as raw bytes (fast
+      // and exact); anything else through Boost's own serialization.
+      template <typename T>
+      void
+      put(boost::archive::binary_oarchive &ar, const T &value)
+      {
+        ar << value;
+      }
+      template <typename T>
+      void
+      put(boost::archive::binary_oarchive &ar, const std::vector<T> &vec)
+      {
+        if constexpr (std::is_trivially_copyable<T>::value)
+          {
+            const std::size_t n = vec.size();
+            ar << n;
+            if (n > 0)
+              ar << boost::serialization::make_binary_object(
+                const_cast<T *>(vec.data()), n * sizeof(T));
+          }
+        else
+          ar << vec;
+      }
+      void
+      put(boost::archive::binary_oarchive &ar, const VectorArray &a)
+      {
+        for (const auto &c : a.component)
+          put(ar, c);
+      }
+      template <typename T>
+      void
+      get(boost::archive::binary_iarchive &ar, T &value)
+      {
+        ar >> value;
+      }
+      template <typename T>
+      void
+      get(boost::archive::binary_iarchive &ar, std::vector<T> &vec)
+      {
+        if constexpr (std::is_trivially_copyable<T>::value)
+          {
+            std::size_t n = 0;
+            ar >> n;
+            vec.resize(n);
+            if (n > 0)
+              ar >> boost::serialization::make_binary_object(vec.data(),
+                                                             n * sizeof(T));
+          }
+        else
+          ar >> vec;
+      }
+      void
+      get(boost::archive::binary_iarchive &ar, VectorArray &a)
+      {
+        for (auto &c : a.component)
+          get(ar, c);
+      }
+    } // namespace
+
+// The state of AutomatonSystem carried from one step to the next.
+// clang-format off
+#define MCA_CHECKPOINT_STATE(apply)                                           \
+  /* counters and accumulators */                                             \
+  apply(n_owned) apply(n_local) apply(current_time) apply(n_steps_done)       \
+  apply(rebuild_count) apply(plastic_work) apply(friction_work)               \
+  apply(dropped_bonds) apply(any_changed)                                     \
+  /* staged loading and energy bookkeeping */                                 \
+  apply(first_contact_time) apply(load_work) apply(damped_work)               \
+  apply(pair_work) apply(f_damp_rebuild)                                      \
+  /* automata: owned first, then ghosts */                                    \
+  apply(id) apply(order) apply(cell_of) apply(x) apply(x_at_rebuild)          \
+  apply(v) apply(w) apply(f) apply(torque) apply(u)                           \
+  apply(mat) apply(body) apply(groups) apply(eps_p) apply(sigma_y)            \
+  apply(group_reaction) apply(fabric_inverse) apply(changed) apply(f_damp)   \
+  /* pairs */                                                                 \
+  apply(pi) apply(pj) apply(pshift) apply(bonded) apply(in_contact)           \
+  apply(q_i) apply(sig_i) apply(sig_j) apply(heat) apply(tau)                 \
+  apply(tau_scale_i) apply(tau_scale_j)                                       \
+  apply(beta_i) apply(beta_j) apply(i_pairs_first) apply(i_pairs_count)      \
+  apply(j_pairs_first) apply(j_pairs)
+    // clang-format on
+
+
+    void
+    AutomatonSystem::save_state(boost::archive::binary_oarchive &ar) const
+    {
+      ar << state_version << n_ranks << dt << n_global;
+#define MCA_PUT(member) put(ar, member);
+      MCA_CHECKPOINT_STATE(MCA_PUT)
+#undef MCA_PUT
+      // the ghost lists of the point-to-point updates
+      put(ar, neighbours.ghost_offsets());
+      const auto       &send    = neighbours.ghost_send_indices();
+      const std::size_t n_lists = send.size();
+      ar << n_lists;
+      for (const auto &list : send)
+        put(ar, list);
+    }
+
+
+    void
+    AutomatonSystem::load_state(boost::archive::binary_iarchive &ar)
+    {
+      unsigned int       version = 0, saved_ranks = 0;
+      double             saved_dt     = 0;
+      unsigned long long saved_global = 0;
+      ar >> version >> saved_ranks >> saved_dt >> saved_global;
+      if (version != state_version || saved_ranks != n_ranks || saved_dt != dt
+          || saved_global != n_global)
+        throw InputError(
+          "The checkpoint does not fit this run (it has "
+          + std::to_string(saved_global) + " automata on "
+          + std::to_string(saved_ranks) + " rank(s) and dt = "
+          + format_number(saved_dt) + " s; this run " + std::to_string(n_global)
+          + ", " + std::to_string(n_ranks) + ", " + format_number(dt)
+          + " s). Resume with the parameters and the number of MPI ranks "
+            "of the checkpointed run.");
+#define MCA_GET(member) get(ar, member);
+      MCA_CHECKPOINT_STATE(MCA_GET)
+#undef MCA_GET
+      std::vector<unsigned int> offsets;
+      get(ar, offsets);
+      std::size_t n_lists = 0;
+      ar >> n_lists;
+      std::vector<std::vector<unsigned int>> send(n_lists);
+      for (auto &list : send)
+        get(ar, list);
+      neighbours.set_ghost_lists(std::move(send), std::move(offsets));
+    }
+
+#undef MCA_CHECKPOINT_STATE
+  } // namespace mca
+} // namespace tribodyn

@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""Checkpoint and restart acceptance test (issue #10).
+
+Runs a parameter file three times, each in its own output directory:
+  A: uninterrupted to 2T;
+  B: to T with Checkpoint/Interval = T/2 (checkpoints at T/2 and T),
+     then resumed (Checkpoint/Resume = true) to 2T, after the files of the
+     other slot (the T/2 checkpoint) were overwritten with garbage, as a
+     crash while writing a next checkpoint would leave them.
+and checks that B's CSV series have exactly A's rows (no duplicate, no
+missing row) with equal values, and that every figure of summary.json is
+equal, except wall-clock timings and memory. Tolerance: 0 (bit for bit:
+the CSV text and the JSON numbers, written with 17 digits, must be
+identical) for contact, 1e-12 relative for mca.
+
+Usage: restart_test.py TRIBODYN BASE.prm WORKDIR END_SECTION T TOLERANCE
+       "LAUNCHER" FILE [FILE...]
+END_SECTION is the subsection holding 'End time' ('Time integration' for
+contact, 'Time' for mca); FILE are the CSV files to compare.
+"""
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+
+TIMING_KEYS = {"wall_time_s", "time_loop_s", "dof_steps_per_second",
+               "dof_steps_per_second_per_rank", "automaton_steps_per_second",
+               "automaton_steps_per_second_per_rank", "memory_bytes_max",
+               "tribodyn_version"}
+
+
+def write_prm(path, base, out, section, end, interval, resume):
+    with open(path, "w") as f:
+        f.write(f"include {base}\n"
+                f"set Output directory = {out}\n"
+                f"set Progress interval = 1000\n"
+                f"subsection {section}\n  set End time = {end!r}\nend\n"
+                f"subsection Checkpoint\n  set Interval = {interval!r}\n"
+                f"  set Resume = {'true' if resume else 'false'}\nend\n")
+
+
+def run(launcher, tribodyn, prm, cwd):
+    command = launcher.split() + [tribodyn, prm]
+    result = subprocess.run(command, cwd=cwd, capture_output=True, text=True)
+    if result.returncode != 0:
+        sys.exit(f"FAIL: {' '.join(command)} exited with {result.returncode}:"
+                 f"\n{result.stdout[-2000:]}\n{result.stderr[-2000:]}")
+    return result.stdout
+
+
+def close(a, b, tolerance):
+    if a == b or (math.isnan(a) and math.isnan(b)):
+        return True
+    if tolerance == 0:
+        return False
+    return abs(a - b) <= tolerance * max(abs(a), abs(b), 1e-300)
+
+
+def compare_csv(name, path_a, path_b, tolerance):
+    rows_a = open(path_a).read().splitlines()
+    rows_b = open(path_b).read().splitlines()
+    if len(rows_a) != len(rows_b):
+        return [f"{name}: {len(rows_b) - 1} rows after the restart, "
+                f"{len(rows_a) - 1} uninterrupted"]
+    if tolerance == 0:
+        bad = [k for k in range(len(rows_a)) if rows_a[k] != rows_b[k]]
+        return [f"{name}: row {bad[0]} differs:\n  {rows_a[bad[0]]}\n"
+                f"  {rows_b[bad[0]]}"] if bad else []
+    errors = []
+    for k, (ra, rb) in enumerate(zip(rows_a[1:], rows_b[1:]), start=1):
+        fa, fb = ra.split(","), rb.split(",")
+        for x, y in zip(fa, fb):
+            try:
+                if not close(float(x), float(y), tolerance):
+                    errors.append(f"{name}: row {k}: {x} vs {y}")
+                    break
+            except ValueError:
+                if x != y:
+                    errors.append(f"{name}: row {k}: {x} vs {y}")
+                    break
+    return errors[:5]
+
+
+def compare_json(a, b, tolerance, where="summary.json"):
+    errors = []
+    if isinstance(a, dict):
+        for key in a:
+            if key in TIMING_KEYS:
+                continue
+            if key not in b:
+                errors.append(f"{where}: key {key} missing after restart")
+            else:
+                errors += compare_json(a[key], b[key], tolerance,
+                                       f"{where}/{key}")
+    elif isinstance(a, list):
+        if len(a) != len(b):
+            errors.append(f"{where}: lengths differ")
+        for k, (x, y) in enumerate(zip(a, b)):
+            errors += compare_json(x, y, tolerance, f"{where}[{k}]")
+    elif isinstance(a, (int, float)) and not isinstance(a, bool):
+        if not (isinstance(b, (int, float)) and close(a, b, tolerance)):
+            errors.append(f"{where}: {a!r} uninterrupted, {b!r} restarted")
+    elif a != b:
+        errors.append(f"{where}: {a!r} uninterrupted, {b!r} restarted")
+    return errors
+
+
+def main():
+    tribodyn, base, work, section, t_end, tolerance, launcher = sys.argv[1:8]
+    files = sys.argv[8:]
+    t_end, tolerance = float(t_end), float(tolerance)
+    base = os.path.abspath(base)
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    a, b = os.path.join(work, "A"), os.path.join(work, "B")
+    write_prm(os.path.join(work, "a.prm"), base, a, section, 2 * t_end, 0,
+              False)
+    write_prm(os.path.join(work, "b1.prm"), base, b, section, t_end,
+              t_end / 2, False)
+    write_prm(os.path.join(work, "b2.prm"), base, b, section, 2 * t_end,
+              t_end / 2, True)
+    run(launcher, tribodyn, "a.prm", work)
+    run(launcher, tribodyn, "b1.prm", work)
+    latest = open(os.path.join(b, "checkpoint", "latest")).read()
+    print("checkpoint after the first part:",
+          " ".join(l for l in latest.splitlines()[1:6]))
+    # A crash while writing the next checkpoint: it would go to the other
+    # slot, whose files are then partial; 'latest' still names the complete
+    # one, from which the run must resume.
+    slot = [l for l in latest.splitlines() if l.startswith("slot = ")][0][7:]
+    other = os.path.join(b, "checkpoint", f"slot_{1 - int(slot)}")
+    for name in (os.listdir(other) if os.path.isdir(other) else []):
+        with open(os.path.join(other, name), "wb") as f:
+            f.write(b"partial")
+        with open(os.path.join(other, name + ".tmp"), "wb") as f:
+            f.write(b"partial")
+    out = run(launcher, tribodyn, "b2.prm", work)
+    if "Resuming from the checkpoint" not in out:
+        sys.exit("FAIL: the second part did not resume")
+    errors = []
+    for name in files:
+        errors += compare_csv(name, os.path.join(a, name),
+                              os.path.join(b, name), tolerance)
+        last = open(os.path.join(b, name)).read().splitlines()[-1]
+        print(f"{name}: last row after the restart: {last[:150]}")
+    summary_a = json.load(open(os.path.join(a, "summary.json")))
+    summary_b = json.load(open(os.path.join(b, "summary.json")))
+    errors += compare_json(summary_a, summary_b, tolerance)
+    for e in errors:
+        print("FAIL", e)
+    if errors:
+        sys.exit(1)
+    print(f"PASS: the resumed run equals the uninterrupted one "
+          f"(tolerance {tolerance}) in {', '.join(files)} and summary.json")
+
+
+if __name__ == "__main__":
+    main()
