@@ -5,11 +5,30 @@
 #include <fstream>
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/selection.h>
 
 namespace tribodyn
 {
   namespace contact
   {
+    namespace
+    {
+      constexpr SelectionTable<ContactAlgorithm, 2> algorithm_choices{
+        {{"node-wise", ContactAlgorithm::node_wise},
+         {"projected Gauss-Seidel", ContactAlgorithm::projected_gauss_seidel}}};
+      constexpr SelectionTable<FrictionLaw, 3> law_choices{
+        {{"frictionless", FrictionLaw::frictionless},
+         {"Coulomb", FrictionLaw::coulomb},
+         {"regularized", FrictionLaw::regularized}}};
+      constexpr SelectionTable<RegularizationRate, 2> rate_choices{
+        {{"plane speed", RegularizationRate::plane_speed},
+         {"local slip rate", RegularizationRate::local_slip_rate}}};
+      constexpr SelectionTable<RecontactState, 3> recontact_choices{
+        {{"reset to zero", RecontactState::reset_to_zero},
+         {"keep", RecontactState::keep},
+         {"reset to mu sigma", RecontactState::reset_to_mu_sigma}}};
+    } // namespace
+
     using dealii::ParameterHandler;
     using dealii::Patterns::Bool;
     using dealii::Patterns::Double;
@@ -354,7 +373,7 @@ namespace tribodyn
       prm.enter_subsection("Contact");
       prm.declare_entry("Algorithm",
                         "node-wise",
-                        Selection("node-wise|projected Gauss-Seidel"),
+                        selection_pattern(algorithm_choices),
                         "How the forward-increment Lagrange multipliers are "
                         "found: 'node-wise' closed form (rigid plane, lumped "
                         "mass: the constraints decouple), or the general "
@@ -363,7 +382,7 @@ namespace tribodyn
                         "here).");
       prm.declare_entry("Friction law",
                         "regularized",
-                        Selection("frictionless|Coulomb|regularized"),
+                        selection_pattern(law_choices),
                         "'Coulomb': |tau| <= mu |sigma|, slip at mu |sigma|. "
                         "'regularized': the simplified Prakash-Clifton law "
                         "of seed 001 eq. (4): during slip tau relaxes towards "
@@ -390,7 +409,7 @@ namespace tribodyn
                         "Projected Gauss-Seidel: iteration limit per step.");
       prm.declare_entry("Regularization rate",
                         "plane speed",
-                        Selection("plane speed|local slip rate"),
+                        selection_pattern(rate_choices),
                         "Time constant t* of the regularized law during slip: "
                         "'plane speed': t* = L*/|V(t)| (seed eq. (4)); 'local "
                         "slip rate': t* = L*/|[u']| with the node's slip rate "
@@ -398,7 +417,7 @@ namespace tribodyn
                         "'Regularization time' x |Plane velocity|.");
       prm.declare_entry("State on re-contact",
                         "reset to zero",
-                        Selection("reset to zero|keep|reset to mu sigma"),
+                        selection_pattern(recontact_choices),
                         "Friction state tau of the regularized law when a "
                         "separated node touches the plane again: 'reset to "
                         "zero' (tau starts from 0), 'keep' (tau of the last "
@@ -412,25 +431,16 @@ namespace tribodyn
     ContactLawParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
-      algorithm            = prm.get("Algorithm") == "node-wise"
-                               ? ContactAlgorithm::node_wise
-                               : ContactAlgorithm::projected_gauss_seidel;
-      const std::string l  = prm.get("Friction law");
-      law                  = l == "frictionless" ? FrictionLaw::frictionless
-                             : l == "Coulomb"    ? FrictionLaw::coulomb
-                                                 : FrictionLaw::regularized;
+      algorithm            = get_selection(prm, "Algorithm", algorithm_choices);
+      law                  = get_selection(prm, "Friction law", law_choices);
       friction_coefficient = prm.get_double("Friction coefficient");
       regularization_time  = prm.get_double("Regularization time");
       pgs_tolerance        = prm.get_double("Gauss-Seidel tolerance");
       pgs_max_iterations   = prm.get_integer("Gauss-Seidel max iterations");
-      regularization_rate  = prm.get("Regularization rate") == "plane speed"
-                               ? RegularizationRate::plane_speed
-                               : RegularizationRate::local_slip_rate;
-      const std::string rc = prm.get("State on re-contact");
-      recontact_state      = rc == "keep" ? RecontactState::keep
-                             : rc == "reset to zero"
-                               ? RecontactState::reset_to_zero
-                               : RecontactState::reset_to_mu_sigma;
+      regularization_rate
+        = get_selection(prm, "Regularization rate", rate_choices);
+      recontact_state
+        = get_selection(prm, "State on re-contact", recontact_choices);
       prm.leave_subsection();
       check_parameter_range("Contact/Friction coefficient",
                             friction_coefficient,

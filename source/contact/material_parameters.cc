@@ -7,11 +7,27 @@
 #include <fstream>
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/selection.h>
 
 namespace tribodyn
 {
   namespace contact
   {
+    namespace
+    {
+      using Type = ContactMaterialParameters::Type;
+      constexpr SelectionTable<Type, 5> type_choices{
+        {{"isotropic", Type::isotropic},
+         {"anisotropic", Type::anisotropic},
+         {"engineering constants", Type::engineering_constants},
+         {"homogenization summary", Type::homogenization_summary},
+         {"morphology", Type::morphology}}};
+      using Kinematics = ContactMaterialParameters::Kinematics;
+      constexpr SelectionTable<Kinematics, 2> kinematics_choices{
+        {{"small strain", Kinematics::small_strain},
+         {"large deformation", Kinematics::large_deformation}}};
+    } // namespace
+
     using dealii::ParameterHandler;
     using dealii::Patterns::Bool;
     using dealii::Patterns::Double;
@@ -26,8 +42,7 @@ namespace tribodyn
       prm.declare_entry(
         "Type",
         "isotropic",
-        Selection("isotropic|anisotropic|engineering constants|"
-                  "homogenization summary|morphology"),
+        selection_pattern(type_choices),
         "Constitutive model of the pin. 'isotropic': subsection Isotropic. "
         "'anisotropic': the plane-strain stiffness of subsection "
         "Anisotropic. 'engineering constants': transversely isotropic with "
@@ -38,7 +53,7 @@ namespace tribodyn
         "of subsections Matrix and Heterogeneity.");
       prm.declare_entry("Kinematics",
                         "small strain",
-                        Selection("small strain|large deformation"),
+                        selection_pattern(kinematics_choices),
                         "'small strain': linear elasticity. 'large "
                         "deformation': total Lagrangian, St Venant-Kirchhoff "
                         "(S = C:E with the Green-Lagrange strain E).");
@@ -88,12 +103,7 @@ namespace tribodyn
                         Selection("KUBC|SUBC|periodic"),
                         "Which apparent stiffness of the file to use.");
       prm.leave_subsection();
-      prm.enter_subsection("Matrix");
-      IsotropicElasticMaterial::declare_parameters(prm, 30e9, 0.2, 1770.);
-      prm.leave_subsection();
-      prm.enter_subsection("Heterogeneity");
-      IsotropicElasticMaterial::declare_parameters(prm, 80e9, 0.2, 1770.);
-      prm.leave_subsection();
+      TwoPhaseMaterials::declare_parameters(prm);
       prm.leave_subsection();
     }
 
@@ -102,16 +112,9 @@ namespace tribodyn
     ContactMaterialParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Material");
-      const std::string t = prm.get("Type");
-      type                = t == "isotropic"               ? Type::isotropic
-                            : t == "anisotropic"           ? Type::anisotropic
-                            : t == "engineering constants" ? Type::engineering_constants
-                            : t == "homogenization summary" ? Type::homogenization_summary
-                                                            : Type::morphology;
-      kinematics          = prm.get("Kinematics") == "small strain"
-                              ? Kinematics::small_strain
-                              : Kinematics::large_deformation;
-      density             = prm.get_double("Density");
+      type       = get_selection(prm, "Type", type_choices);
+      kinematics = get_selection(prm, "Kinematics", kinematics_choices);
+      density    = prm.get_double("Density");
       check_parameter_range("Material/Density", density, 0, 1e6, true, false);
       prm.enter_subsection("Isotropic");
       isotropic.parse_parameters(prm, "Material/Isotropic");
@@ -145,12 +148,7 @@ namespace tribodyn
       summary_file = prm.get("File");
       summary_key  = prm.get("Boundary condition");
       prm.leave_subsection();
-      prm.enter_subsection("Matrix");
-      matrix.parse_parameters(prm, "Material/Matrix");
-      prm.leave_subsection();
-      prm.enter_subsection("Heterogeneity");
-      heterogeneity.parse_parameters(prm, "Material/Heterogeneity");
-      prm.leave_subsection();
+      composite.parse_parameters(prm, "Material");
       prm.leave_subsection();
 
       if (type == Type::engineering_constants)

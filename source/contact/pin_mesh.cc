@@ -214,8 +214,9 @@ namespace tribodyn
               break;
             }
           case Type::morphology:
-            add_isotropic(m.matrix);
-            add_isotropic(m.heterogeneity);
+            // in material-id order (matrix, heterogeneity)
+            for (const IsotropicElasticMaterial &phase : m.composite.phases())
+              add_isotropic(phase);
             text << "meso";
             break;
         }

@@ -7,9 +7,59 @@
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/morphology.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/core/selection.h>
 
 namespace tribodyn
 {
+  namespace
+  {
+    using Generator = MorphologyParameters::Generator;
+    constexpr SelectionTable<Generator, 4> generator_choices{
+      {{"homogeneous", Generator::homogeneous},
+       {"random vertical", Generator::random_vertical},
+       {"laminate", Generator::laminate},
+       {"grid file", Generator::grid_file}}};
+    using LaminateNormal = MorphologyParameters::LaminateNormal;
+    constexpr SelectionTable<LaminateNormal, 2> laminate_normal_choices{
+      {{"x", LaminateNormal::x}, {"y", LaminateNormal::y}}};
+  } // namespace
+
+
+  void
+  TwoPhaseMaterials::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Matrix");
+    IsotropicElasticMaterial::declare_parameters(prm, 30e9, 0.2, 1770.);
+    prm.leave_subsection();
+    prm.enter_subsection("Heterogeneity");
+    IsotropicElasticMaterial::declare_parameters(prm, 80e9, 0.2, 1770.);
+    prm.leave_subsection();
+  }
+
+
+  void
+  TwoPhaseMaterials::parse_parameters(dealii::ParameterHandler &prm,
+                                      const std::string        &section)
+  {
+    prm.enter_subsection("Matrix");
+    matrix.parse_parameters(prm, section + "/Matrix");
+    prm.leave_subsection();
+    prm.enter_subsection("Heterogeneity");
+    heterogeneity.parse_parameters(prm, section + "/Heterogeneity");
+    prm.leave_subsection();
+  }
+
+
+  std::vector<IsotropicElasticMaterial>
+  TwoPhaseMaterials::phases() const
+  {
+    std::vector<IsotropicElasticMaterial> p(2);
+    p[material_id::matrix]        = matrix;
+    p[material_id::heterogeneity] = heterogeneity;
+    return p;
+  }
+
+
   void
   MorphologyParameters::declare_parameters(dealii::ParameterHandler &prm)
   {
@@ -21,7 +71,7 @@ namespace tribodyn
       prm.declare_entry(
         "Generator",
         "random vertical",
-        Selection("homogeneous|random vertical|laminate|grid file"),
+        selection_pattern(generator_choices),
         "How the material map is made: 'homogeneous' (matrix only), "
         "'random vertical' (random non-overlapping vertical heterogeneities, "
         "seed 001 Fig. 1), 'laminate' (layers through the whole rectangle), "
@@ -73,7 +123,7 @@ namespace tribodyn
                         "used six: seeds 1 to 6).");
       prm.declare_entry("Laminate normal",
                         "x",
-                        Selection("x|y"),
+                        selection_pattern(laminate_normal_choices),
                         "Stacking direction of a laminate: 'x' gives "
                         "vertical layers, 'y' horizontal ones.");
       prm.declare_entry("Laminate periods",
@@ -99,11 +149,7 @@ namespace tribodyn
     const double inf = std::numeric_limits<double>::max();
     prm.enter_subsection("Morphology");
     {
-      const std::string g  = prm.get("Generator");
-      generator            = g == "homogeneous"       ? Generator::homogeneous
-                             : g == "random vertical" ? Generator::random_vertical
-                             : g == "laminate"        ? Generator::laminate
-                                                      : Generator::grid_file;
+      generator            = get_selection(prm, "Generator", generator_choices);
       width                = prm.get_double("Width");
       height               = prm.get_double("Height");
       n_pixels_x           = prm.get_integer("Pixels in x");
@@ -113,8 +159,8 @@ namespace tribodyn
       inclusion_min_height = prm.get_double("Heterogeneity min height");
       inclusion_max_height = prm.get_double("Heterogeneity max height");
       random_seed          = prm.get_integer("Random seed");
-      laminate_normal    = prm.get("Laminate normal") == "x" ? LaminateNormal::x
-                                                             : LaminateNormal::y;
+      laminate_normal
+        = get_selection(prm, "Laminate normal", laminate_normal_choices);
       n_laminate_periods = prm.get_integer("Laminate periods");
       grid_file          = prm.get("Grid file");
     }

@@ -36,7 +36,8 @@ namespace tribodyn
 
     MeanWithError
     block_average(const std::vector<double> &series,
-                  const unsigned int         min_blocks)
+                  const unsigned int         min_blocks,
+                  const unsigned int         base_block)
     {
       if (series.empty())
         throw InputError("block_average: the time series is empty, there "
@@ -55,8 +56,40 @@ namespace tribodyn
           return result;
         }
 
+      {
+        // as if the samples were independent: sigma / sqrt(n)
+        double c0 = 0;
+        for (const double v : series)
+          c0 += (v - result.mean) * (v - result.mean);
+        result.naive_standard_error
+          = std::sqrt(c0 / series.size() / (series.size() - 1.));
+      }
+
       std::vector<Level>  levels;
-      std::vector<double> x = series;
+      std::vector<double> x;
+      const unsigned int  base
+        = base_block > 1 && series.size() >= 2 * std::size_t(base_block)
+            ? base_block
+            : 1;
+      if (base > 1)
+        {
+          // Means of whole base blocks; the mean is then that of the
+          // samples they hold (a trailing partial block is dropped).
+          const std::size_t n_base = series.size() / base;
+          double            kept   = 0;
+          x.resize(n_base);
+          for (std::size_t b = 0; b < n_base; ++b)
+            {
+              double s = 0;
+              for (std::size_t i = 0; i < base; ++i)
+                s += series[b * base + i];
+              x[b] = s / base;
+              kept += s;
+            }
+          result.mean = kept / (n_base * base);
+        }
+      else
+        x = series;
       while (x.size() >= 2)
         {
           const std::size_t n    = x.size();
@@ -109,7 +142,7 @@ namespace tribodyn
             result.plateau_found  = true;
             result.standard_error = levels[j].error;
             result.n_blocks       = levels[j].n;
-            result.block_length   = 1u << j;
+            result.block_length   = base << j;
             return result;
           }
 
@@ -122,7 +155,7 @@ namespace tribodyn
       result.plateau_found  = false;
       result.standard_error = levels[best].error;
       result.n_blocks       = levels[best].n;
-      result.block_length   = 1u << best;
+      result.block_length   = base << best;
       return result;
     }
 

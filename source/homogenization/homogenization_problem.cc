@@ -20,14 +20,7 @@ namespace tribodyn
     MaterialsParameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Materials");
-      {
-        prm.enter_subsection("Matrix");
-        IsotropicElasticMaterial::declare_parameters(prm, 30e9, 0.2, 1770.);
-        prm.leave_subsection();
-        prm.enter_subsection("Heterogeneity");
-        IsotropicElasticMaterial::declare_parameters(prm, 80e9, 0.2, 1770.);
-        prm.leave_subsection();
-      }
+      TwoPhaseMaterials::declare_parameters(prm);
       prm.leave_subsection();
     }
 
@@ -36,25 +29,8 @@ namespace tribodyn
     MaterialsParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Materials");
-      {
-        prm.enter_subsection("Matrix");
-        matrix.parse_parameters(prm, "Materials/Matrix");
-        prm.leave_subsection();
-        prm.enter_subsection("Heterogeneity");
-        heterogeneity.parse_parameters(prm, "Materials/Heterogeneity");
-        prm.leave_subsection();
-      }
+      TwoPhaseMaterials::parse_parameters(prm, "Materials");
       prm.leave_subsection();
-    }
-
-
-    std::vector<IsotropicElasticMaterial>
-    MaterialsParameters::phases() const
-    {
-      std::vector<IsotropicElasticMaterial> p(2);
-      p[material_id::matrix]        = matrix;
-      p[material_id::heterogeneity] = heterogeneity;
-      return p;
     }
 
 

@@ -12,8 +12,8 @@
 #include <tribodyn/contact/contact_problem.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/core/statistics.h>
 #include <tribodyn/homogenization/homogenization_problem.h>
-#include <tribodyn/study/blocking.h>
 #include <tribodyn/study/study_problem.h>
 
 namespace tribodyn
@@ -120,9 +120,10 @@ namespace tribodyn
           hprm.leave_subsection();
           hprm.enter_subsection("Materials");
           for (const auto &[name, phase] :
-               {std::make_pair(std::string("Matrix"), base.material.matrix),
+               {std::make_pair(std::string("Matrix"),
+                               base.material.composite.matrix),
                 std::make_pair(std::string("Heterogeneity"),
-                               base.material.heterogeneity)})
+                               base.material.composite.heterogeneity)})
             {
               hprm.enter_subsection(name);
               hprm.set("Young modulus", format_number(phase.youngs_modulus));
@@ -165,8 +166,9 @@ namespace tribodyn
           std::ifstream        in(file);
           const nlohmann::json j = nlohmann::json::parse(in);
           const double         f = j.at("volume_fraction").get<double>();
-          homogenized_density += (1. - f) * base.material.matrix.density
-                                 + f * base.material.heterogeneity.density;
+          homogenized_density
+            += (1. - f) * base.material.composite.matrix.density
+               + f * base.material.composite.heterogeneity.density;
           record["summaries"].push_back(file);
           record["volume_fractions"].push_back(f);
         }
@@ -194,7 +196,7 @@ namespace tribodyn
         {
           case PinModel::homogeneous_matrix:
             p.material.type      = Type::isotropic;
-            p.material.isotropic = base.material.matrix;
+            p.material.isotropic = base.material.composite.matrix;
             break;
           case PinModel::homogenized:
             p.material.type                  = Type::anisotropic;
@@ -286,12 +288,13 @@ namespace tribodyn
             = summary.dominant_frequency_hz > 0 ? std::max<long>(
                 1, std::lround(1. / (summary.dominant_frequency_hz * spacing)))
                                                 : 1;
-          const BlockingResult       b = block_average(mu, 8, base_block);
+          const statistics::MeanWithError b
+            = statistics::block_average(mu, 8, base_block);
           const contact::RunSummary &s = summary;
           CaseResult                 r;
           r.mu_mean               = s.mu_global_mean;
-          r.mu_stderr             = b.stderr_of_mean;
-          r.mu_naive_stderr       = b.naive_stderr;
+          r.mu_stderr             = b.standard_error;
+          r.mu_naive_stderr       = b.naive_standard_error;
           r.plateau_found         = b.plateau_found;
           r.stick                 = s.stick_fraction;
           r.slip                  = s.slip_fraction;

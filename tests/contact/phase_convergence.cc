@@ -11,7 +11,7 @@
 // (the extent of the orbit).
 // Tolerance: each difference within 3 combined standard errors
 // sqrt(se_a^2 + se_b^2), the standard errors from block averaging
-// (Flyvbjerg-Petersen, study::block_average) of the series of the
+// (Flyvbjerg-Petersen, statistics::block_average) of the series of the
 // statistic (v, (v - mean)^2, (u - mean)^2). So that
 // the test can fail, the tolerances must also be tight: 3 combined standard
 // errors below 25 % of the statistic (below half the velocity's standard
@@ -31,7 +31,7 @@
 #include "contact_test_tools.h"
 
 #include <cmath>
-#include <tribodyn/study/blocking.h>
+#include <tribodyn/core/statistics.h>
 
 namespace
 {
@@ -44,7 +44,7 @@ namespace
   };
 
   std::vector<Statistic>
-  statistics(const std::string &h, const std::string &dt)
+  run_statistics(const std::string &h, const std::string &dt)
   {
     ContactRun          run(R"(
       subsection Geometry
@@ -77,7 +77,7 @@ namespace
           sep.push_back(s.M_status == 0);
           face.push_back(s.separation_fraction);
         }
-    using tribodyn::study::block_average;
+    using tribodyn::statistics::block_average;
     const auto          bv = block_average(v), bu = block_average(u);
     std::vector<double> v2, u2;
     for (const double x : v)
@@ -88,17 +88,17 @@ namespace
     const double           sv = std::sqrt(bv2.mean), su = std::sqrt(bu2.mean);
     const auto             bs = block_average(sep), bf = block_average(face);
     std::vector<Statistic> r
-      = {{"mean tangential velocity of M (m/s)", bv.mean, bv.stderr_of_mean},
+      = {{"mean tangential velocity of M (m/s)", bv.mean, bv.standard_error},
          {"std of the tangential velocity of M (m/s)",
           sv,
-          bv2.stderr_of_mean / (2 * sv)},
+          bv2.standard_error / (2 * sv)},
          {"std of the tangential displacement of M (m)",
           su,
-          bu2.stderr_of_mean / (2 * su)},
+          bu2.standard_error / (2 * su)},
          {"separated fraction of all contact nodes (not checked)",
           bf.mean,
-          bf.stderr_of_mean},
-         {"separated fraction of M (not checked)", bs.mean, bs.stderr_of_mean}};
+          bf.standard_error},
+         {"separated fraction of M (not checked)", bs.mean, bs.standard_error}};
     if (is_root())
       {
         std::cout << "h = " << h << ", dt = " << dt << ":\n";
@@ -115,9 +115,9 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto                               base = statistics("0.25e-3", "5e-9");
-  const auto small = statistics("0.25e-3", "2.5e-9");
-  const auto fine  = statistics("0.125e-3", "5e-9");
+  const auto base  = run_statistics("0.25e-3", "5e-9");
+  const auto small = run_statistics("0.25e-3", "2.5e-9");
+  const auto fine  = run_statistics("0.125e-3", "5e-9");
   for (const auto *other : {&small, &fine})
     for (unsigned int i = 0; i < 3; ++i)
       {

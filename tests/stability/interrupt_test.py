@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
-"""SIGTERM ends a run cleanly, and the run continues from there (issue #10).
+"""SIGTERM or SIGINT ends a run cleanly, and the run continues from there
+(issue #10).
 
-A run with a long end time is sent SIGTERM once its series has a few rows.
-Checks: exit code 143 (128 + SIGTERM), a message naming the checkpoint,
+A run with a long end time is sent the signal (environment variable
+INTERRUPT_SIGNAL: TERM, the default, or INT) once its series has a few rows.
+Checks: exit code 128 + the signal number (143, 130), a message naming the
+checkpoint,
 no summary.json, a complete checkpoint (checkpoint/latest), series whose
 rows are all whole. Then the run is resumed to t_k + DELTA (t_k: the time
 of the checkpoint written at the signal) and compared with an uninterrupted
@@ -51,12 +54,13 @@ def main():
         except OSError:
             pass
         time.sleep(0.05)
-    process.send_signal(signal.SIGTERM)
+    which = getattr(signal, "SIG" + os.environ.get("INTERRUPT_SIGNAL", "TERM"))
+    process.send_signal(which)
     out, err = process.communicate(timeout=120)
     print(f"exit code {process.returncode}; stderr: {err.strip()[-400:]}")
     errors = []
-    if process.returncode != 128 + signal.SIGTERM:
-        errors.append(f"exit code {process.returncode}, expected 143")
+    if process.returncode != 128 + which:
+        errors.append(f"exit code {process.returncode}, expected {128 + which}")
     if "interrupted" not in err or "Checkpoint/Resume = true" not in err:
         errors.append("no message naming the checkpoint on stderr")
     if os.path.exists(os.path.join(c, "summary.json")):
@@ -84,7 +88,7 @@ def main():
         print("FAIL", e)
     if errors:
         sys.exit(1)
-    print("PASS: SIGTERM saved the state; the resumed run equals an "
+    print(f"PASS: {which.name} saved the state; the resumed run equals an "
           f"uninterrupted one to t = {end} (tolerance {tolerance})")
 
 

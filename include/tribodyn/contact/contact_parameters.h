@@ -71,8 +71,7 @@ namespace tribodyn
       std::string summary_key = "KUBC";
 
       /// Type = morphology: the two phases.
-      IsotropicElasticMaterial matrix{30e9, 0.2, 1770.};
-      IsotropicElasticMaterial heterogeneity{80e9, 0.2, 1770.};
+      TwoPhaseMaterials composite;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

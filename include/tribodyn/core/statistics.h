@@ -27,6 +27,9 @@ namespace tribodyn
       /// Samples per block at the chosen blocking level (1 = raw samples);
       /// for mean_of_means() the largest block length of the runs.
       unsigned int block_length = 0;
+      /// Standard error as if the samples were independent (sigma /
+      /// sqrt(n)), for comparison: the ratio shows the correlation.
+      double naive_standard_error = 0;
       /// False when the blocking estimate did not reach a plateau (the
       /// record is too short compared with its correlation time): the
       /// error is then a lower bound.
@@ -67,13 +70,24 @@ namespace tribodyn
      * samples does); trust the error for records >~ 50 tau_int, i.e.
      * n_blocks >~ 50 at the chosen level.
      *
+     * With @p base_block > 1 the series is first cut into consecutive
+     * blocks of base_block samples (a trailing partial block is dropped,
+     * from the mean too) and the halving starts from their means. For a
+     * series with a dominant oscillation (mu_global of the pin: its shear
+     * mode), base_block = one period makes every block average whole
+     * cycles; otherwise the estimate peaks at blocks of about half a
+     * period (the oscillation's share, not the statistical error) and only
+     * falls back beyond a period, often past the last level with enough
+     * blocks. block_length is then in samples of the original series.
+     *
      * The mean is that of the whole series. A constant series has zero
      * error; a series of one sample has an infinite error. An empty series
      * is an InputError.
      */
     MeanWithError
     block_average(const std::vector<double> &series,
-                  const unsigned int         min_blocks = 8);
+                  const unsigned int         min_blocks = 8,
+                  const unsigned int         base_block = 1);
 
     /**
      * Combine independent runs (an ensemble of seeds) of the same quantity.

@@ -13,19 +13,12 @@ namespace tribodyn
   namespace homogenization
   {
     /// Parameters of the subsection "Materials": the two phases.
-    struct MaterialsParameters
+    struct MaterialsParameters : TwoPhaseMaterials
     {
-      IsotropicElasticMaterial matrix{30e9, 0.2, 1770.};
-      IsotropicElasticMaterial heterogeneity{80e9, 0.2, 1770.};
-
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
       parse_parameters(dealii::ParameterHandler &prm);
-
-      /// Phases indexed by material id.
-      std::vector<IsotropicElasticMaterial>
-      phases() const;
     };
 
     /// Parameters of the subsection "Output" of the homogenization problem.
