@@ -11,6 +11,36 @@ namespace tribodyn
 {
   namespace mca
   {
+    namespace
+    {
+      /// End the points of a .vtu piece, write its cells (@p n_cells of
+      /// @p vertices consecutive points each, VTK cell type @p vtk_type:
+      /// 1 vertex, 3 line) and close the piece and the file.
+      void
+      write_cells_and_close(std::ostream     &o,
+                            const std::size_t n_cells,
+                            const unsigned    vertices,
+                            const unsigned    vtk_type)
+      {
+        o << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" "
+             "Name=\"connectivity\" format=\"ascii\">\n";
+        for (std::size_t k = 0; k < n_cells; ++k)
+          for (unsigned int v = 0; v < vertices; ++v)
+            o << vertices * k + v << (v + 1 < vertices ? " " : "\n");
+        o << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
+             "format=\"ascii\">\n";
+        for (std::size_t k = 0; k < n_cells; ++k)
+          o << vertices * (k + 1) << "\n";
+        o << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+             "format=\"ascii\">\n";
+        for (std::size_t k = 0; k < n_cells; ++k)
+          o << vtk_type << "\n";
+        o << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</"
+             "VTKFile>\n";
+      }
+    } // namespace
+
+
     std::string
     AutomatonSystem::write_particles(const std::string &directory,
                                      const std::string &base,
@@ -99,20 +129,7 @@ namespace tribodyn
            "NumberOfComponents=\"3\" format=\"ascii\">\n";
       for (const unsigned int k : selected)
         o << x[k][0] << " " << x[k][1] << " " << x[k][2] << "\n";
-      o << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" "
-           "Name=\"connectivity\" format=\"ascii\">\n";
-      for (std::size_t k = 0; k < selected.size(); ++k)
-        o << k << "\n";
-      o << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
-           "format=\"ascii\">\n";
-      for (std::size_t k = 0; k < selected.size(); ++k)
-        o << k + 1 << "\n";
-      o << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
-           "format=\"ascii\">\n";
-      for (std::size_t k = 0; k < selected.size(); ++k)
-        o << "1\n";
-      o << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</"
-           "VTKFile>\n";
+      write_cells_and_close(o, selected.size(), 1, 1);
       write_file_atomically(
         join_path(directory, name + "." + std::to_string(rank) + ".vtu"),
         o.str());
@@ -196,20 +213,7 @@ namespace tribodyn
             << xi[0] + dn[0] << " " << xi[1] + dn[1] << " " << xi[2] + dn[2]
             << "\n";
         }
-      o << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" "
-           "Name=\"connectivity\" format=\"ascii\">\n";
-      for (std::size_t k = 0; k < selected.size(); ++k)
-        o << 2 * k << " " << 2 * k + 1 << "\n";
-      o << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
-           "format=\"ascii\">\n";
-      for (std::size_t k = 0; k < selected.size(); ++k)
-        o << 2 * (k + 1) << "\n";
-      o << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
-           "format=\"ascii\">\n";
-      for (std::size_t k = 0; k < selected.size(); ++k)
-        o << "3\n";
-      o << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</"
-           "VTKFile>\n";
+      write_cells_and_close(o, selected.size(), 2, 3);
       write_file_atomically(
         join_path(directory, name + "." + std::to_string(rank) + ".vtu"),
         o.str());
