@@ -3,11 +3,13 @@
 #include "parameter_tools.h"
 
 #include <cmath>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/patterns.h>
 #include <limits>
 #include <sstream>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/mca/parameters.h>
+#include <unistd.h>
 
 namespace tribodyn
 {
@@ -175,7 +177,8 @@ namespace tribodyn
                   name,
                   "in a periodic direction the length must be a whole "
                   "number (>= 2) of FCC cells a = d sqrt(2) = "
-                    + format_number(a) + " m; the nearest is "
+                    + format_number(a) + " m ('Geometry/Automaton size' d = "
+                    + format_number(automaton_size) + " m); the nearest is "
                     + format_number(std::max(2., std::round(cells)) * a)
                     + " m.");
               }
@@ -192,6 +195,28 @@ namespace tribodyn
                           + " FCC cells of a = d sqrt(2) = " + format_number(a)
                           + " m (limit 1e10): shrink the box or enlarge "
                             "'Geometry/Automaton size'.");
+        // Found by the parameter fuzzer: a box that, filled, needs more
+        // memory per rank than the whole machine has would only thrash in
+        // the set-up (about 1 KB per automaton, 4 automata per FCC cell).
+        {
+          const double n_ranks
+            = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+          const double per_rank = n_fcc_cells * 4 * 1000. / n_ranks;
+          const double installed
+            = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+          check_parameter(installed <= 0 || per_rank <= installed,
+                          "Geometry/Domain lower and Domain upper",
+                          "the box holds " + format_number(n_fcc_cells)
+                            + " FCC cells of a = d sqrt(2) = "
+                            + format_number(a) + " m; filled, that is about "
+                            + format_number(per_rank / 1e9) + " GB per rank on "
+                            + format_number(n_ranks)
+                            + " rank(s), more than this machine's "
+                            + format_number(installed / 1e9)
+                            + " GB: shrink the box, enlarge "
+                              "'Geometry/Automaton size', or run on more "
+                              "ranks (nodes).");
+        }
         bodies.clear();
         for (const std::string &entry : split(prm.get("Bodies"), ';'))
           {
@@ -281,11 +306,14 @@ namespace tribodyn
                                 inf,
                                 false,
                                 true);
+          // (the fuzzer found a wavelength 1000 x below the automaton
+          // size hanging the set-up: a surface finer than the lattice
+          // cannot be represented)
           check_parameter_range("Geometry/Rough interface/Wavelength",
                                 roughness_wavelength,
-                                0,
+                                rough_interface ? 2 * automaton_size : 0.,
                                 inf,
-                                true,
+                                !rough_interface,
                                 true);
           check_parameter_range(
             "Geometry/Rough interface/Gap", interface_gap, 0, inf, false, true);

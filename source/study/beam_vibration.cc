@@ -189,6 +189,11 @@ namespace tribodyn
       check_parameter(height >= 2 * mesh_size,
                       "Beam/Mesh size",
                       "at most half of 'Beam/Height'");
+      // (the fuzzer's 1e-300 gave a mesh of no cells: an internal error)
+      check_parameter(mesh_size >= height / 1000,
+                      "Beam/Mesh size",
+                      "at least 'Beam/Height' / 1000 (a finer mesh of a "
+                      "beam is beyond this verification)");
       check_parameter_range("Beam/Amplitude", amplitude, 0, 1e3, true, false);
       // Found by the parameter fuzzer (doc/stability.md): an absurd damping
       // made the critical step vanish and the run blow up at step 0; an
