@@ -38,6 +38,36 @@ namespace tribodyn
         o << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</"
              "VTKFile>\n";
       }
+
+      /// Write this rank's piece @p piece as NAME.RANK.vtu and, on rank 0,
+      /// the index NAME.pvtu of all ranks' pieces with the data arrays
+      /// declared in @p data_declarations (a PPointData or PCellData
+      /// element); both atomically.
+      void
+      write_piece_and_index(const std::string &directory,
+                            const std::string &name,
+                            const unsigned int rank,
+                            const unsigned int n_ranks,
+                            const std::string &piece,
+                            const std::string &data_declarations)
+      {
+        write_file_atomically(
+          join_path(directory, name + "." + std::to_string(rank) + ".vtu"),
+          piece);
+        if (rank != 0)
+          return;
+        std::ostringstream pv;
+        pv << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" "
+              "version=\"0.1\" byte_order=\"LittleEndian\">\n"
+              "<PUnstructuredGrid GhostLevel=\"0\">\n"
+           << data_declarations
+           << "<PPoints><PDataArray type=\"Float64\" "
+              "NumberOfComponents=\"3\"/></PPoints>\n";
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pv << "<Piece Source=\"" << name << "." << r << ".vtu\"/>\n";
+        pv << "</PUnstructuredGrid>\n</VTKFile>\n";
+        write_file_atomically(join_path(directory, name + ".pvtu"), pv.str());
+      }
     } // namespace
 
 
@@ -130,41 +160,28 @@ namespace tribodyn
       for (const unsigned int k : selected)
         o << x[k][0] << " " << x[k][1] << " " << x[k][2] << "\n";
       write_cells_and_close(o, selected.size(), 1, 1);
-      write_file_atomically(
-        join_path(directory, name + "." + std::to_string(rank) + ".vtu"),
-        o.str());
-      if (rank == 0)
-        {
-          std::ostringstream pv;
-          pv << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" "
-                "version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                "<PUnstructuredGrid GhostLevel=\"0\">\n<PPointData "
-                "Scalars=\"material\">\n";
-          for (const char *s : {"id",
-                                "rank",
-                                "material",
-                                "body",
-                                "bonded_neighbours",
-                                "unbonded_contacts",
-                                "plastic_strain"})
-            pv << "<PDataArray type=\"Float64\" Name=\"" << s << "\"/>\n";
-          if (with_elastic)
-            pv << "<PDataArray type=\"Float64\" Name=\"elastic\"/>\n";
-          for (const char *s : {"velocity", "displacement", "angular_velocity"})
-            pv << "<PDataArray type=\"Float64\" Name=\"" << s
-               << "\" NumberOfComponents=\"3\"/>\n";
-          if (with_stress)
-            pv << "<PDataArray type=\"Float64\" Name=\"stress\" "
-                  "NumberOfComponents=\"9\"/>\n<PDataArray type=\"Float64\" "
-                  "Name=\"pressure\"/>\n<PDataArray type=\"Float64\" "
-                  "Name=\"von_mises\"/>\n";
-          pv << "</PPointData>\n<PPoints><PDataArray type=\"Float64\" "
-                "NumberOfComponents=\"3\"/></PPoints>\n";
-          for (unsigned int r = 0; r < n_ranks; ++r)
-            pv << "<Piece Source=\"" << name << "." << r << ".vtu\"/>\n";
-          pv << "</PUnstructuredGrid>\n</VTKFile>\n";
-          write_file_atomically(join_path(directory, name + ".pvtu"), pv.str());
-        }
+      std::ostringstream pv;
+      pv << "<PPointData Scalars=\"material\">\n";
+      for (const char *s : {"id",
+                            "rank",
+                            "material",
+                            "body",
+                            "bonded_neighbours",
+                            "unbonded_contacts",
+                            "plastic_strain"})
+        pv << "<PDataArray type=\"Float64\" Name=\"" << s << "\"/>\n";
+      if (with_elastic)
+        pv << "<PDataArray type=\"Float64\" Name=\"elastic\"/>\n";
+      for (const char *s : {"velocity", "displacement", "angular_velocity"})
+        pv << "<PDataArray type=\"Float64\" Name=\"" << s
+           << "\" NumberOfComponents=\"3\"/>\n";
+      if (with_stress)
+        pv << "<PDataArray type=\"Float64\" Name=\"stress\" "
+              "NumberOfComponents=\"9\"/>\n<PDataArray type=\"Float64\" "
+              "Name=\"pressure\"/>\n<PDataArray type=\"Float64\" "
+              "Name=\"von_mises\"/>\n";
+      pv << "</PPointData>\n";
+      write_piece_and_index(directory, name, rank, n_ranks, o.str(), pv.str());
       return name + ".pvtu";
     }
 
@@ -214,23 +231,14 @@ namespace tribodyn
             << "\n";
         }
       write_cells_and_close(o, selected.size(), 2, 3);
-      write_file_atomically(
-        join_path(directory, name + "." + std::to_string(rank) + ".vtu"),
-        o.str());
-      if (rank == 0)
-        {
-          std::ostringstream pv;
-          pv << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" "
-                "version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                "<PUnstructuredGrid GhostLevel=\"0\">\n<PCellData "
-                "Scalars=\"sigma\">\n<PDataArray type=\"Float64\" "
-                "Name=\"sigma\"/>\n</PCellData>\n<PPoints><PDataArray "
-                "type=\"Float64\" NumberOfComponents=\"3\"/></PPoints>\n";
-          for (unsigned int r = 0; r < n_ranks; ++r)
-            pv << "<Piece Source=\"" << name << "." << r << ".vtu\"/>\n";
-          pv << "</PUnstructuredGrid>\n</VTKFile>\n";
-          write_file_atomically(join_path(directory, name + ".pvtu"), pv.str());
-        }
+      write_piece_and_index(directory,
+                            name,
+                            rank,
+                            n_ranks,
+                            o.str(),
+                            "<PCellData Scalars=\"sigma\">\n<PDataArray "
+                            "type=\"Float64\" Name=\"sigma\"/>\n"
+                            "</PCellData>\n");
       return name + ".pvtu";
     }
   } // namespace mca
