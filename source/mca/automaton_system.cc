@@ -53,6 +53,20 @@ namespace tribodyn
             const double ki = a.two_G / r0, kj = b.two_G / r0;
             springs.push_back({ki, kj, 1. / (ki + kj)});
           }
+      // Relative-rotation moment (doc/theory/mca.md §3): the contact face
+      // of area S as a circle, I = S^2 / (4 pi) about a diameter, J = 2 I
+      // polar; the stiffness per unit area of the two halves in series,
+      // k = k_i k_j / (k_i + k_j), is that of the normal and shear springs.
+      const double lambda = prm.interaction.relative_rotation_stiffness;
+      moment_scene        = rotations && lambda > 0;
+      if (moment_scene)
+        for (const auto &k : springs)
+          {
+            const double k_area = k.ki * k.kj * k.inv_sum;
+            const double I      = S * S / (4 * M_PI);
+            rotation_springs.push_back(
+              {lambda * k_area * 2 * I, lambda * k_area * I});
+          }
     }
 
 
@@ -298,6 +312,8 @@ namespace tribodyn
                             + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
           elastic += V * (sm * sm / (2 * m.K) + ss / (4 * m.G));
         }
+      if (moment_scene)
+        elastic += pair_moment_energy();
       unsigned long long nb = 0, nu = 0;
       for (unsigned int p = 0; p < pi.size(); ++p)
         // each pair counted once: by the owner of i (or of j when i is a
@@ -370,6 +386,7 @@ namespace tribodyn
       add(q_i), add(sig_i), add(sig_j), add(heat);
       add(tau_scale_i), add(tau_scale_j);
       bytes += tau.memory_consumption();
+      bytes += pair_moment.memory_consumption();
       add(beta_i), add(beta_j), add(kept_pairs), add(i_pairs_first);
       add(i_pairs_count), add(j_pairs_first), add(j_pairs), add(f_damp);
       return bytes;
@@ -420,6 +437,7 @@ namespace tribodyn
               = 0.5 * (tau_scale_i[p] + tau_scale_j[p]) * tau.component[c][p];
           pv.heat     = heat.empty() ? 0. : heat[p];
           pv.distance = pair_distance(p);
+          pv.moment   = moment_scene ? pair_moment[p] : Vec3{{0, 0, 0}};
           out.push_back(pv);
         }
       return out;

@@ -29,7 +29,8 @@ namespace tribodyn
   {
     namespace
     {
-      constexpr unsigned int state_version = 1;
+      // 2: with the relative-rotation moments (pair_moment)
+      constexpr unsigned int state_version = 2;
 
       // Scalars and vectors of trivially copyable types as raw bytes (fast
       // and exact); anything else through Boost's own serialization.
@@ -108,7 +109,7 @@ namespace tribodyn
   /* pairs */                                                                 \
   apply(pi) apply(pj) apply(pshift) apply(bonded) apply(in_contact)           \
   apply(q_i) apply(sig_i) apply(sig_j) apply(heat) apply(tau)                 \
-  apply(tau_scale_i) apply(tau_scale_j)                                       \
+  apply(tau_scale_i) apply(tau_scale_j) apply(pair_moment)                   \
   apply(beta_i) apply(beta_j) apply(i_pairs_first) apply(i_pairs_count)      \
   apply(j_pairs_first) apply(j_pairs)
     // clang-format on

@@ -511,6 +511,12 @@ namespace tribodyn
             }
         }
 
+      // Relative-rotation moments K_ij (pair_moments.cc), from this step's
+      // pair states, before its bond switching takes effect.
+      if constexpr (rot)
+        if (moment_scene)
+          relative_rotation_moments(step_dt);
+
       if constexpr (bonds)
         bond_switching<plastic>();
     }

@@ -272,6 +272,20 @@ namespace tribodyn
                           Double(),
                           "Amontons-Coulomb coefficient of unbonded pairs "
                           "(|tau| <= mu |sigma|), >= 0.");
+        prm.declare_entry(
+          "Relative rotation stiffness",
+          "0",
+          Double(),
+          "Factor of the stiffnesses of the moment K_ij of the relative "
+          "rotation of the two automata of a pair (seed eq. 1): an "
+          "incremental elastic moment, twisting stiffness factor * k * J "
+          "and bending stiffness factor * k * I, with k the pair's series "
+          "stiffness per unit area and I = S^2/(4 pi), J = 2 I the second "
+          "moments of a circular contact face of area S "
+          "(doc/theory/mca.md). Unbonded pairs in contact carry it up to "
+          "the no-tension (bending) and Coulomb (twisting) limits. 0: no "
+          "K_ij (as before); 1: the parallel-bond value. Needs Rotations; "
+          ">= 0.");
         prm.declare_entry("Bond formation heat fraction",
                           "0.5",
                           Double(),
@@ -311,6 +325,8 @@ namespace tribodyn
         bond_breaking        = prm.get_bool("Bond breaking");
         bond_formation       = prm.get_bool("Bond formation");
         friction_coefficient = prm.get_double("Friction coefficient");
+        relative_rotation_stiffness
+          = prm.get_double("Relative rotation stiffness");
         bond_formation_heat_fraction
           = prm.get_double("Bond formation heat fraction");
         skin = prm.get_double("Skin");
@@ -334,6 +350,18 @@ namespace tribodyn
                               inf,
                               false,
                               true);
+        check_parameter_range("Interaction/Relative rotation stiffness",
+                              relative_rotation_stiffness,
+                              0,
+                              inf,
+                              false,
+                              true);
+        if (relative_rotation_stiffness > 0 && !rotations)
+          throw InputError(
+            "Parameter 'Interaction/Relative rotation stiffness' > 0 needs "
+            "'Interaction/Rotations = true' (the moment follows the "
+            "relative rotation of the automata): switch rotations on, or "
+            "set the stiffness to 0.");
         check_parameter_range("Interaction/Bond formation heat fraction",
                               bond_formation_heat_fraction,
                               0,

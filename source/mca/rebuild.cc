@@ -179,7 +179,12 @@ namespace tribodyn
                 s.tau[c] = swap ? -tau.component[c][p] : tau.component[c][p];
               s.tau_scale_i = swap ? tau_scale_j[p] : tau_scale_i[p];
               s.tau_scale_j = swap ? tau_scale_i[p] : tau_scale_j[p];
-              auto &buf     = out_pairs[cells.neighbour_index(destination[k])];
+              // the relative-rotation moment on i is odd as well
+              for (unsigned int c = 0; c < 3; ++c)
+                s.moment[c] = !moment_scene ? 0.
+                              : swap        ? -pair_moment.component[c][p]
+                                            : pair_moment.component[c][p];
+              auto &buf = out_pairs[cells.neighbour_index(destination[k])];
               const auto *raw = reinterpret_cast<const double *>(&s);
               buf.insert(buf.end(), raw, raw + width);
             }
@@ -521,21 +526,35 @@ namespace tribodyn
           return side == 0 ? st.tau_scale_i : st.tau_scale_j;
         },
         1.);
-      // the shear stress vector: odd under relabelling
-      for (unsigned int c = 0; c < 3; ++c)
-        {
-          new_a.assign(n_pairs, 0.);
-          for (unsigned int p = 0; p < n_pairs; ++p)
-            {
-              const std::uint32_t o = source[p];
-              if (o == none)
-                continue;
-              const double t = (o & received) ? kept_pairs[o & ~received].tau[c]
-                                              : tau.component[c][o];
-              new_a[p]       = swap[p] ? -t : t;
-            }
-          tau.component[c].swap(new_a);
-        }
+      // the shear stress vector and the relative-rotation moment on i:
+      // odd under relabelling
+      auto remap_odd_vector
+        = [&](VectorArray &field, const auto &received_value) {
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                new_a.assign(n_pairs, 0.);
+                for (unsigned int p = 0; p < n_pairs; ++p)
+                  {
+                    const std::uint32_t o = source[p];
+                    if (o == none)
+                      continue;
+                    const double t
+                      = (o & received)
+                          ? received_value(kept_pairs[o & ~received], c)
+                          : field.component[c][o];
+                    new_a[p] = swap[p] ? -t : t;
+                  }
+                field.component[c].swap(new_a);
+              }
+          };
+      remap_odd_vector(tau, [](const PairState &st, const unsigned int c) {
+        return st.tau[c];
+      });
+      if (moment_scene)
+        remap_odd_vector(pair_moment,
+                         [](const PairState &st, const unsigned int c) {
+                           return st.moment[c];
+                         });
 
       // q of automaton i (q_j = r - q_i), the plastic heat
       new_a.resize(n_pairs);

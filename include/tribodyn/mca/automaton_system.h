@@ -319,6 +319,23 @@ namespace tribodyn
       {
         return w;
       }
+      /// Pair torques on the local automata at the last evaluation (owned:
+      /// complete).
+      const std::vector<Vec3> &
+      torques() const
+      {
+        return torque;
+      }
+      /// Twisting and bending stiffnesses (N m / rad) of the relative-
+      /// rotation moment of a pair of materials @p mi, @p mj (0 when off).
+      std::pair<double, double>
+      rotation_stiffnesses(const unsigned int mi, const unsigned int mj) const
+      {
+        if (rotation_springs.empty())
+          return {0., 0.};
+        const auto &k = rotation_springs[mi * n_materials + mj];
+        return {k.twist, k.bend};
+      }
       /// Number of bonded pairs of each local automaton (owned: complete).
       std::vector<unsigned int>
       bonded_neighbour_counts() const;
@@ -382,6 +399,9 @@ namespace tribodyn
         Vec3          tau;
         double        heat;
         double        distance;
+        /// Relative-rotation moment K_ij on i (-K_ij on j); zero when
+        /// Interaction/Relative rotation stiffness is 0.
+        Vec3 moment;
       };
       std::vector<PairView>
       pair_views() const;
@@ -450,6 +470,13 @@ namespace tribodyn
       template <bool plastic>
       void
       bond_switching();
+      /// Relative-rotation moments K_ij of the interacting pairs, added to
+      /// the torques (pair_moments.cc; only when moment_scene).
+      void
+      relative_rotation_moments(const double step);
+      /// Elastic energy sum |K|^2 / 2k of the pairs counted by this rank.
+      double
+      pair_moment_energy() const;
       /// Pair vector x_j - x_i (with the cached periodic image shift).
       Vec3
       pair_vector(const unsigned int p) const
@@ -589,8 +616,17 @@ namespace tribodyn
         double ki, kj, inv_sum;
       };
       std::vector<SeriesSprings> springs;
-      unsigned int               n_materials = 0;
-      bool   plastic_scene = false, bond_scene = false, rotations = true;
+      /// Twisting and bending stiffnesses of the relative-rotation moment
+      /// by material pair as springs (empty unless moment_scene).
+      struct RotationSprings
+      {
+        double twist, bend;
+      };
+      std::vector<RotationSprings> rotation_springs;
+      unsigned int                 n_materials = 0;
+      bool plastic_scene = false, bond_scene = false, rotations = true;
+      /// Relative-rotation moments on (rotations and a stiffness > 0).
+      bool   moment_scene = false;
       double d = 0, r0 = 0, S = 0, V = 0, range = 0;
 
       double                          dt = 0, critical_dt = 0, current_time = 0;
@@ -649,6 +685,9 @@ namespace tribodyn
       /// i <-> j) and two factors hold both: 40 instead of 48 bytes.
       VectorArray         tau;
       std::vector<double> tau_scale_i, tau_scale_j;
+      /// Relative-rotation moment K_ij on i (-K_ij on j): odd under
+      /// i <-> j. Allocated only when moment_scene (else empty).
+      VectorArray         pair_moment;
       std::vector<double> beta_i, beta_j;
       /// Pairs of each owned automaton k. As i: the pairs are ordered by
       /// the key of i, so k's form one block, i_pairs_first[k] ...
@@ -663,6 +702,7 @@ namespace tribodyn
         std::uint64_t key; ///< smaller id << 32 | larger id
         double        bonded, contact, q, sig_i, sig_j, heat;
         double        tau[3], tau_scale_i, tau_scale_j;
+        double        moment[3];
       };
       std::vector<PairState> kept_pairs;
       /// This rank's old pairs by their ids (12 bytes each: this list is

@@ -203,6 +203,10 @@ namespace tribodyn
       bool   bond_breaking        = false;
       bool   bond_formation       = false;
       double friction_coefficient = 0.3;
+      /// Factor lambda of the stiffnesses of the relative-rotation moment
+      /// K_ij of seed eq. (1) (doc/theory/mca.md §3): twisting lambda k J,
+      /// bending lambda k I of the pair's contact face. 0: no K_ij.
+      double relative_rotation_stiffness = 0;
       /// Fraction of the bond-breaking energy the plastic heat of an
       /// unbonded pair must reach to bond (seed: one half).
       double bond_formation_heat_fraction = 0.5;
