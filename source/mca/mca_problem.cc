@@ -58,8 +58,14 @@ namespace tribodyn
           << f.bytes_per_rank_max / 1048576. << " MiB ("
           << AutomatonSystem::bytes_per_owned_automaton
           << " B per owned automaton, "
-          << AutomatonSystem::bytes_per_ghost_automaton << " B per ghost)"
-          << std::endl;
+          << AutomatonSystem::bytes_per_ghost_automaton << " B per ghost"
+          << (p.interaction.relative_rotation_stiffness > 0
+                ? ", + "
+                    + std::to_string(static_cast<int>(
+                      AutomatonSystem::bytes_per_automaton_moments))
+                    + " B each for the relative-rotation moments"
+                : std::string())
+          << ")" << std::endl;
     }
 
 

@@ -23,22 +23,27 @@ namespace tribodyn
       }
 
       /// @p m carried from the pair axis @p n_old to @p n (the smallest
-      /// rotation taking one to the other, Rodrigues), then spun about @p n
-      /// by @p phi: the moment follows the pair as a rigid frame.
-      Vec3
+      /// rotation taking one to the other, Rodrigues; @p c = n_old . n),
+      /// then spun about @p n by the angle 2 atan(@p half_phi): the moment
+      /// follows the pair as a rigid frame. Both rotations are exactly
+      /// orthogonal (the spin in Cayley's form, without trigonometric
+      /// calls: 2 atan(phi / 2) = phi - phi^3 / 12, phi = O(1e-3)).
+      inline Vec3
       rotate_with_pair(const Vec3  &m,
                        const Vec3  &n_old,
                        const Vec3  &n,
-                       const double phi)
+                       const double c,
+                       const double half_phi)
       {
         const Vec3   ax  = cross(n_old, n); // sin(angle) times the axis
-        const double c   = dot(n_old, n);
         const Vec3   axm = cross(ax, m);
         const double s   = dot(ax, m) / (1 + c);
         Vec3         r;
         for (unsigned int e = 0; e < 3; ++e)
           r[e] = c * m[e] + axm[e] + s * ax[e];
-        const double cp = std::cos(phi), sp = std::sin(phi);
+        const double inv = 1. / (1 + half_phi * half_phi);
+        const double cp  = (1 - half_phi * half_phi) * inv,
+                     sp  = 2 * half_phi * inv;
         const Vec3   nxr = cross(n, r);
         const double rn  = dot(n, r) * (1 - cp);
         for (unsigned int e = 0; e < 3; ++e)
@@ -70,15 +75,19 @@ namespace tribodyn
           Vec3       dold;
           for (unsigned int c = 0; c < 3; ++c)
             dold[c] = dnew[c] - step_dt * (v[j][c] - v[i][c]);
-          const Vec3 n = normalized(dnew), n_old = normalized(dold);
-          const Vec3 nm
-            = normalized({{n[0] + n_old[0], n[1] + n_old[1], n[2] + n_old[2]}});
+          const Vec3   n = normalized(dnew), n_old = normalized(dold);
+          const double c = dot(n_old, n);
+          // |n + n_old| = sqrt(2 + 2c)
+          const double inv_m = 1. / std::sqrt(2 + 2 * c);
+          const Vec3   nm{{(n[0] + n_old[0]) * inv_m,
+                           (n[1] + n_old[1]) * inv_m,
+                           (n[2] + n_old[2]) * inv_m}};
           // objective update: the stored moment follows the pair's axis
-          // and the mean spin of its automata about that axis
-          const double phi
-            = 0.5 * step_dt
-              * (dot(w[i], nm) + dot(w[j], nm)); // (w_i + w_j)/2 . n dt
-          Vec3 K = rotate_with_pair(pair_moment[p], n_old, n, phi);
+          // and the mean spin (w_i + w_j)/2 . n_m dt of its automata about
+          // that axis
+          const double half_phi
+            = 0.25 * step_dt * (dot(w[i], nm) + dot(w[j], nm));
+          Vec3 K = rotate_with_pair(pair_moment[p], n_old, n, c, half_phi);
           // elastic increment from the relative rotation of the step,
           // twisting (along the axis) and bending (across it); the moment
           // on i turns i with j (restoring)

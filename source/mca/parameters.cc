@@ -285,7 +285,8 @@ namespace tribodyn
           "(doc/theory/mca.md). Unbonded pairs in contact carry it up to "
           "the no-tension (bending) and Coulomb (twisting) limits. 0: no "
           "K_ij (as before); 1: the parallel-bond value. Needs Rotations; "
-          ">= 0.");
+          "in [0, 2 sqrt(2) pi = 8.89] (above, the explicit step limit "
+          "would not cover the springs).");
         prm.declare_entry("Bond formation heat fraction",
                           "0.5",
                           Double(),
@@ -350,12 +351,21 @@ namespace tribodyn
                               inf,
                               false,
                               true);
-        check_parameter_range("Interaction/Relative rotation stiffness",
-                              relative_rotation_stiffness,
-                              0,
-                              inf,
-                              false,
-                              true);
+        // Above pi d^2 / S = 2 sqrt(2) pi the moments' springs make the
+        // rotation of an automaton whose neighbours turn the other way
+        // stiffer than its shear springs make a rotation with them (the
+        // stiffest rotational mode without K_ij), and the step limit of
+        // Time/Courant factor no longer covers them (doc/theory/mca.md §3).
+        check_parameter_range(
+          "Interaction/Relative rotation stiffness",
+          relative_rotation_stiffness,
+          0,
+          2 * std::sqrt(2.) * M_PI,
+          false,
+          false,
+          "Above 2 sqrt(2) pi the relative-rotation springs are stiffer than "
+          "the shear springs' rotational stiffness and the explicit time "
+          "step would not cover them; 1 is the parallel-bond value.");
         if (relative_rotation_stiffness > 0 && !rotations)
           throw InputError(
             "Parameter 'Interaction/Relative rotation stiffness' > 0 needs "

@@ -175,11 +175,16 @@ namespace tribodyn
       };
       stats(owned, fig.owned_min, fig.owned_mean, fig.owned_max);
       stats(ghosts, fig.ghosts_min, fig.ghosts_mean, fig.ghosts_max);
+      const double moments
+        = prm.interaction.rotations
+              && prm.interaction.relative_rotation_stiffness > 0
+            ? bytes_per_automaton_moments
+            : 0.;
       for (unsigned int r = 0; r < n_ranks; ++r)
         fig.bytes_per_rank_max
           = std::max(fig.bytes_per_rank_max,
-                     owned[r] * bytes_per_owned_automaton
-                       + ghosts[r] * bytes_per_ghost_automaton);
+                     owned[r] * (bytes_per_owned_automaton + moments)
+                       + ghosts[r] * (bytes_per_ghost_automaton + moments));
       return fig;
     }
   } // namespace mca
