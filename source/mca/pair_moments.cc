@@ -76,9 +76,9 @@ namespace tribodyn
           for (unsigned int c = 0; c < 3; ++c)
             dold[c] = dnew[c] - step_dt * (v[j][c] - v[i][c]);
           const Vec3   n = normalized(dnew), n_old = normalized(dold);
-          const double c = dot(n_old, n);
-          // |n + n_old| = sqrt(2 + 2c)
-          const double inv_m = 1. / std::sqrt(2 + 2 * c);
+          const double cos_n = dot(n_old, n);
+          // |n + n_old| = sqrt(2 + 2 cos_n)
+          const double inv_m = 1. / std::sqrt(2 + 2 * cos_n);
           const Vec3   nm{{(n[0] + n_old[0]) * inv_m,
                            (n[1] + n_old[1]) * inv_m,
                            (n[2] + n_old[2]) * inv_m}};
@@ -87,7 +87,7 @@ namespace tribodyn
           // that axis
           const double half_phi
             = 0.25 * step_dt * (dot(w[i], nm) + dot(w[j], nm));
-          Vec3 K = rotate_with_pair(pair_moment[p], n_old, n, c, half_phi);
+          Vec3 K = rotate_with_pair(pair_moment[p], n_old, n, cos_n, half_phi);
           // elastic increment from the relative rotation of the step,
           // twisting (along the axis) and bending (across it); the moment
           // on i turns i with j (restoring)

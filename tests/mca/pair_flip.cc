@@ -12,6 +12,9 @@
 // -S tau if it is j, is invariant under rigid translation: it must stay what it
 // was after the shear, to 1e-12 relative (rounding of the rigid moves), and the
 // path must relabel the pair at least once (else the test proves nothing).
+// The relative-rotation moment K_ij (on i; odd like tau) is on: the shear
+// move also turns automaton 1 (twist and bending), and the moment on
+// automaton 0 must stay unchanged to 1e-12 as well.
 
 #include "mca_test_tools.h"
 
@@ -28,6 +31,7 @@ main(int argc, char **argv)
   p.geometry.periodic                        = {{true, true, false}};
   p.geometry.bodies[0].lower                 = Point3(0, 0, 0);
   p.geometry.bodies[0].upper                 = Point3(a, a, a / 2);
+  p.interaction.relative_rotation_stiffness  = 1;
   AutomatonSystem system(p, MPI_COMM_WORLD);
   system.setup();
   check(system.n_global_automata() == 2,
@@ -52,13 +56,22 @@ main(int argc, char **argv)
     const double sign = pv.id_i == id0 ? 1. : -1.;
     return Vec3{{sign * pv.tau[0], sign * pv.tau[1], sign * pv.tau[2]}};
   };
+  auto moment_on_0 = [&]() {
+    const auto   pv   = system.pair_views().at(0);
+    const double sign = pv.id_i == id0 ? 1. : -1.;
+    return Vec3{
+      {sign * pv.moment[0], sign * pv.moment[1], sign * pv.moment[2]}};
+  };
   {
     unsigned int k = 0;
     system.impose_motion(
       [&](const Point3 &, Vec3 &du, Vec3 &dtheta) {
         for (unsigned int c = 0; c < 3; ++c)
-          du[c] = system.ids()[k] != id0 ? 1e-5 * d * t[c] : 0.;
-        dtheta = {{0, 0, 0}};
+          {
+            du[c] = system.ids()[k] != id0 ? 1e-5 * d * t[c] : 0.;
+            dtheta[c]
+              = system.ids()[k] != id0 ? 1e-5 * (n[c] + 0.5 * t[c]) : 0.;
+          }
         ++k;
       },
       1e-9);
@@ -75,6 +88,10 @@ main(int argc, char **argv)
   const Vec3   reference = shear_on_0();
   const double size      = std::sqrt(dot(reference, reference));
   check(size > 0, "the shear produced a shear stress");
+  const Vec3   moment0     = moment_on_0();
+  const double moment_size = std::sqrt(dot(moment0, moment0));
+  check(moment_size > 0, "the rotation produced a moment");
+  double worst_moment = 0;
 
   const std::uint64_t first_i  = system.pair_views().at(0).id_i;
   unsigned int        n_flips  = 0;
@@ -109,6 +126,10 @@ main(int argc, char **argv)
       const Vec3 f = shear_on_0();
       for (unsigned int c = 0; c < 3; ++c)
         worst = std::max(worst, std::abs(f[c] - reference[c]) / size);
+      const Vec3 m = moment_on_0();
+      for (unsigned int c = 0; c < 3; ++c)
+        worst_moment
+          = std::max(worst_moment, std::abs(m[c] - moment0[c]) / moment_size);
     }
   check(n_flips > 0,
         "the path relabels the pair (" + std::to_string(n_flips)
@@ -118,6 +139,12 @@ main(int argc, char **argv)
                  1e-12,
                  "shear force on automaton 0 unchanged by rigid moves and "
                  "rebuilds",
+                 1.);
+  check_relative(worst_moment,
+                 0,
+                 1e-12,
+                 "relative-rotation moment on automaton 0 unchanged by rigid "
+                 "moves and rebuilds",
                  1.);
   return result();
 }
