@@ -1,3 +1,5 @@
+#include "cell_integrals.h"
+
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <cmath>
@@ -25,6 +27,9 @@ namespace tribodyn
   namespace homogenization
   {
     using namespace dealii;
+    using internal::AffineDisplacement;
+    using internal::CellIntegrals;
+    using internal::integrate_cell;
 
     std::string
     to_string(const BoundaryCondition bc)
@@ -240,29 +245,6 @@ namespace tribodyn
       }
 
 
-      /// u = E x for the Voigt strain E = (e_xx, e_yy, gamma_xy).
-      class AffineDisplacement : public Function<2>
-      {
-      public:
-        explicit AffineDisplacement(const VoigtVector &strain)
-            : Function<2>(2)
-            , strain(strain)
-        {
-        }
-
-        double
-        value(const Point<2> &p, const unsigned int component) const override
-        {
-          const double e_xy = 0.5 * strain[2];
-          return component == 0 ? strain[0] * p[0] + e_xy * p[1]
-                                : e_xy * p[0] + strain[1] * p[1];
-        }
-
-      private:
-        const VoigtVector strain;
-      };
-
-
       /// Voigt strain (xx, yy, gamma_xy) of vector shape function i.
       inline VoigtVector
       shape_strain(const FEValues<2>      &fe_values,
@@ -287,45 +269,6 @@ namespace tribodyn
       }
 
 
-      /// Integrals over one cell of the strain, the stress and sigma_zz.
-      struct CellIntegrals
-      {
-        VoigtVector strain;
-        VoigtVector stress;
-        double      stress_zz = 0;
-        double      measure   = 0;
-      };
-
-
-      /// Integrate eps = E + eps(solution) (E = 0 for SUBC), sigma = C eps
-      /// and sigma_zz = lambda (eps_xx + eps_yy) over the cell @p fe_values
-      /// was reinitialized on. @p strains is scratch space.
-      CellIntegrals
-      integrate_cell(const FEValues<2>                   &fe_values,
-                     const TrilinosWrappers::MPI::Vector &solution,
-                     const VoigtVector                   &macro_strain,
-                     const IsotropicElasticMaterial      &phase,
-                     std::vector<SymmetricTensor<2, 2>>  &strains)
-      {
-        const FEValuesExtractors::Vector displacement(0);
-        fe_values[displacement].get_function_symmetric_gradients(solution,
-                                                                 strains);
-        const VoigtMatrix C = phase.plane_strain_voigt_stiffness();
-        CellIntegrals     integrals;
-        for (const unsigned int q : fe_values.quadrature_point_indices())
-          {
-            const VoigtVector eps
-              = macro_strain
-                + VoigtVector(
-                  {strains[q][0][0], strains[q][1][1], 2 * strains[q][0][1]});
-            const double JxW = fe_values.JxW(q);
-            integrals.strain += eps * JxW;
-            integrals.stress += (C * eps) * JxW;
-            integrals.stress_zz += phase.lambda() * (eps[0] + eps[1]) * JxW;
-            integrals.measure += JxW;
-          }
-        return integrals;
-      }
     } // namespace
 
 
@@ -665,154 +608,5 @@ namespace tribodyn
     }
 
 
-    void
-    CellProblem::write_fields(const BoundaryCondition              bc,
-                              const unsigned int                   load_case,
-                              const TrilinosWrappers::MPI::Vector &solution,
-                              const std::string &output_directory) const
-    {
-      TimerOutput::Scope scope(timer, "output");
-      const bool         strain_driven = bc != BoundaryCondition::subc;
-      const VoigtVector  macro_strain
-        = strain_driven ? unit_load(load_case) : VoigtVector();
-
-      // Total displacement u = E x + w (strain-driven) or u (SUBC).
-      TrilinosWrappers::MPI::Vector total(locally_owned_dofs, mpi_communicator);
-      if (strain_driven)
-        VectorTools::interpolate(dof_handler,
-                                 AffineDisplacement(macro_strain),
-                                 total);
-      TrilinosWrappers::MPI::Vector owned(locally_owned_dofs, mpi_communicator);
-      owned = solution;
-      total += owned;
-      TrilinosWrappers::MPI::Vector total_ghosted(locally_owned_dofs,
-                                                  locally_relevant_dofs,
-                                                  mpi_communicator);
-      total_ghosted = total;
-
-      // Cell averages of stress and strain.
-      const unsigned int           n_cells = triangulation.n_active_cells();
-      std::array<Vector<float>, 9> cell_data;
-      for (auto &v : cell_data)
-        v.reinit(n_cells);
-      const QGauss<2>                    quadrature(parameters.fe_degree + 1);
-      FEValues<2>                        fe_values(fe,
-                            quadrature,
-                            update_gradients | update_JxW_values);
-      std::vector<SymmetricTensor<2, 2>> strains(quadrature.size());
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            fe_values.reinit(cell);
-            const CellIntegrals integrals
-              = integrate_cell(fe_values,
-                               solution,
-                               macro_strain,
-                               phases[cell->material_id()],
-                               strains);
-            const VoigtVector mean_eps   = integrals.strain / integrals.measure;
-            const VoigtVector mean_sigma = integrals.stress / integrals.measure;
-            const double mean_szz = integrals.stress_zz / integrals.measure;
-            const double sxx = mean_sigma[0], syy = mean_sigma[1],
-                         sxy = mean_sigma[2];
-            const double von_mises
-              = std::sqrt(0.5
-                            * ((sxx - syy) * (sxx - syy)
-                               + (syy - mean_szz) * (syy - mean_szz)
-                               + (mean_szz - sxx) * (mean_szz - sxx))
-                          + 3 * sxy * sxy);
-            const unsigned int k = cell->active_cell_index();
-            cell_data[0][k]      = sxx;
-            cell_data[1][k]      = syy;
-            cell_data[2][k]      = sxy;
-            cell_data[3][k]      = mean_szz;
-            cell_data[4][k]      = von_mises;
-            cell_data[5][k]      = mean_eps[0];
-            cell_data[6][k]      = mean_eps[1];
-            cell_data[7][k]      = mean_eps[2];
-            cell_data[8][k]      = cell->material_id();
-          }
-
-      DataOut<2> data_out;
-      data_out.attach_dof_handler(dof_handler);
-      const std::vector<
-        DataComponentInterpretation::DataComponentInterpretation>
-        interpretation(
-          2, DataComponentInterpretation::component_is_part_of_vector);
-      data_out.add_data_vector(total_ghosted,
-                               std::vector<std::string>(2, "displacement"),
-                               DataOut<2>::type_dof_data,
-                               interpretation);
-      const char *names[9] = {"stress_xx",
-                              "stress_yy",
-                              "stress_xy",
-                              "stress_zz",
-                              "von_mises",
-                              "strain_xx",
-                              "strain_yy",
-                              "strain_gamma_xy",
-                              "material_id"};
-      for (unsigned int i = 0; i < 9; ++i)
-        data_out.add_data_vector(cell_data[i],
-                                 names[i],
-                                 DataOut<2>::type_cell_data);
-      data_out.build_patches();
-      DataOutBase::VtkFlags flags;
-      flags.time = load_case;
-      // deal.II 9.4 defaults to the best (slowest) zlib compression, which
-      // costs several times the solve here.
-      flags.compression_level = DataOutBase::VtkFlags::best_speed;
-      data_out.set_flags(flags);
-      // One file per load case, written collectively with MPI I/O, and a
-      // .pvd index of the three load cases (xx, yy, xy) as pseudo-times
-      // 0, 1, 2.
-      const std::string base          = "fields_" + to_string(bc);
-      const char       *case_names[3] = {"xx", "yy", "xy"};
-      data_out.write_vtu_in_parallel(
-        join_path(output_directory,
-                  base + "_" + case_names[load_case] + ".vtu"),
-        mpi_communicator);
-      if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-        {
-          std::string pvd;
-          pvd += "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
-                 "version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                 "  <!-- load cases: 0 = xx, 1 = yy, 2 = xy -->\n"
-                 "  <Collection>\n";
-          for (unsigned int k = 0; k <= load_case; ++k)
-            pvd += "    <DataSet timestep=\"" + std::to_string(k)
-                   + "\" group=\"\" part=\"0\" file=\"" + base + "_"
-                   + case_names[k] + ".vtu\"/>\n";
-          pvd += "  </Collection>\n</VTKFile>\n";
-          write_file_atomically(join_path(output_directory, base + ".pvd"),
-                                pvd);
-        }
-    }
-
-
-    void
-    CellProblem::write_material_map(const std::string &output_directory) const
-    {
-      TimerOutput::Scope scope(timer, "output");
-      Vector<float>      ids(triangulation.n_active_cells());
-      Vector<float>      ranks(triangulation.n_active_cells());
-      for (const auto &cell : triangulation.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            ids[cell->active_cell_index()]   = cell->material_id();
-            ranks[cell->active_cell_index()] = cell->subdomain_id();
-          }
-      DataOut<2> data_out;
-      data_out.attach_triangulation(triangulation);
-      data_out.add_data_vector(ids, "material_id", DataOut<2>::type_cell_data);
-      data_out.add_data_vector(ranks, "mpi_rank", DataOut<2>::type_cell_data);
-      data_out.build_patches();
-      DataOutBase::VtkFlags flags;
-      flags.compression_level = DataOutBase::VtkFlags::best_speed;
-      data_out.set_flags(flags);
-      data_out.write_vtu_in_parallel(join_path(output_directory,
-                                               "morphology.vtu"),
-                                     mpi_communicator);
-    }
   } // namespace homogenization
 } // namespace tribodyn

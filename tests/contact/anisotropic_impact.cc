@@ -23,52 +23,10 @@ namespace
   std::pair<double, double>
   impact(const std::string &material)
   {
-    ContactRun  run(R"(
-      subsection Geometry
-        set Width = 1e-3
-        set Height = 8e-3
-        set Mesh size = 0.1e-3
-      end
-      subsection Material
-        set Density = 1770
-)" + material + R"(
-      end
-      subsection Loading
-        set Pressure = 0
-        set Top face held in x = false
-        set Plane velocity = 0
-        set Initial velocity = 0, -1
-      end
-      subsection Time integration
-        set Time step = 5e-9
-        set End time = 8e-6
-        set Damping coefficient = 0
-      end
-      subsection Contact
-        set Friction law = frictionless
-      end
-      subsection Output
-        set Sample interval = 1
-        set Averaging start time = 0
-      end)");
-    const auto &samples = run.run();
-    double      last = 0, first = -1;
-    for (const auto &s : samples)
-      if (s.contact_normal_force > 0)
-        {
-          if (first < 0)
-            first = s.time;
-          last = s.time + run.solver->time_step();
-        }
-    const double duration = last;
-    double       plateau = 0, n = 0;
-    for (const auto &s : samples)
-      if (s.time > 0.2 * duration && s.time < 0.8 * duration)
-        {
-          plateau += s.contact_normal_force;
-          n += 1;
-        }
-    return {duration, plateau / n};
+    ContactRun run(
+      column_impact_prm("set Density = 1770\n" + material, 5e-9, 8e-6));
+    const ImpactFigures r = impact_figures(run.run(), run.solver->time_step());
+    return {r.duration, r.plateau_force};
   }
 
 

@@ -17,54 +17,22 @@ main(int argc, char **argv)
   using namespace tribodyn_test;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const double E = 30e9, rho = 1770, v0 = 1., L = 8e-3, W = 1e-3;
-  ContactRun   run(R"(
-    subsection Geometry
-      set Width = 1e-3
-      set Height = 8e-3
-      set Mesh size = 0.1e-3
-    end
-    subsection Material
+  ContactRun   run(column_impact_prm(R"(
       subsection Isotropic
         set Young modulus = 30e9
         set Poisson ratio = 0
         set Density = 1770
-      end
-    end
-    subsection Loading
-      set Pressure = 0
-      set Top face held in x = false
-      set Plane velocity = 0
-      set Initial velocity = 0, -1
-    end
-    subsection Time integration
-      set Time step = 10e-9
-      set End time = 6e-6
-      set Damping coefficient = 0
-    end
-    subsection Contact
-      set Friction law = frictionless
-    end
-    subsection Output
-      set Sample interval = 1
-      set Averaging start time = 0
-    end)");
+      end)",
+                                   10e-9,
+                                   6e-6));
   const auto  &samples = run.run();
   const double c = std::sqrt(E / rho), duration = 2 * L / c;
   const double force = rho * c * v0 * W;
   const double mass  = run.solver->total_mass();
 
-  double plateau = 0, n_plateau = 0, last_contact = 0;
-  for (const auto &s : samples)
-    {
-      if (s.time > 0.2 * duration && s.time < 0.8 * duration)
-        {
-          plateau += s.contact_normal_force;
-          n_plateau += 1;
-        }
-      if (s.contact_normal_force > 0)
-        last_contact = s.time + run.solver->time_step();
-    }
-  plateau /= n_plateau;
+  const ImpactFigures impact
+    = impact_figures(samples, run.solver->time_step(), duration);
+  const double plateau = impact.plateau_force, last_contact = impact.duration;
   check_relative(plateau,
                  force,
                  0.01,

@@ -5,7 +5,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
+#include <iomanip>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/contact/contact_solver.h>
@@ -56,6 +58,85 @@ namespace tribodyn_test
       return solver->samples();
     }
   };
+
+  /// @p x with all its digits (std::to_string would print 5e-9 as 0.000000).
+  inline std::string
+  number_string(const double x)
+  {
+    std::ostringstream s;
+    s << std::setprecision(17) << x;
+    return s.str();
+  }
+
+  /// Parameters of a 1 x 8 mm column dropped at 1 m/s on the rigid plane at
+  /// rest (frictionless, undamped, no pressure, mesh 0.1 mm): the 1D impact
+  /// of the tests contact_bar_impact and contact_anisotropic_impact.
+  /// @p material: the lines inside 'subsection Material'.
+  inline std::string
+  column_impact_prm(const std::string &material,
+                    const double       time_step,
+                    const double       end_time)
+  {
+    return R"(
+      subsection Geometry
+        set Width = 1e-3
+        set Height = 8e-3
+        set Mesh size = 0.1e-3
+      end
+      subsection Material
+)" + material
+           + R"(
+      end
+      subsection Loading
+        set Pressure = 0
+        set Top face held in x = false
+        set Plane velocity = 0
+        set Initial velocity = 0, -1
+      end
+      subsection Time integration
+        set Time step = )"
+           + number_string(time_step) + R"(
+        set End time = )"
+           + number_string(end_time) + R"(
+        set Damping coefficient = 0
+      end
+      subsection Contact
+        set Friction law = frictionless
+      end
+      subsection Output
+        set Sample interval = 1
+        set Averaging start time = 0
+      end)";
+  }
+
+  /// Contact duration (end of the last sample with a contact force) and
+  /// the mean contact force over 0.2 ... 0.8 of @p window (s; the measured
+  /// duration when @p window is not positive) of an impact.
+  struct ImpactFigures
+  {
+    double duration = 0, plateau_force = 0;
+  };
+  inline ImpactFigures
+  impact_figures(const std::vector<Sample> &samples,
+                 const double               time_step,
+                 double                     window = -1)
+  {
+    ImpactFigures r;
+    for (const auto &s : samples)
+      if (s.contact_normal_force > 0)
+        r.duration = s.time + time_step;
+    if (window <= 0)
+      window = r.duration;
+    double n = 0;
+    for (const auto &s : samples)
+      if (s.time > 0.2 * window && s.time < 0.8 * window)
+        {
+          r.plateau_force += s.contact_normal_force;
+          n += 1;
+        }
+    r.plateau_force /= n;
+    return r;
+  }
 } // namespace tribodyn_test
 
 #endif
