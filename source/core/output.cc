@@ -84,6 +84,14 @@ namespace tribodyn
   }
 
 
+  bool
+  file_exists(const std::string &path)
+  {
+    struct stat info;
+    return stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+  }
+
+
   std::string
   join_path(const std::string &directory, const std::string &file)
   {

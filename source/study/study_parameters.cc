@@ -87,6 +87,20 @@ namespace tribodyn
                         Patterns::Bool(),
                         "Write the VTU fields of every case (at "
                         "'Output/Field interval'); false: none.");
+      prm.declare_entry("Reuse finished cases",
+                        "false",
+                        Patterns::Bool(),
+                        "Take every case (and homogenization run) that "
+                        "already finished in this output directory from its "
+                        "files (OUTPUT/cases/NAME/summary.json and "
+                        "friction.csv) instead of running it again, and "
+                        "recompute its statistics (block-averaged error, "
+                        "tables, plots) with this version of tribodyn. A "
+                        "finished case must have the same pressure, time "
+                        "step, end time and averaging window as the study "
+                        "asks (else it is an error); cases without a "
+                        "summary.json run. For re-analysing a study, or for "
+                        "finishing one that was interrupted.");
       prm.declare_entry("Plot script",
                         "auto",
                         Patterns::Anything(),
@@ -139,6 +153,7 @@ namespace tribodyn
       ranks_per_case     = prm.get_integer("MPI ranks per case");
       write_case_fields  = prm.get_bool("Write case fields");
       plot_script        = prm.get("Plot script");
+      reuse_cases        = prm.get_bool("Reuse finished cases");
       prm.leave_subsection();
       if (repeats > 1)
         check_parameter(perturbation > 0,

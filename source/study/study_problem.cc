@@ -1,7 +1,9 @@
 // The study driver: cases, homogenization chaining, MPI groups, results.
 // Tables and plots: study_tables.cc.
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <fstream>
@@ -110,6 +112,8 @@ namespace tribodyn
           summaries.push_back(join_path(dir, "summary.json"));
           if (k % n_groups != std::min(color, n_groups - 1))
             continue;
+          if (parameters.reuse_cases && file_exists(summaries.back()))
+            continue;
           // The homogenization problem on the study's morphology parameters
           // (and the two phases of 'Material/Matrix', 'Heterogeneity').
           ParameterHandler hprm;
@@ -184,6 +188,128 @@ namespace tribodyn
         write_file_atomically(join_path(root_dir, "homogenized_stiffness.json"),
                               record.dump(2) + "\n");
     }
+
+
+    namespace
+    {
+      /// The statistics of one case from its mu_global samples in the
+      /// averaging window (spacing @p spacing, s) and its run summary.
+      CaseResult
+      case_statistics(const std::vector<double> &mu,
+                      const double               spacing,
+                      const contact::RunSummary &s)
+      {
+        // Base blocks of one period of mu_global's dominant oscillation
+        // (the pin's shear mode): each block averages whole cycles.
+        const unsigned int base_block
+          = s.dominant_frequency_hz > 0 ? std::max<long>(
+              1, std::lround(1. / (s.dominant_frequency_hz * spacing)))
+                                        : 1;
+        const statistics::MeanWithError b
+          = statistics::block_average(mu, 8, base_block);
+        CaseResult r;
+        r.mu_mean               = s.mu_global_mean;
+        r.mu_stderr             = b.standard_error;
+        r.mu_naive_stderr       = b.naive_standard_error;
+        r.plateau_found         = b.plateau_found;
+        r.stick                 = s.stick_fraction;
+        r.slip                  = s.slip_fraction;
+        r.separation            = s.separation_fraction;
+        r.M_stick               = s.M_stick_fraction;
+        r.M_slip                = s.M_slip_fraction;
+        r.M_separation          = s.M_separation_fraction;
+        r.mu_contact_mean       = s.mu_contact_mean;
+        r.dominant_frequency_hz = s.dominant_frequency_hz;
+        r.wall_time_s           = s.wall_time_s;
+        r.n_samples             = mu.size();
+        return r;
+      }
+
+
+      /// A case that finished earlier in @p dir: its summary and its
+      /// mu_global samples in [t0, t1] (friction.csv). Throws when the run
+      /// there does not match @p cp.
+      CaseResult
+      read_finished_case(const std::string                &dir,
+                         const contact::ContactParameters &cp,
+                         const double                      t0,
+                         const double                      t1)
+      {
+        const std::string file = join_path(dir, "summary.json");
+        std::ifstream     in(file);
+        nlohmann::json    j;
+        try
+          {
+            j = nlohmann::json::parse(in);
+          }
+        catch (const std::exception &e)
+          {
+            throw InputError("'Study/Reuse finished cases': cannot read " + file
+                             + " (" + e.what()
+                             + "). Delete that case's directory to run it "
+                               "again.");
+          }
+        auto same
+          = [&](const char *key, const double wanted, const double got) {
+              if (std::abs(got - wanted) > 1e-9 * std::abs(wanted))
+                throw InputError(
+                  "'Study/Reuse finished cases': the run in " + dir + " has "
+                  + key + " = " + format_number(got) + ", the study asks "
+                  + format_number(wanted)
+                  + ". Delete that case's directory (or set 'Reuse finished "
+                    "cases' to false) to run it again.");
+            };
+        same("pressure", cp.loading.pressure, j.at("pressure").get<double>());
+        same("dt", cp.time.time_step, j.at("dt").get<double>());
+        same("end_time", cp.time.end_time, j.at("end_time").get<double>());
+        same("averaging_window[0]",
+             t0,
+             j.at("averaging_window").at(0).get<double>());
+        same("averaging_window[1]",
+             t1,
+             j.at("averaging_window").at(1).get<double>());
+        contact::RunSummary s;
+        s.mu_global_mean        = j.at("mu_global_mean").get<double>();
+        s.mu_contact_mean       = j.at("mu_contact_mean").get<double>();
+        s.dominant_frequency_hz = j.at("dominant_frequency_hz").get<double>();
+        s.stick_fraction        = j.at("stick_fraction").get<double>();
+        s.slip_fraction         = j.at("slip_fraction").get<double>();
+        s.separation_fraction   = j.at("separation_fraction").get<double>();
+        s.M_stick_fraction = j.at("point_M").at("stick_fraction").get<double>();
+        s.M_slip_fraction  = j.at("point_M").at("slip_fraction").get<double>();
+        s.M_separation_fraction
+          = j.at("point_M").at("separation_fraction").get<double>();
+        s.wall_time_s = j.at("wall_time_s").get<double>();
+
+        // mu_global column of friction.csv
+        const std::string csv_file = join_path(dir, "friction.csv");
+        std::ifstream     csv(csv_file);
+        std::string       line;
+        std::getline(csv, line);
+        const auto header = dealii::Utilities::split_string_list(line, ',');
+        const auto it = std::find(header.begin(), header.end(), "mu_global");
+        if (!csv || header.empty() || header[0] != "time" || it == header.end())
+          throw InputError("'Study/Reuse finished cases': " + csv_file
+                           + " is missing or has no time and mu_global "
+                             "columns. Delete that case's directory to run it "
+                             "again.");
+        const std::size_t   column = it - header.begin();
+        std::vector<double> mu, times;
+        while (std::getline(csv, line))
+          {
+            const auto fields = dealii::Utilities::split_string_list(line, ',');
+            if (fields.size() != header.size())
+              break; // a partly written last line
+            const double t = std::stod(fields[0]);
+            times.push_back(t);
+            if (t >= t0 && t <= t1)
+              mu.push_back(std::stod(fields[column]));
+          }
+        const double spacing
+          = times.size() > 1 ? times[1] - times[0] : cp.time.time_step;
+        return case_statistics(mu, spacing, s);
+      }
+    } // namespace
 
 
     contact::ContactParameters
@@ -266,46 +392,32 @@ namespace tribodyn
             }
           MPI_Barrier(group);
           const contact::ContactParameters cp = case_parameters(c);
-          contact::ContactProblem          problem(cp, cc);
-          problem.run();
-
-          // Blocking of mu_global over the averaging window.
-          const double        t0 = cp.output.average_start;
-          const double        t1 = cp.output.average_end < 0 ? cp.time.end_time
-                                                             : cp.output.average_end;
-          std::vector<double> mu;
-          for (const contact::Sample &s : problem.samples())
-            if (s.time >= t0 && s.time <= t1)
-              mu.push_back(s.mu_global);
-          // Base blocks of one period of mu_global's dominant oscillation
-          // (the pin's shear mode): each block averages whole cycles.
-          const contact::RunSummary &summary = problem.summary();
-          const auto                &series  = problem.samples();
-          const double               spacing = series.size() > 1
-                                                 ? series[1].time - series[0].time
-                                                 : cp.time.time_step;
-          const unsigned int         base_block
-            = summary.dominant_frequency_hz > 0 ? std::max<long>(
-                1, std::lround(1. / (summary.dominant_frequency_hz * spacing)))
-                                                : 1;
-          const statistics::MeanWithError b
-            = statistics::block_average(mu, 8, base_block);
-          const contact::RunSummary &s = summary;
-          CaseResult                 r;
-          r.mu_mean               = s.mu_global_mean;
-          r.mu_stderr             = b.standard_error;
-          r.mu_naive_stderr       = b.naive_standard_error;
-          r.plateau_found         = b.plateau_found;
-          r.stick                 = s.stick_fraction;
-          r.slip                  = s.slip_fraction;
-          r.separation            = s.separation_fraction;
-          r.M_stick               = s.M_stick_fraction;
-          r.M_slip                = s.M_slip_fraction;
-          r.M_separation          = s.M_separation_fraction;
-          r.mu_contact_mean       = s.mu_contact_mean;
-          r.dominant_frequency_hz = s.dominant_frequency_hz;
-          r.wall_time_s           = s.wall_time_s;
-          r.n_samples             = mu.size();
+          const double                     t0 = cp.output.average_start;
+          const double t1 = cp.output.average_end < 0 ? cp.time.end_time
+                                                      : cp.output.average_end;
+          CaseResult   r;
+          if (parameters.reuse_cases
+              && file_exists(join_path(cc.output_directory, "summary.json")))
+            {
+              if (group_root)
+                std::cout << "  reused: " << cc.output_directory << std::endl;
+              r = read_finished_case(cc.output_directory, cp, t0, t1);
+            }
+          else
+            {
+              contact::ContactProblem problem(cp, cc);
+              problem.run();
+              // Blocking of mu_global over the averaging window.
+              std::vector<double> mu;
+              for (const contact::Sample &s : problem.samples())
+                if (s.time >= t0 && s.time <= t1)
+                  mu.push_back(s.mu_global);
+              const auto  &series  = problem.samples();
+              const double spacing = series.size() > 1
+                                       ? series[1].time - series[0].time
+                                       : cp.time.time_step;
+              r = case_statistics(mu, spacing, problem.summary());
+            }
           if (group_root)
             r.to(&local[i * CaseResult::size]);
         }

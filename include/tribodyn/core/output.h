@@ -22,6 +22,10 @@ namespace tribodyn
   void
   create_output_directory(const std::string &directory);
 
+  /// Is @p path an existing regular file?
+  bool
+  file_exists(const std::string &path);
+
   /// Join a directory and a file name.
   std::string
   join_path(const std::string &directory, const std::string &file);

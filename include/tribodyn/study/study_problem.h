@@ -37,6 +37,8 @@ namespace tribodyn
       unsigned int ranks_per_case     = 1;
       bool         write_case_fields  = false;
       std::string  plot_script        = "auto";
+      /// Take finished cases from their files (see the parameter).
+      bool reuse_cases = false;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
