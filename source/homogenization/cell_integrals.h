@@ -6,7 +6,10 @@
 #define tribodyn_source_homogenization_cell_integrals_h
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <tribodyn/homogenization/cell_problem.h>
@@ -86,6 +89,38 @@ namespace tribodyn
             integrals.measure += JxW;
           }
         return integrals;
+      }
+
+
+      /// Call @p f(cell, integrals) for every locally owned cell of
+      /// @p dof_handler with the integrals of integrate_cell() (Gauss
+      /// quadrature of degree + 1 points per direction).
+      template <typename F>
+      void
+      for_each_owned_cell_integral(
+        const dealii::DoFHandler<2>                 &dof_handler,
+        const dealii::FiniteElement<2>              &fe,
+        const unsigned int                           degree,
+        const std::vector<IsotropicElasticMaterial> &phases,
+        const TrilinosWrappers::MPI::Vector         &solution,
+        const VoigtVector                           &macro_strain,
+        const F                                     &f)
+      {
+        const dealii::QGauss<2> quadrature(degree + 1);
+        FEValues<2>             fe_values(
+          fe, quadrature, dealii::update_gradients | dealii::update_JxW_values);
+        std::vector<SymmetricTensor<2, 2>> strains(quadrature.size());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              fe_values.reinit(cell);
+              f(cell,
+                integrate_cell(fe_values,
+                               solution,
+                               macro_strain,
+                               phases[cell->material_id()],
+                               strains));
+            }
       }
     } // namespace internal
   }   // namespace homogenization

@@ -18,7 +18,7 @@ namespace tribodyn
     using namespace dealii;
     using internal::AffineDisplacement;
     using internal::CellIntegrals;
-    using internal::integrate_cell;
+    using internal::for_each_owned_cell_integral;
 
 
     void
@@ -51,43 +51,35 @@ namespace tribodyn
       std::array<Vector<float>, 9> cell_data;
       for (auto &v : cell_data)
         v.reinit(n_cells);
-      const QGauss<2>                    quadrature(parameters.fe_degree + 1);
-      FEValues<2>                        fe_values(fe,
-                            quadrature,
-                            update_gradients | update_JxW_values);
-      std::vector<SymmetricTensor<2, 2>> strains(quadrature.size());
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            fe_values.reinit(cell);
-            const CellIntegrals integrals
-              = integrate_cell(fe_values,
-                               solution,
-                               macro_strain,
-                               phases[cell->material_id()],
-                               strains);
-            const VoigtVector mean_eps   = integrals.strain / integrals.measure;
-            const VoigtVector mean_sigma = integrals.stress / integrals.measure;
-            const double mean_szz = integrals.stress_zz / integrals.measure;
-            const double sxx = mean_sigma[0], syy = mean_sigma[1],
-                         sxy = mean_sigma[2];
-            const double von_mises
-              = std::sqrt(0.5
-                            * ((sxx - syy) * (sxx - syy)
-                               + (syy - mean_szz) * (syy - mean_szz)
-                               + (mean_szz - sxx) * (mean_szz - sxx))
-                          + 3 * sxy * sxy);
-            const unsigned int k = cell->active_cell_index();
-            cell_data[0][k]      = sxx;
-            cell_data[1][k]      = syy;
-            cell_data[2][k]      = sxy;
-            cell_data[3][k]      = mean_szz;
-            cell_data[4][k]      = von_mises;
-            cell_data[5][k]      = mean_eps[0];
-            cell_data[6][k]      = mean_eps[1];
-            cell_data[7][k]      = mean_eps[2];
-            cell_data[8][k]      = cell->material_id();
-          }
+      for_each_owned_cell_integral(
+        dof_handler,
+        fe,
+        parameters.fe_degree,
+        phases,
+        solution,
+        macro_strain,
+        [&](const auto &cell, const CellIntegrals &integrals) {
+          const VoigtVector mean_eps   = integrals.strain / integrals.measure;
+          const VoigtVector mean_sigma = integrals.stress / integrals.measure;
+          const double      mean_szz = integrals.stress_zz / integrals.measure;
+          const double      sxx = mean_sigma[0], syy = mean_sigma[1],
+                       sxy       = mean_sigma[2];
+          const double von_mises = std::sqrt(
+            0.5
+              * ((sxx - syy) * (sxx - syy) + (syy - mean_szz) * (syy - mean_szz)
+                 + (mean_szz - sxx) * (mean_szz - sxx))
+            + 3 * sxy * sxy);
+          const unsigned int k = cell->active_cell_index();
+          cell_data[0][k]      = sxx;
+          cell_data[1][k]      = syy;
+          cell_data[2][k]      = sxy;
+          cell_data[3][k]      = mean_szz;
+          cell_data[4][k]      = von_mises;
+          cell_data[5][k]      = mean_eps[0];
+          cell_data[6][k]      = mean_eps[1];
+          cell_data[7][k]      = mean_eps[2];
+          cell_data[8][k]      = cell->material_id();
+        });
 
       DataOut<2> data_out;
       data_out.attach_dof_handler(dof_handler);

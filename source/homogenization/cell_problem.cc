@@ -29,7 +29,7 @@ namespace tribodyn
     using namespace dealii;
     using internal::AffineDisplacement;
     using internal::CellIntegrals;
-    using internal::integrate_cell;
+    using internal::for_each_owned_cell_integral;
 
     std::string
     to_string(const BoundaryCondition bc)
@@ -571,30 +571,23 @@ namespace tribodyn
       const VoigtVector macro_strain
         = strain_driven ? unit_load(load_case) : VoigtVector();
 
-      const QGauss<2>                    quadrature(parameters.fe_degree + 1);
-      FEValues<2>                        fe_values(fe,
-                            quadrature,
-                            update_gradients | update_JxW_values);
-      std::vector<SymmetricTensor<2, 2>> strains(quadrature.size());
       // Sums: stress (3), strain (3), sigma_zz (1).
       std::vector<double> sums(7, 0.);
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            fe_values.reinit(cell);
-            const CellIntegrals integrals
-              = integrate_cell(fe_values,
-                               solution,
-                               macro_strain,
-                               phases[cell->material_id()],
-                               strains);
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                sums[i] += integrals.stress[i];
-                sums[3 + i] += integrals.strain[i];
-              }
-            sums[6] += integrals.stress_zz;
-          }
+      for_each_owned_cell_integral(dof_handler,
+                                   fe,
+                                   parameters.fe_degree,
+                                   phases,
+                                   solution,
+                                   macro_strain,
+                                   [&](const auto &,
+                                       const CellIntegrals &integrals) {
+                                     for (unsigned int i = 0; i < 3; ++i)
+                                       {
+                                         sums[i] += integrals.stress[i];
+                                         sums[3 + i] += integrals.strain[i];
+                                       }
+                                     sums[6] += integrals.stress_zz;
+                                   });
       Utilities::MPI::sum(sums, mpi_communicator, sums);
       const double   area = morphology.width() * morphology.height();
       LoadCaseResult r;

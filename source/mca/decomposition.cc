@@ -58,9 +58,16 @@ namespace tribodyn
       // direction (then all partners of an automaton lie in the 27 cells
       // around it) and should be as close to it as possible (the search
       // volume and the ghost layer grow with the cell size). The coarse mesh
-      // (the p4est trees) is replicated on every rank, so it stays small:
-      // the most refined grid whose widest cell is within 10 % of the best
-      // achievable with at most 4096 trees.
+      // (the p4est trees) is replicated on every rank, so it stays small,
+      // and the fewer the trees the better the partition: deal.II orders the
+      // trees for p4est hierarchically (SparsityTools::reorder_hierarchical),
+      // so with many trees the ranks' borders follow that ordering and are
+      // jagged, while within a tree p4est's Morton curve cuts along cell
+      // planes. (The 10^6-automaton cube: 9^3 trees of 8^3 cells gave 0.111
+      // ghosts per owned automaton on 2 ranks, one tree of 64^3 slightly
+      // wider cells 0.032.) Hence: the grid with the fewest trees whose
+      // widest cell is within 15 % of the best achievable with at most 4096
+      // trees.
       std::array<double, 3>       L;
       std::array<unsigned int, 3> n_max;
       for (unsigned int c = 0; c < 3; ++c)
@@ -85,7 +92,7 @@ namespace tribodyn
       const double best = *std::min_element(width.begin(), width.end());
       level             = 0;
       for (unsigned int l = 0; l < width.size(); ++l)
-        if (width[l] <= 1.1 * best)
+        if (width[l] <= 1.15 * best)
           level = l;
       for (unsigned int c = 0; c < 3; ++c)
         trees[c] = n_max[c] >> level;

@@ -195,28 +195,6 @@ namespace tribodyn
                           + " FCC cells of a = d sqrt(2) = " + format_number(a)
                           + " m (limit 1e10): shrink the box or enlarge "
                             "'Geometry/Automaton size'.");
-        // Found by the parameter fuzzer: a box that, filled, needs more
-        // memory per rank than the whole machine has would only thrash in
-        // the set-up (about 1 KB per automaton, 4 automata per FCC cell).
-        {
-          const double n_ranks
-            = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-          const double per_rank = n_fcc_cells * 4 * 1000. / n_ranks;
-          const double installed
-            = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-          check_parameter(installed <= 0 || per_rank <= installed,
-                          "Geometry/Domain lower and Domain upper",
-                          "the box holds " + format_number(n_fcc_cells)
-                            + " FCC cells of a = d sqrt(2) = "
-                            + format_number(a) + " m; filled, that is about "
-                            + format_number(per_rank / 1e9) + " GB per rank on "
-                            + format_number(n_ranks)
-                            + " rank(s), more than this machine's "
-                            + format_number(installed / 1e9)
-                            + " GB: shrink the box, enlarge "
-                              "'Geometry/Automaton size', or run on more "
-                              "ranks (nodes).");
-        }
         bodies.clear();
         for (const std::string &entry : split(prm.get("Bodies"), ';'))
           {
@@ -325,6 +303,36 @@ namespace tribodyn
       generate_inclusion_layout();
     }
 
+
+    void
+    GeometryParameters::check_memory_per_rank(const unsigned int n_ranks) const
+    {
+      // Found by the parameter fuzzer: a box that, filled, needs more memory
+      // per rank than the whole machine has would only thrash in the set-up
+      // (about 1 KB per automaton, 4 automata per FCC cell). Checked when a
+      // run starts (not at parsing: tribodyn --partition-report reports
+      // scenes of any size for any number of ranks).
+      const double a           = automaton_size * std::sqrt(2.);
+      double       n_fcc_cells = 1;
+      for (unsigned int d = 0; d < 3; ++d)
+        n_fcc_cells *= (domain_upper[d] - domain_lower[d]) / a;
+      const double per_rank = n_fcc_cells * 4 * 1000. / n_ranks;
+      const double installed
+        = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+      check_parameter(installed <= 0 || per_rank <= installed,
+                      "Geometry/Domain lower and Domain upper",
+                      "the box holds " + format_number(n_fcc_cells)
+                        + " FCC cells of a = d sqrt(2) = " + format_number(a)
+                        + " m; filled, that is about "
+                        + format_number(per_rank / 1e9) + " GB per rank on "
+                        + format_number(n_ranks)
+                        + " rank(s), more than this machine's "
+                        + format_number(installed / 1e9)
+                        + " GB: shrink the box, enlarge "
+                          "'Geometry/Automaton size', or run on more ranks "
+                          "(nodes; tribodyn --partition-report N FILE.prm "
+                          "gives the memory per rank on N ranks).");
+    }
 
   } // namespace mca
 } // namespace tribodyn

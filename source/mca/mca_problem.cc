@@ -177,6 +177,7 @@ namespace tribodyn
       const std::string         &out_dir = context.output_directory;
       const Parameters          &p       = parameters;
 
+      p.geometry.check_memory_per_rank(n_ranks);
       AutomatonSystem system(p, comm);
       {
         dealii::TimerOutput::Scope scope(timer, "setup (packing, pair list)");

@@ -192,6 +192,11 @@ namespace tribodyn
       void
       parse_parameters(dealii::ParameterHandler       &prm,
                        const std::vector<std::string> &material_names);
+      /// Refuse (InputError) a box that, filled, needs more memory per rank
+      /// on @p n_ranks ranks than this machine has (checked when a run
+      /// starts).
+      void
+      check_memory_per_rank(const unsigned int n_ranks) const;
     };
 
 
