@@ -5,12 +5,11 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
-#include <iomanip>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/contact/contact_solver.h>
+#include <tribodyn/core/errors.h>
 
 namespace tribodyn_test
 {
@@ -59,15 +58,6 @@ namespace tribodyn_test
     }
   };
 
-  /// @p x with all its digits (std::to_string would print 5e-9 as 0.000000).
-  inline std::string
-  number_string(const double x)
-  {
-    std::ostringstream s;
-    s << std::setprecision(17) << x;
-    return s.str();
-  }
-
   /// Parameters of a 1 x 8 mm column dropped at 1 m/s on the rigid plane at
   /// rest (frictionless, undamped, no pressure, mesh 0.1 mm): the 1D impact
   /// of the tests contact_bar_impact and contact_anisotropic_impact.
@@ -95,9 +85,9 @@ namespace tribodyn_test
       end
       subsection Time integration
         set Time step = )"
-           + number_string(time_step) + R"(
+           + format_number(time_step) + R"(
         set End time = )"
-           + number_string(end_time) + R"(
+           + format_number(end_time) + R"(
         set Damping coefficient = 0
       end
       subsection Contact
