@@ -457,15 +457,21 @@ namespace tribodyn
 
 
   RunHealth
-  agree_on_health(const double local_badness, const MPI_Comm comm)
+  agree_on_health(const double   local_badness,
+                  const MPI_Comm comm,
+                  double        *shared_max)
   {
-    double values[2] = {local_badness >= 0 ? local_badness : 1e300,
-                        static_cast<double>(received_signal)};
+    double values[3] = {local_badness >= 0 ? local_badness : 1e300,
+                        static_cast<double>(received_signal),
+                        shared_max ? *shared_max : 0.};
     if (dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
-      MPI_Allreduce(MPI_IN_PLACE, values, 2, MPI_DOUBLE, MPI_MAX, comm);
+      MPI_Allreduce(
+        MPI_IN_PLACE, values, shared_max ? 3 : 2, MPI_DOUBLE, MPI_MAX, comm);
     RunHealth h;
     h.badness = values[0];
     h.signal  = static_cast<int>(values[1]);
+    if (shared_max)
+      *shared_max = values[2];
     return h;
   }
 } // namespace tribodyn

@@ -253,20 +253,15 @@ namespace tribodyn
     {
       // Rebuild the pair list when an automaton moved more than skin/2.
       {
-        double max_disp2 = 0;
-        for (unsigned int k = 0; k < n_owned; ++k)
+        double max_disp2 = agreed_displacement2;
+        if (max_disp2 < 0)
           {
-            double d2 = 0;
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                const double e = x[k][c] - x_at_rebuild[k][c];
-                d2 += e * e;
-              }
-            max_disp2 = std::max(max_disp2, d2);
+            max_disp2 = displacement_since_rebuild();
+            if (n_ranks > 1)
+              max_disp2 = dealii::Utilities::MPI::max(max_disp2, comm);
           }
-        const double limit = 0.5 * prm.interaction.skin * d;
-        if (n_ranks > 1)
-          max_disp2 = dealii::Utilities::MPI::max(max_disp2, comm);
+        agreed_displacement2 = -1;
+        const double limit   = 0.5 * prm.interaction.skin * d;
         if (max_disp2 > limit * limit)
           rebuild(false);
       }
@@ -292,6 +287,32 @@ namespace tribodyn
       ++n_steps_done;
       // Finiteness and growth: checked by the driver after each step
       // (count_unstable_automata(), source/mca/stability.cc).
+    }
+
+
+    double
+    AutomatonSystem::displacement_since_rebuild() const
+    {
+      double max_disp2 = 0;
+      for (unsigned int k = 0; k < n_owned; ++k)
+        {
+          double d2 = 0;
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              const double e = x[k][c] - x_at_rebuild[k][c];
+              d2 += e * e;
+            }
+          max_disp2 = std::max(max_disp2, d2);
+        }
+      return max_disp2;
+    }
+
+
+    void
+    AutomatonSystem::set_agreed_displacement_since_rebuild(
+      const double max_displacement2)
+    {
+      agreed_displacement2 = max_displacement2;
     }
 
 

@@ -413,10 +413,15 @@ namespace tribodyn
           system.step();
           if (pulse)
             pulse->record(system.time());
-          // Every step: finiteness and speed of the automata, and signals,
-          // agreed by all ranks (one small MPI_Allreduce).
+          // Every step: finiteness and speed of the automata, signals and
+          // the displacement that decides the next step's pair-list
+          // rebuild, agreed by all ranks in one small MPI_Allreduce.
+          double displacement2 = system.displacement_since_rebuild();
           const RunHealth health
-            = agree_on_health(system.count_unstable_automata(v_limit), comm);
+            = agree_on_health(system.count_unstable_automata(v_limit),
+                              comm,
+                              &displacement2);
+          system.set_agreed_displacement_since_rebuild(displacement2);
           if (health.badness > 0)
             {
               keep_friction_series();

@@ -81,6 +81,9 @@ namespace tribodyn
     void
     AutomatonSystem::rebuild(const bool initial)
     {
+      // a displacement agreed before this rebuild is measured from the
+      // previous one
+      agreed_displacement2 = -1;
       if (!initial)
         migrate();
       order_owned_automata();

@@ -162,7 +162,9 @@ namespace tribodyn
   /**
    * Health of a run as agreed by all ranks at a check: the largest
    * "badness" of the ranks (0: fine) and the interrupt signal if any rank
-   * received one. One MPI_Allreduce (none on one rank).
+   * received one. One MPI_Allreduce (none on one rank). A caller with one
+   * more quantity to agree on by its maximum passes it in @p shared_max,
+   * which is replaced by the ranks' maximum in the same reduction.
    */
   struct RunHealth
   {
@@ -170,7 +172,9 @@ namespace tribodyn
     int    signal  = 0;
   };
   RunHealth
-  agree_on_health(const double local_badness, const MPI_Comm comm);
+  agree_on_health(const double   local_badness,
+                  const MPI_Comm comm,
+                  double        *shared_max = nullptr);
 } // namespace tribodyn
 
 #endif

@@ -168,6 +168,18 @@ namespace tribodyn
       void
       step();
 
+      /// Squared largest displacement (m^2) of the owned automata since the
+      /// last pair-list rebuild: local to the rank. step() rebuilds the
+      /// pair list when the ranks' largest exceeds (skin d / 2)^2.
+      double
+      displacement_since_rebuild() const;
+      /// The ranks' largest displacement_since_rebuild(), agreed by the
+      /// caller in a reduction of its own (the driver's health check after
+      /// each step): the next step() uses it instead of a reduction of its
+      /// own, one synchronisation of the ranks less per step.
+      void
+      set_agreed_displacement_since_rebuild(const double max_displacement2);
+
       // ---- stability and checkpoints (source/mca/stability.cc,
       // source/mca/checkpoint.cc)
       /// Owned automata whose velocity or rotation speed |w| d/2 is not
@@ -635,6 +647,9 @@ namespace tribodyn
 
       double                          dt = 0, critical_dt = 0, current_time = 0;
       unsigned long                   n_steps_done  = 0;
+      /// set_agreed_displacement_since_rebuild()'s value, for the next
+      /// step only (negative: not given, step() reduces on its own)
+      double agreed_displacement2 = -1;
       unsigned long long              n_global      = 0;
       unsigned int                    rebuild_count = 0;
       std::vector<unsigned long long> group_size;
