@@ -2,7 +2,7 @@
 #include <cmath>
 #include <random>
 #include <tribodyn/core/errors.h>
-#include <tribodyn/mca/automaton_system.h>
+#include <tribodyn/mca/packing.h>
 #include <tribodyn/mca/inclusions.h>
 
 namespace tribodyn

@@ -12,7 +12,9 @@
 #include <functional>
 #include <memory>
 #include <tribodyn/mca/decomposition.h>
+#include <tribodyn/mca/packing.h>
 #include <tribodyn/mca/parameters.h>
+#include <tribodyn/mca/system_figures.h>
 #include <tribodyn/mca/vector_algebra.h>
 #include <vector>
 
@@ -29,76 +31,6 @@ namespace tribodyn
 {
   namespace mca
   {
-
-    /// One automaton of the packing.
-    struct PackedAutomaton
-    {
-      Point3        position;
-      std::uint32_t id       = 0; ///< index of the FCC lattice site
-      unsigned char material = 0;
-      unsigned char body     = 0;
-      /// 1: in a contacting part of Geometry/Inclusions; 2: in a part and
-      /// converted by an inclusion (cylinder or void: voids are not added).
-      unsigned char part = 0;
-    };
-
-    /**
-     * FCC packing of the bodies with the regions applied, restricted to the
-     * automata whose (final) position lies in the box [@p lower, @p upper):
-     * the lattice sites of that box only are enumerated, so that each rank
-     * packs its own cells. The id of an automaton is the index of its
-     * lattice site (the same on any partition). Regions are tested with
-     * their periodic images.
-     */
-    void
-    pack_box(const GeometryParameters                           &geometry,
-             const Point3                                       &lower,
-             const Point3                                       &upper,
-             const std::function<void(const PackedAutomaton &)> &add);
-
-    /**
-     * Largest rise max_{x,y} [h(x, y) - h(x, y - @p shift_y)] of the rough
-     * surface of @p geometry over its shifted copy (0 without a rough
-     * interface): the upper body of the staged friction loading, shifted by
-     * @p shift_y and lifted by more than this plus d, touches nowhere.
-     */
-    double
-    rough_surface_rise(const GeometryParameters &geometry,
-                       const double              shift_y);
-
-    /// The whole packing (tests and small scenes), in id order.
-    std::vector<PackedAutomaton>
-    pack_automata(const GeometryParameters &geometry,
-                  const unsigned int        n_materials);
-
-    /// Global figures of the current state (summed over ranks).
-    struct SystemEnergies
-    {
-      double             kinetic             = 0;
-      double             elastic             = 0;
-      double             plastic_work        = 0;
-      double             friction_work       = 0;
-      unsigned long long n_bonded            = 0;
-      unsigned long long n_unbonded_contacts = 0;
-      /// Work of the boundary groups (applied forces and prescribed
-      /// velocities, damping excluded) and energy removed by damping, both
-      /// since the start (see AutomatonSystem::step()).
-      double load_work   = 0;
-      double damped_work = 0;
-      /// Work of the pair forces and torques on the automata since the
-      /// start (minus the energy the pairs stored or dissipated).
-      double pair_work = 0;
-    };
-
-    /// Number of automata per rank for a partition (partition report).
-    struct PartitionFigures
-    {
-      unsigned long long n_automata = 0;
-      unsigned int       n_ranks    = 0;
-      double             owned_min = 0, owned_mean = 0, owned_max = 0;
-      double             ghosts_min = 0, ghosts_mean = 0, ghosts_max = 0;
-      double             bytes_per_rank_max = 0;
-    };
 
     /**
      * The automata and their pairs.
@@ -645,13 +577,13 @@ namespace tribodyn
       bool   moment_scene = false;
       double d = 0, r0 = 0, S = 0, V = 0, range = 0;
 
-      double                          dt = 0, critical_dt = 0, current_time = 0;
-      unsigned long                   n_steps_done  = 0;
+      double        dt = 0, critical_dt = 0, current_time = 0;
+      unsigned long n_steps_done = 0;
       /// set_agreed_displacement_since_rebuild()'s value, for the next
       /// step only (negative: not given, step() reduces on its own)
-      double agreed_displacement2 = -1;
-      unsigned long long              n_global      = 0;
-      unsigned int                    rebuild_count = 0;
+      double                          agreed_displacement2 = -1;
+      unsigned long long              n_global             = 0;
+      unsigned int                    rebuild_count        = 0;
       std::vector<unsigned long long> group_size;
 
       // --- automata (local: owned first, then ghosts)

@@ -1,0 +1,58 @@
+// The FCC packing of the automata (source/mca/packing.cc).
+#ifndef tribodyn_mca_packing_h
+#define tribodyn_mca_packing_h
+
+#include <cstdint>
+#include <functional>
+#include <tribodyn/mca/parameters.h>
+#include <tribodyn/mca/vector_algebra.h>
+#include <vector>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    /// One automaton of the packing.
+    struct PackedAutomaton
+    {
+      Point3        position;
+      std::uint32_t id       = 0; ///< index of the FCC lattice site
+      unsigned char material = 0;
+      unsigned char body     = 0;
+      /// 1: in a contacting part of Geometry/Inclusions; 2: in a part and
+      /// converted by an inclusion (cylinder or void: voids are not added).
+      unsigned char part = 0;
+    };
+
+    /**
+     * FCC packing of the bodies with the regions applied, restricted to the
+     * automata whose (final) position lies in the box [@p lower, @p upper):
+     * the lattice sites of that box only are enumerated, so that each rank
+     * packs its own cells. The id of an automaton is the index of its
+     * lattice site (the same on any partition). Regions are tested with
+     * their periodic images.
+     */
+    void
+    pack_box(const GeometryParameters                           &geometry,
+             const Point3                                       &lower,
+             const Point3                                       &upper,
+             const std::function<void(const PackedAutomaton &)> &add);
+
+    /**
+     * Largest rise max_{x,y} [h(x, y) - h(x, y - @p shift_y)] of the rough
+     * surface of @p geometry over its shifted copy (0 without a rough
+     * interface): the upper body of the staged friction loading, shifted by
+     * @p shift_y and lifted by more than this plus d, touches nowhere.
+     */
+    double
+    rough_surface_rise(const GeometryParameters &geometry,
+                       const double              shift_y);
+
+    /// The whole packing (tests and small scenes), in id order.
+    std::vector<PackedAutomaton>
+    pack_automata(const GeometryParameters &geometry,
+                  const unsigned int        n_materials);
+  } // namespace mca
+} // namespace tribodyn
+
+#endif
