@@ -3,6 +3,8 @@
 // with the plastic correction, contact constraints of unbonded pairs,
 // forces and torques; then bond breaking and formation.
 
+#include "pair_moment_law.h"
+
 #include <algorithm>
 #include <cmath>
 #include <tribodyn/mca/automaton_system.h>
@@ -131,6 +133,8 @@ namespace tribodyn
       const unsigned int n_pairs = pi.size();
       const double       mu      = prm.interaction.friction_coefficient;
       const double       inv_r0  = 1. / r0;
+      // radius of the circular contact face of area S (moment limits)
+      const double face_radius = std::sqrt(S / M_PI);
       if constexpr (plastic)
         sum_qs.assign(n_local, 0);
       dsm.assign(n_local, 0);
@@ -245,6 +249,9 @@ namespace tribodyn
                       tau.set(p, {{0, 0, 0}});
                       tau_scale_i[p] = tau_scale_j[p] = 1;
                       q_i[p]                          = r / 2;
+                      if constexpr (rot)
+                        if (moment_scene)
+                          pair_moment.set(p, {{0, 0, 0}});
                       continue;
                     }
                   if (!in_contact[p])
@@ -258,6 +265,33 @@ namespace tribodyn
                     }
                 }
               const double qi = q_i[p], qj = r_prev - qi;
+
+              // Relative-rotation moment K_ij (pair_moment_law.h): its trial
+              // update from this step's kinematics, gathered above; pass C
+              // limits it and adds its torques.
+              if constexpr (rot)
+                if (moment_scene)
+                  {
+                    Vec3 n_old, wi, wj;
+                    for (unsigned int c = 0; c < 3; ++c)
+                      {
+                        n_old[c] = (b_dnew[c][b] - b_du[c][b]) * b_inv_ro[b];
+                        wi[c]    = b_wi[c][b];
+                        wj[c]    = b_wj[c][b];
+                      }
+                    const RotationSprings &ks
+                      = rotation_springs[mat[i] * n_materials + mat[j]];
+                    pair_moment.set(p,
+                                    pair_moment_law::trial(pair_moment[p],
+                                                           n_old,
+                                                           n,
+                                                           nm,
+                                                           wi,
+                                                           wj,
+                                                           step_dt,
+                                                           ks.twist,
+                                                           ks.bend));
+                  }
 
               // Tangential: relative displacement of the contact points.
               if constexpr (rot)
@@ -505,17 +539,36 @@ namespace tribodyn
                     for (unsigned int c = 0; c < 3; ++c)
                       torque[j][c] += qj * nxf[c];
                 }
+              // Relative-rotation moment K_ij: an unbonded contact's limit
+              // from its final normal stress (the slip work is friction
+              // work, counted by side i's owner), and its torques.
+              if constexpr (rot)
+                if (moment_scene)
+                  {
+                    Vec3 K = pair_moment[p];
+                    if (!bonded[p])
+                      {
+                        const RotationSprings &ks
+                          = rotation_springs[mat[i] * n_materials + mat[j]];
+                        const double slip_work
+                          = pair_moment_law::limit_unbonded(
+                            K, n, -S * sn, mu, face_radius, ks.twist, ks.bend);
+                        if (owned(i))
+                          friction_work += slip_work;
+                        pair_moment.set(p, K);
+                      }
+                    if (owned(i))
+                      for (unsigned int c = 0; c < 3; ++c)
+                        torque[i][c] += K[c];
+                    if (owned(j))
+                      for (unsigned int c = 0; c < 3; ++c)
+                        torque[j][c] -= K[c];
+                  }
               // the final stress tensors, for the bond criteria
               if constexpr (bonds)
                 add_pair_stress(p, n, r, trial, false);
             }
         }
-
-      // Relative-rotation moments K_ij (pair_moments.cc), from this step's
-      // pair states, before its bond switching takes effect.
-      if constexpr (rot)
-        if (moment_scene)
-          relative_rotation_moments(step_dt);
 
       if constexpr (bonds)
         bond_switching<plastic>();

@@ -418,11 +418,9 @@ namespace tribodyn
       template <bool plastic>
       void
       bond_switching();
-      /// Relative-rotation moments K_ij of the interacting pairs, added to
-      /// the torques (pair_moments.cc; only when moment_scene).
-      void
-      relative_rotation_moments(const double step);
-      /// Elastic energy sum |K|^2 / 2k of the pairs counted by this rank.
+      /// Elastic energy sum |K|^2 / 2k of the relative-rotation moments
+      /// K_ij (updated in the pair kernel, pair_moment_law.h) of the pairs
+      /// counted by this rank.
       double
       pair_moment_energy() const;
       /// Pair vector x_j - x_i (with the cached periodic image shift).
