@@ -7,6 +7,7 @@ thickness and wall time.
 usage: friction_convergence.py --tribodyn build/tribodyn [--ranks 2]
            [--sizes 15e-9,10e-9,7.5e-9] [--courant 0.35,0.2]
            [--courant-size 10e-9] [--end-time T] [--work DIR] [--skip-runs]
+           [--reuse-finished]
 
 The physical scene is the same at every size: the box (16 FCC cells of
 a = d sqrt 2 at d = 7.5 nm, 169.7 nm) and the bodies' height (127.3 nm) are
@@ -82,9 +83,14 @@ def run_case(args, d, courant):
     name = "d%.3gnm_c%.3g" % (d * 1e9, courant)
     out = os.path.join(args.work, "out_" + name)
     prm = os.path.join(args.work, name + ".prm")
-    if not args.skip_runs:
+    text = make_prm(d, courant, args.end_time, out)
+    finished = os.path.exists(os.path.join(out, "summary.json")) and \
+        os.path.exists(prm) and open(prm).read() == text
+    if args.reuse_finished and finished:
+        print("reusing the finished run %s" % out, flush=True)
+    elif not args.skip_runs:
         with open(prm, "w") as f:
-            f.write(make_prm(d, courant, args.end_time, out))
+            f.write(text)
         command = ([] if args.ranks == 1 else ["mpirun", "-np", str(args.ranks)]) \
             + [args.tribodyn, prm]
         print("running %s ..." % " ".join(command), flush=True)
@@ -116,6 +122,9 @@ def main():
     parser.add_argument("--work", default="bench-mca-work/friction_convergence")
     parser.add_argument("--skip-runs", action="store_true",
                         help="only tabulate the summaries of earlier runs")
+    parser.add_argument("--reuse-finished", action="store_true",
+                        help="do not rerun a case whose work directory holds "
+                             "a finished run (summary.json) of the same prm")
     args = parser.parse_args()
     args.work = os.path.abspath(args.work)
     args.tribodyn = os.path.abspath(args.tribodyn)
