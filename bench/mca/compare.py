@@ -95,6 +95,18 @@ def spread(values):
     return " (%.3e .. %.3e over %d runs)" % (min(values), max(values), len(values))
 
 
+def print_efficiency(block, medians, runs):
+    """The two-rank efficiency of a block against one rank and against two
+    independent one-rank runs at once (medians, and the runs' ranges)."""
+    print("tribodyn  two independent 1-rank runs at once: %.3e automaton-steps/s each%s"
+          % (medians["pair"], spread(runs["pair"])))
+    print("tribodyn  1 -> 2 ranks parallel efficiency (%s block): %.0f %% (target >= 90); "
+          "two concurrent 1-rank runs reach %.0f %% of one alone (the machine's shared "
+          "caches and memory), so the decomposition's own efficiency is %.0f %%"
+          % (block, 100 * medians[2] / medians[1], 100 * medians["pair"] / medians[1],
+             100 * medians[2] / medians["pair"]))
+
+
 def tribodyn_friction_scene(args):
     """The friction scene of the examples, its output redirected to the work dir."""
     source = os.path.join(here, "..", "..", "prm", "mca", "two_body_friction.prm")
@@ -192,13 +204,7 @@ def main():
             print("tribodyn  %d automata, %d rank(s): %.3e automaton-steps/s per core%s"
                   % (n_block, ranks, rate, spread(runs[ranks])))
     if 1 in rates and 2 in rates:
-        print("tribodyn  two independent 1-rank runs at once: %.3e automaton-steps/s each%s"
-              % (rates["pair"], spread(runs["pair"])))
-        print("tribodyn  1 -> 2 ranks parallel efficiency (10^5 block): %.0f %% (target >= 90); "
-              "two concurrent 1-rank runs reach %.0f %% of one alone (the machine's shared "
-              "caches and memory), so the decomposition's own efficiency is %.0f %%"
-              % (100 * rates[2] / rates[1], 100 * rates["pair"] / rates[1],
-                 100 * rates[2] / rates["pair"]))
+        print_efficiency("10^5", rates, runs)
     if not lammps_runs:
         print("LAMMPS    not installed (apt-get install lammps): no side-by-side figure")
     else:
@@ -220,13 +226,7 @@ def main():
         for ranks in [1, 2]:
             print("tribodyn  %d automata, %d rank(s), 40 steps: %.3e automaton-steps/s per core%s"
                   % (s["n_automata"], ranks, large[ranks], spread(large_runs[ranks])))
-        print("tribodyn  two independent 1-rank runs at once: %.3e automaton-steps/s each%s"
-              % (large["pair"], spread(large_runs["pair"])))
-        print("tribodyn  1 -> 2 ranks parallel efficiency (10^6 block): %.0f %% (target >= 90); "
-              "two concurrent 1-rank runs reach %.0f %% of one alone (the machine's shared "
-              "caches and memory), so the decomposition's own efficiency is %.0f %%"
-              % (100 * large[2] / large[1], 100 * large["pair"] / large[1],
-                 100 * large[2] / large["pair"]))
+        print_efficiency("10^6", large, large_runs)
 
     if args.friction:
         friction = []

@@ -28,23 +28,14 @@ import json
 import os
 import sys
 
+from check_tools import finish, output_directory, report
+
 TOLERANCE = 0.05
 
-dirs = sorted(root for root, _, files in os.walk(sys.argv[1])
-              if "summary.json" in files)
-ok = len(dirs) == 1
-print(("PASS  " if ok else "FAIL  ") + "one output directory: %s" % dirs)
-if not ok:
-    sys.exit(1)
-with open(os.path.join(dirs[0], "summary.json")) as f:
+out = output_directory(sys.argv[1])
+with open(os.path.join(out, "summary.json")) as f:
     s = json.load(f)
 W = s["load_work"]
-
-
-def report(good, text):
-    global ok
-    ok = ok and good
-    print(("PASS  " if good else "FAIL  ") + text)
 
 
 report(W > 0, "the loads did work: %.6g J" % W)
@@ -66,9 +57,9 @@ if TOLERANCE is not None:
 else:
     print("INFO  energy balance: residual %.4g of the load work" % relative)
 for name in ("friction.csv", "layer.csv"):
-    report(os.path.exists(os.path.join(dirs[0], name)), name + " written")
+    report(os.path.exists(os.path.join(out, name)), name + " written")
 for key in ("mu_steady", "mu_steady_stderr", "steady_start_time",
             "quasi_fluid_layer_thickness", "quasi_fluid_layer_center",
             "inclusion_volume_fraction", "contact_time"):
     report(key in s, "summary.json has " + key)
-sys.exit(0 if ok else 1)
+finish()

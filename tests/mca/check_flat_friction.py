@@ -63,24 +63,14 @@ import math
 import os
 import sys
 
+from check_tools import finish, output_directory, report
+
 TOLERANCE = 0.01
 RISE_TOLERANCE = 0.02
 ENERGY_TOLERANCE = 0.01
 START = 0.25  # relative sliding (in periods) at which the averaging starts
 
-dirs = sorted(root for root, _, files in os.walk(sys.argv[1])
-              if "summary.json" in files)
-ok = len(dirs) == 1
-print(("PASS  " if ok else "FAIL  ") + "one output directory: %s" % dirs)
-if not ok:
-    sys.exit(1)
-out = dirs[0]
-
-
-def report(good, text):
-    global ok
-    ok = ok and good
-    print(("PASS  " if good else "FAIL  ") + text)
+out = output_directory(sys.argv[1])
 
 
 def parameter(name):
@@ -175,4 +165,4 @@ drag = (-sum(s["top_fy"][k] for k in window)
         / sum(s["top_fz"][k] for k in window))
 print("INFO  ratio of the mean forces %.4f (includes the drag of the damped "
       "loading layers, ~V)" % drag)
-sys.exit(0 if ok else 1)
+finish()

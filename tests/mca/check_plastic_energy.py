@@ -27,23 +27,12 @@ import json
 import os
 import sys
 
+from check_tools import finish, output_directory, report
+
 
 def load(directory):
-    dirs = sorted(root for root, _, files in os.walk(directory)
-                  if "summary.json" in files)
-    if len(dirs) != 1:
-        sys.exit("FAIL  one output directory in %s: %s" % (directory, dirs))
-    with open(os.path.join(dirs[0], "summary.json")) as f:
+    with open(os.path.join(output_directory(directory), "summary.json")) as f:
         return json.load(f)
-
-
-ok = True
-
-
-def report(good, text):
-    global ok
-    ok = ok and good
-    print(("PASS  " if good else "FAIL  ") + text)
 
 
 def residual(s):
@@ -86,4 +75,4 @@ if sys.argv[1] == "--pair":
            % (100 * bulk))
 else:
     check_run("slab", load(sys.argv[1]))
-sys.exit(0 if ok else 1)
+finish()

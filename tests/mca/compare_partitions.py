@@ -20,6 +20,8 @@ import os
 import re
 import sys
 
+from check_tools import finish, report
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from series_compare import largest_relative_difference  # noqa: E402
 
@@ -34,14 +36,6 @@ def output(n):
             if "summary.json" in files]
     return dirs[0] if dirs else None
 
-
-ok = True
-
-
-def report(good, text):
-    global ok
-    ok = ok and good
-    print(("PASS  " if good else "FAIL  ") + text)
 
 
 def ranks_near_interface(folder, z0):
@@ -89,4 +83,4 @@ if reference:
             owners = ranks_near_interface(folder, interface)
             report(len(owners) >= 2, "%d ranks: the contact interface is cut (ranks %s own automata "
                    "of the interface band)" % (n, sorted(owners)))
-sys.exit(0 if ok else 1)
+finish()
