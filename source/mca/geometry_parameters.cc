@@ -24,6 +24,20 @@ namespace tribodyn
 
     using namespace parameter_tools;
 
+    namespace
+    {
+      /// Number of FCC cells of side @p a in the box [@p lower, @p upper]
+      /// (not rounded: a size check).
+      double
+      box_fcc_cells(const Point3 &lower, const Point3 &upper, const double a)
+      {
+        double n = 1;
+        for (unsigned int d = 0; d < 3; ++d)
+          n *= (upper[d] - lower[d]) / a;
+        return n;
+      }
+    } // namespace
+
     // ------------------------------------------------------------------
     bool
     Region::contains(const Point3 &p) const
@@ -186,9 +200,7 @@ namespace tribodyn
 
         // The background mesh has cells of about the automaton size: a box
         // of more than 1e10 FCC cells (~4e10 automata) is a unit mistake.
-        double n_fcc_cells = 1;
-        for (unsigned int d = 0; d < 3; ++d)
-          n_fcc_cells *= (domain_upper[d] - domain_lower[d]) / a;
+        const double n_fcc_cells = box_fcc_cells(domain_lower, domain_upper, a);
         check_parameter(n_fcc_cells <= 1e10,
                         "Geometry/Domain lower and Domain upper",
                         "the box holds " + format_number(n_fcc_cells)
@@ -313,10 +325,8 @@ namespace tribodyn
       // run starts (not at parsing: tribodyn --partition-report reports
       // scenes of any size for any number of ranks).
       const double a           = automaton_size * std::sqrt(2.);
-      double       n_fcc_cells = 1;
-      for (unsigned int d = 0; d < 3; ++d)
-        n_fcc_cells *= (domain_upper[d] - domain_lower[d]) / a;
-      const double per_rank = n_fcc_cells * 4 * 1000. / n_ranks;
+      const double n_fcc_cells = box_fcc_cells(domain_lower, domain_upper, a);
+      const double per_rank    = n_fcc_cells * 4 * 1000. / n_ranks;
       const double installed
         = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
       check_parameter(installed <= 0 || per_rank <= installed,
