@@ -91,6 +91,9 @@ def run_case(args, d, courant):
     elif not args.skip_runs:
         with open(prm, "w") as f:
             f.write(text)
+        # an interrupted run must not look finished to --reuse-finished
+        if os.path.exists(os.path.join(out, "summary.json")):
+            os.remove(os.path.join(out, "summary.json"))
         command = ([] if args.ranks == 1 else ["mpirun", "-np", str(args.ranks)]) \
             + [args.tribodyn, prm]
         print("running %s ..." % " ".join(command), flush=True)
