@@ -58,7 +58,7 @@ namespace tribodyn
       // polar; the stiffness per unit area of the two halves in series,
       // k = k_i k_j / (k_i + k_j), is that of the normal and shear springs.
       const double lambda = prm.interaction.relative_rotation_stiffness;
-      moment_scene        = rotations && lambda > 0;
+      moment_scene        = prm.interaction.relative_rotation_on();
       if (moment_scene)
         for (const auto &k : springs)
           {

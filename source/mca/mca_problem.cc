@@ -59,7 +59,7 @@ namespace tribodyn
           << AutomatonSystem::bytes_per_owned_automaton
           << " B per owned automaton, "
           << AutomatonSystem::bytes_per_ghost_automaton << " B per ghost"
-          << (p.interaction.relative_rotation_stiffness > 0
+          << (p.interaction.relative_rotation_on()
                 ? ", + "
                     + std::to_string(static_cast<int>(
                       AutomatonSystem::bytes_per_automaton_moments))
@@ -416,7 +416,7 @@ namespace tribodyn
           // Every step: finiteness and speed of the automata, signals and
           // the displacement that decides the next step's pair-list
           // rebuild, agreed by all ranks in one small MPI_Allreduce.
-          double displacement2 = system.displacement_since_rebuild();
+          double          displacement2 = system.displacement_since_rebuild();
           const RunHealth health
             = agree_on_health(system.count_unstable_automata(v_limit),
                               comm,

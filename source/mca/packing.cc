@@ -2,8 +2,8 @@
 #include <cmath>
 #include <random>
 #include <tribodyn/core/errors.h>
-#include <tribodyn/mca/packing.h>
 #include <tribodyn/mca/inclusions.h>
+#include <tribodyn/mca/packing.h>
 
 namespace tribodyn
 {

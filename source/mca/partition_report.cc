@@ -175,11 +175,9 @@ namespace tribodyn
       };
       stats(owned, fig.owned_min, fig.owned_mean, fig.owned_max);
       stats(ghosts, fig.ghosts_min, fig.ghosts_mean, fig.ghosts_max);
-      const double moments
-        = prm.interaction.rotations
-              && prm.interaction.relative_rotation_stiffness > 0
-            ? bytes_per_automaton_moments
-            : 0.;
+      const double moments = prm.interaction.relative_rotation_on()
+                               ? bytes_per_automaton_moments
+                               : 0.;
       for (unsigned int r = 0; r < n_ranks; ++r)
         fig.bytes_per_rank_max
           = std::max(fig.bytes_per_rank_max,

@@ -212,6 +212,13 @@ namespace tribodyn
       /// K_ij of seed eq. (1) (doc/theory/mca.md §3): twisting lambda k J,
       /// bending lambda k I of the pair's contact face. 0: no K_ij.
       double relative_rotation_stiffness = 0;
+      /// The moments K_ij are on: a stiffness factor > 0 (parsing refuses
+      /// one without Rotations).
+      bool
+      relative_rotation_on() const
+      {
+        return rotations && relative_rotation_stiffness > 0;
+      }
       /// Fraction of the bond-breaking energy the plastic heat of an
       /// unbonded pair must reach to bond (seed: one half).
       double bond_formation_heat_fraction = 0.5;
