@@ -1,0 +1,118 @@
+"""Helpers shared by the plot scripts of scripts/ (not a script itself).
+
+A script imports it from its own directory:
+
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import plot_tools
+
+It reads what tribodyn writes into an output directory (CSV series,
+summary.json, parameters.prm), builds the argparse parser of a script from
+its docstring, and provides the few numerical helpers of the plots (running
+mean, padded axis limits). Only the standard library and Debian's
+python3-matplotlib.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import sys
+
+
+def pyplot():
+    """matplotlib.pyplot on the file-only Agg backend (no display)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def parser(doc):
+    """An ArgumentParser whose --help prints the script's whole docstring
+    (usage, inputs, outputs) unwrapped."""
+    return argparse.ArgumentParser(
+        description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+
+
+def fail(script, message):
+    """Exit with status 1 and 'SCRIPT: MESSAGE' on stderr."""
+    sys.exit("%s: %s" % (script, message))
+
+
+def number(text):
+    """float of a CSV cell; an empty cell is NaN."""
+    return float(text) if text.strip() else float("nan")
+
+
+def read_csv(path):
+    """Columns of a CSV file with a header line: name -> list of floats
+    ({} when the file has no rows). Raises OSError and ValueError."""
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        return {}
+    return {k: [number(r[k]) for r in rows] for k in rows[0]}
+
+
+def read_summary(directory, script):
+    """DIRECTORY/summary.json as a dict, or exit with a message."""
+    path = os.path.join(directory, "summary.json")
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        fail(script, "cannot read the results in '%s': %s" % (directory, e))
+
+
+def read_parameters(directory):
+    """The parameters of a run from DIRECTORY/parameters.prm (written by
+    tribodyn with every value): 'Subsection/Name' -> text, e.g.
+    'Materials/Steel/Young modulus'. {} when there is no such file."""
+    path = os.path.join(directory, "parameters.prm")
+    if not os.path.exists(path):
+        return {}
+    values, section = {}, []
+    with open(path) as f:
+        for line in f:
+            s = line.split("#", 1)[0].strip()
+            if s.startswith("subsection "):
+                section.append(s[len("subsection "):].strip())
+            elif s == "end" and section:
+                section.pop()
+            elif s.startswith("set ") and "=" in s:
+                name, value = s[4:].split("=", 1)
+                values["/".join(section + [name.strip()])] = value.strip()
+    return values
+
+
+def running_mean(values, n):
+    """Mean of the last N values (fewer at the start) at each index."""
+    n = max(1, int(n))
+    cumulative = [0.0]
+    for x in values:
+        cumulative.append(cumulative[-1] + x)
+    return [(cumulative[i + 1] - cumulative[max(0, i + 1 - n)])
+            / (i + 1 - max(0, i + 1 - n)) for i in range(len(values))]
+
+
+def padded_limits(values, fraction=0.12, minimum=None):
+    """(low, high) around the finite VALUES with FRACTION of their span as
+    margin on both sides; a zero span (one value) gets MINIMUM, or 10 % of
+    the value's magnitude (1 when it is 0), on both sides."""
+    finite = [v for v in values if v is not None and math.isfinite(v)]
+    if not finite:
+        return -1.0, 1.0
+    low, high = min(finite), max(finite)
+    span = high - low
+    if span > 0:
+        margin = fraction * span
+    elif minimum is not None:
+        margin = minimum
+    else:
+        margin = 0.1 * abs(low) or 1.0
+    return low - margin, high + margin
+
+
+def label_of(directory):
+    """Default legend label of a run: the name of its directory."""
+    return os.path.basename(os.path.normpath(directory))
