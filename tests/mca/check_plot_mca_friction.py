@@ -11,6 +11,9 @@ directories into a temporary folder, runs the script on both and checks:
 - the relative difference -5 % and its error bar
   0.95 * sqrt((0.003/0.38)^2 + (0.004/0.40)^2) = 1.2104 % printed, to the
   printed precision (1e-4 relative on the difference, 1e-2 on the error);
+- when the composite reached no quasi-steady regime (summary.json:
+  steady_state_found = false), no relative difference is printed but a
+  line saying so and naming the run;
 - a missing directory is refused with a non-zero exit and a message.
 """
 import json
@@ -22,7 +25,7 @@ import sys
 import tempfile
 
 
-def write_run(directory, mu, stderr, start, thickness):
+def write_run(directory, mu, stderr, start, thickness, found=True):
     os.makedirs(directory)
     with open(os.path.join(directory, "friction.csv"), "w") as f:
         f.write("time,normal_force,tangential_force,mu,mu_smoothed,"
@@ -41,6 +44,7 @@ def write_run(directory, mu, stderr, start, thickness):
                                     2e-9))
     with open(os.path.join(directory, "summary.json"), "w") as f:
         json.dump({"mu_steady": mu, "mu_steady_stderr": stderr,
+                   "steady_state_found": found,
                    "steady_start_time": start,
                    "quasi_fluid_layer_thickness": thickness}, f)
 
@@ -79,6 +83,22 @@ def main():
         print(("PASS" if ok else "FAIL")
               + "  relative difference %s %% +- %.4f %% printed"
               % (expected[0], expected[1]))
+        failures += not ok
+
+        drifting = os.path.join(tmp, "composite_drifting")
+        write_run(drifting, 0.38, 0.003, 380e-9, 15e-9, found=False)
+        r = subprocess.run([script, steel, drifting, "--reference", "steel",
+                            "--compare", "composite_drifting", "--out", out],
+                           capture_output=True, text=True)
+        print(r.stdout + r.stderr)
+        ok = (r.returncode == 0
+              and not re.search(r"relative difference .*: [-+0-9.e]+ %",
+                                r.stdout)
+              and "no relative difference composite_drifting vs steel: "
+              "composite_drifting reached no quasi-steady regime "
+              "(summary.json: steady_state_found = false)" in r.stdout)
+        print(("PASS" if ok else "FAIL") + "  no relative difference "
+              "without a quasi-steady regime")
         failures += not ok
 
         q = subprocess.run([script,
