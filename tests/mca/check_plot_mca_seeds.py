@@ -7,8 +7,11 @@ The script runs through its own #! line (Debian's matplotlib), as the study
 script runs it. Three seeds with relative differences -4 %, -6 %, -2 %:
 mean -4 %, standard error of the mean sqrt(((0)^2 + 2^2 + 2^2) / 2 / 3)
 = 1.1547 %. Checked: exit code 0, seeds.png written (non-empty), the mean
-and its error printed to the printed precision; a file without rows is
-refused with a non-zero exit and a message.
+and its error printed to the printed precision; a single seed (axes
+padded around it, seen on the PNG when the script was changed) is drawn
+with exit code 0 and no mean printed (it needs two seeds); --help exits
+with 0 and describes the input; a file without rows is refused with a
+non-zero exit and a message.
 """
 import os
 import re
@@ -42,6 +45,22 @@ with tempfile.TemporaryDirectory() as work:
     report(match is not None and abs(float(match.group(1)) + 4) < 0.005
            and abs(float(match.group(2)) - 1.1547) < 0.005,
            "mean -4.00 %% +- 1.15 %% printed: %s" % run.stdout.strip())
+    one = os.path.join(work, "one", "seeds.csv")
+    os.makedirs(os.path.dirname(one))
+    with open(one, "w") as f:
+        f.write(header)
+        f.write("1,0.485,0.024,2.2e-08,0.491,0.024,2.4e-08,0.013,0.011\n")
+    run = subprocess.run([script, one], capture_output=True, text=True)
+    png = os.path.join(work, "one", "seeds.png")
+    report(run.returncode == 0 and os.path.exists(png)
+           and "mean relative difference" not in run.stdout,
+           "one seed: exit code %d, seeds.png written, no mean printed"
+           % run.returncode)
+    run = subprocess.run([script, "--help"], capture_output=True, text=True)
+    report(run.returncode == 0 and "seeds.csv" in run.stdout
+           and "relative_difference" in run.stdout,
+           "--help exits with 0 and describes seeds.csv (exit code %d)"
+           % run.returncode)
     empty = os.path.join(work, "empty.csv")
     with open(empty, "w") as f:
         f.write(header)
