@@ -85,6 +85,14 @@ def read_parameters(directory):
     return values
 
 
+def body_material(prm):
+    """'Materials/<Name>/', the prefix of the parameters of the first body's
+    material (an MCA run's Geometry/Bodies ends each body with the name of
+    its material), or None."""
+    bodies = prm.get("Geometry/Bodies", "").split(";")[0].split()
+    return "Materials/%s/" % bodies[-1].capitalize() if bodies else None
+
+
 def running_mean(values, n):
     """Mean of the last N values (fewer at the start) at each index."""
     n = max(1, int(n))

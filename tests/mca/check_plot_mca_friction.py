@@ -4,8 +4,9 @@
     check_plot_mca_friction.py PATH/TO/plot_mca_friction
 
 The script runs through its own #! line (/usr/bin/python3, Debian's
-matplotlib), as users run it. Writes 'steel' (mu = 0.40 +- 0.004) and 'composite' (mu = 0.38 +- 0.003)
-directories into a temporary folder, runs the script on both and checks:
+matplotlib), as users run it. Writes 'steel' (mu = 0.40 +- 0.004) and
+'composite' (mu = 0.38 +- 0.003) directories into a temporary folder, runs
+the script on both and checks:
 - exit code 0, mu.png and layer.png written (non-empty);
 - each run's mu_steady +- stderr printed;
 - the relative difference -5 % and its error bar
