@@ -104,6 +104,9 @@ namespace tribodyn
       solver.setup();
       if (checkpoints_on)
         solver.enable_checkpoints(checkpoint, checkpoint_lines);
+      if (!context.output_directory.empty())
+        solver.set_output_claim(
+          [this](const OutputClaim how) { context.claim_output(how); });
       const unsigned long n_steps = static_cast<unsigned long>(
         std::ceil(parameters.time.end_time / solver.time_step() - 1e-9));
       pcout << "Pin: " << solver.material_description() << "\n"

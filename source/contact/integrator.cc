@@ -223,11 +223,22 @@ namespace tribodyn
                       << " s (step " << info.step << ")" << std::endl;
         }
       else
-        {
-          set_initial_state();
-          if (store)
-            store->discard();
-        }
+        set_initial_state();
+      const double        end_time = prm.time.end_time;
+      const unsigned long n_steps
+        = static_cast<unsigned long>(std::ceil(end_time / dt - 1e-9));
+      if (resumed && step_count >= n_steps)
+        throw InputError("Nothing to resume: the checkpoint is at step "
+                         + std::to_string(step_count)
+                         + " (t = " + format_number(step_count * dt)
+                         + " s), at or beyond 'Time integration/End time' = "
+                         + format_number(end_time)
+                         + " s. Raise the end time to continue the run.");
+      // Every check passed: the output directory may be touched from here.
+      if (output_claim)
+        output_claim(resumed ? OutputClaim::resume : OutputClaim::fresh);
+      if (store && !resumed)
+        store->discard();
       steps_at_start = step_count;
 
       std::unique_ptr<CsvWriter> friction_csv, point_csv, status_csv;
@@ -274,26 +285,18 @@ namespace tribodyn
                                                       "fields.pvd"),
                                             root);
           pvd->restore(loop.pvd);
+          if (!loop.pvd.empty())
+            pvd->write();
           if (prm.output.contact_face_interval > 0)
             open_contact_face_files(output_directory,
                                     resumed ? long(loop.face_rows) : -1);
         }
 
-      const double        end_time = prm.time.end_time;
-      const unsigned long n_steps
-        = static_cast<unsigned long>(std::ceil(end_time / dt - 1e-9));
-      if (resumed && step_count >= n_steps)
-        throw InputError("Nothing to resume: the checkpoint is at step "
-                         + std::to_string(step_count)
-                         + " (t = " + format_number(step_count * dt)
-                         + " s), at or beyond 'Time integration/End time' = "
-                         + format_number(end_time)
-                         + " s. Raise the end time to continue the run.");
       ProgressReporter progress(std::cout,
                                 root && progress_interval >= 0,
                                 n_steps * dt,
                                 std::max(0., progress_interval),
-                                "contact");
+                                progress_label);
       progress.set_start_time(step_count * dt);
       const unsigned int sample_every = prm.output.sample_interval;
       const double       field_every  = prm.output.field_interval;
@@ -357,12 +360,18 @@ namespace tribodyn
             point_csv->flush();
             status_csv->flush();
           }
-        std::ostringstream key;
-        key << "mu_global = " << std::fixed << std::setprecision(4)
-            << smp.mu_global << "  stick/slip/sep = " << std::setprecision(2)
-            << smp.stick_fraction << "/" << smp.slip_fraction << "/"
-            << smp.separation_fraction;
-        progress.update(step_count, t + dt, key.str());
+        if (progress_key)
+          progress.update(step_count, t + dt, progress_key(smp));
+        else
+          {
+            std::ostringstream key;
+            key << "mu_global = " << std::fixed << std::setprecision(4)
+                << smp.mu_global
+                << "  stick/slip/sep = " << std::setprecision(2)
+                << smp.stick_fraction << "/" << smp.slip_fraction << "/"
+                << smp.separation_fraction;
+            progress.update(step_count, t + dt, key.str());
+          }
         if (!std::isfinite(smp.kinetic_energy) || !std::isfinite(smp.mu_global))
           throw RunError("The solution became non-finite at t = "
                          + format_number(t) + " s (step " + std::to_string(n)

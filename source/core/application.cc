@@ -10,6 +10,8 @@
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/global_parameters.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/core/output_directory.h>
+#include <tribodyn/core/parameter_messages.h>
 #include <tribodyn/core/problem.h>
 #include <tribodyn/core/version.h>
 
@@ -38,36 +40,6 @@ namespace tribodyn
       for (const auto &p : registered_problems())
         out << "\n  " << p.name << ": " << p.description;
       out << "\n";
-    }
-
-
-    /// Turn a deal.II exception raised while reading parameters into the
-    /// one-paragraph message of an InputError.
-    std::string
-    describe_parameter_exception(const dealii::ExceptionBase &exception,
-                                 const std::string           &file)
-    {
-      std::ostringstream info;
-      exception.print_info(info);
-      std::string text = info.str();
-      // Collapse the multi-line deal.II message into one paragraph.
-      std::string paragraph;
-      bool        space = false;
-      for (const char c : text)
-        {
-          if (c == '\n' || c == ' ' || c == '\t')
-            space = !paragraph.empty();
-          else
-            {
-              if (space)
-                paragraph += ' ';
-              paragraph += c;
-              space = false;
-            }
-        }
-      return "Error in the parameter file '" + file + "': " + paragraph
-             + " Run 'tribodyn --print-parameters PROBLEM' to see every valid "
-               "parameter with its documentation.";
     }
 
 
@@ -132,7 +104,7 @@ namespace tribodyn
           }
         catch (const dealii::ExceptionBase &e)
           {
-            throw InputError(describe_parameter_exception(e, file));
+            throw InputError(describe_parameter_error(e, file));
           }
         problem_name = first.get("Problem");
       }
@@ -145,7 +117,7 @@ namespace tribodyn
         }
       catch (const dealii::ExceptionBase &e)
         {
-          throw InputError(describe_parameter_exception(e, file));
+          throw InputError(describe_parameter_error(e, file));
         }
       return description;
     }
@@ -198,29 +170,21 @@ namespace tribodyn
       context.output_directory  = global.output_directory;
       context.parameter_file    = file;
       context.progress_interval = global.progress_interval;
+      // parameters.prm: printed when the problem claims its directory,
+      // after it has parsed (and completed) the parameters.
+      context.parameters_text = [&prm, file]() {
+        std::ostringstream used;
+        used << "# Parameters used by tribodyn " << version_string << " for '"
+             << file << "'\n";
+        prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
+        return used.str();
+      };
 
-      const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-
-      // Parse (and check) the problem's parameters before touching the disk.
+      // Nothing is written before the problem has passed every check: it
+      // then claims the output directory (output_directory.h), which moves
+      // an earlier run's results aside, whole, and writes parameters.prm.
+      guard_unclaimed_output_writes();
       std::unique_ptr<Problem> problem = description.create(prm, context);
-
-      if (root)
-        {
-          create_output_directory(global.output_directory);
-          std::ostringstream used;
-          used << "# Parameters used by tribodyn " << version_string << " for '"
-               << file << "'\n";
-          prm.print_parameters(used, dealii::ParameterHandler::ShortPRM);
-          write_file_atomically(join_path(global.output_directory,
-                                          "parameters.prm"),
-                                used.str());
-          // summary.json exists only for a run that completed: a failed
-          // or interrupted run must not leave an older run's summary.
-          std::remove(
-            join_path(global.output_directory, "summary.json").c_str());
-        }
-      MPI_Barrier(comm);
-
       problem->run();
       return exit_code::success;
     }

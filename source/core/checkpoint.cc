@@ -15,6 +15,7 @@
 #include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/core/output_directory.h>
 #include <unistd.h>
 
 namespace tribodyn
@@ -201,6 +202,7 @@ namespace tribodyn
   void
   CheckpointStore::discard()
   {
+    assert_output_claimed(path);
     if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
       std::remove(join_path(path, "latest").c_str());
     next_slot = 0;
@@ -216,6 +218,7 @@ namespace tribodyn
     const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
     const unsigned int slot = next_slot;
     std::string        error;
+    assert_output_claimed(path);
     if (rank == 0)
       try
         {

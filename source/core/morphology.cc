@@ -202,10 +202,21 @@ namespace tribodyn
                               "the rectangle's height.");
       }
     if (generator == Generator::grid_file)
-      check_parameter(!grid_file.empty(),
-                      "Morphology/Grid file",
-                      "'Generator = grid file' needs the path of the grid "
-                      "file.");
+      {
+        check_parameter(!grid_file.empty(),
+                        "Morphology/Grid file",
+                        "'Generator = grid file' needs the path of the grid "
+                        "file.");
+        // The pixels are the file's: record them (parameters.prm then
+        // says what the run used, not the generator's defaults).
+        const Morphology grid = Morphology::read_grid_file(grid_file, 1., 1.);
+        n_pixels_x            = grid.n_pixels_x();
+        n_pixels_y            = grid.n_pixels_y();
+        prm.enter_subsection("Morphology");
+        prm.set("Pixels in x", static_cast<long int>(n_pixels_x));
+        prm.set("Pixels in y", static_cast<long int>(n_pixels_y));
+        prm.leave_subsection();
+      }
   }
 
 
@@ -445,8 +456,51 @@ namespace tribodyn
       for (unsigned int i = 0; i < nx; ++i)
         ids[(ny - 1 - r) * nx + i] = rows[r][i]; // top row first in the file
     Morphology m(width, height, nx, ny, ids);
-    m.origin = "grid file " + file_name;
+    m.origin   = "grid file " + file_name;
+    m.n_placed = m.count_connected_heterogeneities();
     return m;
+  }
+
+
+  unsigned int
+  Morphology::count_connected_heterogeneities() const
+  {
+    // Flood fill over edge-sharing heterogeneity pixels (4-connectivity: two
+    // pixels touching at a corner only are two heterogeneities, as two
+    // fibres would be).
+    std::vector<bool>        seen(ids.size(), false);
+    std::vector<std::size_t> stack;
+    unsigned int             count = 0;
+    for (std::size_t start = 0; start < ids.size(); ++start)
+      {
+        if (seen[start] || ids[start] != material_id::heterogeneity)
+          continue;
+        ++count;
+        seen[start] = true;
+        stack.push_back(start);
+        while (!stack.empty())
+          {
+            const std::size_t  k = stack.back();
+            const unsigned int i = k % n_x, j = k / n_x;
+            stack.pop_back();
+            const auto visit = [&](const std::size_t q) {
+              if (!seen[q] && ids[q] == material_id::heterogeneity)
+                {
+                  seen[q] = true;
+                  stack.push_back(q);
+                }
+            };
+            if (i > 0)
+              visit(k - 1);
+            if (i + 1 < n_x)
+              visit(k + 1);
+            if (j > 0)
+              visit(k - n_x);
+            if (j + 1 < n_y)
+              visit(k + n_x);
+          }
+      }
+    return count;
   }
 
 

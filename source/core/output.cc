@@ -9,6 +9,7 @@
 #include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/core/output_directory.h>
 #include <unistd.h>
 
 namespace tribodyn
@@ -28,6 +29,7 @@ namespace tribodyn
   void
   write_file_atomically(const std::string &path, const std::string &content)
   {
+    assert_output_claimed(path);
     const std::string temporary
       = path + ".tmp." + std::to_string(static_cast<long>(getpid()));
     {
@@ -226,9 +228,7 @@ namespace tribodyn
   void
   PvdWriter::restore(const std::vector<std::pair<double, std::string>> &entries)
   {
-    records.clear();
-    for (const auto &e : entries)
-      add(e.first, e.second);
+    records = entries;
   }
 
 
@@ -236,6 +236,13 @@ namespace tribodyn
   PvdWriter::add(const double time, const std::string &file_name)
   {
     records.emplace_back(time, file_name);
+    write();
+  }
+
+
+  void
+  PvdWriter::write() const
+  {
     if (!is_active)
       return;
     std::ostringstream out;

@@ -143,6 +143,8 @@ namespace tribodyn
 
       const std::vector<double> fractions = cell_problem.phase_fractions();
       const std::string        &out_dir   = context.output_directory;
+      // Every check passed (morphology, mesh): the directory may be touched.
+      context.claim_output();
       if (output_parameters.write_morphology)
         {
           cell_problem.write_material_map(out_dir);

@@ -295,6 +295,31 @@ namespace tribodyn
           return {&strains, &stresses, &nominal_stresses, &lateral_strains};
         }
 
+        /// Columns of series.csv this analysis adds (values of the last
+        /// record()): the strain between the loading layers, the axial
+        /// stress of the interior automata behind E and sigma_y
+        /// (compression positive, Pa), the nominal stress (reaction over
+        /// the cross-section) and the lateral strain behind nu.
+        static std::vector<std::string>
+        series_columns()
+        {
+          return {"interior_strain",
+                  "interior_stress",
+                  "nominal_stress",
+                  "lateral_strain"};
+        }
+
+        std::vector<double>
+        series_values() const
+        {
+          if (strains.empty())
+            return {0., 0., 0., 0.};
+          return {strains.back(),
+                  stresses.back(),
+                  nominal_stresses.back(),
+                  lateral_strains.back()};
+        }
+
         std::vector<double> strains, stresses, nominal_stresses,
           lateral_strains;
 
@@ -395,6 +420,23 @@ namespace tribodyn
         recorded_series()
         {
           return {&times, &v1, &v2};
+        }
+
+        /// Columns of series.csv this analysis adds: the mean velocity
+        /// along the axis of the automata of each probe layer (m/s), whose
+        /// peaks time the pulse (the automata start at rest).
+        static std::vector<std::string>
+        series_columns()
+        {
+          return {"probe_1_velocity", "probe_2_velocity"};
+        }
+
+        std::vector<double>
+        series_values() const
+        {
+          if (times.empty())
+            return {0., 0.};
+          return {v1.back(), v2.back()};
         }
 
       private:

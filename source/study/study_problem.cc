@@ -99,8 +99,6 @@ namespace tribodyn
       const MPI_Comm     world = context.mpi_communicator;
       const unsigned int color = dealii::Utilities::MPI::this_mpi_process(world)
                                  / parameters.ranks_per_case;
-      const bool group_root
-        = dealii::Utilities::MPI::this_mpi_process(group) == 0;
       const std::string root_dir
         = join_path(context.output_directory, "homogenization");
       std::vector<std::string> summaries;
@@ -147,9 +145,7 @@ namespace tribodyn
           RunContext hc       = context;
           hc.mpi_communicator = group;
           hc.output_directory = dir;
-          if (group_root)
-            create_output_directory(dir);
-          MPI_Barrier(group);
+          hc.parameters_text  = nullptr;
           homogenization::HomogenizationProblem problem(hprm, hc);
           problem.run();
         }
@@ -368,6 +364,11 @@ namespace tribodyn
             << " group(s) of ranks; mesh h = " << base.geometry.mesh_size
             << " m for every model" << std::endl;
 
+      // The study's own files; its cases and homogenization runs claim
+      // their own directories (and a study that reuses finished cases
+      // finds them in place).
+      context.claim_output(OutputClaim::fresh, {"cases", "homogenization"});
+
       bool needs_homogenization = false;
       for (const PinModel m : parameters.models)
         needs_homogenization |= (m == PinModel::homogenized);
@@ -384,13 +385,10 @@ namespace tribodyn
           cc.mpi_communicator = group;
           cc.output_directory
             = join_path(join_path(context.output_directory, "cases"), c.name);
+          cc.parameters_text = nullptr;
           if (group_root)
-            {
-              create_output_directory(cc.output_directory);
-              std::cout << "Case " << i + 1 << "/" << study_cases.size() << ": "
-                        << c.name << std::endl;
-            }
-          MPI_Barrier(group);
+            std::cout << "Case " << i + 1 << "/" << study_cases.size() << ": "
+                      << c.name << std::endl;
           const contact::ContactParameters cp = case_parameters(c);
           const double                     t0 = cp.output.average_start;
           const double t1 = cp.output.average_end < 0 ? cp.time.end_time

@@ -4,12 +4,15 @@
 //   touch (every heterogeneity pixel column segment has the generator's
 //   width exactly), heights lie in the requested range, and the same seed
 //   gives the same morphology;
-// - a grid file written and read back gives the same pixels;
+// - a grid file written and read back gives the same pixels, and its
+//   connected heterogeneities are counted (the generator's, and 4 in a
+//   hand-drawn grid with an L and a corner-touching pair);
 // - a laminate has exactly the requested layer fraction.
 
 #include "../test_utilities.h"
 
 #include <cstdio>
+#include <fstream>
 #include <tribodyn/core/morphology.h>
 
 int
@@ -83,7 +86,29 @@ main(int argc, char **argv)
     for (unsigned int i = 0; i < m.n_pixels_x(); ++i)
       equal = equal && m.pixel(i, j) == read.pixel(i, j);
   check(equal, "grid file written and read back gives the same pixels");
+  // The generator's heterogeneities never touch, so the connected groups
+  // of the file are the generator's placements.
+  check(read.n_heterogeneities() == m.n_heterogeneities()
+          && m.n_heterogeneities() > 0,
+        "grid file: " + std::to_string(read.n_heterogeneities())
+          + " connected heterogeneities, generator placed "
+          + std::to_string(m.n_heterogeneities()));
   std::remove(file.c_str());
+
+  // A hand-drawn grid: an L of 4 pixels, a pair touching at a corner only
+  // (two heterogeneities), and a lone pixel: 4.
+  {
+    const std::string hand = "morphology_hand.txt";
+    {
+      std::ofstream out(hand);
+      out << "1 0 0 0 1\n1 0 0 1 0\n1 1 0 0 0\n0 0 0 0 1\n";
+    }
+    const Morphology h = Morphology::read_grid_file(hand, 5e-4, 4e-4);
+    check(h.n_heterogeneities() == 4,
+          "hand-drawn grid: " + std::to_string(h.n_heterogeneities())
+            + " connected heterogeneities, expected 4");
+    std::remove(hand.c_str());
+  }
 
   MorphologyParameters l;
   l.generator          = MorphologyParameters::Generator::laminate;

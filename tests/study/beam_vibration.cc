@@ -45,7 +45,7 @@ main(int argc, char **argv)
   for (unsigned int k = 0; k < 2; ++k)
     {
       p.mesh_size        = k == 0 ? 0.5e-3 : 0.25e-3;
-      const BeamResult r = run_beam_vibration(p, MPI_COMM_WORLD, "");
+      const BeamResult r = run_beam_vibration(p, MPI_COMM_WORLD);
       if (is_root())
         std::cout << "h = " << p.mesh_size << ": f = " << r.frequency_hz
                   << " Hz (Timoshenko " << r.frequency_reference_hz

@@ -17,6 +17,7 @@
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/contact/friction.h>
 #include <tribodyn/core/checkpoint.h>
+#include <tribodyn/core/output_directory.h>
 #include <vector>
 
 namespace tribodyn
@@ -118,6 +119,33 @@ namespace tribodyn
       void
       enable_checkpoints(const CheckpointParameters     &parameters,
                          const std::vector<std::string> &parameter_lines);
+
+      /**
+       * Called by run() once the run has passed its last check (the resume
+       * checks) and before it writes its first file: the driver claims the
+       * output directory there (RunContext::claim_output()). None by
+       * default (tests, runs without output).
+       */
+      void
+      set_output_claim(std::function<void(OutputClaim)> claim)
+      {
+        output_claim = std::move(claim);
+      }
+
+      /**
+       * The progress lines of run(): their @p label ("contact" by default)
+       * and the key figure printed from the latest sample (by default
+       * mu_global and the stick/slip/separation fractions). A driver that
+       * uses the solver for something else (the beam verification) says
+       * what it measures.
+       */
+      void
+      set_progress_report(const std::string                         &label,
+                          std::function<std::string(const Sample &)> key)
+      {
+        progress_label = label;
+        progress_key   = std::move(key);
+      }
 
       /**
        * Integrate to the end time. With a non-empty @p output_directory,
@@ -364,11 +392,14 @@ namespace tribodyn
       double dt = 0, h = 0, dt_critical = 0, dt_cfl = 0, omega_maximum = 0;
       double c_maximum      = 0; ///< largest P-wave speed of the materials
       bool   checkpoints_on = false;
-      CheckpointParameters     checkpoint;
-      std::vector<std::string> checkpoint_parameters;
-      double                   mass_total = 0;
-      std::string              material_text;
-      FrictionStep             friction_step;
+      std::function<void(OutputClaim)>           output_claim;
+      std::string                                progress_label = "contact";
+      std::function<std::string(const Sample &)> progress_key;
+      CheckpointParameters                       checkpoint;
+      std::vector<std::string>                   checkpoint_parameters;
+      double                                     mass_total = 0;
+      std::string                                material_text;
+      FrictionStep                               friction_step;
       // Plane motion over the current step (t_n -> t_{n+1}): displacement
       // and position at t_{n+1}; decay of the regularized law for the
       // plane speed of this step; L* for the local slip rate.

@@ -144,10 +144,15 @@ namespace tribodyn
     double
     heterogeneity_fraction() const;
 
-    /// Number of distinct heterogeneities (connected groups of pixels),
-    /// as placed by the generator (0 when unknown, e.g. grid files).
+    /// Number of distinct heterogeneities: as placed by the generator, or
+    /// for a grid file the connected groups of heterogeneity pixels (pixels
+    /// sharing an edge).
     unsigned int
     n_heterogeneities() const;
+
+    /// Connected groups of heterogeneity pixels (sharing an edge).
+    unsigned int
+    count_connected_heterogeneities() const;
 
     /// One-line description for the screen and summary.json.
     std::string

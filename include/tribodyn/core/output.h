@@ -122,9 +122,14 @@ namespace tribodyn
       return records;
     }
 
-    /// Resumed runs: start from the records of the checkpointed run.
+    /// Resumed runs: start from the records of the checkpointed run
+    /// (nothing is written: call write() once the directory is claimed).
     void
     restore(const std::vector<std::pair<double, std::string>> &entries);
+
+    /// Rewrite the index with the records so far (on the active process).
+    void
+    write() const;
 
   private:
     std::string                                 path_name;

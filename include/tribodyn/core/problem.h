@@ -7,6 +7,7 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <tribodyn/core/output_directory.h>
 #include <vector>
 
 namespace tribodyn
@@ -24,6 +25,27 @@ namespace tribodyn
     std::string parameter_file;
     /// Minimum wall time between two progress lines, in seconds.
     double progress_interval = 5.0;
+    /// The text of parameters.prm, made when the output directory is
+    /// claimed (so that values a problem sets while parsing, such as the
+    /// pixels of a grid file, are those recorded); none for runs a driver
+    /// builds from parameter structs (a study's cases).
+    std::function<std::string()> parameters_text;
+
+    /**
+     * Claim the output directory (collective): called by a problem once it
+     * has passed every check and before it writes its first file. See
+     * claim_output_directory().
+     */
+    void
+    claim_output(const OutputClaim               how  = OutputClaim::fresh,
+                 const std::vector<std::string> &kept = {}) const
+    {
+      claim_output_directory(output_directory,
+                             how,
+                             parameters_text ? parameters_text() : "",
+                             mpi_communicator,
+                             kept);
+    }
   };
 
   /**

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <string>
 #include <tribodyn/core/problem.h>
+#include <vector>
 
 namespace tribodyn
 {
@@ -58,6 +59,8 @@ namespace tribodyn
              frequency_euler_bernoulli_hz = 0;
       double decay_rate = 0, damping_ratio = 0, damping_ratio_reference = 0;
       double n_dofs = 0, n_steps = 0, dt = 0, n_periods_measured = 0;
+      /// The measured signal: transverse velocity of point M against time.
+      std::vector<double> times, transverse_velocities;
     };
 
     /**
@@ -69,12 +72,10 @@ namespace tribodyn
      * of its half-period peaks. References: Timoshenko frequency (plane
      * strain: E' = E/(1 - nu^2), kappa G A, rotary inertia), and the modal
      * decay rate beta omega^2 / 2 of C = beta K (damping ratio beta omega/2).
-     * With a non-empty @p output_directory writes beam.csv.
+     * Writes nothing (BeamProblem writes beam.csv from the result).
      */
     BeamResult
-    run_beam_vibration(const BeamParameters &parameters,
-                       const MPI_Comm        comm,
-                       const std::string    &output_directory);
+    run_beam_vibration(const BeamParameters &parameters, const MPI_Comm comm);
 
     /// `set Problem = beam`: run_beam_vibration and summary.json.
     class BeamProblem : public Problem
