@@ -102,19 +102,11 @@ namespace tribodyn
               "Parameter 'Geometry/Interface gap' moves the upper body "
               "through the top of the box (Geometry/Domain upper): raise "
               "the box's upper z by the gap, or lower the bodies.");
-      const auto                  &h  = cells.cell_size();
-      const auto                  &nc = cells.cells_per_direction();
       std::vector<PackedAutomaton> packed;
       for (unsigned int c = 0; c < cells.n_owned_cells(); ++c)
         {
-          const auto &ijk = cells.cell_coordinates(c);
-          Point3      lower, upper;
-          for (unsigned int e = 0; e < 3; ++e)
-            {
-              lower[e] = g.domain_lower[e] + ijk[e] * h[e];
-              upper[e]
-                = ijk[e] + 1 == nc[e] ? g.domain_upper[e] : lower[e] + h[e];
-            }
+          Point3 lower, upper;
+          cells.cell_box(cells.cell_coordinates(c), lower, upper);
           pack_box(g, lower, upper, [&](const PackedAutomaton &a) {
             // the decomposition decides the cell of points on cell faces
             if (cells.local_cell(a.position) == c)
@@ -166,10 +158,32 @@ namespace tribodyn
     }
 
 
+    double
+    AutomatonSystem::work_imbalance() const
+    {
+      const double largest = dealii::Utilities::MPI::max(double(n_owned), comm);
+      return largest * n_ranks / std::max(1., double(n_global));
+    }
+
+
     void
     AutomatonSystem::setup()
     {
-      cells.setup();
+      // The partition is weighted by the automata each cell will hold (the
+      // same packing, counted before it is done): a cell's work is that of
+      // its automata and their pairs, and an empty cell costs about an
+      // eighth of one automaton (its bins, its share of the ghost layer).
+      const auto &g = prm.geometry;
+      cells.setup([&](const std::array<unsigned int, 3> &ijk,
+                      const Point3                      &lower,
+                      const Point3                      &upper) {
+        unsigned int                n = 0;
+        std::array<unsigned int, 3> home;
+        pack_box(g, lower, upper, [&](const PackedAutomaton &a) {
+          n += cells.structured_cell(a.position, home) && home == ijk;
+        });
+        return cost_per_automaton * n + 1;
+      });
       pack_owned_cells();
       n_global = dealii::Utilities::MPI::sum<unsigned long long>(n_owned, comm);
       if (n_global == 0)

@@ -100,7 +100,7 @@ namespace tribodyn
 
 
     void
-    Decomposition::setup()
+    Decomposition::setup(const CellCost &cost)
     {
       const auto &g = geometry;
       for (unsigned int c = 0; c < 3; ++c)
@@ -135,6 +135,24 @@ namespace tribodyn
         {
           n_cells[c] = trees[c] << level;
           h[c]       = period_[c] / n_cells[c];
+        }
+
+      // Weighted partition: p4est cuts its space-filling curve so that the
+      // ranks' sums of the cells' weights are equal (rather than their
+      // numbers of cells).
+      if (cost && dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
+        {
+          using Tria      = dealii::parallel::distributed::Triangulation<3>;
+          const auto slot = tria.signals.weight.connect(
+            [&](const Tria::cell_iterator &cell, const Tria::CellStatus) {
+              std::array<unsigned int, 3> ijk;
+              structured_cell(cell->center(), ijk);
+              Point3 lower, upper;
+              cell_box(ijk, lower, upper);
+              return cost(ijk, lower, upper);
+            });
+          tria.repartition();
+          slot.disconnect();
         }
 
       // Local cells: the owned ones (along the space-filling curve, for
@@ -198,6 +216,20 @@ namespace tribodyn
             cells_for_rank[n].push_back(c);
         });
       send_cells = std::move(cells_for_rank);
+    }
+
+
+    void
+    Decomposition::cell_box(const std::array<unsigned int, 3> &ijk,
+                            Point3                            &lower,
+                            Point3                            &upper) const
+    {
+      for (unsigned int e = 0; e < 3; ++e)
+        {
+          lower[e] = geometry.domain_lower[e] + ijk[e] * h[e];
+          upper[e] = ijk[e] + 1 == n_cells[e] ? geometry.domain_upper[e]
+                                              : lower[e] + h[e];
+        }
     }
 
 

@@ -23,482 +23,571 @@
 #include <tribodyn/mca/friction_observer.h>
 #include <tribodyn/mca/mca_problem.h>
 
-namespace tribodyn {
-namespace mca {
-void McaProblem::declare_parameters(dealii::ParameterHandler &prm) {
-  Parameters::declare_parameters(prm);
-  CheckpointParameters::declare_parameters(prm);
-}
-
-void McaProblem::print_partition_report(dealii::ParameterHandler &handler,
-                                        const unsigned int n_ranks,
-                                        std::ostream &out) {
-  Parameters p;
-  p.parse_parameters(handler);
-  const auto f = AutomatonSystem::partition_report(p, n_ranks);
-  out << std::setprecision(4) << "Partition of " << f.n_automata
-      << " automata over " << n_ranks
-      << " ranks (p4est's partition of the cells along its space-filling "
-         "curve, emulated):\n"
-      << "  owned automata per rank: min " << f.owned_min << ", mean "
-      << f.owned_mean << ", max " << f.owned_max << " (imbalance max/mean "
-      << f.owned_max / f.owned_mean << ")\n"
-      << "  ghosts per rank:         min " << f.ghosts_min << ", mean "
-      << f.ghosts_mean << ", max " << f.ghosts_max << "\n"
-      << "  ghost/owned ratio (mean): " << f.ghosts_mean / f.owned_mean << "\n"
-      << "  memory per rank (estimate, largest rank): "
-      << f.bytes_per_rank_max / 1048576. << " MiB ("
-      << AutomatonSystem::bytes_per_owned_automaton
-      << " B per owned automaton, "
-      << AutomatonSystem::bytes_per_ghost_automaton << " B per ghost"
-      << (p.interaction.relative_rotation_on()
-              ? ", + " +
-                    std::to_string(static_cast<int>(
-                        AutomatonSystem::bytes_per_automaton_moments)) +
-                    " B each for the relative-rotation moments"
-              : std::string())
-      << ")" << std::endl;
-}
-
-McaProblem::McaProblem(dealii::ParameterHandler &prm, const RunContext &context)
-    : context(context) {
-  parameters.parse_parameters(prm);
-  checkpoint.parse_parameters(prm);
-  checkpoint_lines = resumable_parameter_lines(prm, "Time/End time");
-}
-
-namespace {
-/// This rank's checkpoint: the automata, the observers' series, the
-/// outputs written so far.
-std::string
-save_checkpoint_blob(const AutomatonSystem &system,
-                     const std::vector<std::vector<double> *> &observed,
-                     const unsigned int output_number,
-                     const std::size_t series_rows,
-                     const std::vector<const PvdWriter *> &pvds) {
-  std::ostringstream out(std::ios::binary);
+namespace tribodyn
+{
+  namespace mca
   {
-    boost::archive::binary_oarchive ar(out);
-    system.save_state(ar);
-    ar << output_number << series_rows;
-    for (const auto *pvd : pvds)
-      ar << pvd->entries();
-    for (const auto *series : observed)
-      ar << *series;
-  }
-  return out.str();
-}
-
-void load_checkpoint(const std::string &blob, AutomatonSystem &system,
-                     const std::vector<std::vector<double> *> &observed,
-                     unsigned int &output_number, std::size_t &series_rows,
-                     const std::vector<PvdWriter *> &pvds) {
-  std::istringstream in(blob, std::ios::binary);
-  try {
-    boost::archive::binary_iarchive ar(in);
-    system.load_state(ar);
-    ar >> output_number >> series_rows;
-    for (auto *pvd : pvds) {
-      std::vector<std::pair<double, std::string>> entries;
-      ar >> entries;
-      pvd->restore(entries);
+    void
+    McaProblem::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      Parameters::declare_parameters(prm);
+      CheckpointParameters::declare_parameters(prm);
     }
-    for (auto *series : observed)
-      ar >> *series;
-  } catch (const boost::archive::archive_exception &e) {
-    throw InputError(std::string("The checkpoint cannot be read (") + e.what() +
-                     "): it is damaged or from another version of "
-                     "tribodyn. Start afresh with "
-                     "'Checkpoint/Resume = false'.");
-  }
-}
-} // namespace
 
-void McaProblem::run() {
-  const MPI_Comm comm = context.mpi_communicator;
-  const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-  dealii::ConditionalOStream pcout(std::cout, root);
-  auto timer = std::make_unique<dealii::TimerOutput>(
-      comm, pcout, dealii::TimerOutput::summary,
-      dealii::TimerOutput::wall_times);
-  try {
-    run_with_timer(*timer);
-  } catch (...) {
-    // No timing table (and no MPI exchange in its destructor while an
-    // exception is in flight) for a run that failed.
-    timer->disable_output();
-    timer.reset();
-    throw;
-  }
-}
 
-void McaProblem::run_with_timer(dealii::TimerOutput &timer) {
-  const auto start = std::chrono::steady_clock::now();
-  const MPI_Comm comm = context.mpi_communicator;
-  const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-  const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
-  dealii::ConditionalOStream pcout(std::cout, root);
-  const std::string &out_dir = context.output_directory;
-  const Parameters &p = parameters;
-
-  p.geometry.check_memory_per_rank(n_ranks);
-  AutomatonSystem system(p, comm);
-  {
-    dealii::TimerOutput::Scope scope(timer, "setup (packing, pair list)");
-    system.setup();
-  }
-  const double dt = system.time_step();
-  check_parameter(p.time.end_time / dt < 1e12, "Time/End time",
-                  "the run would take " + format_number(p.time.end_time / dt) +
-                      " steps of dt = " + format_number(dt) +
-                      " s (limit 1e12): lower the end time.");
-  const auto n_steps =
-      static_cast<unsigned long>(std::ceil(p.time.end_time / dt - 1e-9));
-  report_scene(system, p, pcout);
-  pcout << "MCA: " << system.n_global_automata() << " automata, "
-        << system.n_global_pairs() << " pairs, " << n_ranks
-        << " MPI rank(s); dt = " << dt
-        << " s (critical d/c_p = " << system.critical_time_step() << " s), "
-        << n_steps << " steps" << std::endl;
-
-  // Series
-  std::vector<std::string> columns = {
-      "time",          "kinetic_energy", "elastic_energy",      "plastic_work",
-      "friction_work", "n_bonded_pairs", "n_unbonded_contacts", "load_work",
-      "damped_work",   "pair_work"};
-  for (const auto &g : p.boundary.groups)
-    for (const char *c : {"fx", "fy", "fz", "ux", "uy", "uz"})
-      columns.push_back(g.name + "_" + c);
-  const bool friction = p.analysis.type == AnalysisParameters::Type::friction;
-  int loaded = -1;
-  for (unsigned int g = 0; g < p.boundary.groups.size(); ++g)
-    if (p.boundary.groups[g].name == p.analysis.loaded_group)
-      loaded = g;
-  if (friction)
-    columns.push_back("mu");
-  if (p.analysis.type == AnalysisParameters::Type::uniaxial)
-    for (const auto &c : UniaxialAnalysis::series_columns())
-      columns.push_back(c);
-  if (p.analysis.type == AnalysisParameters::Type::pulse)
-    for (const auto &c : PulseAnalysis::series_columns())
-      columns.push_back(c);
-  PvdWriter pvd(join_path(out_dir, "particles.pvd"), root);
-  PvdWriter pvd_slab(join_path(out_dir, "cross_section.pvd"), root);
-  PvdWriter pvd_pairs(join_path(out_dir, "unbonded_pairs.pvd"), root);
-
-  std::unique_ptr<UniaxialAnalysis> uniaxial;
-  std::unique_ptr<PulseAnalysis> pulse;
-  if (p.analysis.type == AnalysisParameters::Type::uniaxial)
-    uniaxial = std::make_unique<UniaxialAnalysis>(system, p, comm);
-  if (p.analysis.type == AnalysisParameters::Type::pulse)
-    pulse = std::make_unique<PulseAnalysis>(system, p, comm);
-  FrictionObserver friction_observer(p, loaded);
-  bool staged = false;
-  for (const auto &g : p.boundary.groups)
-    staged = staged || g.switch_on_contact;
-  // The series of the observers (saved in checkpoints).
-  std::vector<std::vector<double> *> observed =
-      friction_observer.recorded_series();
-  for (auto *a : uniaxial ? uniaxial->recorded_series()
-                          : std::vector<std::vector<double> *>())
-    observed.push_back(a);
-  for (auto *a :
-       pulse ? pulse->recorded_series() : std::vector<std::vector<double> *>())
-    observed.push_back(a);
-
-  const unsigned long series_every =
-      p.output.series_interval > 0
-          ? std::max(1ul, static_cast<unsigned long>(
-                              std::round(p.output.series_interval / dt)))
-          : 100ul;
-  const unsigned long output_every =
-      p.output.output_interval > 0
-          ? std::max(1ul, static_cast<unsigned long>(
-                              std::round(p.output.output_interval / dt)))
-          : n_steps;
-  unsigned int output_number = 0;
-  const bool need_stress = p.output.write_stress;
-
-  // A fresh start, or the state of the latest checkpoint.
-  CheckpointStore store(out_dir, "mca", comm);
-  std::unique_ptr<CsvWriter> series;
-  const std::string series_path = join_path(out_dir, "series.csv");
-  if (checkpoint.resume) {
-    CheckpointInfo info;
-    std::size_t rows = 0;
-    load_checkpoint(store.read(checkpoint_lines, info), system, observed,
-                    output_number, rows, {&pvd, &pvd_slab, &pvd_pairs});
-    if (system.step_number() >= n_steps)
-      throw InputError("Nothing to resume: the checkpoint is at step " +
-                       std::to_string(system.step_number()) +
-                       " (t = " + format_number(system.time()) +
-                       " s), at or beyond 'Time/End time' = " +
-                       format_number(p.time.end_time) +
-                       " s. Raise the end time to continue the run.");
-    // Every check passed: the output directory may be touched.
-    context.claim_output(OutputClaim::resume);
-    for (const PvdWriter *w : {&pvd, &pvd_slab, &pvd_pairs})
-      if (!w->entries().empty())
-        w->write();
-    series = std::make_unique<CsvWriter>(series_path, columns, root, rows);
-    pcout << "Resuming from the checkpoint at t = " << info.time << " s (step "
-          << info.step << ")" << std::endl;
-  } else {
-    context.claim_output(OutputClaim::fresh);
-    store.discard();
-    series = std::make_unique<CsvWriter>(series_path, columns, root);
-  }
-
-  auto write_outputs = [&]() {
-    dealii::TimerOutput::Scope scope(timer, "output");
-    if (p.output.write_particles)
-      pvd.add(system.time(),
-              system.write_particles(out_dir, "particles", output_number,
-                                     need_stress));
-    if (p.output.cross_section) {
-      const double th = p.output.cross_section_thickness > 0
-                            ? p.output.cross_section_thickness
-                            : 7 * p.geometry.automaton_size / std::sqrt(2.);
-      const double lo = p.output.cross_section_position - th / 2,
-                   hi = p.output.cross_section_position + th / 2;
-      pvd_slab.add(system.time(),
-                   system.write_particles(out_dir, "cross_section",
-                                          output_number, need_stress, true,
-                                          p.output.cross_section_axis, lo, hi));
-      pvd_pairs.add(system.time(), system.write_unbonded_pairs(
-                                       out_dir, "unbonded_pairs", output_number,
-                                       p.output.cross_section_axis, lo, hi));
+    void
+    McaProblem::print_partition_report(dealii::ParameterHandler &handler,
+                                       const unsigned int        n_ranks,
+                                       std::ostream             &out)
+    {
+      Parameters p;
+      p.parse_parameters(handler);
+      const auto f = AutomatonSystem::partition_report(p, n_ranks);
+      out << std::setprecision(4) << "Partition of " << f.n_automata
+          << " automata over " << n_ranks
+          << " ranks (p4est's partition of the cells along its space-filling "
+             "curve, weighted by the automata they hold; emulated):\n"
+          << "  owned automata per rank: min " << f.owned_min << ", mean "
+          << f.owned_mean << ", max " << f.owned_max << " (imbalance max/mean "
+          << f.owned_max / f.owned_mean << ")\n"
+          << "  ghosts per rank:         min " << f.ghosts_min << ", mean "
+          << f.ghosts_mean << ", max " << f.ghosts_max << "\n"
+          << "  ghost/owned ratio (mean): " << f.ghosts_mean / f.owned_mean
+          << "\n"
+          << "  memory per rank (estimate, largest rank): "
+          << f.bytes_per_rank_max / 1048576. << " MiB ("
+          << AutomatonSystem::bytes_per_owned_automaton
+          << " B per owned automaton, "
+          << AutomatonSystem::bytes_per_ghost_automaton << " B per ghost"
+          << (p.interaction.relative_rotation_on()
+                ? ", + "
+                    + std::to_string(static_cast<int>(
+                      AutomatonSystem::bytes_per_automaton_moments))
+                    + " B each for the relative-rotation moments"
+                : std::string())
+          << ")" << std::endl;
     }
-    ++output_number;
-  };
 
-  std::string key_figure;
-  auto record_series = [&]() {
-    dealii::TimerOutput::Scope scope(timer, "series");
-    const SystemEnergies e = system.energies();
-    const auto forces = system.group_forces();
-    const auto disp = system.group_displacements();
-    std::vector<double> row = {system.time(),
-                               e.kinetic,
-                               e.elastic,
-                               e.plastic_work,
-                               e.friction_work,
-                               double(e.n_bonded),
-                               double(e.n_unbonded_contacts),
-                               e.load_work,
-                               e.damped_work,
-                               e.pair_work};
-    for (unsigned int g = 0; g < forces.size(); ++g) {
-      for (unsigned int c = 0; c < 3; ++c)
-        row.push_back(forces[g][c]);
-      for (unsigned int c = 0; c < 3; ++c)
-        row.push_back(disp[g][c]);
+
+    McaProblem::McaProblem(dealii::ParameterHandler &prm,
+                           const RunContext         &context)
+        : context(context)
+    {
+      parameters.parse_parameters(prm);
+      checkpoint.parse_parameters(prm);
+      checkpoint_lines = resumable_parameter_lines(prm, "Time/End time");
     }
-    if (friction && loaded >= 0) {
-      // With a staged loading, mu is recorded from the first contact
-      // of the bodies on (before it the layers carry no load).
-      double mu = 0;
-      if (!staged || system.contact_time() >= 0) {
-        mu = friction_observer.record(system.time(), forces, e);
-        friction_observer.record_layer(system.time(), system, comm);
+
+
+    namespace
+    {
+      /// This rank's checkpoint: the automata, the observers' series, the
+      /// outputs written so far.
+      std::string
+      save_checkpoint_blob(const AutomatonSystem                    &system,
+                           const std::vector<std::vector<double> *> &observed,
+                           const unsigned int                    output_number,
+                           const std::size_t                     series_rows,
+                           const std::vector<const PvdWriter *> &pvds)
+      {
+        std::ostringstream out(std::ios::binary);
+        {
+          boost::archive::binary_oarchive ar(out);
+          system.save_state(ar);
+          ar << output_number << series_rows;
+          for (const auto *pvd : pvds)
+            ar << pvd->entries();
+          for (const auto *series : observed)
+            ar << *series;
+        }
+        return out.str();
       }
-      row.push_back(mu);
-      key_figure = "mu = " + format_number(mu);
-    }
-    if (uniaxial) {
-      uniaxial->record();
-      for (const double v : uniaxial->series_values())
-        row.push_back(v);
-    }
-    if (pulse)
-      for (const double v : pulse->series_values())
-        row.push_back(v);
-    series->add_row(row);
-    series->flush();
-  };
 
-  // Flush the series and save the state after the current step.
-  auto save_checkpoint = [&]() {
-    dealii::TimerOutput::Scope scope(timer, "checkpoint");
-    series->flush(true);
-    store.write(save_checkpoint_blob(system, observed, output_number,
-                                     series->n_rows(),
-                                     {&pvd, &pvd_slab, &pvd_pairs}),
-                system.step_number(), system.time(), checkpoint_lines);
-  };
 
-  ProgressReporter progress(std::cout, root, p.time.end_time,
-                            context.progress_interval, "mca");
-  progress.set_start_time(system.time());
-  const unsigned long first_step = system.step_number() + 1;
-  if (first_step == 1) {
-    write_outputs();
-    record_series();
-  }
-  // Blow-up limit: twice the largest P-wave speed (d / critical dt).
-  const double v_limit =
-      2 * p.geometry.automaton_size / system.critical_time_step();
-  const double interval = checkpoint.interval;
-  double next_checkpoint =
-      interval > 0
-          ? (std::floor(system.time() / interval + 1e-9) + 1) * interval
-          : std::numeric_limits<double>::max();
-  // SIGTERM/SIGINT: polled between steps (checkpoint, clean stop).
-  const InterruptHandlers interrupt_handlers;
-  const auto loop_start = std::chrono::steady_clock::now();
-  // A run that stops early keeps its friction series (friction.csv).
-  auto keep_friction_series = [&]() {
-    if (friction && friction_observer.recorded_series()[0]->size() >= 2)
-      friction_observer.write_series(out_dir, root);
-  };
-  timer.enter_subsection("time steps");
-  for (unsigned long s = first_step; s <= n_steps; ++s) {
-    system.step();
-    if (pulse)
-      pulse->record(system.time());
-    // Every step: finiteness and speed of the automata, signals and
-    // the displacement that decides the next step's pair-list
-    // rebuild, agreed by all ranks in one small MPI_Allreduce.
-    double displacement2 = system.displacement_since_rebuild();
-    const RunHealth health = agree_on_health(
-        system.count_unstable_automata(v_limit), comm, &displacement2);
-    system.set_agreed_displacement_since_rebuild(displacement2);
-    if (health.badness > 0) {
-      keep_friction_series();
-      system.report_instability(v_limit);
-    }
-    const bool regular = s % series_every == 0;
-    const bool regular_output =
-        regular && p.output.output_interval > 0 && s % output_every == 0;
-    const bool last = s == n_steps;
-    timer.leave_subsection("time steps");
-    if (regular)
-      record_series();
-    if (regular_output)
-      write_outputs();
-    // Checkpoint at the interval, at the end and on a signal: before
-    // the end-of-run outputs, which a longer run would not write.
-    if ((interval > 0 &&
-         (system.time() >= next_checkpoint - 0.5 * dt || last)) ||
-        health.signal != 0) {
-      save_checkpoint();
-      while (next_checkpoint <= system.time() + 0.5 * dt)
-        next_checkpoint += interval;
-    }
-    if (health.signal != 0) {
-      InterruptHandlers::acknowledge();
-      keep_friction_series();
-    }
-    if (health.signal != 0)
-      throw Interrupted(
-          health.signal,
-          "signal " + std::to_string(health.signal) + " received at step " +
-              std::to_string(s) + " (t = " + format_number(system.time()) +
-              " s); the state was saved in '" + store.directory() +
-              "': continue with 'Checkpoint/Resume = true'.");
-    if (last && !regular)
-      record_series();
-    if (last && !regular_output)
-      write_outputs();
-    timer.enter_subsection("time steps");
-    progress.update(s, system.time(), key_figure);
-  }
-  timer.leave_subsection("time steps");
-  const unsigned long steps_run = n_steps + 1 - first_step;
-  const double loop_seconds = std::chrono::duration<double>(
-                                  std::chrono::steady_clock::now() - loop_start)
-                                  .count();
-  progress.update(n_steps, system.time(), key_figure, true);
-  series->flush(true);
+      void
+      load_checkpoint(const std::string                        &blob,
+                      AutomatonSystem                          &system,
+                      const std::vector<std::vector<double> *> &observed,
+                      unsigned int                             &output_number,
+                      std::size_t                              &series_rows,
+                      const std::vector<PvdWriter *>           &pvds)
+      {
+        std::istringstream in(blob, std::ios::binary);
+        try
+          {
+            boost::archive::binary_iarchive ar(in);
+            system.load_state(ar);
+            ar >> output_number >> series_rows;
+            for (auto *pvd : pvds)
+              {
+                std::vector<std::pair<double, std::string>> entries;
+                ar >> entries;
+                pvd->restore(entries);
+              }
+            for (auto *series : observed)
+              ar >> *series;
+          }
+        catch (const boost::archive::archive_exception &e)
+          {
+            throw InputError(std::string("The checkpoint cannot be read (")
+                             + e.what()
+                             + "): it is damaged or from another version of "
+                               "tribodyn. Start afresh with "
+                               "'Checkpoint/Resume = false'.");
+          }
+      }
+    } // namespace
 
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-          .count();
-  std::ostringstream figures_early;
-  figures_early << std::setprecision(6);
-  JsonValue summary = JsonValue::object();
-  summary["problem"] = "mca";
-  summary["tribodyn_version"] = version_string;
-  summary["n_mpi_ranks"] = n_ranks;
-  summary["n_automata"] = system.n_global_automata();
-  summary["n_pairs"] = system.n_global_pairs();
-  summary["n_steps"] = n_steps;
-  summary["dt"] = dt;
-  summary["critical_dt"] = system.critical_time_step();
-  summary["end_time"] = system.time();
-  summary["n_pair_list_rebuilds"] = system.n_rebuilds();
-  const unsigned long long dropped = system.n_dropped_bonds();
-  summary["n_dropped_bonds"] = dropped;
-  if (dropped > 0)
-    pcout << "Warning: " << dropped
-          << " bonded pair(s) were stretched beyond the pair-list range "
-             "(automaton size times 1 + Interaction/Skin) and their bonds "
-             "were lost. With Bond breaking = false this is a large "
-             "deformation the list cannot follow: raise Interaction/Skin."
-          << std::endl;
-  summary["n_ghost_automata_max"] =
-      dealii::Utilities::MPI::max(system.n_ghost_automata(), comm);
-  summary["n_owned_automata_min"] =
-      dealii::Utilities::MPI::min(system.n_owned_automata(), comm);
-  summary["n_owned_automata_max"] =
-      dealii::Utilities::MPI::max(system.n_owned_automata(), comm);
-  summary["memory_bytes_max"] = dealii::Utilities::MPI::max(
-      static_cast<double>(system.memory_consumption()), comm);
-  summary["wall_time_s"] = wall;
-  summary["time_loop_s"] = loop_seconds;
-  summary["automaton_steps_per_second"] =
-      loop_seconds > 0
-          ? double(system.n_global_automata()) * steps_run / loop_seconds
-          : 0.;
-  summary["automaton_steps_per_second_per_rank"] =
-      loop_seconds > 0 ? double(system.n_global_automata()) * steps_run /
-                             loop_seconds / n_ranks
-                       : 0.;
-  {
-    const SystemEnergies e = system.energies();
-    summary["kinetic_energy"] = e.kinetic;
-    summary["elastic_energy"] = e.elastic;
-    summary["plastic_work"] = e.plastic_work;
-    summary["friction_work"] = e.friction_work;
-    summary["n_bonded_pairs"] = e.n_bonded;
-    summary["n_unbonded_contacts"] = e.n_unbonded_contacts;
-    add_energy_balance(e, summary, figures_early);
-    const auto forces = system.group_forces();
-    JsonValue groups = JsonValue::object();
-    for (unsigned int g = 0; g < forces.size(); ++g)
-      groups[p.boundary.groups[g].name] =
-          json_array({forces[g][0], forces[g][1], forces[g][2]});
-    summary["group_forces"] = groups;
-  }
-  add_scene_keys(system, p, summary);
-  std::ostringstream figures;
-  figures << std::setprecision(6) << figures_early.str();
-  if (uniaxial)
-    uniaxial->finish(summary, figures);
-  if (pulse)
-    pulse->finish(summary, figures);
-  if (friction)
-    friction_observer.finish(out_dir, root, summary, figures);
-  pcout << figures.str();
-  pcout << "Throughput: "
-        << double(system.n_global_automata()) * steps_run /
-               std::max(loop_seconds, 1e-300) / n_ranks
-        << " automaton-steps/s per rank" << std::endl;
-  if (root)
-    write_file_atomically(join_path(out_dir, "summary.json"),
-                          summary.dump() + "\n");
-}
 
-static const bool registered = register_problem(
-    {"mca",
-     "3D movable cellular automata: bonded automata with many-body pair "
-     "law, rotations, von Mises plasticity, bond breaking and formation "
-     "(seed 000)",
-     &McaProblem::declare_parameters,
-     [](dealii::ParameterHandler &prm,
-        const RunContext &context) -> std::unique_ptr<Problem> {
-       return std::make_unique<McaProblem>(prm, context);
-     },
-     &McaProblem::print_partition_report});
-} // namespace mca
+    void
+    McaProblem::run()
+    {
+      const MPI_Comm comm = context.mpi_communicator;
+      const bool     root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      dealii::ConditionalOStream pcout(std::cout, root);
+      auto                       timer = std::make_unique<dealii::TimerOutput>(
+        comm,
+        pcout,
+        dealii::TimerOutput::summary,
+        dealii::TimerOutput::wall_times);
+      try
+        {
+          run_with_timer(*timer);
+        }
+      catch (...)
+        {
+          // No timing table (and no MPI exchange in its destructor while an
+          // exception is in flight) for a run that failed.
+          timer->disable_output();
+          timer.reset();
+          throw;
+        }
+    }
+
+
+    void
+    McaProblem::run_with_timer(dealii::TimerOutput &timer)
+    {
+      const auto     start = std::chrono::steady_clock::now();
+      const MPI_Comm comm  = context.mpi_communicator;
+      const bool     root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      const unsigned int n_ranks
+        = dealii::Utilities::MPI::n_mpi_processes(comm);
+      dealii::ConditionalOStream pcout(std::cout, root);
+      const std::string         &out_dir = context.output_directory;
+      const Parameters          &p       = parameters;
+
+      p.geometry.check_memory_per_rank(n_ranks);
+      AutomatonSystem system(p, comm);
+      {
+        dealii::TimerOutput::Scope scope(timer, "setup (packing, pair list)");
+        system.setup();
+      }
+      const double dt = system.time_step();
+      check_parameter(p.time.end_time / dt < 1e12,
+                      "Time/End time",
+                      "the run would take "
+                        + format_number(p.time.end_time / dt)
+                        + " steps of dt = " + format_number(dt)
+                        + " s (limit 1e12): lower the end time.");
+      const auto n_steps
+        = static_cast<unsigned long>(std::ceil(p.time.end_time / dt - 1e-9));
+      report_scene(system, p, pcout);
+      const double imbalance = system.work_imbalance();
+      pcout << "MCA: " << system.n_global_automata() << " automata, "
+            << system.n_global_pairs() << " pairs, " << n_ranks
+            << " MPI rank(s)";
+      if (n_ranks > 1)
+        pcout << " (work imbalance max/mean " << std::setprecision(3)
+              << imbalance << std::setprecision(6) << ")";
+      pcout << "; dt = " << dt
+            << " s (critical d/c_p = " << system.critical_time_step() << " s), "
+            << n_steps << " steps" << std::endl;
+
+      // Series
+      std::vector<std::string> columns = {"time",
+                                          "kinetic_energy",
+                                          "elastic_energy",
+                                          "plastic_work",
+                                          "friction_work",
+                                          "n_bonded_pairs",
+                                          "n_unbonded_contacts",
+                                          "load_work",
+                                          "damped_work",
+                                          "pair_work"};
+      for (const auto &g : p.boundary.groups)
+        for (const char *c : {"fx", "fy", "fz", "ux", "uy", "uz"})
+          columns.push_back(g.name + "_" + c);
+      const bool friction
+        = p.analysis.type == AnalysisParameters::Type::friction;
+      int loaded = -1;
+      for (unsigned int g = 0; g < p.boundary.groups.size(); ++g)
+        if (p.boundary.groups[g].name == p.analysis.loaded_group)
+          loaded = g;
+      if (friction)
+        columns.push_back("mu");
+      if (p.analysis.type == AnalysisParameters::Type::uniaxial)
+        for (const auto &c : UniaxialAnalysis::series_columns())
+          columns.push_back(c);
+      if (p.analysis.type == AnalysisParameters::Type::pulse)
+        for (const auto &c : PulseAnalysis::series_columns())
+          columns.push_back(c);
+      PvdWriter pvd(join_path(out_dir, "particles.pvd"), root);
+      PvdWriter pvd_slab(join_path(out_dir, "cross_section.pvd"), root);
+      PvdWriter pvd_pairs(join_path(out_dir, "unbonded_pairs.pvd"), root);
+
+      std::unique_ptr<UniaxialAnalysis> uniaxial;
+      std::unique_ptr<PulseAnalysis>    pulse;
+      if (p.analysis.type == AnalysisParameters::Type::uniaxial)
+        uniaxial = std::make_unique<UniaxialAnalysis>(system, p, comm);
+      if (p.analysis.type == AnalysisParameters::Type::pulse)
+        pulse = std::make_unique<PulseAnalysis>(system, p, comm);
+      FrictionObserver friction_observer(p, loaded);
+      bool             staged = false;
+      for (const auto &g : p.boundary.groups)
+        staged = staged || g.switch_on_contact;
+      // The series of the observers (saved in checkpoints).
+      std::vector<std::vector<double> *> observed
+        = friction_observer.recorded_series();
+      for (auto *a : uniaxial ? uniaxial->recorded_series()
+                              : std::vector<std::vector<double> *>())
+        observed.push_back(a);
+      for (auto *a : pulse ? pulse->recorded_series()
+                           : std::vector<std::vector<double> *>())
+        observed.push_back(a);
+
+      const unsigned long series_every
+        = p.output.series_interval > 0
+            ? std::max(1ul,
+                       static_cast<unsigned long>(
+                         std::round(p.output.series_interval / dt)))
+            : 100ul;
+      const unsigned long output_every
+        = p.output.output_interval > 0
+            ? std::max(1ul,
+                       static_cast<unsigned long>(
+                         std::round(p.output.output_interval / dt)))
+            : n_steps;
+      unsigned int output_number = 0;
+      const bool   need_stress   = p.output.write_stress;
+
+      // A fresh start, or the state of the latest checkpoint.
+      CheckpointStore            store(out_dir, "mca", comm);
+      std::unique_ptr<CsvWriter> series;
+      const std::string          series_path = join_path(out_dir, "series.csv");
+      if (checkpoint.resume)
+        {
+          CheckpointInfo info;
+          std::size_t    rows = 0;
+          load_checkpoint(store.read(checkpoint_lines, info),
+                          system,
+                          observed,
+                          output_number,
+                          rows,
+                          {&pvd, &pvd_slab, &pvd_pairs});
+          if (system.step_number() >= n_steps)
+            throw InputError("Nothing to resume: the checkpoint is at step "
+                             + std::to_string(system.step_number())
+                             + " (t = " + format_number(system.time())
+                             + " s), at or beyond 'Time/End time' = "
+                             + format_number(p.time.end_time)
+                             + " s. Raise the end time to continue the run.");
+          // Every check passed: the output directory may be touched.
+          context.claim_output(OutputClaim::resume);
+          for (const PvdWriter *w : {&pvd, &pvd_slab, &pvd_pairs})
+            if (!w->entries().empty())
+              w->write();
+          series
+            = std::make_unique<CsvWriter>(series_path, columns, root, rows);
+          pcout << "Resuming from the checkpoint at t = " << info.time
+                << " s (step " << info.step << ")" << std::endl;
+        }
+      else
+        {
+          context.claim_output(OutputClaim::fresh);
+          store.discard();
+          series = std::make_unique<CsvWriter>(series_path, columns, root);
+        }
+
+      auto write_outputs = [&]() {
+        dealii::TimerOutput::Scope scope(timer, "output");
+        if (p.output.write_particles)
+          pvd.add(system.time(),
+                  system.write_particles(
+                    out_dir, "particles", output_number, need_stress));
+        if (p.output.cross_section)
+          {
+            const double th = p.output.cross_section_thickness > 0
+                                ? p.output.cross_section_thickness
+                                : 7 * p.geometry.automaton_size / std::sqrt(2.);
+            const double lo = p.output.cross_section_position - th / 2,
+                         hi = p.output.cross_section_position + th / 2;
+            pvd_slab.add(system.time(),
+                         system.write_particles(out_dir,
+                                                "cross_section",
+                                                output_number,
+                                                need_stress,
+                                                true,
+                                                p.output.cross_section_axis,
+                                                lo,
+                                                hi));
+            pvd_pairs.add(
+              system.time(),
+              system.write_unbonded_pairs(out_dir,
+                                          "unbonded_pairs",
+                                          output_number,
+                                          p.output.cross_section_axis,
+                                          lo,
+                                          hi));
+          }
+        ++output_number;
+      };
+
+      std::string key_figure;
+      auto        record_series = [&]() {
+        dealii::TimerOutput::Scope scope(timer, "series");
+        const SystemEnergies       e      = system.energies();
+        const auto                 forces = system.group_forces();
+        const auto                 disp   = system.group_displacements();
+        std::vector<double>        row    = {system.time(),
+                                             e.kinetic,
+                                             e.elastic,
+                                             e.plastic_work,
+                                             e.friction_work,
+                                             double(e.n_bonded),
+                                             double(e.n_unbonded_contacts),
+                                             e.load_work,
+                                             e.damped_work,
+                                             e.pair_work};
+        for (unsigned int g = 0; g < forces.size(); ++g)
+          {
+            for (unsigned int c = 0; c < 3; ++c)
+              row.push_back(forces[g][c]);
+            for (unsigned int c = 0; c < 3; ++c)
+              row.push_back(disp[g][c]);
+          }
+        if (friction && loaded >= 0)
+          {
+            // With a staged loading, mu is recorded from the first contact
+            // of the bodies on (before it the layers carry no load).
+            double mu = 0;
+            if (!staged || system.contact_time() >= 0)
+              {
+                mu = friction_observer.record(system.time(), forces, e);
+                friction_observer.record_layer(system.time(), system, comm);
+              }
+            row.push_back(mu);
+            key_figure = "mu = " + format_number(mu);
+          }
+        if (uniaxial)
+          {
+            uniaxial->record();
+            for (const double v : uniaxial->series_values())
+              row.push_back(v);
+          }
+        if (pulse)
+          for (const double v : pulse->series_values())
+            row.push_back(v);
+        series->add_row(row);
+        series->flush();
+      };
+
+      // Flush the series and save the state after the current step.
+      auto save_checkpoint = [&]() {
+        dealii::TimerOutput::Scope scope(timer, "checkpoint");
+        series->flush(true);
+        store.write(save_checkpoint_blob(system,
+                                         observed,
+                                         output_number,
+                                         series->n_rows(),
+                                         {&pvd, &pvd_slab, &pvd_pairs}),
+                    system.step_number(),
+                    system.time(),
+                    checkpoint_lines);
+      };
+
+      ProgressReporter progress(
+        std::cout, root, p.time.end_time, context.progress_interval, "mca");
+      progress.set_start_time(system.time());
+      const unsigned long first_step = system.step_number() + 1;
+      if (first_step == 1)
+        {
+          write_outputs();
+          record_series();
+        }
+      // Blow-up limit: twice the largest P-wave speed (d / critical dt).
+      const double v_limit
+        = 2 * p.geometry.automaton_size / system.critical_time_step();
+      const double interval = checkpoint.interval;
+      double       next_checkpoint
+        = interval > 0
+            ? (std::floor(system.time() / interval + 1e-9) + 1) * interval
+            : std::numeric_limits<double>::max();
+      // SIGTERM/SIGINT: polled between steps (checkpoint, clean stop).
+      const InterruptHandlers interrupt_handlers;
+      const auto              loop_start = std::chrono::steady_clock::now();
+      // A run that stops early keeps its friction series (friction.csv).
+      auto keep_friction_series = [&]() {
+        if (friction && friction_observer.recorded_series()[0]->size() >= 2)
+          friction_observer.write_series(out_dir, root);
+      };
+      timer.enter_subsection("time steps");
+      for (unsigned long s = first_step; s <= n_steps; ++s)
+        {
+          system.step();
+          if (pulse)
+            pulse->record(system.time());
+          // Every step: finiteness and speed of the automata, signals and
+          // the displacement that decides the next step's pair-list
+          // rebuild, agreed by all ranks in one small MPI_Allreduce.
+          double          displacement2 = system.displacement_since_rebuild();
+          const RunHealth health
+            = agree_on_health(system.count_unstable_automata(v_limit),
+                              comm,
+                              &displacement2);
+          system.set_agreed_displacement_since_rebuild(displacement2);
+          if (health.badness > 0)
+            {
+              keep_friction_series();
+              system.report_instability(v_limit);
+            }
+          const bool regular = s % series_every == 0;
+          const bool regular_output
+            = regular && p.output.output_interval > 0 && s % output_every == 0;
+          const bool last = s == n_steps;
+          timer.leave_subsection("time steps");
+          if (regular)
+            record_series();
+          if (regular_output)
+            write_outputs();
+          // Checkpoint at the interval, at the end and on a signal: before
+          // the end-of-run outputs, which a longer run would not write.
+          if ((interval > 0
+               && (system.time() >= next_checkpoint - 0.5 * dt || last))
+              || health.signal != 0)
+            {
+              save_checkpoint();
+              while (next_checkpoint <= system.time() + 0.5 * dt)
+                next_checkpoint += interval;
+            }
+          if (health.signal != 0)
+            {
+              InterruptHandlers::acknowledge();
+              keep_friction_series();
+            }
+          if (health.signal != 0)
+            throw Interrupted(
+              health.signal,
+              "signal " + std::to_string(health.signal) + " received at step "
+                + std::to_string(s) + " (t = " + format_number(system.time())
+                + " s); the state was saved in '" + store.directory()
+                + "': continue with 'Checkpoint/Resume = true'.");
+          if (last && !regular)
+            record_series();
+          if (last && !regular_output)
+            write_outputs();
+          timer.enter_subsection("time steps");
+          progress.update(s, system.time(), key_figure);
+        }
+      timer.leave_subsection("time steps");
+      const unsigned long steps_run = n_steps + 1 - first_step;
+      const double        loop_seconds
+        = std::chrono::duration<double>(std::chrono::steady_clock::now()
+                                        - loop_start)
+            .count();
+      progress.update(n_steps, system.time(), key_figure, true);
+      series->flush(true);
+
+      const double wall = std::chrono::duration<double>(
+                            std::chrono::steady_clock::now() - start)
+                            .count();
+      std::ostringstream figures_early;
+      figures_early << std::setprecision(6);
+      JsonValue summary                = JsonValue::object();
+      summary["problem"]               = "mca";
+      summary["tribodyn_version"]      = version_string;
+      summary["n_mpi_ranks"]           = n_ranks;
+      summary["n_automata"]            = system.n_global_automata();
+      summary["work_imbalance"]        = imbalance;
+      summary["n_pairs"]               = system.n_global_pairs();
+      summary["n_steps"]               = n_steps;
+      summary["dt"]                    = dt;
+      summary["critical_dt"]           = system.critical_time_step();
+      summary["end_time"]              = system.time();
+      summary["n_pair_list_rebuilds"]  = system.n_rebuilds();
+      const unsigned long long dropped = system.n_dropped_bonds();
+      summary["n_dropped_bonds"]       = dropped;
+      if (dropped > 0)
+        pcout << "Warning: " << dropped
+              << " bonded pair(s) were stretched beyond the pair-list range "
+                 "(automaton size times 1 + Interaction/Skin) and their bonds "
+                 "were lost. With Bond breaking = false this is a large "
+                 "deformation the list cannot follow: raise Interaction/Skin."
+              << std::endl;
+      summary["n_ghost_automata_max"]
+        = dealii::Utilities::MPI::max(system.n_ghost_automata(), comm);
+      summary["n_owned_automata_min"]
+        = dealii::Utilities::MPI::min(system.n_owned_automata(), comm);
+      summary["n_owned_automata_max"]
+        = dealii::Utilities::MPI::max(system.n_owned_automata(), comm);
+      summary["memory_bytes_max"] = dealii::Utilities::MPI::max(
+        static_cast<double>(system.memory_consumption()), comm);
+      summary["wall_time_s"] = wall;
+      summary["time_loop_s"] = loop_seconds;
+      summary["automaton_steps_per_second"]
+        = loop_seconds > 0
+            ? double(system.n_global_automata()) * steps_run / loop_seconds
+            : 0.;
+      summary["automaton_steps_per_second_per_rank"]
+        = loop_seconds > 0 ? double(system.n_global_automata()) * steps_run
+                               / loop_seconds / n_ranks
+                           : 0.;
+      {
+        const SystemEnergies e         = system.energies();
+        summary["kinetic_energy"]      = e.kinetic;
+        summary["elastic_energy"]      = e.elastic;
+        summary["plastic_work"]        = e.plastic_work;
+        summary["friction_work"]       = e.friction_work;
+        summary["n_bonded_pairs"]      = e.n_bonded;
+        summary["n_unbonded_contacts"] = e.n_unbonded_contacts;
+        add_energy_balance(e, summary, figures_early);
+        const auto forces = system.group_forces();
+        JsonValue  groups = JsonValue::object();
+        for (unsigned int g = 0; g < forces.size(); ++g)
+          groups[p.boundary.groups[g].name]
+            = json_array({forces[g][0], forces[g][1], forces[g][2]});
+        summary["group_forces"] = groups;
+      }
+      add_scene_keys(system, p, summary);
+      std::ostringstream figures;
+      figures << std::setprecision(6) << figures_early.str();
+      if (uniaxial)
+        uniaxial->finish(summary, figures);
+      if (pulse)
+        pulse->finish(summary, figures);
+      if (friction)
+        friction_observer.finish(out_dir, root, summary, figures);
+      pcout << figures.str();
+      pcout << "Throughput: "
+            << double(system.n_global_automata()) * steps_run
+                 / std::max(loop_seconds, 1e-300) / n_ranks
+            << " automaton-steps/s per rank" << std::endl;
+      if (root)
+        write_file_atomically(join_path(out_dir, "summary.json"),
+                              summary.dump() + "\n");
+    }
+
+
+    static const bool registered = register_problem(
+      {"mca",
+       "3D movable cellular automata: bonded automata with many-body pair "
+       "law, rotations, von Mises plasticity, bond breaking and formation "
+       "(seed 000)",
+       &McaProblem::declare_parameters,
+       [](dealii::ParameterHandler &prm,
+          const RunContext         &context) -> std::unique_ptr<Problem> {
+         return std::make_unique<McaProblem>(prm, context);
+       },
+       &McaProblem::print_partition_report});
+  } // namespace mca
 } // namespace tribodyn

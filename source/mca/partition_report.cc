@@ -84,17 +84,6 @@ namespace tribodyn
           return tree_of.at(t) * per_tree
                  + interleave(i & mask, j & mask, k & mask, level);
         };
-      // p4est's uniform partition: rank r owns positions
-      // [floor(N_cells r / R), floor(N_cells (r+1) / R)).
-      auto owner = [&](const std::uint64_t pos) {
-        std::uint64_t r = pos * n_ranks / n_cells;
-        while (r + 1 < n_ranks && (n_cells * (r + 1)) / n_ranks <= pos)
-          ++r;
-        while (r > 0 && (n_cells * r) / n_ranks > pos)
-          --r;
-        return static_cast<unsigned int>(r);
-      };
-
       // Automata per cell (one pass over the lattice).
       std::vector<std::uint16_t> count(n_cells, 0);
       Point3                     upper = g.domain_upper;
@@ -110,6 +99,35 @@ namespace tribodyn
         if (slot < 65535)
           ++slot;
       });
+
+      // p4est's weighted partition (as AutomatonSystem::setup() asks for
+      // it): the positions along the curve are dense (0 ... N_cells - 1),
+      // and rank r owns the cells whose cumulative weight before them lies
+      // in [W r / R, W (r + 1) / R), W the total weight.
+      std::vector<std::uint32_t> owner_at(n_cells, 0);
+      {
+        std::vector<std::uint64_t> weight_at(n_cells, 0);
+        for (unsigned int k = 0; k < n[2]; ++k)
+          for (unsigned int j = 0; j < n[1]; ++j)
+            for (unsigned int i = 0; i < n[0]; ++i)
+              weight_at[position(i, j, k)]
+                = cost_per_automaton
+                    * count[(std::uint64_t(k) * n[1] + j) * n[0] + i]
+                  + 1;
+        std::uint64_t total_weight = 0;
+        for (const auto w : weight_at)
+          total_weight += w;
+        std::uint64_t before = 0;
+        for (std::uint64_t pos = 0; pos < n_cells; ++pos)
+          {
+            owner_at[pos] = static_cast<std::uint32_t>(
+              std::min<long double>(n_ranks - 1,
+                                    std::floor(static_cast<long double>(before)
+                                               * n_ranks / total_weight)));
+            before += weight_at[pos];
+          }
+      }
+      auto owner = [&](const std::uint64_t pos) { return owner_at[pos]; };
 
       std::vector<double>       owned(n_ranks, 0), ghosts(n_ranks, 0);
       unsigned long long        total = 0;

@@ -382,6 +382,14 @@ namespace tribodyn
       /// moments (24 B a pair): measured +142 B of peak RSS and of arrays
       /// per automaton on the 128 000-automaton elastic block.
       static constexpr double bytes_per_automaton_moments = 145;
+      /// p4est weight of a cell per automaton it holds (an empty cell
+      /// weighs 1: its bins and ghost-layer share, ~1/8 of an automaton).
+      static constexpr unsigned int cost_per_automaton = 8;
+
+      /// Collective: the largest number of owned automata of a rank over
+      /// the mean (1: perfectly balanced work).
+      double
+      work_imbalance() const;
 
     private:
       // --- set-up and rebuild (automaton_system.cc, rebuild.cc)

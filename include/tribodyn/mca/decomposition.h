@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
+#include <functional>
 #include <initializer_list>
 #include <tribodyn/mca/parameters.h>
 #include <unordered_map>
@@ -71,9 +72,30 @@ namespace tribodyn
                   std::array<unsigned int, 3> &trees,
                   unsigned int                &level);
 
-      /// Build the mesh, partition it and the cell tables.
+      /**
+       * The work held by the cell of structured index @p ijk, the box
+       * [@p lower, @p upper) (in units of p4est weights: the set-up counts
+       * the automata the packing puts there, and an empty cell costs a
+       * little for its bins).
+       */
+      using CellCost
+        = std::function<unsigned int(const std::array<unsigned int, 3> &ijk,
+                                     const Point3                      &lower,
+                                     const Point3                      &upper)>;
+
+      /// Build the mesh, partition it and the cell tables. With a @p cost
+      /// and several ranks, p4est's partition is weighted by it (deal.II's
+      /// `weight` signal and repartition()): each rank holds about the same
+      /// work instead of the same number of cells.
       void
-      setup();
+      setup(const CellCost &cost = {});
+
+      /// The box [@p lower, @p upper) of the cell of structured index
+      /// @p ijk (the last cell of a direction ends at the box's upper side).
+      void
+      cell_box(const std::array<unsigned int, 3> &ijk,
+               Point3                            &lower,
+               Point3                            &upper) const;
 
       const dealii::parallel::distributed::Triangulation<3> &
       triangulation() const
