@@ -6,10 +6,10 @@ of its box (partition/block_partly_filled.prm) run on 1, 3 and 4 ranks
   rank over the mean, summary.json 'work_imbalance') must be at most 1.10:
   p4est's curve is cut by the cells' weights (8 per automaton + 1), so the
   weighted partition measured 1.06 on 3 and 4 ranks. With the weights
-  switched off (a deliberately broken build) the unweighted partition gave
-  a rank only empty cells, and that 3-rank run did not finish in 48 min (a
-  rank without automata hangs the engine: a bug of its own, noted on
-  issue #18); the check fails on it by the ctest timeout.
+  switched off (a deliberately broken build) the unweighted partition
+  printed an imbalance of 2.53 on 3 ranks and 2.58 on 4 (check fails), and
+  those runs did not finish in 48 min (with most of its cells empty, a
+  rank hangs the engine: a bug of its own, noted on issue #18).
 - The 3- and 4-rank series.csv equal the 1-rank one to 1e-9 relative to
   each column's largest magnitude (the tolerance of compare_partitions.py:
   MPI round-off only), and the multi-rank runs had ghosts."""
