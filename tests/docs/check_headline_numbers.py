@@ -2,7 +2,7 @@
 """The docs' headline numbers are those the code prints (issue #22).
 
 Runs the fast examples whose figures the README and the user guides quote
-(each under a second to ~15 s on one rank), then checks that the quoted
+(each 1 to 25 s on one rank), then checks that the quoted
 text is exactly what this build writes:
 
 - prm/homogenization/default.prm: every row of the README's table of
@@ -11,7 +11,10 @@ text is exactly what this build writes:
 - prm/mca/uniaxial_steel.prm: 'E = ... GPa' and 'sigma_y = ... MPa' (three
   decimals) in README.md and doc/user_guide/mca.md;
 - prm/mca/two_body_friction.prm and _carbon: the mean friction coefficient
-  (six decimals) in doc/user_guide/mca.md.
+  (six decimals) in doc/user_guide/mca.md;
+- prm/contact/homogeneous_matrix.prm and homogenized.prm: mu_global_mean
+  (three decimals) and the stick/slip/separation fractions (two) of the
+  README's contact table.
 
 A changed result makes the quoted text stale and this test fail: rerun the
 example and update the docs. Usage: check_headline_numbers.py TRIBODYN
@@ -97,6 +100,15 @@ for prm in ("two_body_friction", "two_body_friction_carbon"):
                                     "summary.json")))
     expect("doc/user_guide/mca.md", f"{s['mean_friction_coefficient']:.6f}",
            prm)
+
+# Contact: the README's table of the homogeneous pins (~25 s each).
+for prm, row in (("homogeneous_matrix", "homogeneous, matrix properties"),
+                 ("homogenized", "homogeneous, homogenized properties")):
+    s = json.load(open(os.path.join(run(f"prm/contact/{prm}.prm"),
+                                    "summary.json")))
+    expect("README.md", f"| {row} | {s['mu_global_mean']:.3f} | "
+           f"{s['stick_fraction']:.2f} / {s['slip_fraction']:.2f} / "
+           f"{s['separation_fraction']:.2f} |", prm)
 
 print(f"{len(failures)} stale quote(s)" if failures else "docs match the code")
 sys.exit(1 if failures else 0)
