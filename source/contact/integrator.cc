@@ -181,6 +181,18 @@ namespace tribodyn
     }
 
 
+    std::string
+    ContactSolver::friction_progress_key(const Sample &smp)
+    {
+      std::ostringstream key;
+      key << "mu_global = " << std::fixed << std::setprecision(4)
+          << smp.mu_global << "  stick/slip/sep = " << std::setprecision(2)
+          << smp.stick_fraction << "/" << smp.slip_fraction << "/"
+          << smp.separation_fraction;
+      return key.str();
+    }
+
+
     double
     ContactSolver::velocity_limit() const
     {
@@ -285,8 +297,7 @@ namespace tribodyn
                                                       "fields.pvd"),
                                             root);
           pvd->restore(loop.pvd);
-          if (!loop.pvd.empty())
-            pvd->write();
+          pvd->write();
           if (prm.output.contact_face_interval > 0)
             open_contact_face_files(output_directory,
                                     resumed ? long(loop.face_rows) : -1);
@@ -360,18 +371,7 @@ namespace tribodyn
             point_csv->flush();
             status_csv->flush();
           }
-        if (progress_key)
-          progress.update(step_count, t + dt, progress_key(smp));
-        else
-          {
-            std::ostringstream key;
-            key << "mu_global = " << std::fixed << std::setprecision(4)
-                << smp.mu_global
-                << "  stick/slip/sep = " << std::setprecision(2)
-                << smp.stick_fraction << "/" << smp.slip_fraction << "/"
-                << smp.separation_fraction;
-            progress.update(step_count, t + dt, key.str());
-          }
+        progress.update(step_count, t + dt, progress_key(smp));
         if (!std::isfinite(smp.kinetic_energy) || !std::isfinite(smp.mu_global))
           throw RunError("The solution became non-finite at t = "
                          + format_number(t) + " s (step " + std::to_string(n)

@@ -243,7 +243,7 @@ namespace tribodyn
   void
   PvdWriter::write() const
   {
-    if (!is_active)
+    if (!is_active || records.empty())
       return;
     std::ostringstream out;
     out << "<?xml version=\"1.0\"?>\n"

@@ -48,15 +48,13 @@ namespace tribodyn
       return true;
     }
 
-    /// Move every entry of @p from except @p skipped into @p to (created).
-    void
-    move_entries(const fs::path                 &from,
-                 const fs::path                 &to,
-                 const std::vector<std::string> &skipped)
+    /// The entries of @p directory except those named in @p skipped.
+    std::vector<fs::path>
+    entries_except(const fs::path                 &directory,
+                   const std::vector<std::string> &skipped)
     {
-      fs::create_directories(to);
       std::vector<fs::path> entries;
-      for (const auto &e : fs::directory_iterator(from))
+      for (const auto &e : fs::directory_iterator(directory))
         {
           const std::string name = e.path().filename().string();
           bool              skip = false;
@@ -65,6 +63,15 @@ namespace tribodyn
           if (!skip)
             entries.push_back(e.path());
         }
+      return entries;
+    }
+
+
+    /// Move @p entries into @p to (created).
+    void
+    move_entries(const std::vector<fs::path> &entries, const fs::path &to)
+    {
+      fs::create_directories(to);
       for (const auto &e : entries)
         fs::rename(e, to / e.filename());
     }
@@ -86,29 +93,22 @@ namespace tribodyn
             {
               std::vector<std::string> skipped = kept;
               skipped.push_back(previous_run_folder);
-              bool any = false;
-              for (const auto &e : fs::directory_iterator(dir))
-                {
-                  const std::string name = e.path().filename().string();
-                  bool              skip = false;
-                  for (const auto &s : skipped)
-                    skip = skip || name == s;
-                  any = any || !skip;
-                }
-              if (any)
+              const std::vector<fs::path> earlier
+                = entries_except(dir, skipped);
+              if (!earlier.empty())
                 {
                   const fs::path previous = dir / previous_run_folder;
                   if (fs::exists(dir / "summary.json"))
                     {
                       // A finished run replaces the one kept before it.
                       fs::remove_all(previous);
-                      move_entries(dir, previous, skipped);
+                      move_entries(earlier, previous);
                     }
                   else
                     {
                       const fs::path unfinished = previous / "unfinished";
                       fs::remove_all(unfinished);
-                      move_entries(dir, unfinished, skipped);
+                      move_entries(earlier, unfinished);
                     }
                 }
             }

@@ -295,8 +295,7 @@ namespace tribodyn
           // Every check passed: the output directory may be touched.
           context.claim_output(OutputClaim::resume);
           for (const PvdWriter *w : {&pvd, &pvd_slab, &pvd_pairs})
-            if (!w->entries().empty())
-              w->write();
+            w->write();
           series
             = std::make_unique<CsvWriter>(series_path, columns, root, rows);
           pcout << "Resuming from the checkpoint at t = " << info.time

@@ -118,15 +118,22 @@ def run(script, *args):
     return p
 
 
+def plotted(script, directory, png, label):
+    """Run SCRIPT on DIRECTORY writing PNG: exit code 0 and a PNG of more
+    than 1 kB. Returns the process (its output for the caller's checks)."""
+    p = run(script, directory, "--out", png)
+    report(p.returncode == 0, "%s: exit code %d" % (label, p.returncode))
+    report(os.path.exists(png) and os.path.getsize(png) > 1000,
+           "%s: PNG written" % label)
+    return p
+
+
 uniaxial, wave = sys.argv[1], sys.argv[2]
 with tempfile.TemporaryDirectory() as work:
     good = os.path.join(work, "uniaxial")
     write_uniaxial(good)
-    png = os.path.join(work, "uniaxial.png")
-    p = run(uniaxial, good, "--out", png)
-    report(p.returncode == 0, "uniaxial: exit code %d" % p.returncode)
-    report(os.path.exists(png) and os.path.getsize(png) > 1000,
-           "uniaxial: PNG written")
+    p = plotted(uniaxial, good, os.path.join(work, "uniaxial.png"),
+                "uniaxial")
     m = re.search(r"E = ([0-9.e+-]+) GPa, sigma_y = ([0-9.e+-]+) MPa",
                   p.stdout)
     report(m is not None and close(m.group(1), 201.234)
@@ -150,11 +157,7 @@ with tempfile.TemporaryDirectory() as work:
 
     pulse = os.path.join(work, "pulse")
     write_pulse(pulse)
-    png = os.path.join(work, "wave.png")
-    p = run(wave, pulse, "--out", png)
-    report(p.returncode == 0, "wave: exit code %d" % p.returncode)
-    report(os.path.exists(png) and os.path.getsize(png) > 1000,
-           "wave: PNG written")
+    p = plotted(wave, pulse, os.path.join(work, "wave.png"), "wave")
     m = re.search(r"arrival times ([0-9.e+-]+) s and ([0-9.e+-]+) s, c_p "
                   r"measured = ([0-9.e+-]+) m/s", p.stdout)
     report(m is not None and close(m.group(1), 40e-12)

@@ -132,6 +132,11 @@ namespace tribodyn
         output_claim = std::move(claim);
       }
 
+      /// The default key figure of the progress lines: mu_global and the
+      /// stick/slip/separation fractions of the contact nodes.
+      static std::string
+      friction_progress_key(const Sample &sample);
+
       /**
        * The progress lines of run(): their @p label ("contact" by default)
        * and the key figure printed from the latest sample (by default
@@ -394,12 +399,13 @@ namespace tribodyn
       bool   checkpoints_on = false;
       std::function<void(OutputClaim)>           output_claim;
       std::string                                progress_label = "contact";
-      std::function<std::string(const Sample &)> progress_key;
-      CheckpointParameters                       checkpoint;
-      std::vector<std::string>                   checkpoint_parameters;
-      double                                     mass_total = 0;
-      std::string                                material_text;
-      FrictionStep                               friction_step;
+      std::function<std::string(const Sample &)> progress_key
+        = &friction_progress_key;
+      CheckpointParameters     checkpoint;
+      std::vector<std::string> checkpoint_parameters;
+      double                   mass_total = 0;
+      std::string              material_text;
+      FrictionStep             friction_step;
       // Plane motion over the current step (t_n -> t_{n+1}): displacement
       // and position at t_{n+1}; decay of the regularized law for the
       // plane speed of this step; L* for the local slip rate.

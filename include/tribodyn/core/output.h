@@ -127,7 +127,8 @@ namespace tribodyn
     void
     restore(const std::vector<std::pair<double, std::string>> &entries);
 
-    /// Rewrite the index with the records so far (on the active process).
+    /// Rewrite the index with the records so far (on the active process;
+    /// nothing while there are none).
     void
     write() const;
 
