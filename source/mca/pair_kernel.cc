@@ -16,6 +16,17 @@ namespace tribodyn
   {
     namespace
     {
+      /// The first coordinate of an array of 3-vectors, as the flat field
+      /// of a ghost update (nullptr when the array is empty: a rank that
+      /// owns no automata).
+      template <class Vector>
+      double *
+      flat(std::vector<Vector> &a)
+      {
+        return a.empty() ? nullptr : &a[0][0];
+      }
+
+
       /**
        * Pair vectors, distances and their reciprocals of a block of
        * consecutive pairs. The square roots and divisions (the dearest
@@ -100,9 +111,10 @@ namespace tribodyn
     AutomatonSystem::evaluate_pairs(const double step_dt)
     {
       // Ghost kinematics: x, v, w from their owners (one message per
-      // neighbour rank).
-      if (neighbours.active() && n_local > 0)
-        neighbours.update({{&x[0][0], 3}, {v[0].data(), 3}, {w[0].data(), 3}});
+      // neighbour rank; a rank that owns no automata still takes part, with
+      // empty messages, or its neighbours would wait for it).
+      if (neighbours.active())
+        neighbours.update({{flat(x), 3}, {flat(v), 3}, {flat(w), 3}});
       // Neighbourhoods that changed at the last step (contacts, bonds).
       if (any_changed)
         update_neighbourhood_weights(false);
