@@ -67,6 +67,42 @@ namespace tribodyn
             rotation_springs.push_back(
               {lambda * k_area * 2 * I, lambda * k_area * I});
           }
+      register_pair_fields();
+    }
+
+
+    void
+    AutomatonSystem::register_pair_fields()
+    {
+      // What a pair carries from one pair list to the next (migration,
+      // rebuild, checkpoint), in this order; the value of a new pair; the
+      // rule when its sides exchange (doc/theory/mca.md §3). Bonds and
+      // contacts of the initial pairs are set by restore_pair_states().
+      const auto c = [](VectorArray &a) {
+        return std::vector<std::vector<double> *>{&a.component[0],
+                                                  &a.component[1],
+                                                  &a.component[2]};
+      };
+      pair_fields.add({"bonded", Relabel::even, 0, {}, &bonded, {}});
+      pair_fields.add({"in_contact", Relabel::even, 0, {}, &in_contact, {}});
+      // q_i of a new pair: half the distance
+      pair_fields.add({"q_i", Relabel::complement, 0.5, {&q_i}, nullptr, {}});
+      pair_fields.add(
+        {"sigma", Relabel::sides, 0, {&sig_i, &sig_j}, nullptr, {}});
+      pair_fields.add({"heat", Relabel::even, 0, {&heat}, nullptr, [this] {
+                         return bond_scene || !heat.empty();
+                       }});
+      pair_fields.add({"tau", Relabel::odd, 0, c(tau), nullptr, {}});
+      pair_fields.add({"tau_scale",
+                       Relabel::sides,
+                       1,
+                       {&tau_scale_i, &tau_scale_j},
+                       nullptr,
+                       {}});
+      pair_fields.add(
+        {"moment", Relabel::odd, 0, c(pair_moment), nullptr, [this] {
+           return moment_scene;
+         }});
     }
 
 
@@ -182,7 +218,7 @@ namespace tribodyn
         pack_box(g, lower, upper, [&](const PackedAutomaton &a) {
           n += cells.structured_cell(a.position, home) && home == ijk;
         });
-        return cost_per_automaton * n + 1;
+        return cost_model::cost_per_automaton * n + 1;
       });
       pack_owned_cells();
       n_global = dealii::Utilities::MPI::sum<unsigned long long>(n_owned, comm);
@@ -417,12 +453,10 @@ namespace tribodyn
       add(mat), add(body), add(groups), add(eps_p), add(sigma_y);
       add(plast), add(bond_buffer), add(sum_qs), add(dsm);
       add(trial), add(fabric_inverse), add(changed);
-      add(pi), add(pj), add(pshift), add(bonded), add(in_contact);
-      add(q_i), add(sig_i), add(sig_j), add(heat);
-      add(tau_scale_i), add(tau_scale_j);
-      bytes += tau.memory_consumption();
-      bytes += pair_moment.memory_consumption();
-      add(beta_i), add(beta_j), add(kept_pairs), add(i_pairs_first);
+      add(pi), add(pj), add(pshift);
+      bytes += pair_fields.memory_consumption();
+      add(beta_i), add(beta_j), add(kept_states), add(kept_keys);
+      add(i_pairs_first);
       add(i_pairs_count), add(j_pairs_first), add(j_pairs), add(f_damp);
       return bytes;
     }

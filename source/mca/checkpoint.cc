@@ -6,14 +6,17 @@
 // of ranks, so saving the arrays and restoring them after setup() continues
 // the run bit for bit.
 //
-// MCA_CHECKPOINT_STATE below is the ONE list of what is saved: when an
-// array of AutomatonSystem that lives from one step to the next is added,
-// removed or renamed, update the list (the ctest mca_restart_* tests compare
-// a resumed run with an uninterrupted one and fail if something is missed).
-// Per-step scratch buffers (plast, bond_buffer, sum_qs, dsm, trial) and the
-// rebuild's transient lists (kept_pairs, old_pairs, old_flags) are rebuilt
-// before use and are not saved; the material constants (mc, springs) come
-// from the parameters.
+// MCA_CHECKPOINT_STATE and MCA_CHECKPOINT_PAIR_LISTS below, with the
+// persistent pair fields of AutomatonSystem::register_pair_fields() between
+// them, are the ONE list of what is saved: when an array of AutomatonSystem
+// that lives from one step to the next is added, removed or renamed, update
+// the list (a persistent pair field: register it, nothing else); the ctest
+// mca_restart_* tests compare a resumed run with an uninterrupted one and
+// fail if something is missed. Per-step scratch buffers (plast,
+// bond_buffer, sum_qs, dsm, trial) and the rebuild's transient lists
+// (kept_states, kept_keys, old_pairs, old_flags) are rebuilt before use and
+// are not saved; the material constants (mc, springs) come from the
+// parameters.
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 #include <boost/serialization/array.hpp>
@@ -55,12 +58,6 @@ namespace tribodyn
         else
           ar << vec;
       }
-      void
-      put(boost::archive::binary_oarchive &ar, const VectorArray &a)
-      {
-        for (const auto &c : a.component)
-          put(ar, c);
-      }
       template <typename T>
       void
       get(boost::archive::binary_iarchive &ar, T &value)
@@ -83,12 +80,6 @@ namespace tribodyn
         else
           ar >> vec;
       }
-      void
-      get(boost::archive::binary_iarchive &ar, VectorArray &a)
-      {
-        for (auto &c : a.component)
-          get(ar, c);
-      }
     } // namespace
 
 // The state of AutomatonSystem carried from one step to the next.
@@ -106,10 +97,9 @@ namespace tribodyn
   apply(v) apply(w) apply(f) apply(torque) apply(u)                           \
   apply(mat) apply(body) apply(groups) apply(eps_p) apply(sigma_y)            \
   apply(group_reaction) apply(fabric_inverse) apply(changed) apply(f_damp)   \
-  /* pairs */                                                                 \
-  apply(pi) apply(pj) apply(pshift) apply(bonded) apply(in_contact)           \
-  apply(q_i) apply(sig_i) apply(sig_j) apply(heat) apply(tau)                 \
-  apply(tau_scale_i) apply(tau_scale_j) apply(pair_moment)                   \
+  /* pairs: the list (the persistent fields follow, from pair_fields) */     \
+  apply(pi) apply(pj) apply(pshift)
+#define MCA_CHECKPOINT_PAIR_LISTS(apply)                                      \
   apply(beta_i) apply(beta_j) apply(i_pairs_first) apply(i_pairs_count)      \
   apply(j_pairs_first) apply(j_pairs)
     // clang-format on
@@ -121,6 +111,9 @@ namespace tribodyn
       ar << state_version << n_ranks << dt << n_global;
 #define MCA_PUT(member) put(ar, member);
       MCA_CHECKPOINT_STATE(MCA_PUT)
+      pair_fields.for_each_array([&](const auto &a) { put(ar, a); },
+                                 [&](const auto &a) { put(ar, a); });
+      MCA_CHECKPOINT_PAIR_LISTS(MCA_PUT)
 #undef MCA_PUT
       // the ghost lists of the point-to-point updates
       put(ar, neighbours.ghost_offsets());
@@ -151,6 +144,9 @@ namespace tribodyn
             "of the checkpointed run.");
 #define MCA_GET(member) get(ar, member);
       MCA_CHECKPOINT_STATE(MCA_GET)
+      pair_fields.for_each_array([&](auto &a) { get(ar, a); },
+                                 [&](auto &a) { get(ar, a); });
+      MCA_CHECKPOINT_PAIR_LISTS(MCA_GET)
 #undef MCA_GET
       std::vector<unsigned int> offsets;
       get(ar, offsets);
@@ -163,5 +159,6 @@ namespace tribodyn
     }
 
 #undef MCA_CHECKPOINT_STATE
+#undef MCA_CHECKPOINT_PAIR_LISTS
   } // namespace mca
 } // namespace tribodyn

@@ -56,13 +56,12 @@ namespace tribodyn
           << "\n"
           << "  memory per rank (estimate, largest rank): "
           << f.bytes_per_rank_max / 1048576. << " MiB ("
-          << AutomatonSystem::bytes_per_owned_automaton
-          << " B per owned automaton, "
-          << AutomatonSystem::bytes_per_ghost_automaton << " B per ghost"
+          << cost_model::bytes_per_owned_automaton << " B per owned automaton, "
+          << cost_model::bytes_per_ghost_automaton << " B per ghost"
           << (p.interaction.relative_rotation_on()
                 ? ", + "
-                    + std::to_string(static_cast<int>(
-                      AutomatonSystem::bytes_per_automaton_moments))
+                    + std::to_string(
+                      static_cast<int>(cost_model::bytes_per_automaton_moments))
                     + " B each for the relative-rotation moments"
                 : std::string())
           << ")" << std::endl;

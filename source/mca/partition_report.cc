@@ -111,7 +111,7 @@ namespace tribodyn
           for (unsigned int j = 0; j < n[1]; ++j)
             for (unsigned int i = 0; i < n[0]; ++i)
               weight_at[position(i, j, k)]
-                = cost_per_automaton
+                = cost_model::cost_per_automaton
                     * count[(std::uint64_t(k) * n[1] + j) * n[0] + i]
                   + 1;
         std::uint64_t total_weight = 0;
@@ -194,13 +194,13 @@ namespace tribodyn
       stats(owned, fig.owned_min, fig.owned_mean, fig.owned_max);
       stats(ghosts, fig.ghosts_min, fig.ghosts_mean, fig.ghosts_max);
       const double moments = prm.interaction.relative_rotation_on()
-                               ? bytes_per_automaton_moments
+                               ? cost_model::bytes_per_automaton_moments
                                : 0.;
       for (unsigned int r = 0; r < n_ranks; ++r)
-        fig.bytes_per_rank_max
-          = std::max(fig.bytes_per_rank_max,
-                     owned[r] * (bytes_per_owned_automaton + moments)
-                       + ghosts[r] * (bytes_per_ghost_automaton + moments));
+        fig.bytes_per_rank_max = std::max(
+          fig.bytes_per_rank_max,
+          owned[r] * (cost_model::bytes_per_owned_automaton + moments)
+            + ghosts[r] * (cost_model::bytes_per_ghost_automaton + moments));
       return fig;
     }
   } // namespace mca

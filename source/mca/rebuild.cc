@@ -160,36 +160,20 @@ namespace tribodyn
       // owners (neighbour ranks).
       const auto                      &nb_ranks = cells.neighbour_ranks();
       std::vector<std::vector<double>> out_pairs(nb_ranks.size());
-      const unsigned int width = sizeof(PairState) / sizeof(double);
-      static_assert(sizeof(PairState) % sizeof(double) == 0, "layout");
+      // A record: the key (raw 64-bit word), then the state in id order.
+      const unsigned int width = 1 + pair_fields.width();
       for (unsigned int p = 0; p < n_old; ++p)
         for (const unsigned int k : {pi[p], pj[p]})
           if (k < n_owned && destination[k] != rank)
             {
-              const bool swap = id[pi[p]] > id[pj[p]];
-              PairState  s;
-              s.key     = pair_key(id[pi[p]], id[pj[p]]);
-              s.bonded  = bonded[p];
-              s.contact = in_contact[p];
-              // q of the automaton of smaller id
-              s.q     = swap ? pair_distance(p) - q_i[p] : q_i[p];
-              s.sig_i = swap ? sig_j[p] : sig_i[p];
-              s.sig_j = swap ? sig_i[p] : sig_j[p];
-              s.heat  = heat.empty() ? 0. : heat[p];
-              // the shear stress is odd under relabelling (it follows
-              // x_j - x_i): a swap negates it and exchanges the sides
-              for (unsigned int c = 0; c < 3; ++c)
-                s.tau[c] = swap ? -tau.component[c][p] : tau.component[c][p];
-              s.tau_scale_i = swap ? tau_scale_j[p] : tau_scale_i[p];
-              s.tau_scale_j = swap ? tau_scale_i[p] : tau_scale_j[p];
-              // the relative-rotation moment on i is odd as well
-              for (unsigned int c = 0; c < 3; ++c)
-                s.moment[c] = !moment_scene ? 0.
-                              : swap        ? -pair_moment.component[c][p]
-                                            : pair_moment.component[c][p];
               auto &buf = out_pairs[cells.neighbour_index(destination[k])];
-              const auto *raw = reinterpret_cast<const double *>(&s);
-              buf.insert(buf.end(), raw, raw + width);
+              const std::size_t start = buf.size();
+              buf.resize(start + width);
+              buf[start] = bits_to_double(pair_key(id[pi[p]], id[pj[p]]));
+              pair_fields.pack(p,
+                               id[pi[p]] > id[pj[p]],
+                               pair_distance(p),
+                               buf.data() + start + 1);
             }
       const auto in_pairs = neighbours.exchange(out_pairs, 81);
       for (unsigned int k = 0; k < n_owned; ++k)
@@ -319,19 +303,17 @@ namespace tribodyn
                            + std::to_string(n_global) + ").");
 
       // Received pair states by key, for the restore.
-      kept_pairs.clear();
+      kept_states.clear();
+      kept_keys.clear();
       for (const auto &buf : in_pairs)
         for (std::size_t o = 0; o + width <= buf.size(); o += width)
           {
-            PairState s;
-            std::memcpy(&s, buf.data() + o, sizeof(PairState));
-            kept_pairs.push_back(s);
+            kept_keys.emplace_back(double_to_bits(buf[o]), kept_keys.size());
+            kept_states.insert(kept_states.end(),
+                               buf.begin() + o + 1,
+                               buf.begin() + o + width);
           }
-      std::sort(kept_pairs.begin(),
-                kept_pairs.end(),
-                [](const PairState &a, const PairState &b) {
-                  return a.key < b.key;
-                });
+      std::sort(kept_keys.begin(), kept_keys.end());
       // This rank's old pairs by ids (their states stay in the pair arrays
       // until restore_pair_states() gathers them).
       std::sort(old_pairs.begin(),
@@ -444,7 +426,8 @@ namespace tribodyn
       // Source of each new pair's state: an old pair of this rank, a
       // received state, or none (a new pair); and whether the sides swap
       // (the old state had i = the other automaton).
-      constexpr std::uint32_t    none = 0xffffffffu, received = 0x80000000u;
+      constexpr std::uint32_t    none     = PairFieldTable::none;
+      constexpr std::uint32_t    received = PairFieldTable::received;
       std::vector<std::uint32_t> source(n_pairs, none);
       std::vector<unsigned char> swap(n_pairs, 0);
       if (!initial)
@@ -468,156 +451,39 @@ namespace tribodyn
                 continue;
               }
             const std::uint64_t key = pair_key(a, b);
-            const auto          jt
-              = std::lower_bound(kept_pairs.begin(),
-                                 kept_pairs.end(),
-                                 key,
-                                 [](const PairState &s, const std::uint64_t k) {
-                                   return s.key < k;
-                                 });
-            if (jt != kept_pairs.end() && jt->key == key)
+            const auto          jt  = std::lower_bound(
+              kept_keys.begin(),
+              kept_keys.end(),
+              key,
+              [](const std::pair<std::uint64_t, std::uint32_t> &e,
+                 const std::uint64_t k) { return e.first < k; });
+            if (jt != kept_keys.end() && jt->first == key)
               {
-                source[p] = received | (jt - kept_pairs.begin());
+                source[p] = received | jt->second;
                 swap[p]   = flip; // received states are in id order
               }
           }
       std::vector<OldPair>().swap(old_pairs);
       std::vector<unsigned char>().swap(old_flags);
 
-      // Each field is remapped into scratch arrays and swapped in: at most
-      // two scratch arrays of one double per pair live at a time (the
-      // memory peak of a rebuild).
-      std::vector<double> new_a, new_b;
-      // Remap the side pair (field_i, field_j): value(state, side) of a
-      // received state; the sides exchange when the pair is relabelled.
-      auto remap_sides = [&](std::vector<double> &field_i,
-                             std::vector<double> &field_j,
-                             const auto          &received_value,
-                             const double         default_value) {
-        new_a.assign(n_pairs, default_value);
-        new_b.assign(n_pairs, default_value);
-        for (unsigned int p = 0; p < n_pairs; ++p)
-          {
-            const std::uint32_t o = source[p];
-            if (o == none)
-              continue;
-            double a, b;
-            if (o & received)
-              {
-                a = received_value(kept_pairs[o & ~received], 0);
-                b = received_value(kept_pairs[o & ~received], 1);
-              }
-            else
-              a = field_i[o], b = field_j[o];
-            new_a[p] = swap[p] ? b : a;
-            new_b[p] = swap[p] ? a : b;
-          }
-        field_i.swap(new_a);
-        field_j.swap(new_b);
-      };
-      remap_sides(
-        sig_i,
-        sig_j,
-        [](const PairState &st, const int side) {
-          return side == 0 ? st.sig_i : st.sig_j;
-        },
-        0.);
-      remap_sides(
-        tau_scale_i,
-        tau_scale_j,
-        [](const PairState &st, const int side) {
-          return side == 0 ? st.tau_scale_i : st.tau_scale_j;
-        },
-        1.);
-      // the shear stress vector and the relative-rotation moment on i:
-      // odd under relabelling
-      auto remap_odd_vector
-        = [&](VectorArray &field, const auto &received_value) {
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                new_a.assign(n_pairs, 0.);
-                for (unsigned int p = 0; p < n_pairs; ++p)
-                  {
-                    const std::uint32_t o = source[p];
-                    if (o == none)
-                      continue;
-                    const double t
-                      = (o & received)
-                          ? received_value(kept_pairs[o & ~received], c)
-                          : field.component[c][o];
-                    new_a[p] = swap[p] ? -t : t;
-                  }
-                field.component[c].swap(new_a);
-              }
-          };
-      remap_odd_vector(tau, [](const PairState &st, const unsigned int c) {
-        return st.tau[c];
+      // Every persistent pair field, from its source (pair_fields: the one
+      // list of them and of their relabelling rules).
+      pair_fields.remap(source, swap, kept_states, [this](const unsigned p) {
+        return pair_distance(p);
       });
-      if (moment_scene)
-        remap_odd_vector(pair_moment,
-                         [](const PairState &st, const unsigned int c) {
-                           return st.moment[c];
-                         });
+      std::vector<double>().swap(kept_states);
+      std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(kept_keys);
 
-      // q of automaton i (q_j = r - q_i), the plastic heat
-      new_a.resize(n_pairs);
-      for (unsigned int p = 0; p < n_pairs; ++p)
-        {
-          const std::uint32_t o = source[p];
-          const double        r = pair_distance(p);
-          double              q = r / 2;
-          if (o != none)
-            q = (o & received) ? kept_pairs[o & ~received].q : q_i[o];
-          new_a[p] = swap[p] ? r - q : q;
-        }
-      q_i.swap(new_a);
-      if (!heat.empty() || bond_scene)
-        {
-          new_a.assign(n_pairs, 0.);
-          for (unsigned int p = 0; p < n_pairs; ++p)
-            {
-              const std::uint32_t o = source[p];
-              if (o != none)
-                new_a[p] = (o & received) ? kept_pairs[o & ~received].heat
-                           : heat.empty() ? 0.
-                                          : heat[o];
-            }
-          heat.swap(new_a);
-        }
-      std::vector<double>().swap(new_a);
-      std::vector<double>().swap(new_b);
-
-      // bonds and contacts (initially: pairs of a body at contact distance)
-      {
-        std::vector<unsigned char> b(n_pairs, 0), c(n_pairs, 0);
+      // Bonds and contacts of the initial pairs: pairs of a body at the
+      // contact distance are bonded.
+      if (initial)
         for (unsigned int p = 0; p < n_pairs; ++p)
           {
-            const std::uint32_t o = source[p];
-            if (o == none)
-              {
-                if (initial)
-                  {
-                    const double r = pair_distance(p);
-                    b[p]           = body_index(pi[p]) == body_index(pj[p])
-                           && r < d * (1 + 1e-6);
-                    c[p] = r < d * (1 + 1e-6);
-                  }
-              }
-            else if (o & received)
-              {
-                b[p] = kept_pairs[o & ~received].bonded != 0;
-                c[p] = kept_pairs[o & ~received].contact != 0;
-              }
-            else
-              {
-                b[p] = bonded[o];
-                c[p] = in_contact[o];
-              }
+            const double r = pair_distance(p);
+            bonded[p]
+              = body_index(pi[p]) == body_index(pj[p]) && r < d * (1 + 1e-6);
+            in_contact[p] = r < d * (1 + 1e-6);
           }
-        bonded.swap(b);
-        in_contact.swap(c);
-      }
-      std::vector<PairState>().swap(kept_pairs);
     }
   } // namespace mca
 } // namespace tribodyn

@@ -13,6 +13,7 @@
 #include <memory>
 #include <tribodyn/mca/decomposition.h>
 #include <tribodyn/mca/packing.h>
+#include <tribodyn/mca/pair_fields.h>
 #include <tribodyn/mca/parameters.h>
 #include <tribodyn/mca/system_figures.h>
 #include <tribodyn/mca/vector_algebra.h>
@@ -370,22 +371,6 @@ namespace tribodyn
       static PartitionFigures
       partition_report(const Parameters &prm, const unsigned int n_ranks);
 
-      /// Memory per owned and per ghost automaton for the partition
-      /// report's estimate, measured (bench/mca/compare.py --memory): peak
-      /// RSS per automaton of a 256 000-automaton elastic block on one rank
-      /// (955 B), and the increase on two ranks divided by the ghosts
-      /// (1118 B per owned automaton with 0.12 ghosts per owned one: the
-      /// ghost's own arrays and its pairs, stored on both ranks).
-      static constexpr double bytes_per_owned_automaton = 960;
-      static constexpr double bytes_per_ghost_automaton = 1400;
-      /// Added per automaton (owned or ghost) by the relative-rotation
-      /// moments (24 B a pair): measured +142 B of peak RSS and of arrays
-      /// per automaton on the 128 000-automaton elastic block.
-      static constexpr double bytes_per_automaton_moments = 145;
-      /// p4est weight of a cell per automaton it holds (an empty cell
-      /// weighs 1: its bins and ghost-layer share, ~1/8 of an automaton).
-      static constexpr unsigned int cost_per_automaton = 8;
-
       /// Collective: the largest number of owned automata of a rank over
       /// the mean (1: perfectly balanced work).
       double
@@ -653,15 +638,16 @@ namespace tribodyn
       std::vector<unsigned int>  i_pairs_first, j_pairs_first, j_pairs;
       std::vector<std::uint16_t> i_pairs_count;
 
-      /// Pair states kept over a rebuild, sorted by (id_i, id_j).
-      struct PairState
-      {
-        std::uint64_t key; ///< smaller id << 32 | larger id
-        double        bonded, contact, q, sig_i, sig_j, heat;
-        double        tau[3], tau_scale_i, tau_scale_j;
-        double        moment[3];
-      };
-      std::vector<PairState> kept_pairs;
+      /// The persistent pair fields above with their relabelling rules
+      /// (register_pair_fields(): the one list of what a pair carries).
+      PairFieldTable pair_fields;
+      void
+      register_pair_fields();
+      /// Pair states received over a rebuild: records of
+      /// pair_fields.width() doubles in id order (kept_states), and their
+      /// keys (smaller id << 32 | larger id) with the record index, sorted.
+      std::vector<double>                                  kept_states;
+      std::vector<std::pair<std::uint64_t, std::uint32_t>> kept_keys;
       /// This rank's old pairs by their ids (12 bytes each: this list is
       /// part of the memory peak of a rebuild).
       struct OldPair
@@ -670,8 +656,7 @@ namespace tribodyn
         std::uint32_t index;  ///< into the old pair arrays
       };
       std::vector<OldPair> old_pairs;
-      /// Per old pair: bit 0 = i had the larger id; bit 1 = bonded and
-      /// counted here (i owned).
+      /// Per old pair: 1 = its i had the larger id.
       std::vector<unsigned char> old_flags;
 
       double             plastic_work = 0, friction_work = 0;

@@ -34,7 +34,29 @@ namespace tribodyn
       double             ghosts_min = 0, ghosts_mean = 0, ghosts_max = 0;
       double             bytes_per_rank_max = 0;
     };
-  } // namespace mca
+
+
+    /// Measured cost of an automaton: memory for the partition report's
+    /// estimate, work for the weighted partition.
+    namespace cost_model
+    {
+      /// Memory per owned and per ghost automaton for the partition
+      /// report's estimate, measured (bench/mca/compare.py --memory): peak
+      /// RSS per automaton of a 256 000-automaton elastic block on one rank
+      /// (955 B), and the increase on two ranks divided by the ghosts
+      /// (1118 B per owned automaton with 0.12 ghosts per owned one: the
+      /// ghost's own arrays and its pairs, stored on both ranks).
+      constexpr double bytes_per_owned_automaton = 960;
+      constexpr double bytes_per_ghost_automaton = 1400;
+      /// Added per automaton (owned or ghost) by the relative-rotation
+      /// moments (24 B a pair): measured +142 B of peak RSS and of arrays
+      /// per automaton on the 128 000-automaton elastic block.
+      constexpr double bytes_per_automaton_moments = 145;
+      /// p4est weight of a cell per automaton it holds (an empty cell
+      /// weighs 1: its bins and ghost-layer share, ~1/8 of an automaton).
+      constexpr unsigned int cost_per_automaton = 8;
+    } // namespace cost_model
+  }   // namespace mca
 } // namespace tribodyn
 
 #endif
