@@ -111,6 +111,17 @@ namespace tribodyn
           "'x0 y0 z0 x1 y1 z1 MATERIAL'. Automata of different bodies are "
           "not bonded at the start.");
         prm.declare_entry(
+          "Size bands",
+          "",
+          Patterns::Anything(),
+          "Graded packing, separated by ';': 'z0 z1 k' packs the sites with "
+          "z0 <= z < z1 with automata of size 2^k d (k = 1 or 2) on the FCC "
+          "lattice of that size, whose sites are also sites of the finer "
+          "lattices; elsewhere the size is d. Bands must not overlap. "
+          "Planning only for now (issue #18): --partition-report counts "
+          "and balances a graded scene; a run refuses it until the pair "
+          "law for unequal automata is in.");
+        prm.declare_entry(
           "Regions",
           "",
           Patterns::Anything(),
@@ -225,6 +236,37 @@ namespace tribodyn
         check_parameter(!bodies.empty(),
                         "Geometry/Bodies",
                         "give at least one body.");
+
+        size_bands.clear();
+        for (const std::string &entry : split(prm.get("Size bands"), ';'))
+          {
+            const auto        t = tokens(entry);
+            const std::string p = "Geometry/Size bands";
+            if (t.size() != 3)
+              throw InputError("Parameter '" + p + "': the entry '" + entry
+                               + "' must read 'z0 z1 k' (heights in m, k = "
+                                 "1 or 2: automata of size 2^k d).");
+            SizeBand band;
+            band.z_lower   = to_double(t[0], p, entry);
+            band.z_upper   = to_double(t[1], p, entry);
+            const double k = to_double(t[2], p, entry);
+            check_parameter(band.z_lower < band.z_upper,
+                            p,
+                            "the entry '" + entry + "' must have z0 < z1.");
+            check_parameter(k == 1 || k == 2,
+                            p,
+                            "the entry '" + entry + "' has level " + t[2]
+                              + "; give k = 1 (size 2d) or 2 (size 4d).");
+            band.level = static_cast<unsigned int>(k);
+            for (const SizeBand &other : size_bands)
+              check_parameter(band.z_upper <= other.z_lower
+                                || other.z_upper <= band.z_lower,
+                              p,
+                              "the band '" + entry
+                                + "' overlaps an earlier one: give each "
+                                  "height one size.");
+            size_bands.push_back(band);
+          }
 
         regions.clear();
         for (const std::string &entry : split(prm.get("Regions"), ';'))
@@ -344,5 +386,24 @@ namespace tribodyn
                           "gives the memory per rank on N ranks).");
     }
 
+    unsigned int
+    GeometryParameters::size_level(const double z) const
+    {
+      for (const SizeBand &band : size_bands)
+        if (z >= band.z_lower && z < band.z_upper)
+          return band.level;
+      return 0;
+    }
+
+
+    double
+    GeometryParameters::largest_pair_distance() const
+    {
+      unsigned int top = 0;
+      for (const SizeBand &band : size_bands)
+        top = std::max(top, band.level);
+      return top == 0 ? automaton_size
+                      : std::sqrt(5.) / 2 * (1u << top) * automaton_size;
+    }
   } // namespace mca
 } // namespace tribodyn

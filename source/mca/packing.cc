@@ -197,8 +197,28 @@ namespace tribodyn
                   }
                 if (body < 0)
                   continue;
+                // Graded packing: in a band of level L only the sites of the
+                // lattice of size 2^L d are kept, those whose half-lattice
+                // indices h = 2 (i, j, k) + 2 b are multiples of 2^L with
+                // an even sum over 2^L.
+                const unsigned int level = g.size_level(p[2]);
+                if (level > 0)
+                  {
+                    const long step = 1L << level;
+                    long       sum  = 0;
+                    bool       on   = true;
+                    for (unsigned int c = 0; c < 3; ++c)
+                      {
+                        const long h = 2 * ijk[c] + (b[c] > 0 ? 1 : 0);
+                        on           = on && h % step == 0;
+                        sum += h;
+                      }
+                    if (!on || (sum / step) % 2 != 0)
+                      continue;
+                  }
                 PackedAutomaton automaton;
-                automaton.id = static_cast<std::uint32_t>(
+                automaton.level = static_cast<unsigned char>(level);
+                automaton.id    = static_cast<std::uint32_t>(
                   ((k * (n[1] + 1) + j) * (n[0] + 1) + i) * 4 + bi);
                 automaton.position = p;
                 automaton.material = g.bodies[body].material;

@@ -36,8 +36,9 @@ namespace tribodyn
     AutomatonSystem::partition_report(const Parameters  &prm,
                                       const unsigned int n_ranks)
     {
-      const auto  &g     = prm.geometry;
-      const double range = g.automaton_size * (1 + prm.interaction.skin);
+      const auto  &g = prm.geometry;
+      const double range
+        = g.largest_pair_distance() * (1 + prm.interaction.skin);
       std::array<unsigned int, 3> trees;
       unsigned int                level;
       Decomposition::choose_grid(g, range, trees, level);
@@ -85,9 +86,11 @@ namespace tribodyn
                  + interleave(i & mask, j & mask, k & mask, level);
         };
       // Automata per cell (one pass over the lattice).
-      std::vector<std::uint16_t> count(n_cells, 0);
-      Point3                     upper = g.domain_upper;
+      std::vector<std::uint16_t>        count(n_cells, 0);
+      std::array<unsigned long long, 3> per_size = {{0, 0, 0}};
+      Point3                            upper    = g.domain_upper;
       pack_box(g, g.domain_lower, upper, [&](const PackedAutomaton &a) {
+        ++per_size[std::min<unsigned int>(a.level, 2)];
         std::array<unsigned int, 3> ijk;
         for (unsigned int c = 0; c < 3; ++c)
           ijk[c] = std::min<unsigned int>(
@@ -179,6 +182,7 @@ namespace tribodyn
 
       PartitionFigures fig;
       fig.n_automata = total;
+      fig.n_per_size = per_size;
       fig.n_ranks    = n_ranks;
       auto stats     = [&](const std::vector<double> &v,
                        double                    &lo,

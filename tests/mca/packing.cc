@@ -85,5 +85,73 @@ main(int argc, char **argv)
                  M_PI * 2.5 * d * 2.5 * d * L,
                  0.05,
                  "cylinder (oblique axis): automata x V vs its volume");
+
+  // Graded packing (issue #18): a 16^3 block with z in [4a, 8a) at size
+  // 2d and [8a, 16a) at 4d. A band of level L holds exactly the sites of
+  // the FCC lattice of constant 2^L a with the common origin: 4 per cell of
+  // that lattice, 4 (16 / 2^L)^2 (band height / 2^L a) of them; each is a
+  // site of the fine lattice (same id, same position), and an interior one
+  // has 12 neighbours of its size at 2^L d.
+  {
+    const unsigned int m    = 16;
+    Parameters         q    = block_parameters(m, d, 0);
+    const auto         fine = pack_automata(q.geometry, 2);
+    q.geometry.size_bands
+      = {{4 * a - 1e-3 * a, 8 * a - 1e-3 * a, 1}, {8 * a - 1e-3 * a, 1, 2}};
+    const auto                 graded    = pack_automata(q.geometry, 2);
+    std::array<std::size_t, 3> per_level = {{0, 0, 0}};
+    bool                       fine_ids  = true;
+    for (const auto &g : graded)
+      {
+        ++per_level[g.level];
+        const auto site = std::lower_bound(fine.begin(),
+                                           fine.end(),
+                                           g.id,
+                                           [](const auto &s, const auto id) {
+                                             return s.id < id;
+                                           });
+        fine_ids        = fine_ids && site != fine.end() && site->id == g.id
+                   && site->position.distance(g.position) < 1e-12 * d;
+      }
+    check(per_level[0] == 4 * m * m * 4 && per_level[1] == 4 * 8 * 8 * 2
+            && per_level[2] == 4 * 4 * 4 * 2,
+          "graded block: " + std::to_string(per_level[0]) + " / "
+            + std::to_string(per_level[1]) + " / "
+            + std::to_string(per_level[2])
+            + " automata of d / 2d / 4d (expected 4096 / 512 / 128)");
+    check(fine_ids, "every graded automaton sits on the fine site of its id");
+    for (const unsigned int level : {1u, 2u})
+      {
+        // the automaton of this level nearest to the middle of its band
+        const double z_mid = level == 1 ? 6 * a : 12 * a;
+        const Point3 mid(m * a / 2, m * a / 2, z_mid);
+        std::size_t  best = graded.size();
+        for (std::size_t k = 0; k < graded.size(); ++k)
+          if (graded[k].level == level
+              && (best == graded.size()
+                  || graded[k].position.distance(mid)
+                       < graded[best].position.distance(mid)))
+            best = k;
+        const double size    = (1u << level) * d;
+        unsigned int equal   = 0;
+        double       nearest = 1e300;
+        for (std::size_t k = 0; k < graded.size(); ++k)
+          if (k != best && graded[k].level == level)
+            {
+              const double r
+                = graded[k].position.distance(graded[best].position);
+              nearest = std::min(nearest, r);
+              equal += r < size * (1 + 1e-9);
+            }
+        check_relative(nearest,
+                       size,
+                       1e-12,
+                       "level " + std::to_string(level)
+                         + ": nearest neighbour of its size at 2^L d");
+        check(equal == 12,
+              "level " + std::to_string(level) + ": 12 neighbours at 2^L d ("
+                + std::to_string(equal) + ")");
+      }
+  }
   return result();
 }

@@ -22,6 +22,8 @@ namespace tribodyn
       /// 1: in a contacting part of Geometry/Inclusions; 2: in a part and
       /// converted by an inclusion (cylinder or void: voids are not added).
       unsigned char part = 0;
+      /// Size 2^level d (Geometry/Size bands).
+      unsigned char level = 0;
     };
 
     /**

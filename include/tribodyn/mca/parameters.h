@@ -178,6 +178,27 @@ namespace tribodyn
       /// half the width so that asperities meet asperities.
       double interface_shift_y = 0;
 
+      /// Graded packing (issue #18): automata whose site lies in the band
+      /// z_lower <= z < z_upper (in the frame of the Bodies, before the
+      /// upper body of a rough interface is lifted) have size 2^level d,
+      /// on the FCC lattice of that size with the common origin (its sites
+      /// are sites of the finer lattices). Elsewhere: size d.
+      struct SizeBand
+      {
+        double       z_lower = 0, z_upper = 0;
+        unsigned int level = 0;
+      };
+      std::vector<SizeBand> size_bands;
+      /// The size level of a site at height @p z (0 outside every band).
+      unsigned int
+      size_level(const double z) const;
+      /// Largest distance of two interacting automata at rest: d, or with
+      /// size bands up to level L the farthest Voronoi neighbours of a
+      /// graded packing, (√5 / 2) 2^L d (test mca_voronoi). The pair-list
+      /// range and the cell size are this times 1 + Interaction/Skin.
+      double
+      largest_pair_distance() const;
+
       InclusionPackingParameters inclusions;
       /// The generated inclusions (set by parse_parameters or
       /// generate_inclusion_layout(); shared by copies, never modified).

@@ -2,6 +2,8 @@
 #ifndef tribodyn_mca_system_figures_h
 #define tribodyn_mca_system_figures_h
 
+#include <array>
+
 namespace tribodyn
 {
   namespace mca
@@ -29,10 +31,12 @@ namespace tribodyn
     struct PartitionFigures
     {
       unsigned long long n_automata = 0;
-      unsigned int       n_ranks    = 0;
-      double             owned_min = 0, owned_mean = 0, owned_max = 0;
-      double             ghosts_min = 0, ghosts_mean = 0, ghosts_max = 0;
-      double             bytes_per_rank_max = 0;
+      /// Automata of size d, 2d, 4d (Geometry/Size bands).
+      std::array<unsigned long long, 3> n_per_size = {{0, 0, 0}};
+      unsigned int                      n_ranks    = 0;
+      double owned_min = 0, owned_mean = 0, owned_max = 0;
+      double ghosts_min = 0, ghosts_mean = 0, ghosts_max = 0;
+      double bytes_per_rank_max = 0;
     };
 
 

@@ -1,0 +1,43 @@
+"""The seed's friction scene graded (issue #18, acceptance of item 6):
+`tribodyn --partition-report 256` on prm/mca/friction_seed_scale_graded.prm
+must print at most 1/6 of the automata of the uniform
+prm/mca/friction_seed_scale.prm (the seed's heights at d = 7.5 nm: 89 % of
+them in the bases, packed at 2d and 4d in the graded scene) and a work
+imbalance (largest owned automata over the mean) of at most 1.10 on 256
+ranks (p4est's partition weighted by the automata per cell). Measured
+2026-11-24: 4 347 288 against 28 226 880 automata (6.49x fewer),
+imbalance 1.018. Arguments: the tribodyn binary, the prm/mca folder."""
+import re
+import subprocess
+import sys
+
+from check_tools import finish, report
+
+tribodyn, folder = sys.argv[1], sys.argv[2]
+
+
+def partition(prm):
+    p = subprocess.run([tribodyn, "--partition-report", "256", f"{folder}/{prm}"],
+                       capture_output=True, text=True)
+    print(p.stdout)
+    total = re.search(r"Partition of (\d+) automata over 256 ranks", p.stdout)
+    imbalance = re.search(r"imbalance max/mean ([0-9.]+)", p.stdout)
+    sizes = re.search(r"automata per size: (\d+) of d, (\d+) of 2d, (\d+) of 4d", p.stdout)
+    return (p.returncode, int(total.group(1)) if total else None,
+            float(imbalance.group(1)) if imbalance else None, sizes)
+
+
+code_u, uniform, _, _ = partition("friction_seed_scale.prm")
+code_g, graded, imbalance, sizes = partition("friction_seed_scale_graded.prm")
+report(code_u == 0 and code_g == 0 and uniform and graded,
+       "both partition reports ran")
+if uniform and graded:
+    report(graded * 6 <= uniform,
+           f"graded scene: {graded} automata <= 1/6 of the uniform {uniform} "
+           f"({uniform / graded:.2f}x fewer)")
+    report(imbalance is not None and imbalance <= 1.10,
+           f"imbalance on 256 ranks {imbalance} <= 1.10")
+    report(sizes is not None and sum(int(s) for s in sizes.groups()) == graded
+           and int(sizes.group(2)) > 0 and int(sizes.group(3)) > 0,
+           "automata per size printed, all three sizes present, summing to the total")
+finish()
