@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -14,6 +15,23 @@ namespace tribodyn
   RunError::RunError(const std::string &message)
       : std::runtime_error(message)
   {
+  }
+
+
+  void
+  throw_collectively(const MPI_Comm     comm,
+                     const bool         failed,
+                     const std::string &message)
+  {
+    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int me      = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int first
+      = dealii::Utilities::MPI::min(failed ? me : n_ranks, comm);
+    if (first == n_ranks)
+      return;
+    std::string text = me == first ? message : std::string();
+    text             = dealii::Utilities::MPI::broadcast(comm, text, first);
+    throw RunError(text);
   }
 
 

@@ -90,8 +90,12 @@ namespace tribodyn
           lower  = {{lo[0], lo[1], lo[2]}};
           upper  = {{hi[0], hi[1], hi[2]}};
           height = hi[axis] - lo[axis] + layer;
-          area = s.n_global_automata() * std::pow(p.geometry.automaton_size, 3)
-                 / std::sqrt(2.) / height;
+          // nominal section: the volume of the automata over the height
+          // (automata of several sizes: their own volumes)
+          double volume = 0;
+          for (unsigned int k = 0; k < s.n_owned_automata(); ++k)
+            volume += s.volumes()[k];
+          area = dealii::Utilities::MPI::sum(volume, comm) / height;
           // distance between the centroids of the two groups
           const auto u0 = centroid();
           length        = std::abs(u0.first - u0.second);
@@ -195,8 +199,9 @@ namespace tribodyn
                   || yt < lower[third] + 2 * layer
                   || yt > upper[third] - 2 * layer)
                 continue;
-              in[0] += -st[k][axis];
-              in[1] += 1;
+              // (volume-weighted: automata of several sizes)
+              in[0] += -st[k][axis] * system.volumes()[k];
+              in[1] += system.volumes()[k];
             }
           MPI_Allreduce(MPI_IN_PLACE, in, 2, MPI_DOUBLE, MPI_SUM, comm);
           strains.push_back(strain);

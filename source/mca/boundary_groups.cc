@@ -83,7 +83,7 @@ namespace tribodyn
                       }
               }
           if (set)
-            work += 0.5 * mc[mat[k]].mass * (dot(v[k], v[k]) - before);
+            work += 0.5 * mass_of(k) * (dot(v[k], v[k]) - before);
         }
       load_work += work;
     }
@@ -94,7 +94,7 @@ namespace tribodyn
                                    const std::vector<Vec3> &values) const
     {
       const auto  &grp  = prm.boundary.groups;
-      const double mass = mc[mat[k]].mass;
+      const double mass = mass_of(k);
       Vec3         fd{{0, 0, 0}};
       for (unsigned int c = 0; c < 3; ++c)
         fd[c] = -prm.boundary.global_damping * mass * v[k][c];
@@ -187,8 +187,7 @@ namespace tribodyn
           double wp[6] = {0, 0, 0, 0, 0, 0}, excess = 0;
           for (unsigned int k = 0; k < n_owned; ++k)
             {
-              const auto        &m    = mc[mat[k]];
-              const double       a    = 0.5 * dt / m.mass;
+              const double       a    = 0.5 * dt / mass_of(k);
               const unsigned int mask = constrained(k);
               for (unsigned int c = 0; c < 3; ++c)
                 {
@@ -204,7 +203,7 @@ namespace tribodyn
                 }
               if (rotations)
                 {
-                  const double b = 0.5 * dt / m.inertia;
+                  const double b = 0.5 * dt / inertia_of(k);
                   for (unsigned int c = 0; c < 3; ++c)
                     {
                       const double wb = w[k][c];
@@ -235,8 +234,7 @@ namespace tribodyn
       double wp = 0, wl = 0, wd = 0;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
-          const auto  &m  = mc[mat[k]];
-          const double a  = 0.5 * dt / m.mass;
+          const double a  = 0.5 * dt / mass_of(k);
           const Vec3   vb = v[k];
           // after a rebuild f_damp is in the old order: recompute it (from
           // the current velocity: an O(dt) error at that step only)
@@ -266,7 +264,7 @@ namespace tribodyn
             }
           if (rotations)
             {
-              const double b  = 0.5 * dt / m.inertia;
+              const double b  = 0.5 * dt / inertia_of(k);
               const Vec3   wb = w[k];
               for (unsigned int c = 0; c < 3; ++c)
                 {
@@ -333,7 +331,7 @@ namespace tribodyn
               {
                 for (unsigned int c = 0; c < 3; ++c)
                   sums[4 * q + c] += f[k][c];
-                sums[4 * q + 3] += mc[mat[k]].mass;
+                sums[4 * q + 3] += mass_of(k);
               }
       dealii::Utilities::MPI::sum(sums, comm, sums);
       for (unsigned int k = 0; k < n_owned; ++k)
@@ -341,7 +339,7 @@ namespace tribodyn
           for (unsigned int q = 0; q < plates.size(); ++q)
             if ((groups[k] & (1u << plates[q])) && sums[4 * q + 3] > 0)
               for (unsigned int c = 0; c < 3; ++c)
-                f[k][c] = mc[mat[k]].mass * sums[4 * q + c] / sums[4 * q + 3];
+                f[k][c] = mass_of(k) * sums[4 * q + c] / sums[4 * q + 3];
     }
 
 

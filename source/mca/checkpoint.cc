@@ -32,8 +32,9 @@ namespace tribodyn
   {
     namespace
     {
-      // 2: with the relative-rotation moments (pair_moment)
-      constexpr unsigned int state_version = 2;
+      // 2: with the relative-rotation moments (pair_moment); 3: size levels
+      // and volumes of the automata (graded scenes)
+      constexpr unsigned int state_version = 3;
 
       // Scalars and vectors of trivially copyable types as raw bytes (fast
       // and exact); anything else through Boost's own serialization.
@@ -95,7 +96,8 @@ namespace tribodyn
   /* automata: owned first, then ghosts */                                    \
   apply(id) apply(order) apply(cell_of) apply(x) apply(x_at_rebuild)          \
   apply(v) apply(w) apply(f) apply(torque) apply(u)                           \
-  apply(mat) apply(body) apply(groups) apply(eps_p) apply(sigma_y)            \
+  apply(mat) apply(body) apply(size_level) apply(volume) apply(groups)       \
+  apply(eps_p) apply(sigma_y)                                                \
   apply(group_reaction) apply(fabric_inverse) apply(changed) apply(f_damp)   \
   /* pairs: the list (the persistent fields follow, from pair_fields) */     \
   apply(pi) apply(pj) apply(pshift)

@@ -109,8 +109,10 @@ namespace tribodyn
             std::string("The periodic length in ") + "xyz"[c] + " ("
             + format_number(period_[c])
             + " m) must exceed twice the interaction range (automaton size "
-              "times 1 + Interaction/Skin = "
-            + format_number(range) + " m).");
+              "times 1 + Interaction/Skin, with Geometry/Size bands 1.12 "
+              "times the largest size: "
+            + format_number(range)
+            + " m). Widen the box in that direction or use smaller sizes.");
       std::array<unsigned int, 3> trees;
       unsigned int                level;
       choose_grid(g, range, trees, level);

@@ -117,10 +117,12 @@ namespace tribodyn
           "Graded packing, separated by ';': 'z0 z1 k' packs the sites with "
           "z0 <= z < z1 with automata of size 2^k d (k = 1 or 2) on the FCC "
           "lattice of that size, whose sites are also sites of the finer "
-          "lattices; elsewhere the size is d. Bands must not overlap. "
-          "Planning only for now (issue #18): --partition-report counts "
-          "and balances a graded scene; a run refuses it until the pair "
-          "law for unequal automata is in.");
+          "lattices; elsewhere the size is d. Bands must not overlap, and "
+          "the size changes by a factor 2 at a time (d, 2d, 4d). Automata "
+          "near a change of size take their volumes and contact areas from "
+          "their Voronoi cells (doc/theory/mca.md section 9); not yet with "
+          "Interaction/Relative rotation stiffness > 0. Plan a graded scene "
+          "with tribodyn --partition-report N FILE.prm.");
         prm.declare_entry(
           "Regions",
           "",
@@ -267,6 +269,25 @@ namespace tribodyn
                                   "height one size.");
             size_bands.push_back(band);
           }
+        // Sizes change by one level at a time: across a jump d -> 4d the
+        // Voronoi cells of the small automata reach far between the large
+        // ones (doc/theory/mca.md §9).
+        for (const SizeBand &band : size_bands)
+          for (const double plane : {band.z_lower, band.z_upper})
+            {
+              const double eps   = 1e-9 * automaton_size;
+              const int    below = size_level(plane - eps);
+              const int    above = size_level(plane + eps);
+              check_parameter(std::abs(below - above) <= 1,
+                              "Geometry/Size bands",
+                              "at z = " + format_number(plane)
+                                + " m the size jumps from "
+                                + std::to_string(1 << below) + "d to "
+                                + std::to_string(1 << above)
+                                + "d; grade it through a band of 2d "
+                                  "between them (sizes may change by a "
+                                  "factor 2 only).");
+            }
 
         regions.clear();
         for (const std::string &entry : split(prm.get("Regions"), ';'))
@@ -403,7 +424,29 @@ namespace tribodyn
       for (const SizeBand &band : size_bands)
         top = std::max(top, band.level);
       return top == 0 ? automaton_size
-                      : std::sqrt(5.) / 2 * (1u << top) * automaton_size;
+                      : transition_face_factor * (1u << top) * automaton_size;
+    }
+
+
+    bool
+    GeometryParameters::near_size_change(const double z) const
+    {
+      for (const SizeBand &band : size_bands)
+        for (const double plane : {band.z_lower, band.z_upper})
+          {
+            // the levels just below and above the plane (the bands are
+            // half-open: z_lower belongs to the band)
+            const double       eps   = 1e-9 * automaton_size;
+            const unsigned int below = size_level(plane - eps);
+            const unsigned int above = size_level(plane + eps);
+            if (below == above)
+              continue;
+            const double width
+              = 3. * (1u << std::max(below, above)) * automaton_size;
+            if (std::abs(z - plane) < width)
+              return true;
+          }
+      return false;
     }
   } // namespace mca
 } // namespace tribodyn

@@ -80,13 +80,6 @@ namespace tribodyn
         : context(context)
     {
       parameters.parse_parameters(prm);
-      if (!parameters.geometry.size_bands.empty())
-        throw InputError(
-          "Parameter 'Geometry/Size bands': a run with automata of several "
-          "sizes is not possible yet (issue #18: the pair law for unequal "
-          "automata is not in). A graded scene can be planned with "
-          "tribodyn --partition-report N FILE.prm; to run the scene, remove "
-          "the bands (uniform size d).");
       checkpoint.parse_parameters(prm);
       checkpoint_lines = resumable_parameter_lines(prm, "Time/End time");
     }

@@ -1,7 +1,8 @@
 // The pair list: all pairs of automata closer than the interaction range
-// (automaton size times 1 + skin) with at least one owned member, found
-// through the cells of the decomposition, with the periodic image shift of
-// each pair cached.
+// (automaton size times 1 + skin; graded scenes: by the sizes of the two
+// automata, pair_range2()) with at least one owned member, found through
+// the cells of the decomposition, with the periodic image shift of each
+// pair cached.
 
 #include <algorithm>
 #include <cmath>
@@ -56,7 +57,7 @@ namespace tribodyn
                       dn[e] = (x[b][e] - x[a][e]) + s[e];
                       r2 += dn[e] * dn[e];
                     }
-                  if (r2 >= range2)
+                  if (r2 >= (graded ? pair_range2(a, b) : range2))
                     continue;
                   // i is the automaton of smaller key: the same pair and
                   // orientation on every rank and partition

@@ -115,7 +115,8 @@ namespace tribodyn
     pack_box(const GeometryParameters                           &g,
              const Point3                                       &lower,
              const Point3                                       &upper,
-             const std::function<void(const PackedAutomaton &)> &add)
+             const std::function<void(const PackedAutomaton &)> &add,
+             const bool                                          continued)
     {
       const double                               d = g.automaton_size;
       const double                               a = d * std::sqrt(2.);
@@ -141,9 +142,15 @@ namespace tribodyn
           if (c == 2 && g.rough_interface)
             blo -= std::max(0., g.interface_gap);
           const double o = g.domain_lower[c] + a / 4;
-          lo[c]
-            = std::max(0L, static_cast<long>(std::floor((blo - o) / a)) - 1);
-          hi[c] = std::min(n[c], static_cast<long>(std::ceil((bhi - o) / a)));
+          lo[c]          = static_cast<long>(std::floor((blo - o) / a)) - 1;
+          hi[c]          = static_cast<long>(std::ceil((bhi - o) / a));
+          // the lattice of the box (continued: beyond it, but in a
+          // periodic direction the caller gives boxes of the period only)
+          if (!continued || g.periodic[c])
+            {
+              lo[c] = std::max(0L, lo[c]);
+              hi[c] = std::min(n[c], hi[c]);
+            }
         }
       // Body 1 of a rough interface may be shifted along y (periodic): its
       // sites that land in [lower, upper] come from anywhere in y, so the
@@ -164,6 +171,12 @@ namespace tribodyn
           hi[1] = n[1];
         }
       const InclusionLayout *inclusions = g.inclusion_layout.get();
+      std::array<double, 2> z_bodies = {{g.domain_upper[2], g.domain_lower[2]}};
+      for (const Body &body : g.bodies)
+        {
+          z_bodies[0] = std::min(z_bodies[0], body.lower[2]);
+          z_bodies[1] = std::max(z_bodies[1], body.upper[2] - 1e-9 * a);
+        }
       for (long k = lo[2]; k <= hi[2]; ++k)
         for (long j = lo[1]; j <= hi[1]; ++j)
           for (long i = lo[0]; i <= hi[0]; ++i)
@@ -172,16 +185,19 @@ namespace tribodyn
                 const auto &b = basis[bi];
                 Point3      p;
                 const long  ijk[3] = {i, j, k};
-                bool        inside = true;
+                bool        inside = true, in_lattice = true;
                 for (unsigned int c = 0; c < 3; ++c)
                   {
                     p[c] = g.domain_lower[c] + a / 4 + a * (ijk[c] + b[c]);
-                    if (p[c] >= g.domain_upper[c])
+                    if (p[c] >= g.domain_upper[c]
+                        && (!continued || g.periodic[c]))
                       inside = false;
+                    if (ijk[c] < 0 || ijk[c] > n[c])
+                      in_lattice = false;
                   }
                 if (!inside)
                   continue;
-                int body = -1;
+                int body = continued ? 0 : -1;
                 for (unsigned int m = 0; m < g.bodies.size(); ++m)
                   {
                     bool in = true;
@@ -201,7 +217,11 @@ namespace tribodyn
                 // lattice of size 2^L d are kept, those whose half-lattice
                 // indices h = 2 (i, j, k) + 2 b are multiples of 2^L with
                 // an even sum over 2^L.
-                const unsigned int level = g.size_level(p[2]);
+                // (continued: beyond the bodies in z, the band at their
+                // top or bottom goes on)
+                const unsigned int level = g.size_level(
+                  continued ? std::clamp(p[2], z_bodies[0], z_bodies[1])
+                            : p[2]);
                 if (level > 0)
                   {
                     const long step = 1L << level;
@@ -218,8 +238,12 @@ namespace tribodyn
                   }
                 PackedAutomaton automaton;
                 automaton.level = static_cast<unsigned char>(level);
-                automaton.id    = static_cast<std::uint32_t>(
-                  ((k * (n[1] + 1) + j) * (n[0] + 1) + i) * 4 + bi);
+                automaton.transitional
+                  = !g.size_bands.empty() && g.near_size_change(p[2]);
+                automaton.id
+                  = in_lattice ? static_cast<std::uint32_t>(
+                      ((k * (n[1] + 1) + j) * (n[0] + 1) + i) * 4 + bi)
+                               : outside_lattice;
                 automaton.position = p;
                 automaton.material = g.bodies[body].material;
                 automaton.body     = std::min(body, 255);
@@ -242,6 +266,11 @@ namespace tribodyn
                     in_box = false;
                 if (!in_box)
                   continue;
+                if (continued)
+                  {
+                    add(automaton);
+                    continue;
+                  }
                 bool removed = false;
                 for (const Region &r : g.regions)
                   if (region_contains(r, g, p))

@@ -121,6 +121,10 @@ namespace tribodyn
                   for (unsigned int c = 0; c < w; ++c)
                     {
                       new_a.assign(n_pairs, field.new_value);
+                      if (field.new_value_of)
+                        for (std::size_t p = 0; p < n_pairs; ++p)
+                          if (source[p] == none)
+                            new_a[p] = field.new_value_of(p);
                       for (std::size_t p = 0; p < n_pairs; ++p)
                         if (source[p] != none)
                           {
@@ -163,6 +167,30 @@ namespace tribodyn
             }
           offset += w;
         }
+    }
+
+
+    void
+    PairFieldTable::compact(const std::vector<unsigned char> &keep) const
+    {
+      const auto squeeze = [&](auto &array) {
+        if (array.size() != keep.size())
+          return; // not allocated in this scene
+        std::size_t q = 0;
+        for (std::size_t p = 0; p < keep.size(); ++p)
+          if (keep[p])
+            array[q++] = array[p];
+        array.resize(q);
+      };
+      for (const PairField &field : fields)
+        if (field.in_use())
+          {
+            if (field.flags != nullptr)
+              squeeze(*field.flags);
+            else
+              for (std::vector<double> *a : field.arrays)
+                squeeze(*a);
+          }
     }
 
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <tribodyn/mca/automaton_system.h>
 #include <tribodyn/mca/plasticity.h>
+#include <type_traits>
 
 namespace tribodyn
 {
@@ -68,6 +69,71 @@ namespace tribodyn
         }
       };
 
+      /**
+       * The geometry of the pairs of a uniform packing: one contact area S,
+       * one half rest length r0 = d/2 (the pair law's policy for it; the
+       * stiffness of the springs, 2G/r0, is that of the material table).
+       */
+      struct UniformPairs
+      {
+        double S, r0, inv_r0, d;
+        double
+        area(const unsigned int) const
+        {
+          return S;
+        }
+        double
+        inv_half_rest(const unsigned int) const
+        {
+          return inv_r0;
+        }
+        /// Distance at which an unbonded pair touches.
+        double
+        contact_distance(const unsigned int) const
+        {
+          return d;
+        }
+        /// Factor of the material table's spring stiffnesses 2G / r0.
+        static constexpr double
+        stiffness_scale(const unsigned int)
+        {
+          return 1.;
+        }
+      };
+
+      /**
+       * Automata of several sizes (doc/theory/mca.md §9): each pair has its
+       * own area S_ij and half rest length q0_ij (its Voronoi face and
+       * half the distance of the two centres at set-up), so its strains
+       * are Δq / q0_ij and its springs 2G / q0_ij.
+       */
+      struct GradedPairs
+      {
+        const double *S, *q0;
+        double        r0;
+        double
+        area(const unsigned int p) const
+        {
+          return S[p];
+        }
+        double
+        inv_half_rest(const unsigned int p) const
+        {
+          return 1. / q0[p];
+        }
+        double
+        contact_distance(const unsigned int p) const
+        {
+          return 2 * q0[p];
+        }
+        double
+        stiffness_scale(const unsigned int p) const
+        {
+          return r0 / q0[p];
+        }
+      };
+
+
       /// 3 J2, the square of the von Mises stress: the bond criterion
       /// compares it with the squared strength (no square root per pair).
       inline double
@@ -96,14 +162,17 @@ namespace tribodyn
           Vec3 t;
           for (unsigned int c = 0; c < 3; ++c)
             t[c] = sig_i[p] * n[c] + tau_scale_i[p] * tau.component[c][p];
-          add_outer(target[pi[p]], q_i[p] * S / V, n, t);
+          add_outer(target[pi[p]], q_i[p] * area_of(p) / volume[pi[p]], n, t);
         }
       if (owned(pj[p]) && !(skip_elastic && elastic(pj[p])))
         {
           Vec3 t;
           for (unsigned int c = 0; c < 3; ++c)
             t[c] = sig_j[p] * n[c] + tau_scale_j[p] * tau.component[c][p];
-          add_outer(target[pj[p]], (r - q_i[p]) * S / V, n, t);
+          add_outer(target[pj[p]],
+                    (r - q_i[p]) * area_of(p) / volume[pj[p]],
+                    n,
+                    t);
         }
     }
 
@@ -118,33 +187,41 @@ namespace tribodyn
       // Neighbourhoods that changed at the last step (contacts, bonds).
       if (any_changed)
         update_neighbourhood_weights(false);
-      const bool rot = rotations;
-      if (rot && plastic_scene && bond_scene)
-        pair_kernel<true, true, true>(step_dt);
-      else if (rot && plastic_scene)
-        pair_kernel<true, true, false>(step_dt);
-      else if (rot && bond_scene)
-        pair_kernel<true, false, true>(step_dt);
-      else if (rot)
-        pair_kernel<true, false, false>(step_dt);
-      else if (plastic_scene && bond_scene)
-        pair_kernel<false, true, true>(step_dt);
-      else if (plastic_scene)
-        pair_kernel<false, true, false>(step_dt);
-      else if (bond_scene)
-        pair_kernel<false, false, true>(step_dt);
+      // The kernel for the scene's combination of features and pair
+      // geometry, chosen once here: no per-pair flags in its loops.
+      const auto dispatch = [&](const auto &geometry) {
+        using G        = std::decay_t<decltype(geometry)>;
+        const bool rot = rotations;
+        if (rot && plastic_scene && bond_scene)
+          pair_kernel<true, true, true, G>(step_dt, geometry);
+        else if (rot && plastic_scene)
+          pair_kernel<true, true, false, G>(step_dt, geometry);
+        else if (rot && bond_scene)
+          pair_kernel<true, false, true, G>(step_dt, geometry);
+        else if (rot)
+          pair_kernel<true, false, false, G>(step_dt, geometry);
+        else if (plastic_scene && bond_scene)
+          pair_kernel<false, true, true, G>(step_dt, geometry);
+        else if (plastic_scene)
+          pair_kernel<false, true, false, G>(step_dt, geometry);
+        else if (bond_scene)
+          pair_kernel<false, false, true, G>(step_dt, geometry);
+        else
+          pair_kernel<false, false, false, G>(step_dt, geometry);
+      };
+      if (graded)
+        dispatch(GradedPairs{pair_area.data(), pair_half_rest.data(), r0});
       else
-        pair_kernel<false, false, false>(step_dt);
+        dispatch(UniformPairs{S, r0, 1. / r0, d});
     }
 
 
-    template <bool rot, bool plastic, bool bonds>
+    template <bool rot, bool plastic, bool bonds, class Pairs>
     void
-    AutomatonSystem::pair_kernel(const double step_dt)
+    AutomatonSystem::pair_kernel(const double step_dt, const Pairs &geometry)
     {
       const unsigned int n_pairs = pi.size();
       const double       mu      = prm.interaction.friction_coefficient;
-      const double       inv_r0  = 1. / r0;
       // radius of the circular contact face of area S (moment limits)
       const double face_radius = std::sqrt(S / M_PI);
       if constexpr (plastic)
@@ -246,12 +323,16 @@ namespace tribodyn
                           * b_inv_nm[b];
                 }
               double               dr_p = b_dr[b], r_prev = ro;
-              const SeriesSprings &k  = springs[mat[i] * n_materials + mat[j]];
-              const double         ki = k.ki, kj = k.kj;
+              const SeriesSprings &k = springs[mat[i] * n_materials + mat[j]];
+              const double         scale   = geometry.stiffness_scale(p);
+              const double         ki      = k.ki * scale;
+              const double         kj      = k.kj * scale;
+              const double         inv_sum = k.inv_sum / scale;
 
               if (!bonded[p])
                 {
-                  if (r >= d)
+                  const double touch = geometry.contact_distance(p);
+                  if (r >= touch)
                     {
                       // separated: no interaction
                       if (in_contact[p])
@@ -271,9 +352,9 @@ namespace tribodyn
                       // touching now: only the overlap counts, from r = d
                       in_contact[p] = 1;
                       mark(p);
-                      q_i[p] = d / 2;
-                      r_prev = d;
-                      dr_p   = r - d;
+                      q_i[p] = touch / 2;
+                      r_prev = touch;
+                      dr_p   = r - touch;
                     }
                 }
               const double qi = q_i[p], qj = r_prev - qi;
@@ -322,7 +403,7 @@ namespace tribodyn
               {
                 // series springs of the two halves: one shear stress
                 // (kj tau_i + ki tau_j + ki kj du) / (ki + kj)
-                const double inv = k.inv_sum;
+                const double inv = inv_sum;
                 const double mix = kj * tau_scale_i[p] + ki * tau_scale_j[p];
                 Vec3         tn;
                 for (unsigned int c = 0; c < 3; ++c)
@@ -334,7 +415,7 @@ namespace tribodyn
               // (series springs), applied now; the many-body parts D dsm of the
               // two sides differ (added once dsm is known) and the force uses
               // the mean of the two sides.
-              const double dqi = kj * dr_p * k.inv_sum;
+              const double dqi = kj * dr_p * inv_sum;
               q_i[p]           = qi + dqi;
               sig_i[p] += ki * dqi;
               sig_j[p] += kj * (dr_p - dqi);
@@ -342,14 +423,15 @@ namespace tribodyn
               if (owned(i))
                 {
                   if constexpr (plastic)
-                    sum_qs[i] += qin * S;
-                  dsm[i] += beta_i[p] * dqi * inv_r0;
+                    sum_qs[i] += qin * geometry.area(p);
+                  dsm[i] += beta_i[p] * dqi * geometry.inv_half_rest(p);
                 }
               if (owned(j))
                 {
                   if constexpr (plastic)
-                    sum_qs[j] += qjn * S;
-                  dsm[j] += beta_j[p] * (dr_p - dqi) * inv_r0;
+                    sum_qs[j] += qjn * geometry.area(p);
+                  dsm[j]
+                    += beta_j[p] * (dr_p - dqi) * geometry.inv_half_rest(p);
                 }
             }
         }
@@ -417,7 +499,8 @@ namespace tribodyn
                   const double de = plastic_increment(m.m, m.G, eps_p[k], q);
                   const double sy_new = m.m.yield_stress_at(eps_p[k] + de);
                   M                   = sy_new / q;
-                  const double work   = V * 0.5 * (sigma_y[k] + sy_new) * de;
+                  const double work
+                    = volume[k] * 0.5 * (sigma_y[k] + sy_new) * de;
                   eps_p[k] += de;
                   sigma_y[k] = sy_new;
                   plastic_work += work;
@@ -463,6 +546,7 @@ namespace tribodyn
               const double       r  = nblock.r[b];
               const Vec3         n  = nblock.normal(b);
               const double       qi = q_i[p], qj = r - qi;
+              const double       Sp = geometry.area(p);
               const Vec3         t  = tau[p];
               double             ai = tau_scale_i[p], aj = tau_scale_j[p];
               if constexpr (plastic)
@@ -482,8 +566,8 @@ namespace tribodyn
                   // Plastic heat for bond formation: only heat generated while
                   // the pair is unbonded counts (seed §2.1).
                   if (!heat.empty() && !bonded[p])
-                    heat[p]
-                      += qi * S * plast[3 * i + 2] + qj * S * plast[3 * j + 2];
+                    heat[p] += qi * Sp * plast[3 * i + 2]
+                               + qj * Sp * plast[3 * j + 2];
                 }
               else
                 {
@@ -498,7 +582,8 @@ namespace tribodyn
                   sig_j[p] = std::min(sig_j[p], 0.);
                   const SeriesSprings &k
                     = springs[mat[i] * n_materials + mat[j]];
-                  const double ki = k.ki, kj = k.kj;
+                  const double scale = geometry.stiffness_scale(p);
+                  const double ki = k.ki * scale, kj = k.kj * scale;
                   const double t_norm = std::sqrt(dot(t, t));
                   for (const int side : {0, 1})
                     {
@@ -513,7 +598,7 @@ namespace tribodyn
                           // side's half of the pair force, counted by the
                           // owner of that side
                           if (owned(side == 0 ? i : j))
-                            friction_work += 0.5 * S * limit * (tn - limit)
+                            friction_work += 0.5 * Sp * limit * (tn - limit)
                                              * (ki + kj) / (ki * kj);
                           a *= s;
                         }
@@ -525,12 +610,12 @@ namespace tribodyn
                   tau_scale_j[p] = aj;
                 }
               const double sn = 0.5 * (sig_i[p] + sig_j[p]);
-              const double am = 0.5 * S * (ai + aj);
+              const double am = 0.5 * Sp * (ai + aj);
               Vec3         ft, F;
               for (unsigned int c = 0; c < 3; ++c)
                 {
                   ft[c] = am * t[c];
-                  F[c]  = S * sn * n[c] + ft[c];
+                  F[c]  = Sp * sn * n[c] + ft[c];
                 }
               Vec3 nxf;
               if constexpr (rot)
@@ -564,7 +649,7 @@ namespace tribodyn
                           = rotation_springs[mat[i] * n_materials + mat[j]];
                         const double slip_work
                           = pair_moment_law::limit_unbonded(
-                            K, n, -S * sn, mu, face_radius, ks.twist, ks.bend);
+                            K, n, -Sp * sn, mu, face_radius, ks.twist, ks.bend);
                         if (owned(i))
                           friction_work += slip_work;
                         pair_moment.set(p, K);
@@ -657,7 +742,7 @@ namespace tribodyn
                   if (von_mises_squared(s) >= limit * limit)
                     {
                       bonded[p]     = 0;
-                      in_contact[p] = r < d;
+                      in_contact[p] = r < (graded ? 2 * pair_half_rest[p] : d);
                       if (!heat.empty())
                         heat[p] = 0;
                       changed[i] = changed[j] = 1;
@@ -669,7 +754,7 @@ namespace tribodyn
                 {
                   const double sy = std::min(ex[7 * i + 6], ex[7 * j + 6]);
                   const double Eb
-                    = std::min(mc[mat[i]].w_b, mc[mat[j]].w_b) * S * r;
+                    = std::min(mc[mat[i]].w_b, mc[mat[j]].w_b) * area_of(p) * r;
                   const double h = heat.empty() ? 0. : heat[p];
                   if (sn <= -sy && h >= heat_fraction * Eb)
                     {

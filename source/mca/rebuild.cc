@@ -21,14 +21,15 @@ namespace tribodyn
       {
         constexpr unsigned int v = 0, w = 3, f = 6, torque = 9, u = 12,
                                mat = 15, body = 16, groups = 17, eps_p = 18,
-                               sigma_y = 19, n = 20;
+                               sigma_y = 19, size_level = 20, volume = 21,
+                               n = 22;
       } // namespace prop
 
       // Fields of a ghost record (doubles; keys as raw 64-bit words).
       namespace ghost_field
       {
         constexpr unsigned int id = 0, order = 1, x = 2, mat = 5, body = 6,
-                               n = 7;
+                               size_level = 7, n = 8;
       } // namespace ghost_field
 
       double
@@ -54,27 +55,9 @@ namespace tribodyn
                      : (std::uint64_t(b) << 32 | a);
       }
 
-      /// Throw on every rank if any rank failed; the message is that of the
-      /// lowest failing rank.
-      void
-      throw_collectively(const MPI_Comm     comm,
-                         const bool         failed,
-                         const std::string &message)
-      {
-        const unsigned int n_ranks
-          = dealii::Utilities::MPI::n_mpi_processes(comm);
-        const unsigned int me = dealii::Utilities::MPI::this_mpi_process(comm);
-        const unsigned int first
-          = dealii::Utilities::MPI::min(failed ? me : n_ranks, comm);
-        if (first == n_ranks)
-          return;
-        std::string text = me == first ? message : std::string();
-        text             = dealii::Utilities::MPI::broadcast(comm, text, first);
-        throw RunError(text);
-      }
     } // namespace
 
-    static_assert(prop::n == 20,
+    static_assert(prop::n == 22,
                   "AutomatonSystem::migration_properties must equal prop::n");
 
 
@@ -119,7 +102,7 @@ namespace tribodyn
           if (bonded[p] && owned(pi[p]))
             {
               const Vec3 dn = pair_vector(p);
-              if (dot(dn, dn) >= range * range)
+              if (dot(dn, dn) >= pair_range2(pi[p], pj[p]))
                 ++dropped_bonds;
             }
         }
@@ -203,11 +186,13 @@ namespace tribodyn
                 props[prop::torque + c] = torque[k][c];
                 props[prop::u + c]      = u[k][c];
               }
-            props[prop::mat]     = mat[k];
-            props[prop::body]    = body[k];
-            props[prop::groups]  = groups[k];
-            props[prop::eps_p]   = eps_p[k];
-            props[prop::sigma_y] = plastic_scene ? sigma_y[k] : 0.;
+            props[prop::mat]        = mat[k];
+            props[prop::body]       = body[k];
+            props[prop::groups]     = groups[k];
+            props[prop::eps_p]      = eps_p[k];
+            props[prop::sigma_y]    = plastic_scene ? sigma_y[k] : 0.;
+            props[prop::size_level] = size_level[k];
+            props[prop::volume]     = volume[k];
             if (crossed[k])
               {
                 auto &buf = out_automata[cells.neighbour_index(destination[k])];
@@ -235,18 +220,20 @@ namespace tribodyn
             cell_of[k] = new_cell[k];
             if (kept != k)
               {
-                id[kept]      = id[k];
-                x[kept]       = x[k];
-                cell_of[kept] = cell_of[k];
-                v[kept]       = v[k];
-                w[kept]       = w[k];
-                f[kept]       = f[k];
-                torque[kept]  = torque[k];
-                u[kept]       = u[k];
-                mat[kept]     = mat[k];
-                body[kept]    = body[k];
-                groups[kept]  = groups[k];
-                eps_p[kept]   = eps_p[k];
+                id[kept]         = id[k];
+                x[kept]          = x[k];
+                cell_of[kept]    = cell_of[k];
+                v[kept]          = v[k];
+                w[kept]          = w[k];
+                f[kept]          = f[k];
+                torque[kept]     = torque[k];
+                u[kept]          = u[k];
+                mat[kept]        = mat[k];
+                body[kept]       = body[k];
+                size_level[kept] = size_level[k];
+                volume[kept]     = volume[k];
+                groups[kept]     = groups[k];
+                eps_p[kept]      = eps_p[k];
                 if (plastic_scene)
                   sigma_y[kept] = sigma_y[k];
               }
@@ -275,10 +262,12 @@ namespace tribodyn
             torque[k][c] = props[prop::torque + c];
             u[k][c]      = props[prop::u + c];
           }
-        mat[k]    = static_cast<unsigned char>(props[prop::mat]);
-        body[k]   = static_cast<unsigned char>(props[prop::body]);
-        groups[k] = static_cast<std::uint32_t>(props[prop::groups]);
-        eps_p[k]  = props[prop::eps_p];
+        mat[k]        = static_cast<unsigned char>(props[prop::mat]);
+        body[k]       = static_cast<unsigned char>(props[prop::body]);
+        size_level[k] = static_cast<unsigned char>(props[prop::size_level]);
+        volume[k]     = props[prop::volume];
+        groups[k]     = static_cast<std::uint32_t>(props[prop::groups]);
+        eps_p[k]      = props[prop::eps_p];
         if (plastic_scene)
           sigma_y[k] = props[prop::sigma_y];
         ++k;
@@ -345,7 +334,8 @@ namespace tribodyn
       };
       permute(id), permute(cell_of), permute(x), permute(v), permute(w);
       permute(f), permute(torque), permute(u), permute(mat);
-      permute(body), permute(groups), permute(eps_p);
+      permute(body), permute(size_level), permute(volume), permute(groups);
+      permute(eps_p);
       if (plastic_scene)
         permute(sigma_y);
       permute(cell_curve);
@@ -387,6 +377,7 @@ namespace tribodyn
                 buf.push_back(x[k][e]);
               buf.push_back(mat[k]);
               buf.push_back(body[k]);
+              buf.push_back(size_level[k]);
             }
       const auto                in = neighbours.exchange(out, 82);
       std::vector<unsigned int> offsets(n_nb + 1, n_owned);
@@ -404,8 +395,10 @@ namespace tribodyn
             order[k]        = double_to_bits(r[ghost_field::order]);
             for (unsigned int e = 0; e < 3; ++e)
               x[k][e] = r[ghost_field::x + e];
-            mat[k]     = static_cast<unsigned char>(r[ghost_field::mat]);
-            body[k]    = static_cast<unsigned char>(r[ghost_field::body]);
+            mat[k]  = static_cast<unsigned char>(r[ghost_field::mat]);
+            body[k] = static_cast<unsigned char>(r[ghost_field::body]);
+            size_level[k]
+              = static_cast<unsigned char>(r[ghost_field::size_level]);
             cell_of[k] = cells.local_cell(x[k]);
             if (cell_of[k] == Decomposition::invalid)
               ++n_bad;
@@ -475,15 +468,23 @@ namespace tribodyn
       std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(kept_keys);
 
       // Bonds and contacts of the initial pairs: pairs of a body at the
-      // contact distance are bonded.
+      // contact distance are bonded (graded scenes: the pairs near a change
+      // of size that share a Voronoi face, in setup_graded_geometry()).
       if (initial)
         for (unsigned int p = 0; p < n_pairs; ++p)
           {
-            const double r = pair_distance(p);
-            bonded[p]
-              = body_index(pi[p]) == body_index(pj[p]) && r < d * (1 + 1e-6);
-            in_contact[p] = r < d * (1 + 1e-6);
+            const double r     = pair_distance(p);
+            const double touch = graded ? 2 * pair_half_rest[p] : d;
+            bonded[p]          = body_index(pi[p]) == body_index(pj[p])
+                        && r < touch * (1 + 1e-6);
+            in_contact[p] = r < touch * (1 + 1e-6);
           }
+      if (graded)
+        {
+          if (initial)
+            setup_graded_geometry();
+          drop_inert_pairs();
+        }
     }
   } // namespace mca
 } // namespace tribodyn

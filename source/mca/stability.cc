@@ -16,15 +16,15 @@ namespace tribodyn
     unsigned int
     AutomatonSystem::count_unstable_automata(const double limit) const
     {
-      // |v| and the surface speed |w| d/2 against the limit; comparisons
+      // |v| and the surface speed |w| d_k/2 against the limit; comparisons
       // written so that NaN counts as unstable.
       const double limit2 = limit * limit;
-      const double half2  = 0.25 * d * d;
       unsigned int n      = 0;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
-          const double s = dot(v[k], v[k]);
-          const double r = dot(w[k], w[k]) * half2;
+          const double half = 0.5 * automaton_size(k);
+          const double s    = dot(v[k], v[k]);
+          const double r    = dot(w[k], w[k]) * half * half;
           n += !(s <= limit2 && r <= limit2);
         }
       return n;
@@ -39,8 +39,9 @@ namespace tribodyn
       unsigned int index = 0;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
-          const double s = std::max(std::sqrt(dot(v[k], v[k])),
-                                    std::sqrt(dot(w[k], w[k])) * 0.5 * d);
+          const double s
+            = std::max(std::sqrt(dot(v[k], v[k])),
+                       std::sqrt(dot(w[k], w[k])) * 0.5 * automaton_size(k));
           const double b = std::isfinite(s + x[k][0] + x[k][1] + x[k][2])
                              ? s
                              : std::numeric_limits<double>::infinity();
@@ -52,15 +53,16 @@ namespace tribodyn
         }
       std::array<double, 9> mine = {{worst, 0, 0, 0, 0, 0, 0, 0, 0}};
       if (n_owned > 0)
-        mine = {{worst,
-                 double(id[index]),
-                 x[index][0],
-                 x[index][1],
-                 x[index][2],
-                 double(mat[index]),
-                 double(groups[index]),
-                 std::sqrt(dot(v[index], v[index])),
-                 std::sqrt(dot(w[index], w[index])) * 0.5 * d}};
+        mine = {
+          {worst,
+           double(id[index]),
+           x[index][0],
+           x[index][1],
+           x[index][2],
+           double(mat[index]),
+           double(groups[index]),
+           std::sqrt(dot(v[index], v[index])),
+           std::sqrt(dot(w[index], w[index])) * 0.5 * automaton_size(index)}};
       const auto  all  = dealii::Utilities::MPI::all_gather(comm, mine);
       std::size_t best = 0;
       for (std::size_t r = 1; r < all.size(); ++r)

@@ -5,7 +5,7 @@ prm/mca/friction_seed_scale.prm (the seed's heights at d = 7.5 nm: 89 % of
 them in the bases, packed at 2d and 4d in the graded scene) and a work
 imbalance (largest owned automata over the mean) of at most 1.10 on 256
 ranks (p4est's partition weighted by the automata per cell). Measured
-2026-11-24: 4 347 288 against 28 226 880 automata (6.49x fewer),
+2026-11-25: 4 438 764 against 28 226 880 automata (6.36x fewer),
 imbalance 1.018. Arguments: the tribodyn binary, the prm/mca folder."""
 import re
 import subprocess

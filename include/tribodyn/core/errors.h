@@ -1,6 +1,7 @@
 #ifndef tribodyn_core_errors_h
 #define tribodyn_core_errors_h
 
+#include <mpi.h>
 #include <stdexcept>
 #include <string>
 
@@ -29,6 +30,13 @@ namespace tribodyn
   public:
     explicit RunError(const std::string &message);
   };
+
+  /// Collective: throw a RunError on every rank of @p comm if any rank
+  /// @p failed; the message is that of the lowest failing rank.
+  void
+  throw_collectively(const MPI_Comm     comm,
+                     const bool         failed,
+                     const std::string &message);
 
   /// Exit codes of the tribodyn executable.
   namespace exit_code

@@ -1,6 +1,7 @@
 #ifndef tribodyn_mca_automaton_system_h
 #define tribodyn_mca_automaton_system_h
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <deal.II/base/mpi.h>
@@ -264,6 +265,28 @@ namespace tribodyn
       {
         return w;
       }
+      /// Pair forces on the local automata at the last evaluation (owned:
+      /// complete; tests).
+      const std::vector<Vec3> &
+      forces() const
+      {
+        return f;
+      }
+      /// Size level L (size 2^L d) of each local automaton, and the volume
+      /// of each owned one (Voronoi cell near a change of size).
+      std::vector<unsigned int>
+      size_levels() const
+      {
+        std::vector<unsigned int> out(size_level.size());
+        for (unsigned int k = 0; k < out.size(); ++k)
+          out[k] = size_level[k] & ~transitional_flag;
+        return out;
+      }
+      const std::vector<double> &
+      volumes() const
+      {
+        return volume;
+      }
       /// Pair torques on the local automata at the last evaluation (owned:
       /// complete).
       const std::vector<Vec3> &
@@ -405,9 +428,9 @@ namespace tribodyn
       // --- dynamics (pair_kernel.cc)
       void
       evaluate_pairs(const double step);
-      template <bool rotations, bool plastic, bool bonds>
+      template <bool rotations, bool plastic, bool bonds, class Pairs>
       void
-      pair_kernel(const double step);
+      pair_kernel(const double step, const Pairs &geometry);
       template <bool plastic>
       void
       bond_switching();
@@ -527,8 +550,68 @@ namespace tribodyn
       Vec3
       group_value(const BoundaryGroup &g, const double t) const;
 
+      // --- automata of several sizes (graded_geometry.cc)
+      /// Bit of size_level[k] marking an automaton near a change of size.
+      static constexpr unsigned char transitional_flag = 0x80;
+      /// Size 2^L d of local automaton @p k.
+      double
+      automaton_size(const unsigned int k) const
+      {
+        return d * (1u << (size_level[k] & ~transitional_flag));
+      }
+      bool
+      transitional(const unsigned int k) const
+      {
+        return (size_level[k] & transitional_flag) != 0;
+      }
+      double
+      mass_of(const unsigned int k) const
+      {
+        return mc[mat[k]].rho * volume[k];
+      }
+      double
+      inertia_of(const unsigned int k) const
+      {
+        const double s = automaton_size(k);
+        return mass_of(k) * s * s / 10;
+      }
+      /// Contact area and volume ratio of pair @p p (graded: its own).
+      double
+      area_of(const unsigned int p) const
+      {
+        return graded ? pair_area[p] : S;
+      }
+      /// Squared pair-list range of automata @p a and @p b.
+      double
+      pair_range2(const unsigned int a, const unsigned int b) const
+      {
+        if (!graded)
+          return range * range;
+        const unsigned int level = std::max(size_level[a] & ~transitional_flag,
+                                            size_level[b] & ~transitional_flag);
+        const double       r
+          = graded_range[transitional(a) || transitional(b)][level];
+        return r * r;
+      }
+      /// Area and half rest length of new pair @p p (inert, 0, when an
+      /// automaton is near a change of size: those pairs get theirs from
+      /// the Voronoi cells at set-up).
+      double
+      new_pair_area(const unsigned int p) const;
+      double
+      new_pair_half_rest(const unsigned int p) const;
+      /// Set-up of a graded scene: Voronoi volumes of the automata near a
+      /// change of size, areas and rest lengths of their pairs (symmetric
+      /// over ranks), their bonds.
+      void
+      setup_graded_geometry();
+      /// Drop the pairs near a change of size that can never interact
+      /// (no area, or unbonded and beyond their contact range).
+      void
+      drop_inert_pairs();
+
       /// Particle properties of a migrating automaton (see rebuild.cc).
-      static constexpr unsigned int migration_properties = 20;
+      static constexpr unsigned int migration_properties = 22;
 
       const Parameters &prm;
       MPI_Comm          comm;
@@ -543,7 +626,6 @@ namespace tribodyn
       struct MaterialConstants
       {
         double             rho, G, K, D, two_G, yield0, sigma_b, w_b;
-        double             mass, inertia;
         MaterialParameters m;
       };
       std::vector<MaterialConstants> mc;
@@ -567,6 +649,10 @@ namespace tribodyn
       /// Relative-rotation moments on (rotations and a stiffness > 0).
       bool   moment_scene = false;
       double d = 0, r0 = 0, S = 0, V = 0, range = 0;
+      /// Geometry/Size bands given: automata of several sizes.
+      bool graded = false;
+      /// Graded pair-list ranges [near a change of size][size level].
+      std::array<std::array<double, 8>, 2> graded_range{};
 
       double        dt = 0, critical_dt = 0, current_time = 0;
       unsigned long n_steps_done = 0;
@@ -594,6 +680,11 @@ namespace tribodyn
       /// material index; body index, with elastic_flag for the automata
       /// of elastic regions
       std::vector<unsigned char> mat, body;
+      /// size level L (size 2^L d), with transitional_flag
+      std::vector<unsigned char> size_level;
+      /// Volume of each owned automaton (d^3/sqrt 2 in a uniform packing;
+      /// its Voronoi cell's near a change of size).
+      std::vector<double>        volume;
       std::vector<std::uint32_t> groups;
       std::vector<double>        eps_p, sigma_y;
       /// Pair-force reaction of each boundary group on this rank (sum of
@@ -629,7 +720,10 @@ namespace tribodyn
       std::vector<double> tau_scale_i, tau_scale_j;
       /// Relative-rotation moment K_ij on i (-K_ij on j): odd under
       /// i <-> j. Allocated only when moment_scene (else empty).
-      VectorArray         pair_moment;
+      VectorArray pair_moment;
+      /// Graded scenes: contact area S_ij and half rest length of each pair
+      /// (empty otherwise: S and r0).
+      std::vector<double> pair_area, pair_half_rest;
       std::vector<double> beta_i, beta_j;
       /// Pairs of each owned automaton k. As i: the pairs are ordered by
       /// the key of i, so k's form one block, i_pairs_first[k] ...

@@ -24,6 +24,9 @@ namespace tribodyn
       unsigned char part = 0;
       /// Size 2^level d (Geometry/Size bands).
       unsigned char level = 0;
+      /// Near a change of size (GeometryParameters::near_size_change): its
+      /// volume and areas come from its Voronoi cell.
+      bool transitional = false;
     };
 
     /**
@@ -33,12 +36,25 @@ namespace tribodyn
      * packs its own cells. The id of an automaton is the index of its
      * lattice site (the same on any partition). Regions are tested with
      * their periodic images.
+     *
+     * @p continued: the sites of the lattice continued beyond the bodies
+     * and the box's non-periodic sides, as if everything were filled
+     * (no bodies, regions or inclusions; the band at the bodies' top or
+     * bottom goes on; the upper body of a rough interface still moved by
+     * its gap and shift): the Voronoi cells of automata on a free surface
+     * are those of the continued lattice, as a surface automaton of a
+     * uniform lattice keeps its whole dodecahedron. Sites outside the
+     * box's lattice get the id outside_lattice.
      */
     void
     pack_box(const GeometryParameters                           &geometry,
              const Point3                                       &lower,
              const Point3                                       &upper,
-             const std::function<void(const PackedAutomaton &)> &add);
+             const std::function<void(const PackedAutomaton &)> &add,
+             const bool continued = false);
+
+    /// Id of a site of the continued lattice outside the box.
+    constexpr std::uint32_t outside_lattice = 0xffffffffu;
 
     /**
      * Largest rise max_{x,y} [h(x, y) - h(x, y - @p shift_y)] of the rough

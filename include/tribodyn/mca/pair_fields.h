@@ -49,6 +49,10 @@ namespace tribodyn
       /// Whether the field is allocated in this scene (an unused field's
       /// arrays stay empty and are not carried); always when empty.
       std::function<bool()> in_use;
+      /// Value of new pair p when set (even fields whose start depends on
+      /// the pair, e.g. the contact area of a pair of graded automata);
+      /// otherwise new_value.
+      std::function<double(unsigned int)> new_value_of;
 
       /// Doubles of a pair state record.
       unsigned int
@@ -105,6 +109,10 @@ namespace tribodyn
             const std::vector<unsigned char>      &swap,
             const std::vector<double>             &records,
             const std::function<double(unsigned)> &distance) const;
+
+      /// Keep the pairs p with @p keep[p] (in order) in every field in use.
+      void
+      compact(const std::vector<unsigned char> &keep) const;
 
       /// Call @p f on every array of every field, in registration order
       /// (also those not in use: they are empty), flag arrays through

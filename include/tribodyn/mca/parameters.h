@@ -192,12 +192,25 @@ namespace tribodyn
       /// The size level of a site at height @p z (0 outside every band).
       unsigned int
       size_level(const double z) const;
-      /// Largest distance of two interacting automata at rest: d, or with
-      /// size bands up to level L the farthest Voronoi neighbours of a
-      /// graded packing, (√5 / 2) 2^L d (test mca_voronoi). The pair-list
-      /// range and the cell size are this times 1 + Interaction/Skin.
+      /// Largest pair-list distance of two automata at rest: d, or with
+      /// size bands up to level L that of the pairs near a change of size
+      /// that share a Voronoi face, transition_face_factor 2^L d
+      /// (doc/theory/mca.md §9). The pair-list range and the cell size are
+      /// this times 1 + Interaction/Skin.
       double
       largest_pair_distance() const;
+      /// Pairs near a change of size that share a Voronoi face are at most
+      /// this times 2^max(L_i, L_j) d apart at rest: their pair-list range,
+      /// with the skin (measured √5/2 = 1.118 across d|2d and 2d|4d
+      /// transitions, test mca_hooke_graded; checked for every face at
+      /// set-up). Only those pairs interact, so
+      /// the cells of the decomposition need not reach the candidates.
+      static constexpr double transition_face_factor = 1.12;
+      /// Is a site at height @p z (frame of size_level()) within
+      /// 3 2^max(L_a, L_b) d of a plane where the size changes from L_a to
+      /// L_b? Such automata have Voronoi cells of their own (volumes, areas).
+      bool
+      near_size_change(const double z) const;
 
       InclusionPackingParameters inclusions;
       /// The generated inclusions (set by parse_parameters or
