@@ -288,6 +288,32 @@ namespace tribodyn
                                   "between them (sizes may change by a "
                                   "factor 2 only).");
             }
+        // A periodic direction must hold whole cells of the coarsest
+        // lattice, or its sites do not match across the period.
+        unsigned int top = 0;
+        for (const SizeBand &band : size_bands)
+          top = std::max(top, band.level);
+        for (unsigned int e = 0; e < 3 && top > 0; ++e)
+          if (periodic[e])
+            {
+              const double coarse
+                = (1u << top) * automaton_size * std::sqrt(2.);
+              const double cells = (domain_upper[e] - domain_lower[e]) / coarse;
+              check_parameter(
+                std::abs(cells - std::round(cells)) < 1e-6 * cells
+                  && std::round(cells) >= 1,
+                "Geometry/Size bands",
+                std::string("with automata of ") + std::to_string(1u << top)
+                  + "d the periodic length in " + "xyz"[e]
+                  + " must be a whole number of their FCC cells, "
+                  + std::to_string(1u << top)
+                  + " d sqrt(2) = " + format_number(coarse)
+                  + " m (Geometry/Domain lower and "
+                    "Domain upper), or the coarse sites do not match across "
+                    "the period; the nearest is "
+                  + format_number(std::max(1., std::round(cells)) * coarse)
+                  + " m.");
+            }
 
         regions.clear();
         for (const std::string &entry : split(prm.get("Regions"), ';'))

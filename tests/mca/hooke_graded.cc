@@ -1,9 +1,9 @@
 // Homogeneous strain of a graded block gives Hooke's stress at every
 // automaton, transition automata included, and no net force (issue #18).
 //
-// A block periodic in x and y (36 FCC cells of the fine lattice, a = d √2:
-// the period, 50.9 d, exceeds twice the longest pair range, 3 · 4d (1 +
-// skin)) and free in z holds, bottom to top, bands of automata of size d
+// A block periodic in x and y (36 FCC cells of the fine lattice, a = d √2,
+// 9 of the 4d lattice: the period, 50.9 d, exceeds twice the longest pair
+// range, 1.12 · 4d (1 + skin)) and free in z holds, bottom to top, bands of automata of size d
 // (6 a), 2d (8 a), 4d (8 a), 2d (6 a) and d again (6 a): transitions d → 2d
 // → 4d and back. An affine displacement u = ±eps x is imposed in one
 // pseudo-step; the central difference (sigma(eps) - sigma(-eps)) / 2
