@@ -134,6 +134,14 @@ namespace tribodyn
          nullptr,
          [this] { return graded; },
          [this](const unsigned p) { return new_pair_half_rest(p); }});
+      // (a global vector, the same seen from either side)
+      pair_fields.add({"face_offset",
+                       Relabel::even,
+                       0,
+                       c(face_offset),
+                       nullptr,
+                       [this] { return graded; },
+                       {}});
     }
 
 

@@ -69,6 +69,7 @@ namespace tribodyn
       {
         std::uint32_t id;
         double        area;
+        Vec3          offset; ///< centroid off the line of centres
       };
       std::vector<std::vector<Face>>               faces(n_local);
       unsigned int                                 n_crowded     = 0;
@@ -205,15 +206,15 @@ namespace tribodyn
                   cell.clip_by_neighbour(r, static_cast<int>(a));
                 }
               volume[k]        = cell.volume();
-              const auto areas = cell.face_areas();
+              const auto areas = cell.face_geometry();
               // a cell still bounded by its dodecahedron (tag -1) lies on a
               // free surface: there it can share faces with automata
               // farther apart than in the bulk (1.5 2^L d on the side of a
               // graded block), faces across the vacuum that the uniform
               // lattice does not have either: they are dropped
-              const bool open = !areas.empty() && areas.front().first < 0
-                                && areas.front().second > 1e-6 * S;
-              for (const auto &[tag, area] : areas)
+              const bool open = !areas.empty() && areas.front().tag < 0
+                                && areas.front().area > 1e-6 * S;
+              for (const auto &[tag, area, centroid] : areas)
                 if (tag >= 0)
                   {
                     const PackedAutomaton &other = sites[tag];
@@ -234,7 +235,12 @@ namespace tribodyn
                     if (apart > GeometryParameters::transition_face_factor
                         && (open || area < sliver * S))
                       continue;
-                    faces[k].push_back({other.id, area});
+                    // the centroid's offset from the line of centres
+                    const double along = dot(centroid, r) / dot(r, r);
+                    Vec3         offset;
+                    for (unsigned int e = 0; e < 3; ++e)
+                      offset[e] = centroid[e] - along * r[e];
+                    faces[k].push_back({other.id, area, offset});
                     if (area > 1e-6 * S)
                       farthest_face = std::max(farthest_face, apart);
                   }
@@ -260,8 +266,8 @@ namespace tribodyn
           + " faces (Geometry/Size bands: report this scene).");
 
       // The faces of the ghosts from their owners: one record per ghost,
-      // in the order of the ghost blocks (its number of faces, then id and
-      // area of each).
+      // in the order of the ghost blocks (its number of faces, then id,
+      // area and offset of each).
       const auto                      &send = neighbours.ghost_send_indices();
       std::vector<std::vector<double>> out(send.size());
       for (unsigned int n = 0; n < send.size(); ++n)
@@ -272,6 +278,8 @@ namespace tribodyn
               {
                 out[n].push_back(f.id);
                 out[n].push_back(f.area);
+                for (unsigned int e = 0; e < 3; ++e)
+                  out[n].push_back(f.offset[e]);
               }
           }
       if (neighbours.active())
@@ -285,16 +293,18 @@ namespace tribodyn
                 {
                   const unsigned int count
                     = static_cast<unsigned int>(in[n][o++]);
-                  for (unsigned int c = 0; c < count; ++c, o += 2)
+                  for (unsigned int c = 0; c < count; ++c, o += 5)
                     faces[g].push_back(
-                      {static_cast<std::uint32_t>(in[n][o]), in[n][o + 1]});
+                      {static_cast<std::uint32_t>(in[n][o]),
+                       in[n][o + 1],
+                       {{in[n][o + 2], in[n][o + 3], in[n][o + 4]}}});
                 }
             }
         }
 
-      // Area of the face of automaton k towards automaton @p other (pair
-      // p): its Voronoi face, or for an automaton away from a change of
-      // size the face of its uniform cell.
+      // The face of automaton k towards automaton @p other (pair p): its
+      // Voronoi face, or for an automaton away from a change of size the
+      // face of its uniform cell (centred on the line of centres).
       const auto face_towards = [&](const unsigned int k,
                                     const unsigned int other,
                                     const unsigned int p) {
@@ -302,13 +312,15 @@ namespace tribodyn
           {
             for (const Face &f : faces[k])
               if (f.id == id[other])
-                return f.area;
-            return 0.;
+                return f;
+            return Face{id[other], 0., {{0, 0, 0}}};
           }
         const double size = automaton_size(k);
-        return std::abs(pair_distance(p) - size) < 1e-6 * size
-                 ? S * (size / d) * (size / d)
-                 : 0.;
+        return Face{id[other],
+                    std::abs(pair_distance(p) - size) < 1e-6 * size
+                      ? S * (size / d) * (size / d)
+                      : 0.,
+                    {{0, 0, 0}}};
       };
       // Each pair's area is the mean of its two faces (equal up to
       // round-off), computed from the same bits on every rank: partition-
@@ -320,9 +332,18 @@ namespace tribodyn
           const unsigned int i = pi[p], j = pj[p];
           if (!transitional(i) && !transitional(j))
             continue;
-          const double area
-            = 0.5 * (face_towards(i, j, p) + face_towards(j, i, p));
-          const bool face   = area > face_floor;
+          const Face   from_i = face_towards(i, j, p);
+          const Face   from_j = face_towards(j, i, p);
+          const double area   = 0.5 * (from_i.area + from_j.area);
+          const bool   face   = area > face_floor;
+          // the offset of the centroid, the same point seen from both
+          // sides (weighted by the faces: one may be missing)
+          for (unsigned int c = 0; c < 3; ++c)
+            face_offset.component[c][p] = face
+                                            ? (from_i.area * from_i.offset[c]
+                                               + from_j.area * from_j.offset[c])
+                                                / (from_i.area + from_j.area)
+                                            : 0.;
           pair_area[p]      = face ? area : 0.;
           pair_half_rest[p] = face ? 0.5 * pair_distance(p) : 0.;
           bonded[p]         = face && body_index(i) == body_index(j);

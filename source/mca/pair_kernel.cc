@@ -77,6 +77,14 @@ namespace tribodyn
       struct UniformPairs
       {
         double S, r0, inv_r0, d;
+        /// Forces act on the line of centres (the dodecahedron's faces
+        /// are centred on it).
+        static constexpr bool offsets = false;
+        static Vec3
+        offset(const unsigned int)
+        {
+          return {{0, 0, 0}};
+        }
         double
         area(const unsigned int) const
         {
@@ -109,8 +117,18 @@ namespace tribodyn
        */
       struct GradedPairs
       {
-        const double *S, *q0;
-        double        r0;
+        const double      *S, *q0;
+        double             r0;
+        const VectorArray *e;
+        /// Forces act at the face centroid, e_ij off the line of centres:
+        /// under a homogeneous stress the torques of a cell that is not
+        /// centrosymmetric then vanish (Σ_f A_f x̄_f ⊗ n_f = V I).
+        static constexpr bool offsets = true;
+        Vec3
+        offset(const unsigned int p) const
+        {
+          return {{e->component[0][p], e->component[1][p], e->component[2][p]}};
+        }
         double
         area(const unsigned int p) const
         {
@@ -210,7 +228,8 @@ namespace tribodyn
           pair_kernel<false, false, false, G>(step_dt, geometry);
       };
       if (graded)
-        dispatch(GradedPairs{pair_area.data(), pair_half_rest.data(), r0});
+        dispatch(GradedPairs{
+          pair_area.data(), pair_half_rest.data(), r0, &face_offset});
       else
         dispatch(UniformPairs{S, r0, 1. / r0, d});
     }
@@ -395,6 +414,21 @@ namespace tribodyn
                   const Vec3 rc = cross(th, nm);
                   for (unsigned int c = 0; c < 3; ++c)
                     du[c] -= rc[c];
+                  // graded: the contact point is the face centroid, e off
+                  // the line of centres; it moves by (theta_j - theta_i) x
+                  // e more, its normal part too (the work of the torques
+                  // e x F below)
+                  if constexpr (Pairs::offsets)
+                    {
+                      const Vec3 e = geometry.offset(p);
+                      Vec3       dw;
+                      for (unsigned int c = 0; c < 3; ++c)
+                        dw[c] = step_dt * (b_wj[c][b] - b_wi[c][b]);
+                      const Vec3 re = cross(dw, e);
+                      for (unsigned int c = 0; c < 3; ++c)
+                        du[c] += re[c];
+                      dr_p += dot(re, nm);
+                    }
                 }
               const double dun = dot(du, nm);
               for (unsigned int c = 0; c < 3; ++c)
@@ -617,9 +651,11 @@ namespace tribodyn
                   ft[c] = am * t[c];
                   F[c]  = Sp * sn * n[c] + ft[c];
                 }
-              Vec3 nxf;
+              Vec3 nxf, exf;
               if constexpr (rot)
                 nxf = cross(n, ft);
+              if constexpr (rot && Pairs::offsets)
+                exf = cross(geometry.offset(p), F);
               if (owned(i))
                 {
                   for (unsigned int c = 0; c < 3; ++c)
@@ -627,6 +663,9 @@ namespace tribodyn
                   if constexpr (rot)
                     for (unsigned int c = 0; c < 3; ++c)
                       torque[i][c] += qi * nxf[c];
+                  if constexpr (rot && Pairs::offsets)
+                    for (unsigned int c = 0; c < 3; ++c)
+                      torque[i][c] += exf[c];
                 }
               if (owned(j))
                 {
@@ -635,6 +674,9 @@ namespace tribodyn
                   if constexpr (rot)
                     for (unsigned int c = 0; c < 3; ++c)
                       torque[j][c] += qj * nxf[c];
+                  if constexpr (rot && Pairs::offsets)
+                    for (unsigned int c = 0; c < 3; ++c)
+                      torque[j][c] -= exf[c];
                 }
               // Relative-rotation moment K_ij: an unbonded contact's limit
               // from its final normal stress (the slip work is friction

@@ -209,6 +209,48 @@ namespace tribodyn
     }
 
 
+    std::vector<VoronoiCell::FaceGeometry>
+    VoronoiCell::face_geometry() const
+    {
+      // first moments: each face a fan of triangles from its first vertex
+      std::vector<FaceGeometry> moments;
+      for (const Face &f : faces)
+        {
+          FaceGeometry m{f.tag, 0, {{0, 0, 0}}};
+          const auto  &p = f.vertices;
+          for (std::size_t k = 1; k + 1 < p.size(); ++k)
+            {
+              const Vec3   c = cross(minus(p[k], p[0]), minus(p[k + 1], p[0]));
+              const double a = 0.5 * std::sqrt(dot(c, c));
+              m.area += a;
+              for (unsigned int i = 0; i < 3; ++i)
+                m.centroid[i] += a * (p[0][i] + p[k][i] + p[k + 1][i]) / 3;
+            }
+          if (m.area > 1e-12 * scale * scale)
+            moments.push_back(m);
+        }
+      std::stable_sort(moments.begin(),
+                       moments.end(),
+                       [](const FaceGeometry &a, const FaceGeometry &b) {
+                         return a.tag < b.tag;
+                       });
+      std::vector<FaceGeometry> merged;
+      for (const FaceGeometry &m : moments)
+        if (!merged.empty() && merged.back().tag == m.tag)
+          {
+            merged.back().area += m.area;
+            for (unsigned int i = 0; i < 3; ++i)
+              merged.back().centroid[i] += m.centroid[i];
+          }
+        else
+          merged.push_back(m);
+      for (FaceGeometry &m : merged)
+        for (unsigned int i = 0; i < 3; ++i)
+          m.centroid[i] /= m.area;
+      return merged;
+    }
+
+
     double
     VoronoiCell::radius() const
     {

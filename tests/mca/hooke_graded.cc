@@ -3,11 +3,11 @@
 //
 // A block periodic in x and y (36 FCC cells of the fine lattice, a = d √2,
 // 9 of the 4d lattice: the period, 50.9 d, exceeds twice the longest pair
-// range, 1.12 · 4d (1 + skin)) and free in z holds, bottom to top, bands of automata of size d
-// (6 a), 2d (8 a), 4d (8 a), 2d (6 a) and d again (6 a): transitions d → 2d
-// → 4d and back. An affine displacement u = ±eps x is imposed in one
-// pseudo-step; the central difference (sigma(eps) - sigma(-eps)) / 2
-// removes the O(eps²) of the finite kinematics. Checked for every automaton
+// range, 1.12 · 4d (1 + skin)) and free in z holds, bottom to top, bands of
+// automata of size d (6 a), 2d (8 a), 4d (8 a), 2d (6 a) and d again (6 a):
+// transitions d → 2d → 4d and back. An affine displacement u = ±eps x is
+// imposed in one pseudo-step; the central difference (sigma(eps) - sigma(-eps))
+// / 2 removes the O(eps²) of the finite kinematics. Checked for every automaton
 // farther than 2 a from the free z faces and 12 d from the periodic seams
 // (where the affine displacement jumps by eps L):
 //  - its stress (seed eq. 4 with the fabric correction) equals C:eps: the
@@ -48,6 +48,7 @@ namespace
   {
     std::vector<Sym3>         stress;
     std::vector<Vec3>         force;
+    std::vector<Vec3>         torque;
     std::vector<double>       volume;
     std::vector<unsigned int> level;
     std::vector<Point3>       position;
@@ -67,6 +68,7 @@ namespace
       {
         r.stress.push_back(system.automaton_stress(k));
         r.force.push_back(system.forces()[k]);
+        r.torque.push_back(system.torques()[k]);
         r.volume.push_back(system.volumes()[k]);
         r.level.push_back(levels[k]);
         r.position.push_back(system.positions()[k]);
@@ -91,7 +93,7 @@ main(int argc, char **argv)
   const Result minus = strained(eps, -1, d);
   check(plus.stress.size() == minus.stress.size(), "same automata");
 
-  double       worst_stress = 0, worst_force = 0;
+  double       worst_stress = 0, worst_force = 0, worst_torque = 0;
   unsigned int n_checked = 0, per_level[3] = {0, 0, 0};
   const double top = 34 * a, period = 36 * a, seam = 12 * d;
   for (unsigned int k = 0; k < plus.stress.size(); ++k)
@@ -121,6 +123,17 @@ main(int argc, char **argv)
         }
       worst_force
         = std::max(worst_force, std::sqrt(f2) / (sym_norm(ref) * face));
+      // the torque, against that traction on one face with the arm of half
+      // the size
+      double m2 = 0;
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          const double mc = 0.5 * (plus.torque[k][c] - minus.torque[k][c]);
+          m2 += mc * mc;
+        }
+      worst_torque
+        = std::max(worst_torque,
+                   std::sqrt(m2) / (sym_norm(ref) * face * size / 2));
       ++n_checked;
       ++per_level[plus.level[k]];
     }
@@ -131,6 +144,7 @@ main(int argc, char **argv)
     levels[L] = dealii::Utilities::MPI::sum(per_level[L], MPI_COMM_WORLD);
   worst_stress = dealii::Utilities::MPI::max(worst_stress, MPI_COMM_WORLD);
   worst_force  = dealii::Utilities::MPI::max(worst_force, MPI_COMM_WORLD);
+  worst_torque = dealii::Utilities::MPI::max(worst_torque, MPI_COMM_WORLD);
   check(levels[0] > 1000 && levels[1] > 100 && levels[2] > 10,
         "checked automata per size: " + std::to_string(levels[0]) + " / "
           + std::to_string(levels[1]) + " / " + std::to_string(levels[2]) + " ("
@@ -143,6 +157,12 @@ main(int argc, char **argv)
                  sym_norm(ref));
   check_relative(
     worst_force, 0, 1e-8, "max |pair force| / (|sigma| S_k) (closed cells)", 1);
+  check_relative(worst_torque,
+                 0,
+                 1e-8,
+                 "max |torque| / (|sigma| S_k size/2) (forces at the face "
+                 "centroids)",
+                 1);
 
   // Volumes (all automata: the seams do not change them)
   double v_sum = 0;

@@ -724,6 +724,10 @@ namespace tribodyn
       /// Graded scenes: contact area S_ij and half rest length of each pair
       /// (empty otherwise: S and r0).
       std::vector<double> pair_area, pair_half_rest;
+      /// Graded scenes: offset e_ij of the pair's Voronoi face centroid
+      /// from the line of centres, where its forces act (zero on a
+      /// dodecahedron; doc/theory/mca.md §9).
+      VectorArray         face_offset;
       std::vector<double> beta_i, beta_j;
       /// Pairs of each owned automaton k. As i: the pairs are ordered by
       /// the key of i, so k's form one block, i_pairs_first[k] ...

@@ -56,6 +56,17 @@ namespace tribodyn
       std::vector<std::pair<int, double>>
       face_areas() const;
 
+      /// Area and centroid of the faces of each tag (as face_areas(); the
+      /// centroid of the faces of one tag together).
+      struct FaceGeometry
+      {
+        int    tag;
+        double area;
+        Vec3   centroid;
+      };
+      std::vector<FaceGeometry>
+      face_geometry() const;
+
       /// Largest distance of a vertex from the origin (a neighbour farther
       /// than twice this cannot cut the cell).
       double
