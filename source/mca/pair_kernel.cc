@@ -3,6 +3,7 @@
 // with the plastic correction, contact constraints of unbonded pairs,
 // forces and torques; then bond breaking and formation.
 
+#include "pair_geometry.h"
 #include "pair_moment_law.h"
 
 #include <algorithm>
@@ -68,89 +69,6 @@ namespace tribodyn
             {dn[0][b] * inv_r[b], dn[1][b] * inv_r[b], dn[2][b] * inv_r[b]}};
         }
       };
-
-      /**
-       * The geometry of the pairs of a uniform packing: one contact area S,
-       * one half rest length r0 = d/2 (the pair law's policy for it; the
-       * stiffness of the springs, 2G/r0, is that of the material table).
-       */
-      struct UniformPairs
-      {
-        double S, r0, inv_r0, d;
-        /// Forces act on the line of centres (the dodecahedron's faces
-        /// are centred on it).
-        static constexpr bool offsets = false;
-        static Vec3
-        offset(const unsigned int)
-        {
-          return {{0, 0, 0}};
-        }
-        double
-        area(const unsigned int) const
-        {
-          return S;
-        }
-        double
-        inv_half_rest(const unsigned int) const
-        {
-          return inv_r0;
-        }
-        /// Distance at which an unbonded pair touches.
-        double
-        contact_distance(const unsigned int) const
-        {
-          return d;
-        }
-        /// Factor of the material table's spring stiffnesses 2G / r0.
-        static constexpr double
-        stiffness_scale(const unsigned int)
-        {
-          return 1.;
-        }
-      };
-
-      /**
-       * Automata of several sizes (doc/theory/mca.md §9): each pair has its
-       * own area S_ij and half rest length q0_ij (its Voronoi face and
-       * half the distance of the two centres at set-up), so its strains
-       * are Δq / q0_ij and its springs 2G / q0_ij.
-       */
-      struct GradedPairs
-      {
-        const double      *S, *q0;
-        double             r0;
-        const VectorArray *e;
-        /// Forces act at the face centroid, e_ij off the line of centres:
-        /// under a homogeneous stress the torques of a cell that is not
-        /// centrosymmetric then vanish (Σ_f A_f x̄_f ⊗ n_f = V I).
-        static constexpr bool offsets = true;
-        Vec3
-        offset(const unsigned int p) const
-        {
-          return {{e->component[0][p], e->component[1][p], e->component[2][p]}};
-        }
-        double
-        area(const unsigned int p) const
-        {
-          return S[p];
-        }
-        double
-        inv_half_rest(const unsigned int p) const
-        {
-          return 1. / q0[p];
-        }
-        double
-        contact_distance(const unsigned int p) const
-        {
-          return 2 * q0[p];
-        }
-        double
-        stiffness_scale(const unsigned int p) const
-        {
-          return r0 / q0[p];
-        }
-      };
-
 
       /// 3 J2, the square of the von Mises stress: the bond criterion
       /// compares it with the squared strength (no square root per pair).
