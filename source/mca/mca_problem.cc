@@ -508,11 +508,24 @@ namespace tribodyn
                             .count();
       std::ostringstream figures_early;
       figures_early << std::setprecision(6);
-      JsonValue summary                = JsonValue::object();
-      summary["problem"]               = "mca";
-      summary["tribodyn_version"]      = version_string;
-      summary["n_mpi_ranks"]           = n_ranks;
-      summary["n_automata"]            = system.n_global_automata();
+      JsonValue summary           = JsonValue::object();
+      summary["problem"]          = "mca";
+      summary["tribodyn_version"] = version_string;
+      summary["n_mpi_ranks"]      = n_ranks;
+      summary["n_automata"]       = system.n_global_automata();
+      if (!parameters.geometry.size_bands.empty())
+        {
+          // automata of size d, 2d, 4d (Geometry/Size bands)
+          std::vector<unsigned long long> per_size(3, 0);
+          const auto                      levels = system.size_levels();
+          for (unsigned int k = 0; k < system.n_owned_automata(); ++k)
+            ++per_size[std::min(levels[k], 2u)];
+          dealii::Utilities::MPI::sum(per_size, comm, per_size);
+          JsonValue sizes = JsonValue::array();
+          for (const unsigned long long n : per_size)
+            sizes.push_back(n);
+          summary["n_automata_per_size"] = sizes;
+        }
       summary["work_imbalance"]        = imbalance;
       summary["n_pairs"]               = system.n_global_pairs();
       summary["n_steps"]               = n_steps;

@@ -135,6 +135,10 @@ namespace tribodyn
       const bool with_elastic = !prm.interaction.elastic_regions.empty();
       if (with_elastic)
         scalar("elastic", [&](unsigned k) { return double(elastic(k)); });
+      // graded scenes: the size 2^L d of each automaton (ParaView's glyph
+      // scale)
+      if (graded)
+        scalar("size", [&](unsigned k) { return automaton_size(k); });
       vector("velocity", [&](unsigned k) { return v[k]; });
       vector("displacement", [&](unsigned k) { return u[k]; });
       vector("angular_velocity", [&](unsigned k) { return w[k]; });
@@ -172,6 +176,8 @@ namespace tribodyn
         pv << "<PDataArray type=\"Float64\" Name=\"" << s << "\"/>\n";
       if (with_elastic)
         pv << "<PDataArray type=\"Float64\" Name=\"elastic\"/>\n";
+      if (graded)
+        pv << "<PDataArray type=\"Float64\" Name=\"size\"/>\n";
       for (const char *s : {"velocity", "displacement", "angular_velocity"})
         pv << "<PDataArray type=\"Float64\" Name=\"" << s
            << "\" NumberOfComponents=\"3\"/>\n";
