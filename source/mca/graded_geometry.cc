@@ -193,8 +193,7 @@ namespace tribodyn
               // empty: the cell of a fine automaton below a 2d layer extends
               // to 1.18 d, beyond the 2d dodecahedron around it (test
               // mca_hooke_graded fails with that bound). On a free surface
-              // the cell keeps this extent: an upper bound of its volume
-              // there.
+              // the sites of the continued lattice close it.
               VoronoiCell cell(2 * bound);
               for (const auto &[distance, a] : by_distance)
                 {
@@ -207,11 +206,12 @@ namespace tribodyn
                 }
               volume[k]        = cell.volume();
               const auto areas = cell.face_geometry();
-              // a cell still bounded by its dodecahedron (tag -1) lies on a
-              // free surface: there it can share faces with automata
-              // farther apart than in the bulk (1.5 2^L d on the side of a
-              // graded block), faces across the vacuum that the uniform
-              // lattice does not have either: they are dropped
+              // a cell still bounded by its dodecahedron (tag -1) is open
+              // where even the continued lattice has no sites (the gap
+              // under a lifted upper body): there it can share faces with
+              // automata farther apart than in the bulk, faces across the
+              // vacuum that the uniform lattice does not have either: they
+              // are dropped
               const bool open = !areas.empty() && areas.front().tag < 0
                                 && areas.front().area > 1e-6 * S;
               for (const auto &[tag, area, centroid] : areas)
