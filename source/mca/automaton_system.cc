@@ -32,8 +32,7 @@ namespace tribodyn
       for (unsigned int L = 0; L < graded_range[0].size(); ++L)
         {
           graded_range[0][L] = range * (1u << L);
-          graded_range[1][L]
-            = GeometryParameters::transition_face_factor * (1u << L) * range;
+          graded_range[1][L] = g.transition_face_factor() * (1u << L) * range;
         }
       rotations = prm.interaction.rotations;
       for (const auto &m : prm.materials)

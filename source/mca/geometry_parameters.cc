@@ -2,6 +2,7 @@
 
 #include "parameter_tools.h"
 
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/patterns.h>
@@ -124,6 +125,19 @@ namespace tribodyn
           "Interaction/Relative rotation stiffness > 0. Plan a graded scene "
           "with tribodyn --partition-report N FILE.prm.");
         prm.declare_entry(
+          "Size at free faces",
+          "fine",
+          Patterns::Selection("fine|band"),
+          "Graded packing at the free lateral faces of the bodies (faces in "
+          "x or y that are not periodic). fine: the FCC cells of size 2d "
+          "whose sites lie closer than a = d sqrt(2) to such a face, and "
+          "those of size 4d closer than 4a, are packed one size finer (a "
+          "skin of d, then of 2d, 1-2 layers thick), so a band has the "
+          "fine lattice's free surface (a free surface of coarse automata "
+          "is softer: its missing bonds reach twice as deep; "
+          "doc/theory/mca.md section 9); band: the band's size reaches the "
+          "face.");
+        prm.declare_entry(
           "Regions",
           "",
           Patterns::Anything(),
@@ -239,6 +253,7 @@ namespace tribodyn
                         "Geometry/Bodies",
                         "give at least one body.");
 
+        fine_free_faces = prm.get("Size at free faces") == "fine";
         size_bands.clear();
         for (const std::string &entry : split(prm.get("Size bands"), ';'))
           {
@@ -450,13 +465,153 @@ namespace tribodyn
       for (const SizeBand &band : size_bands)
         top = std::max(top, band.level);
       return top == 0 ? automaton_size
-                      : transition_face_factor * (1u << top) * automaton_size;
+                      : transition_face_factor() * (1u << top) * automaton_size;
+    }
+
+
+    namespace
+    {
+      /// The body whose box holds @p p, or nullptr.
+      const Body *
+      body_at(const std::vector<Body> &bodies, const Point3 &p)
+      {
+        for (const Body &body : bodies)
+          {
+            bool inside = true;
+            for (unsigned int c = 0; c < 3; ++c)
+              inside = inside && p[c] >= body.lower[c] && p[c] < body.upper[c];
+            if (inside)
+              return &body;
+          }
+        return nullptr;
+      }
+
+      /// Distance of @p q inside the free lateral faces of @p body (its
+      /// faces in x and y that are not periodic).
+      double
+      lateral_depth(const Point3              &q,
+                    const Body                &body,
+                    const std::array<bool, 3> &periodic)
+      {
+        double depth = std::numeric_limits<double>::max();
+        for (unsigned int c = 0; c < 2; ++c)
+          if (!periodic[c])
+            depth
+              = std::min({depth, q[c] - body.lower[c], body.upper[c] - q[c]});
+        return depth;
+      }
+    } // namespace
+
+
+    unsigned int
+    GeometryParameters::size_level(const Point3 &p) const
+    {
+      const unsigned int band = size_level(p[2]);
+      if (band == 0 || !has_skins())
+        return band;
+      const Body *body = body_at(bodies, p);
+      if (body == nullptr)
+        return 0;
+      const double a     = automaton_size * std::sqrt(2.);
+      const double depth = lateral_depth(p, *body, periodic);
+      // The FCC cells of the lattice of 2^L d (rhombic dodecahedra
+      // |x_i| + |x_j| <= A/2 about their sites, A = 2^L a) are kept if their
+      // sites lie in the band and skin_depth(L) inside the body. A site of
+      // the next finer lattice is the site, a face centre or an axis vertex
+      // of these cells; as at a plane between bands (there the finer sites
+      // start at the vertices of the coarse cells), it is coarse (dropped
+      // unless a coarse site) inside a kept cell or on a face of one, and
+      // fine at a vertex that at least half of its six cells leave to the
+      // skin (a vertex with fewer would be a lone fine site among coarse
+      // ones).
+      for (unsigned int level = band; level > 0; --level)
+        {
+          const double A = (1u << level) * a, T = skin_depth(level);
+          if (depth >= T + A / 2)
+            return level;
+          if (depth < T - A / 2)
+            continue;
+          static constexpr std::array<std::array<double, 3>, 4> basis = {
+            {{{0, 0, 0}}, {{0.5, 0.5, 0}}, {{0.5, 0, 0.5}}, {{0, 0.5, 0.5}}}};
+          std::array<long, 3> n0;
+          for (unsigned int c = 0; c < 3; ++c)
+            n0[c] = static_cast<long>(
+              std::floor((p[c] - domain_lower[c] - a / 4) / A));
+          const double tol        = 1e-9 * A;
+          double       z_range[2] = {domain_upper[2], domain_lower[2]};
+          for (const Body &b : bodies)
+            {
+              z_range[0] = std::min(z_range[0], b.lower[2]);
+              z_range[1] = std::max(z_range[1], b.upper[2] - 1e-9 * a);
+            }
+          unsigned int n_cells = 0, n_skin = 0;
+          bool         inside_kept = false;
+          for (long i = -1; i <= 1; ++i)
+            for (long j = -1; j <= 1; ++j)
+              for (long k = -1; k <= 1; ++k)
+                for (const auto &b : basis)
+                  {
+                    const long n[3] = {n0[0] + i, n0[1] + j, n0[2] + k};
+                    Point3     site;
+                    double     x[3];
+                    for (unsigned int c = 0; c < 3; ++c)
+                      {
+                        site[c] = domain_lower[c] + a / 4 + A * (n[c] + b[c]);
+                        x[c]    = std::abs(p[c] - site[c]);
+                      }
+                    const double sums[3]
+                      = {x[0] + x[1], x[0] + x[2], x[1] + x[2]};
+                    unsigned int on_faces = 0;
+                    bool         holds    = true;
+                    for (const double sum : sums)
+                      {
+                        holds = holds && sum <= A / 2 + tol;
+                        on_faces += sum > A / 2 - tol;
+                      }
+                    if (!holds)
+                      continue;
+                    // (beyond the bodies in z the bands at their top and
+                    // bottom go on, as the continued lattice does)
+                    const bool kept
+                      = size_level(std::clamp(site[2], z_range[0], z_range[1]))
+                          >= level
+                        && lateral_depth(site, *body, periodic) >= T;
+                    ++n_cells;
+                    n_skin += !kept;
+                    // inside, or on a face (one of the three sums at A/2)
+                    inside_kept = inside_kept || (kept && on_faces <= 1);
+                  }
+          if (inside_kept || 2 * n_skin <= n_cells)
+            return level;
+        }
+      return 0;
     }
 
 
     bool
-    GeometryParameters::near_size_change(const double z) const
+    GeometryParameters::near_size_change(const Point3 &p) const
     {
+      const double z = p[2];
+      // the inner faces of the skins at free lateral faces, where the
+      // bands near p are coarser than the skin
+      const Body *body = has_skins() ? body_at(bodies, p) : nullptr;
+      if (body != nullptr)
+        {
+          const double depth = lateral_depth(p, *body, periodic);
+          for (unsigned int level = 1; level <= 2; ++level)
+            {
+              // (the faces between kept and skin cells lie within A/2 of
+              // the skin depth)
+              const double width
+                = (3. + std::sqrt(0.5)) * (1u << level) * automaton_size;
+              if (std::abs(depth - skin_depth(level)) >= width)
+                continue;
+              for (const SizeBand &band : size_bands)
+                if (band.level >= level && band.z_lower < z + width
+                    && z - width < band.z_upper)
+                  return true;
+            }
+        }
       for (const SizeBand &band : size_bands)
         for (const double plane : {band.z_lower, band.z_upper})
           {

@@ -232,7 +232,7 @@ namespace tribodyn
                     // apart touch there; a period that holds a whole number
                     // of cells only to 1e-6, as the check of the box
                     // allows, opens faces of ~5e-6 S between them)
-                    if (apart > GeometryParameters::transition_face_factor
+                    if (apart > g.transition_face_factor()
                         && (open || area < sliver * S))
                       continue;
                     // the centroid's offset from the line of centres
@@ -251,11 +251,11 @@ namespace tribodyn
       farthest_face = dealii::Utilities::MPI::max(farthest_face, comm);
       throw_collectively(
         comm,
-        farthest_face > GeometryParameters::transition_face_factor,
+        farthest_face > g.transition_face_factor(),
         "Internal error: a Voronoi face near a change of size joins automata "
           + format_number(farthest_face)
           + " times the larger size apart, beyond the pair-list range "
-            "(GeometryParameters::transition_face_factor; Geometry/Size "
+            "(GeometryParameters::transition_face_factor(); Geometry/Size "
             "bands: report this scene).");
       throw_collectively(
         comm,

@@ -220,8 +220,10 @@ namespace tribodyn
                 // (continued: beyond the bodies in z, the band at their
                 // top or bottom goes on)
                 const unsigned int level = g.size_level(
-                  continued ? std::clamp(p[2], z_bodies[0], z_bodies[1])
-                            : p[2]);
+                  continued ? Point3(p[0],
+                                     p[1],
+                                     std::clamp(p[2], z_bodies[0], z_bodies[1]))
+                            : p);
                 if (level > 0)
                   {
                     const long step = 1L << level;
@@ -239,7 +241,7 @@ namespace tribodyn
                 PackedAutomaton automaton;
                 automaton.level = static_cast<unsigned char>(level);
                 automaton.transitional
-                  = !g.size_bands.empty() && g.near_size_change(p[2]);
+                  = !g.size_bands.empty() && g.near_size_change(p);
                 automaton.id
                   = in_lattice ? static_cast<std::uint32_t>(
                       ((k * (n[1] + 1) + j) * (n[0] + 1) + i) * 4 + bi)

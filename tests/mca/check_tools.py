@@ -15,6 +15,20 @@ def report(good, text):
     print(("PASS  " if good else "FAIL  ") + text)
 
 
+def report_relative(graded, uniform, checks, indent=""):
+    """For each (key, tolerance) in CHECKS, report whether summary GRADED's
+    value is within the relative tolerance of summary UNIFORM's."""
+    for key, tol in checks:
+        if key in uniform and key in graded:
+            g, u = graded[key], uniform[key]
+            rel = (g - u) / u
+            report(abs(rel) <= tol,
+                   f"{indent}{key}: graded {g:.6g} vs uniform {u:.6g} "
+                   f"({rel:+.2e}, tolerance {tol:g})")
+        else:
+            report(False, f"{indent}{key} in both summaries")
+
+
 def finish():
     sys.exit(1 if _failed else 0)
 

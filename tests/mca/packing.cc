@@ -9,6 +9,8 @@
 
 #include "mca_test_tools.h"
 
+#include <map>
+
 using namespace tribodyn_test;
 
 int
@@ -98,6 +100,7 @@ main(int argc, char **argv)
     const auto         fine = pack_automata(q.geometry, 2);
     q.geometry.size_bands
       = {{4 * a - 1e-3 * a, 8 * a - 1e-3 * a, 1}, {8 * a - 1e-3 * a, 1, 2}};
+    q.geometry.fine_free_faces = false; // the bands' lattices to the faces
     const auto                 graded    = pack_automata(q.geometry, 2);
     std::array<std::size_t, 3> per_level = {{0, 0, 0}};
     bool                       fine_ids  = true;
@@ -152,6 +155,68 @@ main(int argc, char **argv)
               "level " + std::to_string(level) + ": 12 neighbours at 2^L d ("
                 + std::to_string(equal) + ")");
       }
+  }
+
+  // The skin at free lateral faces (Geometry/Size at free faces = fine):
+  // the same bands with free x and y faces keep the fine lattice's surface
+  // (every fine site of the outermost layer of each lateral face, a/4 deep,
+  // in the packing, of size d), no automaton of size 2^L d lies closer to a
+  // lateral face than skin_depth(L) (a kept coarse cell, 2^L a / 2 in
+  // radius, stays inside the body), and every automaton is on its fine site.
+  {
+    const unsigned int m    = 16;
+    Parameters         q    = block_parameters(m, d, 0);
+    const auto         fine = pack_automata(q.geometry, 2);
+    q.geometry.size_bands
+      = {{4 * a - 1e-3 * a, 8 * a - 1e-3 * a, 1}, {8 * a - 1e-3 * a, 1, 2}};
+    const auto graded = pack_automata(q.geometry, 2);
+    auto       depth  = [&](const Point3 &p) {
+      return std::min(std::min(p[0], m * a - p[0]),
+                      std::min(p[1], m * a - p[1]));
+    };
+    std::map<std::uint32_t, const PackedAutomaton *> by_id;
+    std::array<std::size_t, 3>                       per_level = {{0, 0, 0}};
+    for (const auto &g : graded)
+      {
+        by_id[g.id] = &g;
+        ++per_level[g.level];
+      }
+    std::size_t surface = 0, kept = 0;
+    for (const auto &f : fine)
+      if (depth(f.position) < a / 2)
+        {
+          ++surface;
+          const auto it = by_id.find(f.id);
+          kept += it != by_id.end() && it->second->level == 0;
+        }
+    check(surface > 0 && kept == surface,
+          "skin: " + std::to_string(kept) + " of the " + std::to_string(surface)
+            + " fine sites of the lateral surface layers kept, of size d");
+    double closest[3] = {1e300, 1e300, 1e300};
+    bool   on_sites   = true;
+    for (const auto &g : graded)
+      {
+        closest[g.level] = std::min(closest[g.level], depth(g.position));
+        const auto site  = std::lower_bound(fine.begin(),
+                                           fine.end(),
+                                           g.id,
+                                           [](const auto &s, const auto id) {
+                                             return s.id < id;
+                                           });
+        on_sites         = on_sites && site != fine.end() && site->id == g.id
+                   && site->position.distance(g.position) < 1e-12 * d;
+      }
+    check(per_level[1] > 0 && per_level[2] > 0
+            && closest[1] >= q.geometry.skin_depth(1) * (1 - 1e-12)
+            && closest[2] >= q.geometry.skin_depth(2) * (1 - 1e-12),
+          "skin: " + std::to_string(per_level[0]) + " / "
+            + std::to_string(per_level[1]) + " / "
+            + std::to_string(per_level[2])
+            + " automata of d / 2d / 4d; the 2d and 4d ones at least "
+            + std::to_string(closest[1] / a) + " a and "
+            + std::to_string(closest[2] / a)
+            + " a from a lateral face (skin depths a and 4a)");
+    check(on_sites, "skin: every automaton sits on the fine site of its id");
   }
   return result();
 }

@@ -182,7 +182,8 @@ namespace tribodyn
       /// z_lower <= z < z_upper (in the frame of the Bodies, before the
       /// upper body of a rough interface is lifted) have size 2^level d,
       /// on the FCC lattice of that size with the common origin (its sites
-      /// are sites of the finer lattices). Elsewhere: size d.
+      /// are sites of the finer lattices), but for the skin at free lateral
+      /// faces (fine_free_faces). Elsewhere: size d.
       struct SizeBand
       {
         double       z_lower = 0, z_upper = 0;
@@ -192,9 +193,28 @@ namespace tribodyn
       /// The size level of a site at height @p z (0 outside every band).
       unsigned int
       size_level(const double z) const;
+      /// Geometry/Size at free faces = fine: at a free lateral face of its
+      /// body (a face in x or y, not periodic) a band keeps the fine
+      /// lattice's surface. The automata of size 2^L d fill the FCC cells
+      /// of their lattice whose centres lie at least skin_depth(L) inside
+      /// the body; the rest of the band is packed one size finer (nested
+      /// skins: d, then 2d, then the band's size).
+      bool fine_free_faces = true;
+      /// The size level of a site at @p p: size_level(p[2]), or less in
+      /// the skin of a free lateral face (fine_free_faces).
+      unsigned int
+      size_level(const Point3 &p) const;
+      /// Depth of the skin below 2^L d at a free lateral face: a and 4a for
+      /// L = 1 and 2 (a = d sqrt(2); the 4d cells, 2a in radius, then lie
+      /// beyond the 2d cells of the skin of 2d, a in radius).
+      double
+      skin_depth(const unsigned int level) const
+      {
+        return (level == 1 ? 1. : 4.) * automaton_size * std::sqrt(2.);
+      }
       /// Largest pair-list distance of two automata at rest: d, or with
       /// size bands up to level L that of the pairs near a change of size
-      /// that share a Voronoi face, transition_face_factor 2^L d
+      /// that share a Voronoi face, transition_face_factor() 2^L d
       /// (doc/theory/mca.md §9). The pair-list range and the cell size are
       /// this times 1 + Interaction/Skin.
       double
@@ -205,12 +225,27 @@ namespace tribodyn
       /// transitions, test mca_hooke_graded; checked for every face at
       /// set-up). Only those pairs interact, so
       /// the cells of the decomposition need not reach the candidates.
-      static constexpr double transition_face_factor = 1.12;
-      /// Is a site at height @p z (frame of size_level()) within
-      /// 3 2^max(L_a, L_b) d of a plane where the size changes from L_a to
-      /// L_b? Such automata have Voronoi cells of their own (volumes, areas).
+      /// Where a skin of fine automata meets a plane between bands at a
+      /// free face (fine_free_faces) the cells reach across the corner of
+      /// the coarse cells: √3 (measured, test mca_graded_free_faces).
+      double
+      transition_face_factor() const
+      {
+        return has_skins() ? 1.74 : 1.12;
+      }
+      /// Size bands that reach a free lateral face with fine_free_faces.
       bool
-      near_size_change(const double z) const;
+      has_skins() const
+      {
+        return fine_free_faces && !size_bands.empty()
+               && !(periodic[0] && periodic[1]);
+      }
+      /// Is a site at @p p (frame of size_level()) within 3 2^max(L_a, L_b) d
+      /// of a plane where the size changes from L_a to L_b, or of the inner
+      /// face of a skin at a free face? Such automata have Voronoi cells of
+      /// their own (volumes, areas).
+      bool
+      near_size_change(const Point3 &p) const;
 
       InclusionPackingParameters inclusions;
       /// The generated inclusions (set by parse_parameters or
