@@ -298,12 +298,6 @@ namespace tribodyn
             sigma_y[k] = mc[mat[k]].yield0;
         }
       critical_dt = d / c_max;
-      if (graded && moment_scene)
-        throw InputError(
-          "Parameter 'Interaction/Relative rotation stiffness' > 0 is not "
-          "available with 'Geometry/Size bands' yet (the moment law of "
-          "automata of several sizes is to come, issue #18): set it to 0 or "
-          "remove the size bands.");
       if (prm.time.time_step == 0)
         dt = prm.time.courant * critical_dt;
       else

@@ -121,9 +121,8 @@ namespace tribodyn
           "lattices; elsewhere the size is d. Bands must not overlap, and "
           "the size changes by a factor 2 at a time (d, 2d, 4d). Automata "
           "near a change of size take their volumes and contact areas from "
-          "their Voronoi cells (doc/theory/mca.md section 9); not yet with "
-          "Interaction/Relative rotation stiffness > 0. Plan a graded scene "
-          "with tribodyn --partition-report N FILE.prm.");
+          "their Voronoi cells (doc/theory/mca.md section 9). Plan a graded "
+          "scene with tribodyn --partition-report N FILE.prm.");
         prm.declare_entry(
           "Size at free faces",
           "fine",

@@ -45,6 +45,13 @@ namespace tribodyn
       {
         return d;
       }
+      /// Factor of the material table's relative-rotation stiffnesses
+      /// (k I, k J of a pair of size d).
+      static constexpr double
+      moment_scale(const unsigned int)
+      {
+        return 1;
+      }
       /// Factor of the material table's spring stiffnesses 2G / r0.
       static constexpr double
       stiffness_scale(const unsigned int)
@@ -64,6 +71,8 @@ namespace tribodyn
       const double      *S, *q0;
       double             r0;
       const VectorArray *e;
+      /// 1 / S of a pair of automata of size d.
+      double inv_S_d;
       /// Forces act at the face centroid, e_ij off the line of centres:
       /// under a homogeneous stress the torques of a cell that is not
       /// centrosymmetric then vanish (Σ_f A_f x̄_f ⊗ n_f = V I).
@@ -92,6 +101,14 @@ namespace tribodyn
       stiffness_scale(const unsigned int p) const
       {
         return r0 / q0[p];
+      }
+      /// k I and k J scale as (2G / q0) S^2: the pair's face and halves.
+      double
+      moment_scale(const unsigned int p) const
+      {
+        // (an inert pair near a change of size has S = q0 = 0)
+        const double s = S[p] * inv_S_d;
+        return q0[p] > 0 ? r0 / q0[p] * s * s : 0.;
       }
     };
   } // namespace mca

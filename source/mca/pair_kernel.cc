@@ -147,7 +147,7 @@ namespace tribodyn
       };
       if (graded)
         dispatch(GradedPairs{
-          pair_area.data(), pair_half_rest.data(), r0, &face_offset});
+          pair_area.data(), pair_half_rest.data(), r0, &face_offset, 1. / S});
       else
         dispatch(UniformPairs{S, r0, 1. / r0, d});
     }
@@ -311,6 +311,7 @@ namespace tribodyn
                       }
                     const RotationSprings &ks
                       = rotation_springs[mat[i] * n_materials + mat[j]];
+                    const double f = geometry.moment_scale(p);
                     pair_moment.set(p,
                                     pair_moment_law::trial(pair_moment[p],
                                                            n_old,
@@ -319,8 +320,8 @@ namespace tribodyn
                                                            wi,
                                                            wj,
                                                            step_dt,
-                                                           ks.twist,
-                                                           ks.bend));
+                                                           f * ks.twist,
+                                                           f * ks.bend));
                   }
 
               // Tangential: relative displacement of the contact points.
@@ -607,9 +608,19 @@ namespace tribodyn
                       {
                         const RotationSprings &ks
                           = rotation_springs[mat[i] * n_materials + mat[j]];
+                        const double f = geometry.moment_scale(p);
+                        // (the face of a pair of other size: its own radius)
+                        double radius = face_radius;
+                        if constexpr (Pairs::offsets)
+                          radius = std::sqrt(geometry.area(p) / M_PI);
                         const double slip_work
-                          = pair_moment_law::limit_unbonded(
-                            K, n, -Sp * sn, mu, face_radius, ks.twist, ks.bend);
+                          = pair_moment_law::limit_unbonded(K,
+                                                            n,
+                                                            -Sp * sn,
+                                                            mu,
+                                                            radius,
+                                                            f * ks.twist,
+                                                            f * ks.bend);
                         if (owned(i))
                           friction_work += slip_work;
                         pair_moment.set(p, K);

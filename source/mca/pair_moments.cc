@@ -23,8 +23,16 @@ namespace tribodyn
             const double Kn = dot(K, n);
             const auto  &ks
               = rotation_springs[mat[pi[p]] * n_materials + mat[pj[p]]];
-            energy += 0.5 * Kn * Kn / ks.twist
-                      + 0.5 * (dot(K, K) - Kn * Kn) / ks.bend;
+            // (automata of several sizes: the pair's own stiffnesses, as
+            // GradedPairs::moment_scale gives the kernel)
+            double f = 1;
+            if (graded && pair_half_rest[p] > 0)
+              {
+                const double s = pair_area[p] / S;
+                f              = r0 / pair_half_rest[p] * s * s;
+              }
+            energy += 0.5 * Kn * Kn / (f * ks.twist)
+                      + 0.5 * (dot(K, K) - Kn * Kn) / (f * ks.bend);
           }
       return energy;
     }

@@ -45,10 +45,26 @@ namespace
   /// Two steel automata at distance d along (1, 1, 0)/sqrt 2; bonded (one
   /// body) or not (two bodies).
   Parameters
-  pair_parameters(const double lambda, const bool bonded)
+  pair_parameters(const double lambda,
+                  const bool   bonded,
+                  const bool   coarse = false)
   {
-    Parameters   p             = block_parameters(1, d, 0);
-    const double a             = a_lat;
+    Parameters   p = block_parameters(1, d, 0);
+    const double a = a_lat;
+    if (coarse)
+      {
+        // a size band of 2d over the whole box (no skin): the lattice of
+        // 2d keeps the sites (a/4, a/4, a/4) and (5a/4, 5a/4, a/4) of the
+        // body, 2d apart along (1, 1, 0)/sqrt 2
+        p.geometry.domain_lower    = Point3(-4 * a, -4 * a, -4 * a);
+        p.geometry.domain_upper    = Point3(6 * a, 6 * a, 6 * a);
+        p.geometry.bodies[0].lower = Point3(0, 0, 0);
+        p.geometry.bodies[0].upper = Point3(2 * a, 2 * a, a / 2);
+        p.geometry.size_bands      = {{-4 * a, 6 * a, 1}};
+        p.geometry.fine_free_faces = false;
+        p.interaction.relative_rotation_stiffness = lambda;
+        return p;
+      }
     p.geometry.domain_lower    = Point3(-2 * a, -2 * a, -2 * a);
     p.geometry.domain_upper    = Point3(3 * a, 3 * a, 3 * a);
     p.geometry.bodies[0].lower = Point3(0, 0, 0);
@@ -75,8 +91,8 @@ namespace
     /// moment of the pair acts on i)
     double sign = 1;
 
-    Pair(const double lambda, const bool bonded)
-        : p(pair_parameters(lambda, bonded))
+    Pair(const double lambda, const bool bonded, const bool coarse = false)
+        : p(pair_parameters(lambda, bonded, coarse))
         , system(p, MPI_COMM_WORLD)
     {
       system.setup();
@@ -380,6 +396,34 @@ main(int argc, char **argv)
     check(worst_b <= bend_limit * (1 + 1e-12),
           "bending moment never above |sigma| S a / 4");
     check_relative(last_b, bend_limit, 1e-12, "bending moment at the limit");
+  }
+
+  // 7. automata of 2d (a size band, the graded pair geometry: the pair's
+  //    own face S_ij and half rest length q0 from its Voronoi cells): the
+  //    parallel-bond law of that pair, k = 2G/(2d) and S_ij = 4S, so
+  //    k_t and k_b are 2^4 / 2 = 8 times those of d (to 1e-12: the Voronoi
+  //    face is 4S to round-off). With the area or the half length of the
+  //    uniform pair (factor 1 or 16) it fails.
+  {
+    Pair         pair(1, true, true);
+    const double delta = 1e-6;
+    check(pair.system.n_global_automata() == 2
+            && pair.system.size_levels().at(0) == 1,
+          "two automata of 2d");
+    for (unsigned int s = 0; s < 50; ++s)
+      pair.move(pair.n, delta, pair.n, 0);
+    const Vec3 K = moment_on_fixed(pair);
+    check_relative(dot(K, pair.n),
+                   8 * k_t * 50 * delta,
+                   1e-12,
+                   "2d: twist K . n = 8 k_t(d) theta");
+    Pair bend(1, true, true);
+    for (unsigned int s = 0; s < 50; ++s)
+      bend.move(bend.t, delta, bend.t, 0);
+    check_relative(dot(moment_on_fixed(bend), bend.t),
+                   8 * k_b * 50 * delta,
+                   1e-12,
+                   "2d: bending K . t = 8 k_b(d) theta");
   }
 
   // 6. lambda = 0: no moment
