@@ -470,21 +470,6 @@ namespace tribodyn
 
     namespace
     {
-      /// The body whose box holds @p p, or nullptr.
-      const Body *
-      body_at(const std::vector<Body> &bodies, const Point3 &p)
-      {
-        for (const Body &body : bodies)
-          {
-            bool inside = true;
-            for (unsigned int c = 0; c < 3; ++c)
-              inside = inside && p[c] >= body.lower[c] && p[c] < body.upper[c];
-            if (inside)
-              return &body;
-          }
-        return nullptr;
-      }
-
       /// Distance of @p q inside the free lateral faces of @p body (its
       /// faces in x and y that are not periodic).
       double
@@ -502,17 +487,48 @@ namespace tribodyn
     } // namespace
 
 
+    int
+    GeometryParameters::body_containing(const Point3 &p) const
+    {
+      for (unsigned int m = 0; m < bodies.size(); ++m)
+        {
+          bool inside = true;
+          for (unsigned int c = 0; c < 3; ++c)
+            inside = inside && p[c] >= bodies[m].lower[c]
+                     && p[c] < bodies[m].upper[c];
+          if (inside)
+            return static_cast<int>(m);
+        }
+      return -1;
+    }
+
+
+    std::array<double, 2>
+    GeometryParameters::bodies_z_range() const
+    {
+      const double          a     = automaton_size * std::sqrt(2.);
+      std::array<double, 2> range = {{domain_upper[2], domain_lower[2]}};
+      for (const Body &b : bodies)
+        {
+          range[0] = std::min(range[0], b.lower[2]);
+          range[1] = std::max(range[1], b.upper[2] - 1e-9 * a);
+        }
+      return range;
+    }
+
+
     unsigned int
     GeometryParameters::size_level(const Point3 &p) const
     {
       const unsigned int band = size_level(p[2]);
       if (band == 0 || !has_skins())
         return band;
-      const Body *body = body_at(bodies, p);
-      if (body == nullptr)
+      const int m = body_containing(p);
+      if (m < 0)
         return 0;
+      const Body  &body  = bodies[m];
       const double a     = automaton_size * std::sqrt(2.);
-      const double depth = lateral_depth(p, *body, periodic);
+      const double depth = lateral_depth(p, body, periodic);
       // The FCC cells of the lattice of 2^L d (rhombic dodecahedra
       // |x_i| + |x_j| <= A/2 about their sites, A = 2^L a) are kept if their
       // sites lie in the band and skin_depth(L) inside the body. A site of
@@ -530,25 +546,18 @@ namespace tribodyn
             return level;
           if (depth < T - A / 2)
             continue;
-          static constexpr std::array<std::array<double, 3>, 4> basis = {
-            {{{0, 0, 0}}, {{0.5, 0.5, 0}}, {{0.5, 0, 0.5}}, {{0, 0.5, 0.5}}}};
           std::array<long, 3> n0;
           for (unsigned int c = 0; c < 3; ++c)
             n0[c] = static_cast<long>(
               std::floor((p[c] - domain_lower[c] - a / 4) / A));
-          const double tol        = 1e-9 * A;
-          double       z_range[2] = {domain_upper[2], domain_lower[2]};
-          for (const Body &b : bodies)
-            {
-              z_range[0] = std::min(z_range[0], b.lower[2]);
-              z_range[1] = std::max(z_range[1], b.upper[2] - 1e-9 * a);
-            }
+          const double tol     = 1e-9 * A;
+          const auto   z_range = bodies_z_range();
           unsigned int n_cells = 0, n_skin = 0;
           bool         inside_kept = false;
           for (long i = -1; i <= 1; ++i)
             for (long j = -1; j <= 1; ++j)
               for (long k = -1; k <= 1; ++k)
-                for (const auto &b : basis)
+                for (const auto &b : fcc_basis)
                   {
                     const long n[3] = {n0[0] + i, n0[1] + j, n0[2] + k};
                     Point3     site;
@@ -574,7 +583,7 @@ namespace tribodyn
                     const bool kept
                       = size_level(std::clamp(site[2], z_range[0], z_range[1]))
                           >= level
-                        && lateral_depth(site, *body, periodic) >= T;
+                        && lateral_depth(site, body, periodic) >= T;
                     ++n_cells;
                     n_skin += !kept;
                     // inside, or on a face (one of the three sums at A/2)
@@ -593,10 +602,10 @@ namespace tribodyn
       const double z = p[2];
       // the inner faces of the skins at free lateral faces, where the
       // bands near p are coarser than the skin
-      const Body *body = has_skins() ? body_at(bodies, p) : nullptr;
-      if (body != nullptr)
+      const int m = has_skins() ? body_containing(p) : -1;
+      if (m >= 0)
         {
-          const double depth = lateral_depth(p, *body, periodic);
+          const double depth = lateral_depth(p, bodies[m], periodic);
           for (unsigned int level = 1; level <= 2; ++level)
             {
               // (the faces between kept and skin cells lie within A/2 of

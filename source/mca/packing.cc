@@ -118,10 +118,9 @@ namespace tribodyn
              const std::function<void(const PackedAutomaton &)> &add,
              const bool                                          continued)
     {
-      const double                               d = g.automaton_size;
-      const double                               a = d * std::sqrt(2.);
-      const std::array<std::array<double, 3>, 4> basis
-        = {{{{0, 0, 0}}, {{0.5, 0.5, 0}}, {{0.5, 0, 0.5}}, {{0, 0.5, 0.5}}}};
+      const double        d     = g.automaton_size;
+      const double        a     = d * std::sqrt(2.);
+      const auto         &basis = g.fcc_basis;
       std::array<long, 3> n;
       for (unsigned int c = 0; c < 3; ++c)
         n[c] = static_cast<long>(
@@ -170,13 +169,8 @@ namespace tribodyn
           lo[1] = 0;
           hi[1] = n[1];
         }
-      const InclusionLayout *inclusions = g.inclusion_layout.get();
-      std::array<double, 2> z_bodies = {{g.domain_upper[2], g.domain_lower[2]}};
-      for (const Body &body : g.bodies)
-        {
-          z_bodies[0] = std::min(z_bodies[0], body.lower[2]);
-          z_bodies[1] = std::max(z_bodies[1], body.upper[2] - 1e-9 * a);
-        }
+      const InclusionLayout      *inclusions = g.inclusion_layout.get();
+      const std::array<double, 2> z_bodies   = g.bodies_z_range();
       for (long k = lo[2]; k <= hi[2]; ++k)
         for (long j = lo[1]; j <= hi[1]; ++j)
           for (long i = lo[0]; i <= hi[0]; ++i)
@@ -197,22 +191,11 @@ namespace tribodyn
                   }
                 if (!inside)
                   continue;
-                int body = continued ? 0 : -1;
-                for (unsigned int m = 0; m < g.bodies.size(); ++m)
-                  {
-                    bool in = true;
-                    for (unsigned int c = 0; c < 3; ++c)
-                      if (p[c] < g.bodies[m].lower[c]
-                          || p[c] >= g.bodies[m].upper[c])
-                        in = false;
-                    if (in)
-                      {
-                        body = m;
-                        break;
-                      }
-                  }
-                if (body < 0)
+                // (the continued lattice goes on outside the bodies)
+                int body = g.body_containing(p);
+                if (body < 0 && !continued)
                   continue;
+                body = std::max(body, 0);
                 // Graded packing: in a band of level L only the sites of the
                 // lattice of size 2^L d are kept, those whose half-lattice
                 // indices h = 2 (i, j, k) + 2 b are multiples of 2^L with

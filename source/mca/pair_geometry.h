@@ -66,6 +66,20 @@ namespace tribodyn
      * half the distance of the two centres at set-up), so its strains
      * are Δq / q0_ij and its springs 2G / q0_ij.
      */
+    /// Factor of the material table's relative-rotation stiffnesses (k I,
+    /// k J of a pair of size d, face S_d) for a pair of face @p S_p and half
+    /// rest length @p q0_p: k = 2G / q0 and I = S^2 / (4 pi) (an inert pair
+    /// near a change of size has S = q0 = 0).
+    inline double
+    graded_moment_scale(const double S_p,
+                        const double q0_p,
+                        const double r0,
+                        const double inv_S_d)
+    {
+      const double s = S_p * inv_S_d;
+      return q0_p > 0 ? r0 / q0_p * s * s : 0.;
+    }
+
     struct GradedPairs
     {
       const double      *S, *q0;
@@ -106,9 +120,7 @@ namespace tribodyn
       double
       moment_scale(const unsigned int p) const
       {
-        // (an inert pair near a change of size has S = q0 = 0)
-        const double s = S[p] * inv_S_d;
-        return q0[p] > 0 ? r0 / q0[p] * s * s : 0.;
+        return graded_moment_scale(S[p], q0[p], r0, inv_S_d);
       }
     };
   } // namespace mca

@@ -1,6 +1,8 @@
 // The energy of the relative-rotation moments K_ij of seed eq. (1) (their
 // law: pair_moment_law.h, applied in the pair kernel, pair_kernel.cc).
 
+#include "pair_geometry.h"
+
 #include <cmath>
 #include <tribodyn/mca/automaton_system.h>
 
@@ -24,15 +26,15 @@ namespace tribodyn
             const auto  &ks
               = rotation_springs[mat[pi[p]] * n_materials + mat[pj[p]]];
             // (automata of several sizes: the pair's own stiffnesses, as
-            // GradedPairs::moment_scale gives the kernel)
-            double f = 1;
-            if (graded && pair_half_rest[p] > 0)
-              {
-                const double s = pair_area[p] / S;
-                f              = r0 / pair_half_rest[p] * s * s;
-              }
-            energy += 0.5 * Kn * Kn / (f * ks.twist)
-                      + 0.5 * (dot(K, K) - Kn * Kn) / (f * ks.bend);
+            // the kernel's GradedPairs::moment_scale)
+            const double f = graded ? graded_moment_scale(pair_area[p],
+                                                          pair_half_rest[p],
+                                                          r0,
+                                                          1. / S)
+                                    : 1.;
+            if (f > 0) // (an inert pair carries no moment)
+              energy += 0.5 * Kn * Kn / (f * ks.twist)
+                        + 0.5 * (dot(K, K) - Kn * Kn) / (f * ks.bend);
           }
       return energy;
     }

@@ -13,6 +13,32 @@
 
 using namespace tribodyn_test;
 
+namespace
+{
+  /// Every automaton of @p graded sits on the site of @p fine (sorted by
+  /// id) with its id.
+  bool
+  on_fine_sites(const std::vector<PackedAutomaton> &graded,
+                const std::vector<PackedAutomaton> &fine,
+                const double                        d)
+  {
+    for (const auto &g : graded)
+      {
+        const auto site = std::lower_bound(fine.begin(),
+                                           fine.end(),
+                                           g.id,
+                                           [](const auto &s, const auto id) {
+                                             return s.id < id;
+                                           });
+        if (site == fine.end() || site->id != g.id
+            || site->position.distance(g.position) >= 1e-12 * d)
+          return false;
+      }
+    return true;
+  }
+} // namespace
+
+
 int
 main(int argc, char **argv)
 {
@@ -103,19 +129,9 @@ main(int argc, char **argv)
     q.geometry.fine_free_faces = false; // the bands' lattices to the faces
     const auto                 graded    = pack_automata(q.geometry, 2);
     std::array<std::size_t, 3> per_level = {{0, 0, 0}};
-    bool                       fine_ids  = true;
     for (const auto &g : graded)
-      {
-        ++per_level[g.level];
-        const auto site = std::lower_bound(fine.begin(),
-                                           fine.end(),
-                                           g.id,
-                                           [](const auto &s, const auto id) {
-                                             return s.id < id;
-                                           });
-        fine_ids        = fine_ids && site != fine.end() && site->id == g.id
-                   && site->position.distance(g.position) < 1e-12 * d;
-      }
+      ++per_level[g.level];
+    const bool fine_ids = on_fine_sites(graded, fine, d);
     check(per_level[0] == 4 * m * m * 4 && per_level[1] == 4 * 8 * 8 * 2
             && per_level[2] == 4 * 4 * 4 * 2,
           "graded block: " + std::to_string(per_level[0]) + " / "
@@ -193,19 +209,9 @@ main(int argc, char **argv)
           "skin: " + std::to_string(kept) + " of the " + std::to_string(surface)
             + " fine sites of the lateral surface layers kept, of size d");
     double closest[3] = {1e300, 1e300, 1e300};
-    bool   on_sites   = true;
     for (const auto &g : graded)
-      {
-        closest[g.level] = std::min(closest[g.level], depth(g.position));
-        const auto site  = std::lower_bound(fine.begin(),
-                                           fine.end(),
-                                           g.id,
-                                           [](const auto &s, const auto id) {
-                                             return s.id < id;
-                                           });
-        on_sites         = on_sites && site != fine.end() && site->id == g.id
-                   && site->position.distance(g.position) < 1e-12 * d;
-      }
+      closest[g.level] = std::min(closest[g.level], depth(g.position));
+    const bool on_sites = on_fine_sites(graded, fine, d);
     check(per_level[1] > 0 && per_level[2] > 0
             && closest[1] >= q.geometry.skin_depth(1) * (1 - 1e-12)
             && closest[2] >= q.geometry.skin_depth(2) * (1 - 1e-12),

@@ -193,6 +193,18 @@ namespace tribodyn
       /// The size level of a site at height @p z (0 outside every band).
       unsigned int
       size_level(const double z) const;
+      /// The FCC basis in units of the cubic lattice constant a = d sqrt 2:
+      /// the sites are Domain lower + a/4 + a (n + b).
+      static constexpr std::array<std::array<double, 3>, 4> fcc_basis
+        = {{{{0, 0, 0}}, {{0.5, 0.5, 0}}, {{0.5, 0, 0.5}}, {{0, 0.5, 0.5}}}};
+      /// Index of the body whose box holds @p p, or -1.
+      int
+      body_containing(const Point3 &p) const;
+      /// The heights spanned by the bodies, the upper end just inside: the
+      /// bands at the bodies' top and bottom go on beyond them (clamp a
+      /// height into this range).
+      std::array<double, 2>
+      bodies_z_range() const;
       /// Geometry/Size at free faces = fine: at a free lateral face of its
       /// body (a face in x or y, not periodic) a band keeps the fine
       /// lattice's surface. The automata of size 2^L d fill the FCC cells
