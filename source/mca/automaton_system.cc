@@ -11,6 +11,21 @@ namespace tribodyn
 {
   namespace mca
   {
+    AutomatonSystem::RangeTable
+    AutomatonSystem::pair_list_ranges(const Parameters &prm)
+    {
+      const auto  &g     = prm.geometry;
+      const double range = g.automaton_size * (1 + prm.interaction.skin);
+      RangeTable   r;
+      for (unsigned int L = 0; L < r[0].size(); ++L)
+        {
+          r[0][L] = range * (1u << L);
+          r[1][L] = g.transition_face_factor() * (1u << L) * range;
+        }
+      return r;
+    }
+
+
     AutomatonSystem::AutomatonSystem(const Parameters &parameters,
                                      const MPI_Comm    communicator)
         : prm(parameters)
@@ -29,12 +44,8 @@ namespace tribodyn
       V             = d * d * d / std::sqrt(2.);
       range         = d * (1 + prm.interaction.skin);
       graded        = !g.size_bands.empty();
-      for (unsigned int L = 0; L < graded_range[0].size(); ++L)
-        {
-          graded_range[0][L] = range * (1u << L);
-          graded_range[1][L] = g.transition_face_factor() * (1u << L) * range;
-        }
-      rotations = prm.interaction.rotations;
+      graded_range  = pair_list_ranges(prm);
+      rotations     = prm.interaction.rotations;
       for (const auto &m : prm.materials)
         {
           MaterialConstants k;
@@ -265,6 +276,7 @@ namespace tribodyn
       });
       pack_owned_cells();
       n_global = dealii::Utilities::MPI::sum<unsigned long long>(n_owned, comm);
+      partition_imbalance = work_imbalance();
       if (n_global == 0)
         throw InputError(
           "The packing is empty: no FCC site of spacing Geometry/Automaton "

@@ -4,7 +4,8 @@
 // it only carries migrating automata during a rebuild), and the p4est mesh
 // and its partition are rebuilt identically by setup() on the same number
 // of ranks, so saving the arrays and restoring them after setup() continues
-// the run bit for bit.
+// the run bit for bit. A partition weighted anew during the run
+// (rebalance.cc) is rebuilt by replaying the weights this rank gave.
 //
 // MCA_CHECKPOINT_STATE and MCA_CHECKPOINT_PAIR_LISTS below, with the
 // persistent pair fields of AutomatonSystem::register_pair_fields() between
@@ -33,8 +34,9 @@ namespace tribodyn
     namespace
     {
       // 2: with the relative-rotation moments (pair_moment); 3: size levels
-      // and volumes of the automata (graded scenes)
-      constexpr unsigned int state_version = 3;
+      // and volumes of the automata (graded scenes); 4: the rebalances of
+      // the partition
+      constexpr unsigned int state_version = 4;
 
       // Scalars and vectors of trivially copyable types as raw bytes (fast
       // and exact); anything else through Boost's own serialization.
@@ -90,6 +92,8 @@ namespace tribodyn
   apply(n_owned) apply(n_local) apply(current_time) apply(n_steps_done)       \
   apply(rebuild_count) apply(plastic_work) apply(friction_work)               \
   apply(dropped_bonds) apply(any_changed)                                     \
+  /* the partition: weights of each rebalance (replayed on resume) */         \
+  apply(rebalance_count) apply(partition_imbalance) apply(rebalance_history)  \
   /* staged loading and energy bookkeeping */                                 \
   apply(first_contact_time) apply(load_work) apply(damped_work)               \
   apply(pair_work) apply(f_damp_rebuild)                                      \
@@ -150,6 +154,10 @@ namespace tribodyn
                                  [&](auto &a) { get(ar, a); });
       MCA_CHECKPOINT_PAIR_LISTS(MCA_GET)
 #undef MCA_GET
+      // the checkpointed partition (the saved arrays are numbered by its
+      // cells)
+      if (!rebalance_history.empty())
+        replay_rebalances();
       std::vector<unsigned int> offsets;
       get(ar, offsets);
       std::size_t n_lists = 0;

@@ -156,7 +156,49 @@ namespace tribodyn
           tria.repartition();
           slot.disconnect();
         }
+      build_cell_tables();
+    }
 
+
+    void
+    Decomposition::repartition(const std::vector<CellWeight> &weights)
+    {
+      // p4est cuts its curve anew by these weights (the locally owned
+      // cells' own, looked up by key); deal.II's ParticleHandlers attached
+      // to the mesh carry their particles to the new owners.
+      using Tria      = dealii::parallel::distributed::Triangulation<3>;
+      const auto slot = tria.signals.weight.connect(
+        [&](const Tria::cell_iterator &cell, const Tria::CellStatus) {
+          std::array<unsigned int, 3> ijk;
+          structured_cell(cell->center(), ijk);
+          const std::uint64_t k = key(ijk);
+          const auto          it
+            = std::lower_bound(weights.begin(),
+                               weights.end(),
+                               k,
+                               [](const CellWeight &w, const std::uint64_t v) {
+                                 return w.key < v;
+                               });
+          AssertThrow(it != weights.end() && it->key == k,
+                      dealii::ExcInternalError());
+          return it->weight;
+        });
+      tria.repartition();
+      slot.disconnect();
+      build_cell_tables();
+    }
+
+
+    std::uint64_t
+    Decomposition::cell_key(const unsigned int c) const
+    {
+      return key(cell_index[c]);
+    }
+
+
+    void
+    Decomposition::build_cell_tables()
+    {
       // Local cells: the owned ones (along the space-filling curve, for
       // locality of the automata numbered after them), then the ghosts.
       std::vector<std::pair<std::uint64_t, CellIterator>> owned, ghost;

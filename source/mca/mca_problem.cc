@@ -60,7 +60,8 @@ namespace tribodyn
           << "  ghosts per rank:         min " << f.ghosts_min << ", mean "
           << f.ghosts_mean << ", max " << f.ghosts_max << "\n"
           << "  ghost/owned ratio (mean): " << f.ghosts_mean / f.owned_mean
-          << "\n"
+          << " (" << f.whole_cell_ghosts_mean / f.owned_mean
+          << " if whole cells were sent)\n"
           << "  memory per rank (estimate, largest rank): "
           << f.bytes_per_rank_max / 1048576. << " MiB ("
           << cost_model::bytes_per_owned_automaton << " B per owned automaton, "
@@ -526,7 +527,16 @@ namespace tribodyn
             sizes.push_back(n);
           summary["n_automata_per_size"] = sizes;
         }
-      summary["work_imbalance"]        = imbalance;
+      summary["work_imbalance"]     = imbalance;
+      const double imbalance_end    = system.work_imbalance();
+      summary["work_imbalance_end"] = imbalance_end;
+      summary["n_rebalances"]       = system.n_rebalances();
+      if (system.n_rebalances() > 0)
+        pcout << "Partition weighted anew " << system.n_rebalances()
+              << " time(s) (Partition/Rebalance threshold); work imbalance "
+                 "at the end "
+              << std::setprecision(3) << imbalance_end << std::setprecision(6)
+              << std::endl;
       summary["n_pairs"]               = system.n_global_pairs();
       summary["n_steps"]               = n_steps;
       summary["dt"]                    = dt;

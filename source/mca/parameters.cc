@@ -653,6 +653,7 @@ namespace tribodyn
       InteractionParameters::declare_parameters(prm);
       BoundaryParameters::declare_parameters(prm);
       TimeParameters::declare_parameters(prm);
+      PartitionParameters::declare_parameters(prm);
       McaOutputParameters::declare_parameters(prm);
       AnalysisParameters::declare_parameters(prm);
       FrictionLoadingParameters::declare_parameters(prm);
@@ -680,6 +681,7 @@ namespace tribodyn
       interaction.parse_parameters(prm);
       boundary.parse_parameters(prm);
       time.parse_parameters(prm);
+      partition.parse_parameters(prm);
       output.parse_parameters(prm);
       analysis.parse_parameters(prm);
       loading.parse_parameters(prm);

@@ -85,22 +85,41 @@ namespace tribodyn
           return tree_of.at(t) * per_tree
                  + interleave(i & mask, j & mask, k & mask, level);
         };
-      // Automata per cell (one pass over the lattice).
-      std::vector<std::uint16_t>        count(n_cells, 0);
-      std::array<unsigned long long, 3> per_size = {{0, 0, 0}};
-      Point3                            upper    = g.domain_upper;
-      pack_box(g, g.domain_lower, upper, [&](const PackedAutomaton &a) {
-        ++per_size[std::min<unsigned int>(a.level, 2)];
+      // Automata per cell and the cells' size-level summaries (as
+      // cell_level_summaries(): largest level, any near a change of size),
+      // in one pass over the lattice.
+      auto level_byte = [](const PackedAutomaton &a) {
+        return static_cast<unsigned char>(
+          a.level | (a.transitional ? transitional_flag : 0));
+      };
+      auto cell_of = [&](const Point3 &x) {
         std::array<unsigned int, 3> ijk;
         for (unsigned int c = 0; c < 3; ++c)
           ijk[c] = std::min<unsigned int>(
             n[c] - 1,
-            static_cast<unsigned int>(std::max(
-              0., std::floor((a.position[c] - g.domain_lower[c]) / h[c]))));
-        auto &slot
-          = count[(std::uint64_t(ijk[2]) * n[1] + ijk[1]) * n[0] + ijk[0]];
-        if (slot < 65535)
-          ++slot;
+            static_cast<unsigned int>(
+              std::max(0., std::floor((x[c] - g.domain_lower[c]) / h[c]))));
+        return ijk;
+      };
+      auto linear =
+        [&](const unsigned int i, const unsigned int j, const unsigned int k) {
+          return (std::uint64_t(k) * n[1] + j) * n[0] + i;
+        };
+      std::vector<std::uint16_t>        count(n_cells, 0);
+      std::vector<unsigned char>        summary(n_cells, 0);
+      std::array<unsigned long long, 3> per_size = {{0, 0, 0}};
+      Point3                            upper    = g.domain_upper;
+      pack_box(g, g.domain_lower, upper, [&](const PackedAutomaton &a) {
+        ++per_size[std::min<unsigned int>(a.level, 2)];
+        const auto          ijk  = cell_of(a.position);
+        const std::uint64_t cell = linear(ijk[0], ijk[1], ijk[2]);
+        if (count[cell] < 65535)
+          ++count[cell];
+        const unsigned char b = level_byte(a);
+        summary[cell]
+          = std::max<unsigned char>(summary[cell] & ~transitional_flag,
+                                    b & ~transitional_flag)
+            | ((summary[cell] | b) & transitional_flag);
       });
 
       // p4est's weighted partition (as AutomatonSystem::setup() asks for
@@ -130,55 +149,106 @@ namespace tribodyn
             before += weight_at[pos];
           }
       }
-      auto owner = [&](const std::uint64_t pos) { return owner_at[pos]; };
+      // owner of each cell by its structured index
+      std::vector<std::uint32_t> owner(n_cells);
+      for (unsigned int k = 0; k < n[2]; ++k)
+        for (unsigned int j = 0; j < n[1]; ++j)
+          for (unsigned int i = 0; i < n[0]; ++i)
+            owner[linear(i, j, k)] = owner_at[position(i, j, k)];
+      std::vector<std::uint32_t>().swap(owner_at);
 
-      std::vector<double>       owned(n_ranks, 0), ghosts(n_ranks, 0);
-      unsigned long long        total = 0;
-      std::vector<unsigned int> seen;
+      // The neighbour cells of cell (i, j, k) (index unwrapped, so that
+      // its box is the image next to the cell, and wrapped).
+      auto for_each_neighbour
+        = [&](const std::array<unsigned int, 3> &ijk, const auto &f) {
+            for (int oz = -1; oz <= 1; ++oz)
+              for (int oy = -1; oy <= 1; ++oy)
+                for (int ox = -1; ox <= 1; ++ox)
+                  {
+                    const int    off[3] = {ox, oy, oz};
+                    int          v[3];
+                    unsigned int nb[3];
+                    bool         valid = true;
+                    for (unsigned int c = 0; c < 3; ++c)
+                      {
+                        v[c] = static_cast<int>(ijk[c]) + off[c];
+                        if ((v[c] < 0 || v[c] >= static_cast<int>(n[c]))
+                            && !g.periodic[c])
+                          valid = false;
+                        nb[c] = (v[c] + n[c]) % n[c];
+                      }
+                    if (valid)
+                      f(v, linear(nb[0], nb[1], nb[2]));
+                  }
+          };
+
+      // Owned automata; cells with a neighbour of another rank, and the
+      // automata a neighbour rank would receive were whole cells sent.
+      std::vector<double>        owned(n_ranks, 0), ghosts(n_ranks, 0);
+      std::vector<double>        whole_cells(n_ranks, 0);
+      std::vector<unsigned char> boundary(n_cells, 0);
+      unsigned long long         total = 0;
+      std::vector<unsigned int>  seen;
       for (unsigned int k = 0; k < n[2]; ++k)
         for (unsigned int j = 0; j < n[1]; ++j)
           for (unsigned int i = 0; i < n[0]; ++i)
             {
-              const unsigned int c_count
-                = count[(std::uint64_t(k) * n[1] + j) * n[0] + i];
+              const std::uint64_t cell    = linear(i, j, k);
+              const unsigned int  c_count = count[cell];
               if (c_count == 0)
                 continue;
               total += c_count;
-              const unsigned int o = owner(position(i, j, k));
+              const unsigned int o = owner[cell];
               owned[o] += c_count;
-              // ranks owning a neighbour cell receive this cell as ghosts
               seen.clear();
-              const unsigned int ijk[3] = {i, j, k};
-              for (int oz = -1; oz <= 1; ++oz)
-                for (int oy = -1; oy <= 1; ++oy)
-                  for (int ox = -1; ox <= 1; ++ox)
-                    {
-                      const int    off[3] = {ox, oy, oz};
-                      unsigned int nb[3];
-                      bool         valid = true;
-                      for (unsigned int c = 0; c < 3; ++c)
-                        {
-                          int v = static_cast<int>(ijk[c]) + off[c];
-                          if (v < 0 || v >= static_cast<int>(n[c]))
-                            {
-                              if (!g.periodic[c])
-                                valid = false;
-                              v = (v + n[c]) % n[c];
-                            }
-                          nb[c] = v;
-                        }
-                      if (!valid)
-                        continue;
-                      const unsigned int r
-                        = owner(position(nb[0], nb[1], nb[2]));
-                      if (r != o
-                          && std::find(seen.begin(), seen.end(), r)
-                               == seen.end())
-                        seen.push_back(r);
-                    }
+              for_each_neighbour({{i, j, k}},
+                                 [&](const int *, const std::uint64_t nb) {
+                                   const unsigned int r = owner[nb];
+                                   if (r != o
+                                       && std::find(seen.begin(), seen.end(), r)
+                                            == seen.end())
+                                     seen.push_back(r);
+                                 });
+              boundary[cell] = !seen.empty();
               for (const unsigned int r : seen)
-                ghosts[r] += c_count;
+                whole_cells[r] += c_count;
             }
+
+      // The ghosts exchange_ghosts() sends: an automaton of a boundary
+      // cell goes to each neighbour rank with a cell within its pair-list
+      // range with that cell's largest size (second pass over the lattice).
+      const bool   graded = !g.size_bands.empty();
+      const auto   ranges = pair_list_ranges(prm);
+      const double uniform_range
+        = g.automaton_size * (1 + prm.interaction.skin);
+      pack_box(g, g.domain_lower, upper, [&](const PackedAutomaton &a) {
+        const auto          ijk  = cell_of(a.position);
+        const std::uint64_t cell = linear(ijk[0], ijk[1], ijk[2]);
+        if (!boundary[cell])
+          return;
+        const unsigned int o = owner[cell];
+        seen.clear();
+        for_each_neighbour(ijk, [&](const int *v, const std::uint64_t nb) {
+          const unsigned int r = owner[nb];
+          if (r == o || std::find(seen.begin(), seen.end(), r) != seen.end())
+            return;
+          const double reach
+            = graded ? pair_list_range(ranges, level_byte(a), summary[nb])
+                     : uniform_range;
+          double dist2 = 0;
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              const double lower = g.domain_lower[c] + v[c] * h[c];
+              const double out   = std::max(
+                {lower - a.position[c], a.position[c] - (lower + h[c]), 0.});
+              dist2 += out * out;
+            }
+          if (dist2 < reach * reach * ghost_reach_margin)
+            seen.push_back(r);
+        });
+        for (const unsigned int r : seen)
+          ghosts[r] += 1;
+      });
 
       PartitionFigures fig;
       fig.n_automata = total;
@@ -197,6 +267,8 @@ namespace tribodyn
       };
       stats(owned, fig.owned_min, fig.owned_mean, fig.owned_max);
       stats(ghosts, fig.ghosts_min, fig.ghosts_mean, fig.ghosts_max);
+      double unused;
+      stats(whole_cells, unused, fig.whole_cell_ghosts_mean, unused);
       const double moments = prm.interaction.relative_rotation_on()
                                ? cost_model::bytes_per_automaton_moments
                                : 0.;

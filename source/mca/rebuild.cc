@@ -1,6 +1,8 @@
 // Pair-list rebuilds: migration of automata between ranks, ghosts from the
 // neighbour ranks, and the pair states carried over.
 
+#include "record_bits.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -32,30 +34,11 @@ namespace tribodyn
                                size_level = 7, n = 8;
       } // namespace ghost_field
 
-      double
-      bits_to_double(const std::uint64_t k)
-      {
-        double v;
-        std::memcpy(&v, &k, sizeof(v));
-        return v;
-      }
-
-      std::uint64_t
-      double_to_bits(const double v)
-      {
-        std::uint64_t k;
-        std::memcpy(&k, &v, sizeof(k));
-        return k;
-      }
-
-      inline std::uint64_t
-      pair_key(const std::uint32_t a, const std::uint32_t b)
-      {
-        return a < b ? (std::uint64_t(a) << 32 | b)
-                     : (std::uint64_t(b) << 32 | a);
-      }
-
     } // namespace
+
+    using records::bits_to_double;
+    using records::double_to_bits;
+    using records::pair_key;
 
     static_assert(prop::n == 22,
                   "AutomatonSystem::migration_properties must equal prop::n");
@@ -68,7 +51,14 @@ namespace tribodyn
       // previous one
       agreed_displacement2 = -1;
       if (!initial)
-        migrate();
+        {
+          // the partition weighted anew when the work drifted apart
+          // (rebalance.cc): the migration then carries every pair state
+          const bool rebalance = rebalance_due();
+          migrate(rebalance);
+          if (rebalance)
+            repartition_automata();
+        }
       order_owned_automata();
       exchange_ghosts();
       x_at_rebuild.resize(n_owned);
@@ -86,7 +76,56 @@ namespace tribodyn
 
 
     void
-    AutomatonSystem::migrate()
+    AutomatonSystem::pack_automaton(const unsigned int k, double *props) const
+    {
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          props[prop::v + c]      = v[k][c];
+          props[prop::w + c]      = w[k][c];
+          props[prop::f + c]      = f[k][c];
+          props[prop::torque + c] = torque[k][c];
+          props[prop::u + c]      = u[k][c];
+        }
+      props[prop::mat]        = mat[k];
+      props[prop::body]       = body[k];
+      props[prop::groups]     = groups[k];
+      props[prop::eps_p]      = eps_p[k];
+      props[prop::sigma_y]    = plastic_scene ? sigma_y[k] : 0.;
+      props[prop::size_level] = size_level[k];
+      props[prop::volume]     = volume[k];
+    }
+
+
+    void
+    AutomatonSystem::unpack_automaton(const unsigned int  k,
+                                      const std::uint32_t the_id,
+                                      const Point3       &location,
+                                      const double       *props)
+    {
+      id[k]      = the_id;
+      x[k]       = location;
+      cell_of[k] = cells.local_cell(x[k]);
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          v[k][c]      = props[prop::v + c];
+          w[k][c]      = props[prop::w + c];
+          f[k][c]      = props[prop::f + c];
+          torque[k][c] = props[prop::torque + c];
+          u[k][c]      = props[prop::u + c];
+        }
+      mat[k]        = static_cast<unsigned char>(props[prop::mat]);
+      body[k]       = static_cast<unsigned char>(props[prop::body]);
+      size_level[k] = static_cast<unsigned char>(props[prop::size_level]);
+      volume[k]     = props[prop::volume];
+      groups[k]     = static_cast<std::uint32_t>(props[prop::groups]);
+      eps_p[k]      = props[prop::eps_p];
+      if (plastic_scene)
+        sigma_y[k] = props[prop::sigma_y];
+    }
+
+
+    void
+    AutomatonSystem::migrate(const bool all_pair_states)
     {
       // Identity of the old pairs (their states are restored by ids).
       const unsigned int n_old = pi.size();
@@ -105,6 +144,23 @@ namespace tribodyn
               if (dot(dn, dn) >= pair_range2(pi[p], pj[p]))
                 ++dropped_bonds;
             }
+        }
+
+      // Before a repartition (repartition_automata()) every pair state
+      // travels: this rank's too, as records like the received ones (key,
+      // state in id order), packed while the pair vectors are at hand.
+      const unsigned int  width = 1 + pair_fields.width();
+      std::vector<double> own_records;
+      if (all_pair_states)
+        {
+          own_records.resize(std::size_t(n_old) * width);
+          for (unsigned int p = 0; p < n_old; ++p)
+            {
+              double *r = own_records.data() + std::size_t(p) * width;
+              r[0]      = bits_to_double(pair_key(id[pi[p]], id[pj[p]]));
+              pair_fields.pack(p, old_flags[p] != 0, pair_distance(p), r + 1);
+            }
+          old_pairs.clear();
         }
 
       // Wrap into the box; find who owns the new cell.
@@ -144,7 +200,6 @@ namespace tribodyn
       const auto                      &nb_ranks = cells.neighbour_ranks();
       std::vector<std::vector<double>> out_pairs(nb_ranks.size());
       // A record: the key (raw 64-bit word), then the state in id order.
-      const unsigned int width = 1 + pair_fields.width();
       for (unsigned int p = 0; p < n_old; ++p)
         for (const unsigned int k : {pi[p], pj[p]})
           if (k < n_owned && destination[k] != rank)
@@ -158,7 +213,7 @@ namespace tribodyn
                                pair_distance(p),
                                buf.data() + start + 1);
             }
-      const auto in_pairs = neighbours.exchange(out_pairs, 81);
+      auto in_pairs = neighbours.exchange(out_pairs, 81);
       for (unsigned int k = 0; k < n_owned; ++k)
         if (new_cell[k] != Decomposition::invalid)
           x[k] = cells.wrap(x[k]);
@@ -178,21 +233,7 @@ namespace tribodyn
       for (unsigned int k = 0; k < n_owned; ++k)
         if (destination[k] != rank)
           {
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                props[prop::v + c]      = v[k][c];
-                props[prop::w + c]      = w[k][c];
-                props[prop::f + c]      = f[k][c];
-                props[prop::torque + c] = torque[k][c];
-                props[prop::u + c]      = u[k][c];
-              }
-            props[prop::mat]        = mat[k];
-            props[prop::body]       = body[k];
-            props[prop::groups]     = groups[k];
-            props[prop::eps_p]      = eps_p[k];
-            props[prop::sigma_y]    = plastic_scene ? sigma_y[k] : 0.;
-            props[prop::size_level] = size_level[k];
-            props[prop::volume]     = volume[k];
+            pack_automaton(k, props.data());
             if (crossed[k])
               {
                 auto &buf = out_automata[cells.neighbour_index(destination[k])];
@@ -249,27 +290,8 @@ namespace tribodyn
       auto         arrive = [&](const std::uint32_t the_id,
                         const Point3       &location,
                         const double       *props) {
-        id[k]      = the_id;
-        x[k]       = location;
-        cell_of[k] = cells.local_cell(x[k]);
-        if (cell_of[k] >= cells.n_owned_cells())
-          ++n_bad;
-        for (unsigned int c = 0; c < 3; ++c)
-          {
-            v[k][c]      = props[prop::v + c];
-            w[k][c]      = props[prop::w + c];
-            f[k][c]      = props[prop::f + c];
-            torque[k][c] = props[prop::torque + c];
-            u[k][c]      = props[prop::u + c];
-          }
-        mat[k]        = static_cast<unsigned char>(props[prop::mat]);
-        body[k]       = static_cast<unsigned char>(props[prop::body]);
-        size_level[k] = static_cast<unsigned char>(props[prop::size_level]);
-        volume[k]     = props[prop::volume];
-        groups[k]     = static_cast<std::uint32_t>(props[prop::groups]);
-        eps_p[k]      = props[prop::eps_p];
-        if (plastic_scene)
-          sigma_y[k] = props[prop::sigma_y];
+        unpack_automaton(k, the_id, location, props);
+        n_bad += cell_of[k] >= cells.n_owned_cells();
         ++k;
       };
       for (const auto &particle : *particles)
@@ -294,6 +316,7 @@ namespace tribodyn
       // Received pair states by key, for the restore.
       kept_states.clear();
       kept_keys.clear();
+      in_pairs.push_back(std::move(own_records));
       for (const auto &buf : in_pairs)
         for (std::size_t o = 0; o + width <= buf.size(); o += width)
           {
@@ -350,11 +373,57 @@ namespace tribodyn
     }
 
 
+    std::vector<unsigned char>
+    AutomatonSystem::cell_level_summaries() const
+    {
+      // each owned cell's largest size level and whether any of its
+      // automata is near a change of size (the byte of size_level)
+      std::vector<unsigned char> summary(cells.n_local_cells(), 0);
+      for (unsigned int k = 0; k < n_owned; ++k)
+        {
+          auto &s = summary[cell_of[k]];
+          s       = std::max<unsigned char>(s & ~transitional_flag,
+                                      size_level[k] & ~transitional_flag)
+              | ((s | size_level[k]) & transitional_flag);
+        }
+      // and those of the neighbours' cells next to the owned ones
+      const unsigned int               n_nb = cells.neighbour_ranks().size();
+      std::vector<std::vector<double>> out(n_nb);
+      for (unsigned int n = 0; n < n_nb; ++n)
+        for (const unsigned int c : cells.cells_sent_to(n))
+          {
+            for (const unsigned int i : cells.cell_coordinates(c))
+              out[n].push_back(i);
+            out[n].push_back(summary[c]);
+          }
+      const auto in = neighbours.exchange(out, 85);
+      for (unsigned int n = 0; n < n_nb; ++n)
+        for (std::size_t r = 0; r + 3 < in[n].size(); r += 4)
+          {
+            const std::array<unsigned int, 3> ijk{
+              {static_cast<unsigned int>(in[n][r]),
+               static_cast<unsigned int>(in[n][r + 1]),
+               static_cast<unsigned int>(in[n][r + 2])}};
+            const unsigned int c = cells.local_cell(ijk);
+            AssertThrow(c != Decomposition::invalid,
+                        dealii::ExcInternalError());
+            summary[c] = static_cast<unsigned char>(in[n][r + 3]);
+          }
+      return summary;
+    }
+
+
     void
     AutomatonSystem::exchange_ghosts()
     {
       // The automata of the owned cells next to a neighbour rank's cells,
-      // whole cells in the owned order, go to that rank.
+      // in the owned order, go to that rank, but only those within their
+      // pair-list range of one of its cells there: the range of the
+      // automaton's size with the largest size of that cell (uniform
+      // scenes: the one range). A cell is as wide as the longest pair of
+      // the scene (1.12 · 4d with automata of 4d); without this choice the
+      // fine automata next to another rank would all be sent, a layer 4.5
+      // times thicker than their pairs reach (doc/performance.md).
       const unsigned int               n_nb = cells.neighbour_ranks().size();
       std::vector<std::vector<double>> out(n_nb);
       std::vector<std::vector<unsigned int>> send_indices(n_nb);
@@ -365,20 +434,71 @@ namespace tribodyn
       std::partial_sum(first_of_cell.begin(),
                        first_of_cell.end(),
                        first_of_cell.begin());
+      const std::vector<unsigned char> summary
+        = graded ? cell_level_summaries() : std::vector<unsigned char>();
+      struct Reachable // a neighbour rank's cell, as seen from the owned one
+      {
+        Point3        lower, upper;
+        unsigned char summary;
+      };
+      std::vector<Reachable> targets;
       for (unsigned int n = 0; n < n_nb; ++n)
         for (const unsigned int c : cells.cells_sent_to(n))
-          for (unsigned int k = first_of_cell[c]; k < first_of_cell[c + 1]; ++k)
-            {
-              send_indices[n].push_back(k);
-              auto &buf = out[n];
-              buf.push_back(id[k]);
-              buf.push_back(bits_to_double(order[k]));
-              for (unsigned int e = 0; e < 3; ++e)
-                buf.push_back(x[k][e]);
-              buf.push_back(mat[k]);
-              buf.push_back(body[k]);
-              buf.push_back(size_level[k]);
-            }
+          {
+            targets.clear();
+            cells.for_each_neighbour(
+              c, [&](const Decomposition::Neighbour &nb) {
+                if (cells.owner(nb.cell) != cells.neighbour_ranks()[n])
+                  return;
+                Reachable t;
+                cells.cell_box(cells.cell_coordinates(nb.cell),
+                               t.lower,
+                               t.upper);
+                const auto &s = cells.shift_vector(nb.shift);
+                for (unsigned int e = 0; e < 3; ++e)
+                  {
+                    t.lower[e] += s[e];
+                    t.upper[e] += s[e];
+                  }
+                t.summary = graded ? summary[nb.cell] : 0;
+                targets.push_back(t);
+              });
+            for (unsigned int k = first_of_cell[c]; k < first_of_cell[c + 1];
+                 ++k)
+              {
+                bool needed = false;
+                for (const auto &t : targets)
+                  {
+                    const double reach = graded ? pair_list_range(graded_range,
+                                                                  size_level[k],
+                                                                  t.summary)
+                                                : range;
+                    double       dist2 = 0;
+                    for (unsigned int e = 0; e < 3; ++e)
+                      {
+                        const double out_of_box = std::max(
+                          {t.lower[e] - x[k][e], x[k][e] - t.upper[e], 0.});
+                        dist2 += out_of_box * out_of_box;
+                      }
+                    if (dist2 < reach * reach * ghost_reach_margin)
+                      {
+                        needed = true;
+                        break;
+                      }
+                  }
+                if (!needed)
+                  continue;
+                send_indices[n].push_back(k);
+                auto &buf = out[n];
+                buf.push_back(id[k]);
+                buf.push_back(bits_to_double(order[k]));
+                for (unsigned int e = 0; e < 3; ++e)
+                  buf.push_back(x[k][e]);
+                buf.push_back(mat[k]);
+                buf.push_back(body[k]);
+                buf.push_back(size_level[k]);
+              }
+          }
       const auto                in = neighbours.exchange(out, 82);
       std::vector<unsigned int> offsets(n_nb + 1, n_owned);
       for (unsigned int n = 0; n < n_nb; ++n)

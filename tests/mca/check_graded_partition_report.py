@@ -6,7 +6,19 @@ them in the bases, packed at 2d and 4d in the graded scene) and a work
 imbalance (largest owned automata over the mean) of at most 1.10 on 256
 ranks (p4est's partition weighted by the automata per cell). Measured
 2026-11-25: 4 438 764 against 28 226 880 automata (6.36x fewer),
-imbalance 1.018. Arguments: the tribodyn binary, the prm/mca folder."""
+imbalance 1.018.
+
+Ghosts (issue #18 item 6, the projection < 12 h): a rank sends a ghost
+only if it lies within its pair-list range of a cell of the receiving rank
+(AutomatonSystem::exchange_ghosts(); the report emulates the same choice).
+The graded cells are as wide as the longest pair of 4d automata, so whole
+cells would be a ghost layer 4.5 times thicker than the fine automata's
+pairs reach: the ghost/owned ratio at 256 ranks must be at most 0.6 and at
+most 1/3 of the whole-cell figure (measured 0.543 against 2.451). A real
+4-rank run of a graded block checks that the chosen ghosts are enough
+(mca_weighted_partition_graded: the same series as on 1 rank to 1e-9;
+with the reach halved, a deliberately broken build, the series differ).
+Arguments: the tribodyn binary, the prm/mca folder."""
 import re
 import subprocess
 import sys
@@ -23,12 +35,14 @@ def partition(prm):
     total = re.search(r"Partition of (\d+) automata over 256 ranks", p.stdout)
     imbalance = re.search(r"imbalance max/mean ([0-9.]+)", p.stdout)
     sizes = re.search(r"automata per size: (\d+) of d, (\d+) of 2d, (\d+) of 4d", p.stdout)
+    ghosts = re.search(r"ghost/owned ratio \(mean\): ([0-9.e+-]+) \(([0-9.e+-]+) if whole "
+                       r"cells were sent\)", p.stdout)
     return (p.returncode, int(total.group(1)) if total else None,
-            float(imbalance.group(1)) if imbalance else None, sizes)
+            float(imbalance.group(1)) if imbalance else None, sizes, ghosts)
 
 
-code_u, uniform, _, _ = partition("friction_seed_scale.prm")
-code_g, graded, imbalance, sizes = partition("friction_seed_scale_graded.prm")
+code_u, uniform, _, _, _ = partition("friction_seed_scale.prm")
+code_g, graded, imbalance, sizes, ghosts = partition("friction_seed_scale_graded.prm")
 report(code_u == 0 and code_g == 0 and uniform and graded,
        "both partition reports ran")
 if uniform and graded:
@@ -40,4 +54,11 @@ if uniform and graded:
     report(sizes is not None and sum(int(s) for s in sizes.groups()) == graded
            and int(sizes.group(2)) > 0 and int(sizes.group(3)) > 0,
            "automata per size printed, all three sizes present, summing to the total")
+    if ghosts:
+        chosen, whole = float(ghosts.group(1)), float(ghosts.group(2))
+        report(chosen <= 0.6 and chosen * 3 <= whole,
+               f"ghost/owned at 256 ranks {chosen} <= 0.6 and <= 1/3 of the "
+               f"whole-cell {whole}")
+    else:
+        report(False, "ghost/owned ratio printed")
 finish()

@@ -14,9 +14,11 @@ the CSV text and the JSON numbers, written with 17 digits, must be
 identical) for contact, 1e-12 relative for mca.
 
 Usage: restart_test.py TRIBODYN BASE.prm WORKDIR END_SECTION T TOLERANCE
-       "LAUNCHER" FILE [FILE...]
+       "LAUNCHER" FILE [FILE...] [--before-checkpoint KEY]
 END_SECTION is the subsection holding 'End time' ('Time integration' for
-contact, 'Time' for mca); FILE are the CSV files to compare.
+contact, 'Time' for mca); FILE are the CSV files to compare. With
+--before-checkpoint KEY, the first part's summary.json must have KEY > 0
+(e.g. n_rebalances: the state to restore existed at the checkpoint).
 """
 import json
 import math
@@ -110,6 +112,11 @@ def compare_json(a, b, tolerance, where="summary.json"):
 def main():
     tribodyn, base, work, section, t_end, tolerance, launcher = sys.argv[1:8]
     files = sys.argv[8:]
+    required = None
+    if "--before-checkpoint" in files:
+        at = files.index("--before-checkpoint")
+        required = files[at + 1]
+        files = files[:at] + files[at + 2:]
     t_end, tolerance = float(t_end), float(tolerance)
     base = os.path.abspath(base)
     shutil.rmtree(work, ignore_errors=True)
@@ -123,6 +130,12 @@ def main():
               t_end / 2, True)
     run(launcher, tribodyn, "a.prm", work)
     run(launcher, tribodyn, "b1.prm", work)
+    if required is not None:
+        value = json.load(open(os.path.join(b, "summary.json"))).get(required)
+        print(f"first part: {required} = {value}")
+        if not value or value <= 0:
+            sys.exit(f"FAIL: the first part has {required} = {value}, "
+                     "not > 0: the restart would not test it")
     latest = open(os.path.join(b, "checkpoint", "latest")).read()
     print("checkpoint after the first part:",
           " ".join(l for l in latest.splitlines()[1:6]))

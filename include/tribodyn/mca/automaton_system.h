@@ -398,6 +398,12 @@ namespace tribodyn
       /// the mean (1: perfectly balanced work).
       double
       work_imbalance() const;
+      /// Times the partition was weighted anew during the run.
+      unsigned int
+      n_rebalances() const
+      {
+        return rebalance_count;
+      }
 
     private:
       // --- set-up and rebuild (automaton_system.cc, rebuild.cc)
@@ -407,15 +413,48 @@ namespace tribodyn
       rebuild(const bool initial);
       /// Wrap the owned automata into the box, send those that entered a
       /// cell of another rank (ParticleHandler) with the states of their
-      /// pairs; returns the pair states this rank may need.
+      /// pairs; returns the pair states this rank may need. With
+      /// @p all_pair_states, the states of all this rank's pairs become
+      /// records too (kept_keys, kept_states) for repartition_automata().
       void
-      migrate();
+      migrate(const bool all_pair_states = false);
+      /// The migration record of automaton @p k (migration_properties
+      /// doubles) and its inverse, which also finds the local cell.
+      void
+      pack_automaton(const unsigned int k, double *props) const;
+      void
+      unpack_automaton(const unsigned int  k,
+                       const std::uint32_t the_id,
+                       const Point3       &location,
+                       const double       *props);
+      // --- the partition weighted anew (rebalance.cc)
+      /// Collective: whether the work imbalance calls for a new partition
+      /// (Partition/Rebalance threshold).
+      bool
+      rebalance_due() const;
+      /// Weight the cells by the automata they hold now, partition the mesh
+      /// anew and move the automata and the pair-state records (after
+      /// migrate(true)) to their new ranks.
+      void
+      repartition_automata();
+      /// Repartition by the weights this rank gave at each earlier
+      /// rebalance (rebalance_history), in order: the partition of a
+      /// checkpointed run, rebuilt on resume (same ranks, same weights,
+      /// same p4est partition).
+      void
+      replay_rebalances();
       /// Sort the owned automata along the curve of their cells.
       void
       order_owned_automata();
-      /// Receive the ghosts from the neighbour ranks.
+      /// Receive the ghosts from the neighbour ranks: the automata within
+      /// pair-list range of this rank's cells.
       void
       exchange_ghosts();
+      /// Size-level summary of each local cell (largest level, and
+      /// transitional_flag if any automaton is near a change of size): the
+      /// owned cells' from their automata, the neighbours' received.
+      std::vector<unsigned char>
+      cell_level_summaries() const;
       /// Pair list of the owned automata (neighbour_list.cc).
       void
       build_pair_list();
@@ -581,16 +620,37 @@ namespace tribodyn
       {
         return graded ? pair_area[p] : S;
       }
+      /// Pair-list ranges [near a change of size][size level] of @p
+      /// prm's scene: d (1 + skin) 2^L, times transition_face_factor() near
+      /// a change of size.
+      using RangeTable = std::array<std::array<double, 8>, 2>;
+      static RangeTable
+      pair_list_ranges(const Parameters &prm);
+      /// Pair-list range of two automata (or of an automaton and the
+      /// summary of a cell, cell_level_summary()) of size-level bytes @p a
+      /// and @p b: that of the larger size, near a change of size if
+      /// either is.
+      static double
+      pair_list_range(const RangeTable   &ranges,
+                      const unsigned char a,
+                      const unsigned char b)
+      {
+        const unsigned int level
+          = std::max(a & ~transitional_flag, b & ~transitional_flag);
+        return ranges[((a | b) & transitional_flag) != 0][level];
+      }
+      /// A ghost is sent when its squared distance to a cell of the
+      /// receiving rank is below this factor times its squared reach: the
+      /// margin covers the round-off of the cells' boxes.
+      static constexpr double ghost_reach_margin = 1 + 1e-12;
       /// Squared pair-list range of automata @p a and @p b.
       double
       pair_range2(const unsigned int a, const unsigned int b) const
       {
         if (!graded)
           return range * range;
-        const unsigned int level = std::max(size_level[a] & ~transitional_flag,
-                                            size_level[b] & ~transitional_flag);
-        const double       r
-          = graded_range[transitional(a) || transitional(b)][level];
+        const double r
+          = pair_list_range(graded_range, size_level[a], size_level[b]);
         return r * r;
       }
       /// Area and half rest length of new pair @p p (inert, 0, when an
@@ -652,15 +712,21 @@ namespace tribodyn
       /// Geometry/Size bands given: automata of several sizes.
       bool graded = false;
       /// Graded pair-list ranges [near a change of size][size level].
-      std::array<std::array<double, 8>, 2> graded_range{};
+      RangeTable graded_range{};
 
       double        dt = 0, critical_dt = 0, current_time = 0;
       unsigned long n_steps_done = 0;
       /// set_agreed_displacement_since_rebuild()'s value, for the next
       /// step only (negative: not given, step() reduces on its own)
-      double                          agreed_displacement2 = -1;
-      unsigned long long              n_global             = 0;
-      unsigned int                    rebuild_count        = 0;
+      double             agreed_displacement2 = -1;
+      unsigned long long n_global             = 0;
+      unsigned int       rebuild_count        = 0;
+      /// Rebalances so far, the imbalance right after the last partition,
+      /// and the weights this rank gave at each rebalance: (number of
+      /// cells, then key and weight per cell) per rebalance.
+      unsigned int                    rebalance_count     = 0;
+      double                          partition_imbalance = 1;
+      std::vector<std::uint64_t>      rebalance_history;
       std::vector<unsigned long long> group_size;
 
       // --- automata (local: owned first, then ghosts)

@@ -90,6 +90,25 @@ namespace tribodyn
       void
       setup(const CellCost &cost = {});
 
+      /// Weight of a cell for the partition: its key (cell_key()) and
+      /// p4est weight.
+      struct CellWeight
+      {
+        std::uint64_t key;
+        unsigned int  weight;
+      };
+      /// Partition the mesh anew by the given weights of this rank's owned
+      /// cells (sorted by key; deal.II's repartition()) and rebuild the
+      /// cell tables. Particles of ParticleHandlers on the mesh prepared
+      /// for it (prepare_for_coarsening_and_refinement()) follow their
+      /// cells.
+      void
+      repartition(const std::vector<CellWeight> &weights);
+
+      /// Global key of local cell @p c (the same on every rank).
+      std::uint64_t
+      cell_key(const unsigned int c) const;
+
       /// The box [@p lower, @p upper) of the cell of structured index
       /// @p ijk (the last cell of a direction ends at the box's upper side).
       void
@@ -218,6 +237,11 @@ namespace tribodyn
       }
 
     private:
+      /// The tables of the local cells, their owners and the neighbour
+      /// ranks, from the mesh's current partition.
+      void
+      build_cell_tables();
+
       /// Neighbour @p o (offset code, 0...26 like the shift codes) of owned
       /// cell @p c; false where a non-periodic side has none.
       bool

@@ -415,6 +415,21 @@ namespace tribodyn
     };
 
 
+    /// Subsection "Partition": the work of the ranks kept even as the
+    /// automata move (source/mca/rebalance.cc).
+    struct PartitionParameters
+    {
+      /// Repartition at a pair-list rebuild when the work imbalance (the
+      /// largest rank's automata over the mean) exceeds this; 0 = never.
+      double rebalance_threshold = 1.1;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+
     /// Subsection "Output".
     struct McaOutputParameters
     {
@@ -483,6 +498,7 @@ namespace tribodyn
       InteractionParameters           interaction;
       BoundaryParameters              boundary;
       TimeParameters                  time;
+      PartitionParameters             partition;
       McaOutputParameters             output;
       AnalysisParameters              analysis;
       FrictionLoadingParameters       loading;

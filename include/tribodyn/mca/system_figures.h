@@ -36,7 +36,11 @@ namespace tribodyn
       unsigned int                      n_ranks    = 0;
       double owned_min = 0, owned_mean = 0, owned_max = 0;
       double ghosts_min = 0, ghosts_mean = 0, ghosts_max = 0;
-      double bytes_per_rank_max = 0;
+      /// Ghosts per rank (mean) if whole boundary cells were sent: the
+      /// ghost layer as thick as the cells, before exchange_ghosts()
+      /// chose the automata within their pair-list range.
+      double whole_cell_ghosts_mean = 0;
+      double bytes_per_rank_max     = 0;
     };
 
 
