@@ -119,7 +119,9 @@ namespace tribodyn
           "z0 <= z < z1 with automata of size 2^k d (k = 1 or 2) on the FCC "
           "lattice of that size, whose sites are also sites of the finer "
           "lattices; elsewhere the size is d. Bands must not overlap, and "
-          "the size changes by a factor 2 at a time (d, 2d, 4d). Automata "
+          "the size changes by a factor 2 at a time (d, 2d, 4d) where "
+          "bodies are on both sides (a band may end at a body's top or "
+          "bottom face with any size). Automata "
           "near a change of size take their volumes and contact areas from "
           "their Voronoi cells (doc/theory/mca.md section 9). Plan a graded "
           "scene with tribodyn --partition-report N FILE.prm.");
@@ -285,13 +287,23 @@ namespace tribodyn
           }
         // Sizes change by one level at a time: across a jump d -> 4d the
         // Voronoi cells of the small automata reach far between the large
-        // ones (doc/theory/mca.md §9).
+        // ones (doc/theory/mca.md §9). A band's side where no body is (at
+        // a body's bottom or top face, or the box's) has no automata on
+        // one side and changes nothing.
+        auto in_a_body = [&](const double z) {
+          for (const Body &b : bodies)
+            if (b.lower[2] <= z && z < b.upper[2])
+              return true;
+          return false;
+        };
         for (const SizeBand &band : size_bands)
           for (const double plane : {band.z_lower, band.z_upper})
             {
-              const double eps   = 1e-9 * automaton_size;
-              const int    below = size_level(plane - eps);
-              const int    above = size_level(plane + eps);
+              const double eps = 1e-9 * automaton_size;
+              if (!in_a_body(plane - eps) || !in_a_body(plane + eps))
+                continue;
+              const int below = size_level(plane - eps);
+              const int above = size_level(plane + eps);
               check_parameter(std::abs(below - above) <= 1,
                               "Geometry/Size bands",
                               "at z = " + format_number(plane)

@@ -158,14 +158,7 @@ namespace tribodyn
           kept_states.insert(kept_states.end(), r.begin() + 1, r.end());
         }
       std::sort(kept_keys.begin(), kept_keys.end());
-      const unsigned long long n_now
-        = dealii::Utilities::MPI::sum<unsigned long long>(n_owned, comm);
-      throw_collectively(comm,
-                         n_bad > 0 || n_now != n_global,
-                         "Internal error: the new partition lost or "
-                         "misplaced automata ("
-                           + std::to_string(n_now) + " of "
-                           + std::to_string(n_global) + ").");
+      check_automata_arrived(n_bad, "the new partition");
 
       // Remembered for checkpoints (replay_rebalances()).
       rebalance_history.push_back(weights.size());

@@ -125,6 +125,21 @@ namespace tribodyn
 
 
     void
+    AutomatonSystem::check_automata_arrived(const unsigned int n_misplaced,
+                                            const std::string &move) const
+    {
+      const unsigned long long n_now
+        = dealii::Utilities::MPI::sum<unsigned long long>(n_owned, comm);
+      throw_collectively(comm,
+                         n_misplaced > 0 || n_now != n_global,
+                         "Internal error: " + move
+                           + " lost or misplaced automata ("
+                           + std::to_string(n_now) + " of "
+                           + std::to_string(n_global) + ").");
+    }
+
+
+    void
     AutomatonSystem::migrate(const bool all_pair_states)
     {
       // Identity of the old pairs (their states are restored by ids).
@@ -304,14 +319,7 @@ namespace tribodyn
                  Point3(buf[o + 1], buf[o + 2], buf[o + 3]),
                  buf.data() + o + 4);
       particles->clear_particles();
-      const unsigned long long n_now
-        = dealii::Utilities::MPI::sum<unsigned long long>(n_owned, comm);
-      throw_collectively(comm,
-                         n_bad > 0 || n_now != n_global,
-                         "Internal error: the migration of automata between "
-                         "ranks lost or misplaced automata ("
-                           + std::to_string(n_now) + " of "
-                           + std::to_string(n_global) + ").");
+      check_automata_arrived(n_bad, "the migration of automata between ranks");
 
       // Received pair states by key, for the restore.
       kept_states.clear();

@@ -427,6 +427,12 @@ namespace tribodyn
                        const std::uint32_t the_id,
                        const Point3       &location,
                        const double       *props);
+      /// Collective: throws if automata were lost in @p move (the global
+      /// count changed) or @p n_misplaced of this rank's landed outside its
+      /// cells.
+      void
+      check_automata_arrived(const unsigned int n_misplaced,
+                             const std::string &move) const;
       // --- the partition weighted anew (rebalance.cc)
       /// Collective: whether the work imbalance calls for a new partition
       /// (Partition/Rebalance threshold).
