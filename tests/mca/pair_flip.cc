@@ -36,6 +36,10 @@ main(int argc, char **argv)
   system.setup();
   check(system.n_global_automata() == 2,
         "two automata (" + std::to_string(system.n_global_automata()) + ")");
+  // without the pair the rest proves nothing: a failure, not a silent pass
+  check(system.pair_views().size() == 1,
+        "the two automata form one pair ("
+          + std::to_string(system.pair_views().size()) + ")");
   if (system.n_global_automata() != 2 || system.pair_views().size() != 1)
     return result();
 
