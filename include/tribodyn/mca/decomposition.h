@@ -241,6 +241,12 @@ namespace tribodyn
       /// ranks, from the mesh's current partition.
       void
       build_cell_tables();
+      /// p4est's partition weighted by @p weight of each locally owned cell
+      /// (by structured index): the `weight` signal and repartition().
+      void
+      repartition_by(
+        const std::function<unsigned int(const std::array<unsigned int, 3> &)>
+          &weight);
 
       /// Neighbour @p o (offset code, 0...26 like the shift codes) of owned
       /// cell @p c; false where a non-periodic side has none.
