@@ -143,20 +143,32 @@ namespace tribodyn
       // ranks' sums of the cells' weights are equal (rather than their
       // numbers of cells).
       if (cost && dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
-        {
-          using Tria      = dealii::parallel::distributed::Triangulation<3>;
-          const auto slot = tria.signals.weight.connect(
-            [&](const Tria::cell_iterator &cell, const Tria::CellStatus) {
-              std::array<unsigned int, 3> ijk;
-              structured_cell(cell->center(), ijk);
-              Point3 lower, upper;
-              cell_box(ijk, lower, upper);
-              return cost(ijk, lower, upper);
-            });
-          tria.repartition();
-          slot.disconnect();
-        }
+        repartition_by([&](const std::array<unsigned int, 3> &ijk) {
+          Point3 lower, upper;
+          cell_box(ijk, lower, upper);
+          return cost(ijk, lower, upper);
+        });
       build_cell_tables();
+    }
+
+
+    void
+    Decomposition::repartition_by(
+      const std::function<unsigned int(const std::array<unsigned int, 3> &)>
+        &weight)
+    {
+      // deal.II's `weight` signal asks for the locally owned cells' weights
+      // (by structured index here); deal.II's ParticleHandlers attached to
+      // the mesh carry their particles to the new owners.
+      using Tria      = dealii::parallel::distributed::Triangulation<3>;
+      const auto slot = tria.signals.weight.connect(
+        [&](const Tria::cell_iterator &cell, const Tria::CellStatus) {
+          std::array<unsigned int, 3> ijk;
+          structured_cell(cell->center(), ijk);
+          return weight(ijk);
+        });
+      tria.repartition();
+      slot.disconnect();
     }
 
 
@@ -164,27 +176,20 @@ namespace tribodyn
     Decomposition::repartition(const std::vector<CellWeight> &weights)
     {
       // p4est cuts its curve anew by these weights (the locally owned
-      // cells' own, looked up by key); deal.II's ParticleHandlers attached
-      // to the mesh carry their particles to the new owners.
-      using Tria      = dealii::parallel::distributed::Triangulation<3>;
-      const auto slot = tria.signals.weight.connect(
-        [&](const Tria::cell_iterator &cell, const Tria::CellStatus) {
-          std::array<unsigned int, 3> ijk;
-          structured_cell(cell->center(), ijk);
-          const std::uint64_t k = key(ijk);
-          const auto          it
-            = std::lower_bound(weights.begin(),
-                               weights.end(),
-                               k,
-                               [](const CellWeight &w, const std::uint64_t v) {
-                                 return w.key < v;
-                               });
-          AssertThrow(it != weights.end() && it->key == k,
-                      dealii::ExcInternalError());
-          return it->weight;
-        });
-      tria.repartition();
-      slot.disconnect();
+      // cells' own, looked up by key).
+      repartition_by([&](const std::array<unsigned int, 3> &ijk) {
+        const std::uint64_t k = key(ijk);
+        const auto          it
+          = std::lower_bound(weights.begin(),
+                             weights.end(),
+                             k,
+                             [](const CellWeight &w, const std::uint64_t v) {
+                               return w.key < v;
+                             });
+        AssertThrow(it != weights.end() && it->key == k,
+                    dealii::ExcInternalError());
+        return it->weight;
+      });
       build_cell_tables();
     }
 
