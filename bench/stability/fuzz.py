@@ -7,7 +7,9 @@ x1e3, x1e-3, 1e300, -1e300, 1e-300, nan, inf, -inf, text, -1), caps the
 simulated time so that cases stay short (contact: End time 2 us and
 averaging from 0; mca: End time 2e-11 s) unless the perturbed number is the
 end time itself, and runs tribodyn with a timeout. A case passes when:
-  - exit 0 and summary.json is complete JSON; or
+  - exit 0 and summary.json is complete JSON whose numbers are all finite
+    (tribodyn writes a non-finite number as null; null is allowed only for
+    the keys that are undefined by design, NULLABLE below); or
   - exit 2 (refused) with a message on stderr naming the perturbed
     parameter (its name, e.g. 'Pressure'), and no summary.json; or
   - exit 3 (the run stopped: unstable, automata leaving the box...) with a
@@ -130,13 +132,43 @@ def progress_percentages(stdout):
     return values
 
 
+# Summary keys that are null by design: no contact happened, no layer
+# formed, no seed value for a pressure of table 2. Any other null is a NaN
+# or inf result.
+NULLABLE = {"contact_time", "plastic_strain_layer_center",
+            "plastic_strain_layer_thickness", "quasi_fluid_layer_center",
+            "quasi_fluid_layer_thickness", "quasi_fluid_layer_thickness_final",
+            "seed_mu"}
+
+
+def _refuse_constant(name):
+    raise ValueError("non-finite number " + name)
+
+
+def non_finite_keys(value, path=""):
+    """Keys of VALUE (parsed JSON) holding null outside NULLABLE."""
+    if isinstance(value, dict):
+        return [k for key, v in value.items()
+                for k in non_finite_keys(v, path + "/" + key if path else key)]
+    if isinstance(value, list):
+        return [k for i, v in enumerate(value)
+                for k in non_finite_keys(v, "%s[%d]" % (path, i))]
+    if value is None and path.split("/")[-1] not in NULLABLE:
+        return [path]
+    return []
+
+
 def judge(code, err, summary, case):
     has_summary = os.path.exists(summary)
     if has_summary:
         try:
-            json.load(open(summary))
-        except ValueError:
-            return "FAIL partial summary.json"
+            with open(summary) as f:
+                parsed = json.load(f, parse_constant=_refuse_constant)
+        except ValueError as e:
+            return "FAIL partial or non-finite summary.json (%s)" % e
+        bad = non_finite_keys(parsed)
+        if bad:
+            return "FAIL non-finite results in summary.json: " + ", ".join(bad[:5])
     if code == "timeout":
         # Not a hang when the run was still advancing: the perturbation
         # asked for much more work (e.g. an end time 1000 x longer).

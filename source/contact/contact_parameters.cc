@@ -548,10 +548,18 @@ namespace tribodyn
                         "Contact/Regularization rate",
                         "'plane speed' when 'Loading/Plane velocity' is 0 (L* "
                         "= Regularization time x |V| would vanish)");
-      check_parameter(output.average_start < time.end_time,
+    }
+
+
+    void
+    ContactParameters::check_averaging_window(const bool checkpointed) const
+    {
+      check_parameter(checkpointed || output.average_start < time.end_time,
                       "Output/Averaging start time",
                       "a time before 'Time integration/End time' ("
-                        + format_number(time.end_time) + " s)");
+                        + format_number(time.end_time)
+                        + " s), or checkpoints (Checkpoint/Interval > 0) "
+                          "when this run is the first leg of a longer one");
     }
   } // namespace contact
 } // namespace tribodyn

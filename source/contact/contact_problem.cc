@@ -32,6 +32,7 @@ namespace tribodyn
     {
       parameters.parse_parameters(prm);
       checkpoint.parse_parameters(prm);
+      parameters.check_averaging_window(checkpoint.interval > 0);
       checkpoint_lines
         = resumable_parameter_lines(prm, "Time integration/End time");
       checkpoints_on = true;
@@ -149,24 +150,28 @@ namespace tribodyn
         {parameters.output.average_start,
          parameters.output.average_end < 0 ? parameters.time.end_time
                                            : parameters.output.average_end});
-      summary["n_samples_averaged"]    = s.n_samples_averaged;
-      summary["dominant_frequency_hz"] = s.dominant_frequency_hz;
-      summary["energy_balance_error"]  = s.energy_balance_error;
-      summary["stick_fraction"]        = s.stick_fraction;
-      summary["slip_fraction"]         = s.slip_fraction;
-      summary["separation_fraction"]   = s.separation_fraction;
-      JsonValue M                      = JsonValue::object();
-      M["stick_fraction"]              = s.M_stick_fraction;
-      M["slip_fraction"]               = s.M_slip_fraction;
-      M["separation_fraction"]         = s.M_separation_fraction;
-      summary["point_M"]               = M;
-      summary["regime"]                = s.regime;
-      summary["regime_contact_face"]   = s.regime_contact_face;
-      summary["regime_threshold"]      = parameters.output.regime_threshold;
+      summary["n_samples_averaged"] = s.n_samples_averaged;
+      // A leg that ends before its window: the averages are undefined
+      // (null), the next leg reaches the window.
+      summary["averaging_window_empty"] = s.n_samples_averaged == 0;
+      summary["dominant_frequency_hz"]  = s.dominant_frequency_hz;
+      summary["energy_balance_error"]   = s.energy_balance_error;
+      summary["stick_fraction"]         = s.stick_fraction;
+      summary["slip_fraction"]          = s.slip_fraction;
+      summary["separation_fraction"]    = s.separation_fraction;
+      JsonValue M                       = JsonValue::object();
+      M["stick_fraction"]               = s.M_stick_fraction;
+      M["slip_fraction"]                = s.M_slip_fraction;
+      M["separation_fraction"]          = s.M_separation_fraction;
+      summary["point_M"]                = M;
+      summary["regime"]                 = s.regime;
+      summary["regime_contact_face"]    = s.regime_contact_face;
+      summary["regime_threshold"]       = parameters.output.regime_threshold;
       summary["normal_force_dominant_frequency_hz"]
         = s.normal_force_dominant_frequency_hz;
       summary["n_dofs"] = static_cast<unsigned long long>(solver.n_dofs());
       summary["n_contact_nodes"]      = solver.n_contact_nodes();
+      summary["n_contact_face_ranks"] = solver.n_contact_face_ranks();
       summary["n_steps"]              = solver.n_steps_done();
       summary["dt"]                   = solver.time_step();
       summary["critical_dt"]          = solver.critical_time_step();
@@ -184,6 +189,13 @@ namespace tribodyn
                                         "summary.json"),
                               summary.dump() + "\n");
 
+      if (s.n_samples_averaged == 0)
+        pcout << "\nThe averaging window (from "
+              << parameters.output.average_start
+              << " s) is empty: this run ends at " << parameters.time.end_time
+              << " s. A resumed leg (Checkpoint/Resume) reaches it; the "
+                 "averages below are undefined (null in summary.json)."
+              << std::endl;
       pcout << std::fixed << std::setprecision(4)
             << "\nmu_global (time average over the window) = "
             << s.mu_global_mean << "  (from the contact multipliers "

@@ -350,7 +350,17 @@ namespace tribodyn
         }
       const double n       = static_cast<double>(mu.size());
       s.n_samples_averaged = mu.size();
-      if (n > 0)
+      if (n == 0)
+        {
+          // An empty window (a leg of a longer run): undefined averages.
+          const double undefined = std::numeric_limits<double>::quiet_NaN();
+          s.mu_global_mean = s.mu_contact_mean = undefined;
+          s.stick_fraction = s.slip_fraction = s.separation_fraction
+            = undefined;
+          s.M_stick_fraction = s.M_slip_fraction = s.M_separation_fraction
+            = undefined;
+        }
+      else
         {
           double sum = 0;
           for (const double m : mu)

@@ -451,6 +451,8 @@ namespace tribodyn
       n_contact_nodes_global
         = Utilities::MPI::sum(static_cast<unsigned int>(contact_nodes.size()),
                               comm);
+      n_contact_face_ranks_global
+        = Utilities::MPI::sum(contact_nodes.empty() ? 0u : 1u, comm);
       if (prm.loading.top_held_in_x)
         for (const unsigned int i : top_x_dofs)
           mass_inverse[i] = 0;

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cmath>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
@@ -106,7 +107,54 @@ namespace tribodyn
 
   namespace
   {
-    constexpr const char *format_line = "tribodyn checkpoint 1";
+    // Format 2 frames each rank's file (frame() below); format 1 files
+    // (no frame) are still read.
+    constexpr const char *format_line = "tribodyn checkpoint 2";
+    constexpr const char *format_1    = "tribodyn checkpoint 1";
+
+    /// 64-bit FNV-1a hash of @p data.
+    std::uint64_t
+    fnv1a(const char *data, const std::size_t n)
+    {
+      std::uint64_t h = 14695981039346656037ull;
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          h ^= static_cast<unsigned char>(data[i]);
+          h *= 1099511628211ull;
+        }
+      return h;
+    }
+
+    // A rank's file: "TDYNBLOB", the blob's size and its hash (8 bytes
+    // each), then the blob; a file that was overwritten, truncated or
+    // changed on disk fails unframe() instead of reaching the engine's
+    // archive reader (which may fail in any way on garbage).
+    constexpr std::size_t frame_header = 24;
+
+    std::string
+    frame(const std::string &blob)
+    {
+      std::string         out("TDYNBLOB");
+      const std::uint64_t words[2]
+        = {blob.size(), fnv1a(blob.data(), blob.size())};
+      out.append(reinterpret_cast<const char *>(words), sizeof(words));
+      return out + blob;
+    }
+
+    /// The blob of a framed file, or false if the frame does not hold.
+    bool
+    unframe(const std::string &file, std::string &blob)
+    {
+      if (file.size() < frame_header || file.compare(0, 8, "TDYNBLOB") != 0)
+        return false;
+      std::uint64_t words[2];
+      std::memcpy(words, file.data() + 8, sizeof(words));
+      if (words[0] != file.size() - frame_header
+          || words[1] != fnv1a(file.data() + frame_header, words[0]))
+        return false;
+      blob = file.substr(frame_header);
+      return true;
+    }
 
     /// Write @p content to @p path through a temporary file that is
     /// flushed to disk (fsync) before the rename: after the rename the
@@ -232,7 +280,7 @@ namespace tribodyn
     fail_collectively(comm, error);
     try
       {
-        write_durably(rank_file(slot, rank), blob);
+        write_durably(rank_file(slot, rank), frame(blob));
       }
     catch (const std::exception &e)
       {
@@ -274,8 +322,9 @@ namespace tribodyn
     std::string        text;
     if (rank == 0)
       text = read_whole_file(latest, ok);
-    text = dealii::Utilities::MPI::broadcast(comm, text, 0);
-    if (text.rfind(format_line, 0) != 0)
+    text              = dealii::Utilities::MPI::broadcast(comm, text, 0);
+    const bool framed = text.rfind(format_line, 0) == 0;
+    if (!framed && text.rfind(format_1, 0) != 0)
       throw InputError(
         "'Checkpoint/Resume = true' but there is no checkpoint in '" + path
         + "' (file 'latest' missing or not a tribodyn checkpoint). Run "
@@ -344,6 +393,18 @@ namespace tribodyn
       throw InputError("The checkpoint in '" + path
                        + "' is incomplete: a rank's file (e.g. '" + file
                        + "') cannot be read. Start afresh with "
+                         "'Checkpoint/Resume = false'.");
+    std::string content;
+    const bool  intact = !framed || unframe(blob, content);
+    if (framed)
+      blob.swap(content);
+    const unsigned int first_damaged
+      = dealii::Utilities::MPI::min(intact ? n_ranks : rank, comm);
+    if (first_damaged < n_ranks)
+      throw InputError("The checkpoint in '" + path + "' is damaged: '"
+                       + rank_file(info.slot, first_damaged)
+                       + "' does not hold what was written (its size or "
+                         "checksum differ). Start afresh with "
                          "'Checkpoint/Resume = false'.");
     next_slot = 1 - info.slot;
     return blob;

@@ -36,6 +36,7 @@ namespace tribodyn
         : context(context)
     {
       base.parse_parameters(prm);
+      base.check_averaging_window(false);
       parameters.parse_parameters(prm);
       std::ostringstream text;
       prm.print_parameters(text, ParameterHandler::ShortPRM);
@@ -90,6 +91,16 @@ namespace tribodyn
                   study_cases.push_back(c);
                 }
           }
+    }
+
+
+    unsigned int
+    StudyProblem::n_case_groups() const
+    {
+      return std::max(1u,
+                      dealii::Utilities::MPI::n_mpi_processes(
+                        context.mpi_communicator)
+                        / parameters.ranks_per_case);
     }
 
 
@@ -346,14 +357,9 @@ namespace tribodyn
       const auto         start = std::chrono::steady_clock::now();
       const MPI_Comm     world = context.mpi_communicator;
       const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(world);
-      const unsigned int n_ranks
-        = dealii::Utilities::MPI::n_mpi_processes(world);
       dealii::ConditionalOStream pcout(std::cout, rank == 0);
-      const unsigned int         n_groups
-        = std::max(1u, n_ranks / parameters.ranks_per_case);
-      // Groups of ranks_per_case consecutive ranks (the remainder joins the
-      // last group).
-      const unsigned int color
+      const unsigned int         n_groups = n_case_groups();
+      const unsigned int         color
         = std::min(rank / parameters.ranks_per_case, n_groups - 1);
       MPI_Comm group;
       MPI_Comm_split(world, color, rank, &group);

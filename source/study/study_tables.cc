@@ -199,9 +199,10 @@ namespace tribodyn
       summary["tribodyn_version"] = version_string;
       summary["n_mpi_ranks"]
         = dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
-      summary["n_cases"]   = study_cases.size();
-      summary["mesh_size"] = base.geometry.mesh_size;
-      summary["end_time"]  = base.time.end_time;
+      summary["n_case_groups"] = n_case_groups();
+      summary["n_cases"]       = study_cases.size();
+      summary["mesh_size"]     = base.geometry.mesh_size;
+      summary["end_time"]      = base.time.end_time;
       summary["averaging_window"]
         = json_array({base.output.average_start,
                       base.output.average_end < 0 ? base.time.end_time

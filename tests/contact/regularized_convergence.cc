@@ -2,12 +2,15 @@
 // Fig. 3: the default matrix pin at P = 0.5 MPa, mu = 0.25, V = -2 m/s,
 // L*/|V| = 1.5 us held fixed. The time average of mu_global over
 // [40, 100] us is the same
-// (a) for dt = 5 ns and dt = 2.5 ns (h = 0.25 mm), and
-// (b) for h = 0.25 mm and h = 0.125 mm (dt = 5 ns),
-// within 0.002 (absolute). (Measured differences: 1e-4 and 2e-5; see
-// doc/theory/contact.md.) The friction force from the contact multipliers
-// averages to mu within 0.005 (the regularized law and the separations
-// make it slightly smaller).
+// (a) for dt = 5 ns and dt = 2.5 ns (h = 0.25 mm): within 4e-4, and
+// (b) for h = 0.25 mm and h = 0.125 mm (dt = 5 ns): within 2e-4
+// (absolute; measured 1.32e-4 and 6.9e-5 (2026-11-26): the discretization
+// errors of mu's mean at the seed's dt and h, about 3x below the
+// tolerances; doc/theory/contact.md). The friction force from the contact
+// multipliers averages to mu within 2e-4 in all three runs (measured
+// +3.5e-5, +4.5e-5, +2e-6: in slip the law relaxes tau to mu |sigma|; what
+// is left are its transients after the re-contacts, each L*/|V| = 1.5 us
+// long).
 
 #include "contact_test_tools.h"
 
@@ -50,11 +53,12 @@ main(int argc, char **argv)
   const auto                               coarse = averages("5e-9", "0.25e-3");
   const auto small_step = averages("2.5e-9", "0.25e-3");
   const auto fine_mesh  = averages("5e-9", "0.125e-3");
-  check(std::abs(coarse.first - small_step.first) < 0.002,
-        "mu_global mean: dt = 5 ns vs 2.5 ns within 0.002");
-  check(std::abs(coarse.first - fine_mesh.first) < 0.002,
-        "mu_global mean: h = 0.25 mm vs 0.125 mm within 0.002");
-  check(std::abs(coarse.second - 0.25) < 0.005,
-        "mu from the contact multipliers within 0.005 of mu = 0.25");
+  check(std::abs(coarse.first - small_step.first) < 4e-4,
+        "mu_global mean: dt = 5 ns vs 2.5 ns within 4e-4");
+  check(std::abs(coarse.first - fine_mesh.first) < 2e-4,
+        "mu_global mean: h = 0.25 mm vs 0.125 mm within 2e-4");
+  for (const auto &run : {coarse, small_step, fine_mesh})
+    check(std::abs(run.second - 0.25) < 2e-4,
+          "mu from the contact multipliers within 2e-4 of mu = 0.25");
   return result();
 }

@@ -63,7 +63,7 @@ import math
 import os
 import sys
 
-from check_tools import finish, output_directory, report
+from check_tools import finish, output_directory, parameter, report
 
 TOLERANCE = 0.01
 RISE_TOLERANCE = 0.02
@@ -73,24 +73,14 @@ START = 0.25  # relative sliding (in periods) at which the averaging starts
 out = output_directory(sys.argv[1])
 
 
-def parameter(name):
-    """Value of 'set NAME = value' in the run's parameters.prm."""
-    with open(os.path.join(out, "parameters.prm")) as f:
-        for line in f:
-            words = line.split("=")
-            if words[0].strip() == "set " + name:
-                return float(words[1].split("#")[0])
-    raise KeyError(name)
-
-
 def read_csv(name):
     with open(os.path.join(out, name)) as f:
         rows = list(csv.DictReader(f))
     return {k: [float(r[k]) for r in rows] for k in rows[0]}
 
 
-mu = parameter("Friction coefficient")
-d = parameter("Automaton size")
+mu = parameter(out, "Interaction/Friction coefficient")
+d = parameter(out, "Geometry/Automaton size")
 a = d * math.sqrt(2)
 
 # The derivation: antiderivative of tan(beta) cos(beta - phi), beta = phi +

@@ -33,6 +33,36 @@ def finish():
     sys.exit(1 if _failed else 0)
 
 
+def parameter(out, path):
+    """Value of parameter PATH ('Materials/Steel/Density', or a bare name
+    when it is unique) in the parameters.prm that the run wrote to OUT: the
+    input as the run read it, defaults included. Numbers come back as float,
+    anything else as the string."""
+    want = path.split("/")
+    stack = []
+    found = []
+    with open(os.path.join(out, "parameters.prm")) as f:
+        for line in f:
+            words = line.split("#")[0].split()
+            if not words:
+                continue
+            if words[0] == "subsection":
+                stack.append(" ".join(words[1:]))
+            elif words[0] == "end":
+                stack.pop()
+            elif words[0] == "set":
+                name, value = " ".join(words[1:]).split("=", 1)
+                full = stack + [name.strip()]
+                if full[-len(want):] == want:
+                    found.append(value.strip())
+    if len(found) != 1:
+        raise KeyError("%s: %d matches in %s/parameters.prm" % (path, len(found), out))
+    try:
+        return float(found[0])
+    except ValueError:
+        return found[0]
+
+
 def output_directory(root):
     """The one directory under ROOT holding a summary.json (a run's output);
     FAIL and exit when there is not exactly one."""

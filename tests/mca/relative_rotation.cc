@@ -21,7 +21,9 @@
 //     + |K|^2 / 2k_t exceeds its start by at most (x^2/4)/(1 - x^2/4),
 //     x = omega_0 dt (the leapfrog's bounded oscillation, exact), and the
 //     leapfrog invariant (K term times 1 - x^2/4) is constant to 1e-9; the
-//     kinetic energy equals its start plus the pair work to 1e-9;
+//     kinetic energy equals its start plus the pair work to 1e-9; the
+//     system's elastic energy is |K|^2 / 2k_t computed here (pure twist
+//     strains nothing else) to 1e-12 of E0 (round-off);
 //  4. free tumbling with twist and bending and translation (the pair's
 //     forces, torques and moments together): the total angular momentum
 //     sum J w + m x cross v about the origin is conserved to 1e-12 of
@@ -266,7 +268,8 @@ main(int argc, char **argv)
       plain           = ek + ep;
       invariant       = ek + (1 - x * x / 4) * ep;
     };
-    double E0, I0, E, Iv, worst_plain = 0, worst_inv = 0, worst_work = 0;
+    double E0, I0, E, Iv, worst_plain = 0, worst_inv = 0, worst_work = 0,
+                          worst_elastic = 0;
     energies(E0, I0);
     std::vector<double> crossings;
     double              previous = 0, time = 0;
@@ -286,6 +289,10 @@ main(int argc, char **argv)
         const auto e = sys.energies();
         worst_work
           = std::max(worst_work, std::abs(e.kinetic - e.pair_work - E0) / E0);
+        const Vec3 K = sys.pair_views().at(0).moment;
+        worst_elastic
+          = std::max(worst_elastic,
+                     std::abs(e.elastic - dot(K, K) / (2 * k_t)) / E0);
       }
     check(crossings.size() >= 8,
           std::to_string(crossings.size()) + " zero crossings of K . n");
@@ -310,6 +317,8 @@ main(int argc, char **argv)
     check(worst_inv <= 1e-9, "leapfrog invariant constant: " + sci(worst_inv));
     check(worst_work <= 1e-9,
           "kinetic energy = initial one + pair work: " + sci(worst_work));
+    check(worst_elastic <= 1e-12,
+          "elastic energy of the system = |K|^2 / 2k_t: " + sci(worst_elastic));
   }
 
   // 4. tumbling: total angular momentum

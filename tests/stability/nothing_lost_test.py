@@ -13,6 +13,16 @@ every file under it (relative path -> bytes), then:
   mca_time    reruns the MCA wave pulse with 'Time/Time step = 1e-9'
               (above the automata's sound-crossing time): refused at
               set-up;
+  mca_resume  resumes the MCA wave pulse's checkpoint with the steel's
+              density changed: refused (parameters differ);
+  resume_none resumes where A wrote no checkpoint: refused;
+  resume_other_problem
+              resumes A's (contact) checkpoint with an MCA prm (the wave
+              pulse) in the same directory: refused (another problem);
+  resume_corrupt, resume_missing
+              resume after the rank file of A's latest checkpoint slot was
+              overwritten with garbage / deleted: refused (damaged /
+              incomplete);
   killed      starts a fresh run B with a long end time and kills it
               (SIGKILL, no chance to clean up) once B's series has rows.
 
@@ -76,7 +86,26 @@ def section_text(section, lines):
         f"  set {l}\n" for l in lines) + "end\n"
 
 
-# The finished run A of each case, and what the second run changes.
+SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+RESUME_CONTACT = (section_text("Checkpoint", ["Resume = true"])
+                  + section_text("Time integration", ["End time = 20e-6"]))
+
+
+def latest_rank_file(out):
+    """The rank-0 file of the slot that out/checkpoint/latest names."""
+    latest = open(os.path.join(out, "checkpoint", "latest")).read()
+    slot = [l for l in latest.splitlines() if l.startswith("slot = ")][0][7:]
+    return os.path.join(out, "checkpoint", f"slot_{slot}", "rank_0000.bin")
+
+
+def overwrite(path):
+    with open(path, "wb") as f:
+        f.write(b"not a checkpoint" * 8)
+
+
+# The finished run A of each case, and what the second run changes
+# ('second_base': the second run's prm includes this file instead of BASE;
+# 'prepare': done to A's outputs before the second run).
 CASES = {
     "time_step": dict(
         first=section_text("Checkpoint", ["Interval = 5e-6"]),
@@ -94,6 +123,32 @@ CASES = {
         first="",
         second=section_text("Time", ["Time step = 1e-9"]),
         expected="Time step"),
+    "mca_resume": dict(
+        first=section_text("Checkpoint", ["Interval = 5e-11"]),
+        second=section_text("Checkpoint", ["Resume = true"])
+        + section_text("Time", ["End time = 2e-10"])
+        + "subsection Materials\n" + section_text("Steel", ["Density = 7900"])
+        + "end\n",
+        expected="Density"),
+    "resume_none": dict(
+        first="",
+        second=RESUME_CONTACT,
+        expected="there is no checkpoint"),
+    "resume_other_problem": dict(
+        first=section_text("Checkpoint", ["Interval = 5e-6"]),
+        second_base=os.path.join(SOURCE, "prm", "mca", "wave_pulse.prm"),
+        second=section_text("Checkpoint", ["Resume = true"]),
+        expected="belongs to a 'contact' run"),
+    "resume_corrupt": dict(
+        first=section_text("Checkpoint", ["Interval = 5e-6"]),
+        prepare=lambda out: overwrite(latest_rank_file(out)),
+        second=RESUME_CONTACT,
+        expected="damaged"),
+    "resume_missing": dict(
+        first=section_text("Checkpoint", ["Interval = 5e-6"]),
+        prepare=lambda out: os.remove(latest_rank_file(out)),
+        second=RESUME_CONTACT,
+        expected="incomplete"),
 }
 
 
@@ -106,8 +161,14 @@ def refusal_case(tribodyn, case, base, work):
         sys.exit(f"FAIL: the first run failed ({code}): {err[-1500:]}")
     if not os.path.exists(os.path.join(out, "summary.json")):
         sys.exit("FAIL: the first run wrote no summary.json")
-    write_prm(os.path.join(work, "b.prm"), base, out,
-              spec["first"] + spec["second"])
+    if "prepare" in spec:
+        spec["prepare"](out)
+    if "second_base" in spec:
+        write_prm(os.path.join(work, "b.prm"), os.path.abspath(spec["second_base"]),
+                  out, spec["second"])
+    else:
+        write_prm(os.path.join(work, "b.prm"), base, out,
+                  spec["first"] + spec["second"])
     before = snapshot(work)  # b.prm included
     code, _, err = run(tribodyn, "b.prm", work)
     print(f"second run: exit code {code}; stderr: {err.strip()[-600:]}")

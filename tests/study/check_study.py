@@ -4,7 +4,12 @@ table2.csv has the documented columns and one row per (pressure, model);
 n_runs is 1 for the homogeneous pins and 'Number of morphologies' for the
 meso pin; every error bar is positive and finite; the fractions add up to
 1 (1e-5: 6 significant digits in the file); the regime names agree with the fractions and the
-documented threshold; the homogenization runs were chained (one per
+documented threshold; each row's mean, error bar and fractions are computed
+again here from cases.csv (the documented se^2 = max(s_between^2/n,
+sum se_i^2/n^2)); the contact-face friction ratio of every case is the law's
+alpha*mu = 0.25 within 2 % (measured: 0.45 % at most; the pins slip on 98 % of
+the node-samples, and the regularized law relaxes to alpha*mu in 1.5 us of the
+20 us window) and every global mean within 3 of its standard errors of it; the homogenization runs were chained (one per
 morphology) and the homogenized pin's stiffness is their average, which
 differs from the matrix's (so the two homogeneous models are not the same
 pin); every case wrote its series; summary.json has the study keys.
@@ -54,7 +59,44 @@ for r in rows:
     fr = [float(r[k]) for k in cols[5:8]]
     check(abs(sum(fr) - 1) < 1e-5, "fractions add up to 1 (6 digits written)")
     check(r["regime"] == regime(*fr, 0.01), "regime '%s' from the fractions" % r["regime"])
-    check(0.05 < float(r["mu_mean"]) < 0.3, "mu_mean in (0.05, 0.3): " + r["mu_mean"])
+
+# Table 2 again from cases.csv (written with 8 digits; table2.csv has 6).
+with open(os.path.join(out, "cases.csv")) as f:
+    cases = list(csv.DictReader(f))
+mu_law = 0.25  # Contact/Friction coefficient (default) x alpha (default 1)
+
+
+def close(a, b):
+    return abs(a - b) <= 1e-5 * max(abs(a), abs(b)) + 1e-12
+
+
+for r in rows:
+    runs = [c for c in cases
+            if float(c["pressure"]) == float(r["pressure"]) and c["model"] == r["model"]]
+    n = len(runs)
+    check(n == int(r["n_runs"]), "cases.csv has n_runs = %d cases of %s at %s Pa"
+          % (n, r["model"], r["pressure"]))
+    if n == 0:
+        continue
+    mean = sum(float(c["mu_mean"]) for c in runs) / n
+    within = sum(float(c["mu_stderr_blocking"]) ** 2 for c in runs) / n ** 2
+    between = (sum((float(c["mu_mean"]) - mean) ** 2 for c in runs) / ((n - 1) * n)
+               if n > 1 else 0.0)
+    se = math.sqrt(max(between, within))
+    check(close(mean, float(r["mu_mean"])), "%s mu_mean %s = mean of its cases %.6g"
+          % (r["model"], r["mu_mean"], mean))
+    check(close(se, float(r["mu_stderr"])), "%s mu_stderr %s = combined error %.6g"
+          % (r["model"], r["mu_stderr"], se))
+    for k in ["stick_fraction", "slip_fraction", "separation_fraction"]:
+        check(close(sum(float(c[k]) for c in runs) / n, float(r[k])),
+              "%s %s = mean of its cases" % (r["model"], k))
+    check(abs(float(r["mu_mean"]) - mu_law) < 3 * se,
+          "%s mu_mean %s within 3 standard errors (%.3g) of alpha*mu = %g"
+          % (r["model"], r["mu_mean"], se, mu_law))
+for c in cases:
+    check(abs(float(c["mu_contact_mean"]) / mu_law - 1) < 0.02,
+          "%s contact-face friction ratio %s = alpha*mu within 2 %%"
+          % (c["case"], c["mu_contact_mean"]))
 
 with open(os.path.join(out, "homogenization", "homogenized_stiffness.json")) as f:
     h = json.load(f)
@@ -76,8 +118,6 @@ check(h["C"][1][1] > 1.1 * C11_matrix,
       "homogenized C22 (%g) above the matrix's (%g): 10 %% of E = 80 GPa"
       % (h["C"][1][1], C11_matrix))
 
-with open(os.path.join(out, "cases.csv")) as f:
-    cases = list(csv.DictReader(f))
 check(len(cases) == 8, "8 cases")
 for c in cases:
     d = os.path.join(out, "cases", c["case"])

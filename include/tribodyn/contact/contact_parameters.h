@@ -237,6 +237,12 @@ namespace tribodyn
       declare_parameters(dealii::ParameterHandler &prm);
       void
       parse_parameters(dealii::ParameterHandler &prm);
+      /// The averaging window must start before the run ends, unless the
+      /// run is a leg of a longer one (@p checkpointed: it writes
+      /// checkpoints, and a resumed leg reaches the window; its summary
+      /// says the window is empty). InputError naming the parameter.
+      void
+      check_averaging_window(const bool checkpointed) const;
     };
 
     namespace internal

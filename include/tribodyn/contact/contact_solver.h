@@ -218,6 +218,13 @@ namespace tribodyn
       {
         return n_contact_nodes_global;
       }
+      /// Ranks that own contact nodes (the Gauss-Seidel sweep over the
+      /// contact face crosses them).
+      unsigned int
+      n_contact_face_ranks() const
+      {
+        return n_contact_face_ranks_global;
+      }
       double
       total_mass() const
       {
@@ -390,9 +397,10 @@ namespace tribodyn
       double
                                node_decay(const ContactNode &node) const;
       std::vector<ContactNode> contact_nodes;
-      unsigned int             n_contact_nodes_global = 0;
-      int                      point_M_index          = -1; // local, or -1
-      double                   point_M_x              = 0;
+      unsigned int             n_contact_nodes_global      = 0;
+      unsigned int             n_contact_face_ranks_global = 0;
+      int                      point_M_index               = -1; // local, or -1
+      double                   point_M_x                   = 0;
 
       double dt = 0, h = 0, dt_critical = 0, dt_cfl = 0, omega_maximum = 0;
       double c_maximum      = 0; ///< largest P-wave speed of the materials

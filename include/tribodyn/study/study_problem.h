@@ -100,6 +100,10 @@ namespace tribodyn
       }
 
     private:
+      /// Groups of 'Ranks per case' consecutive ranks that run cases side
+      /// by side (the remainder of the ranks joins the last group).
+      unsigned int
+      n_case_groups() const;
       /// Run the homogenization of each morphology on the rank groups and
       /// set the homogenized material (averaged apparent stiffness).
       void
