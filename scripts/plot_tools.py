@@ -124,3 +124,60 @@ def padded_limits(values, fraction=0.12, minimum=None):
 def label_of(directory):
     """Default legend label of a run: the name of its directory."""
     return os.path.basename(os.path.normpath(directory))
+
+
+def read_vtu(path):
+    """The point data and points of one .vtu piece, ASCII or deal.II's
+    binary (zlib-compressed, base64) format: {name: list of values} (a
+    tuple per point for fields of several components), with the points
+    under "points" and the piece's cell data under their names too."""
+    import base64
+    import re
+    import struct
+    import zlib
+    with open(path) as f:
+        text = f.read()
+    compressed = 'compressor="vtkZLibDataCompressor"' in text
+    header_type = re.search(r'header_type="(\w+)"', text)
+    word = "<Q" if header_type and header_type.group(1) == "UInt64" else "<I"
+    size = struct.calcsize(word)
+    result = {}
+    for match in re.finditer(r"<DataArray([^>]*)>(.*?)</DataArray>", text, re.S):
+        head, body = match.group(1), match.group(2).strip()
+        name = re.search(r'Name="([^"]*)"', head)
+        kind = re.search(r'type="(\w+)"', head).group(1)
+        comps = re.search(r'NumberOfComponents="(\d+)"', head)
+        n = int(comps.group(1)) if comps else 1
+        if not body:
+            values = []
+        elif 'format="binary"' in head:
+            code = {"Float32": "f", "Float64": "d", "Int32": "i", "UInt32": "I",
+                    "Int64": "q", "UInt64": "Q", "UInt8": "B", "Int8": "b"}[kind]
+            if compressed:
+                # header: number of blocks, block size, last block size,
+                # then the compressed size of each block; base64 of the
+                # header, then of the blocks
+                first = base64.b64decode(body[:((3 * size + 2) // 3) * 4])
+                n_blocks = struct.unpack(word, first[:size])[0]
+                header_bytes = (3 + n_blocks) * size
+                header_chars = ((header_bytes + 2) // 3) * 4
+                header = struct.unpack("<" + word[1] * (3 + n_blocks),
+                                       base64.b64decode(body[:header_chars])[:header_bytes])
+                data = base64.b64decode(body[header_chars:])
+                raw, offset = b"", 0
+                for b in header[3:]:
+                    raw += zlib.decompress(data[offset:offset + b])
+                    offset += b
+            else:
+                raw = base64.b64decode(body)
+                raw = raw[struct.unpack(word, raw[:size])[0] and size:]
+            values = list(struct.unpack("<%d%s" % (len(raw) // struct.calcsize(code),
+                                                   code), raw))
+        else:
+            values = [float(v) for v in body.split()]
+        key = name.group(1) if name else "points"
+        if key in ("connectivity", "offsets", "types"):
+            continue
+        result[key] = [tuple(values[i:i + n]) if n > 1 else values[i]
+                       for i in range(0, len(values), n)]
+    return result

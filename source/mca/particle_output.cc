@@ -1,8 +1,12 @@
 // Particle output: one .vtu per rank and a .pvtu, optionally restricted to
-// a slab (cross-sections of the seed's Figs. 3-4).
+// a slab (cross-sections of the seed's Figs. 3-4), through deal.II's VTU
+// writer (DataOutBase::write_vtu: binary, zlib-compressed, base64; data as
+// Float32). Each automaton is a patch of dimension 0 (a vertex), each pair
+// of the contact network a patch of dimension 1 (a line), as deal.II's
+// Particles::DataOut does for its particles.
 
 #include <cstdio>
-#include <iomanip>
+#include <deal.II/base/data_out_base.h>
 #include <sstream>
 #include <tribodyn/core/output.h>
 #include <tribodyn/mca/automaton_system.h>
@@ -13,60 +17,70 @@ namespace tribodyn
   {
     namespace
     {
-      /// End the points of a .vtu piece, write its cells (@p n_cells of
-      /// @p vertices consecutive points each, VTK cell type @p vtk_type:
-      /// 1 vertex, 3 line) and close the piece and the file.
-      void
-      write_cells_and_close(std::ostream     &o,
-                            const std::size_t n_cells,
-                            const unsigned    vertices,
-                            const unsigned    vtk_type)
-      {
-        o << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" "
-             "Name=\"connectivity\" format=\"ascii\">\n";
-        for (std::size_t k = 0; k < n_cells; ++k)
-          for (unsigned int v = 0; v < vertices; ++v)
-            o << vertices * k + v << (v + 1 < vertices ? " " : "\n");
-        o << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
-             "format=\"ascii\">\n";
-        for (std::size_t k = 0; k < n_cells; ++k)
-          o << vertices * (k + 1) << "\n";
-        o << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
-             "format=\"ascii\">\n";
-        for (std::size_t k = 0; k < n_cells; ++k)
-          o << vtk_type << "\n";
-        o << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</"
-             "VTKFile>\n";
-      }
+      using VectorRanges = std::vector<std::tuple<
+        unsigned int,
+        unsigned int,
+        std::string,
+        dealii::DataComponentInterpretation::DataComponentInterpretation>>;
 
-      /// Write this rank's piece @p piece as NAME.RANK.vtu and, on rank 0,
-      /// the index NAME.pvtu of all ranks' pieces with the data arrays
-      /// declared in @p data_declarations (a PPointData or PCellData
-      /// element); both atomically.
-      void
-      write_piece_and_index(const std::string &directory,
-                            const std::string &name,
-                            const unsigned int rank,
-                            const unsigned int n_ranks,
-                            const std::string &piece,
-                            const std::string &data_declarations)
+      /// The fields of a piece, listed once: each field's name and number
+      /// of components (1, 3 or 9) with its columns in the patches' data.
+      struct Fields
       {
+        std::vector<std::string> names;
+        VectorRanges             vector_ranges;
+
+        /// Declare a field of @p n components; returns its first column.
+        unsigned int
+        add(const std::string &name, const unsigned int n)
+        {
+          const unsigned int first = names.size();
+          for (unsigned int c = 0; c < n; ++c)
+            names.push_back(n == 1 ? name : name + "_" + std::to_string(c));
+          if (n > 1)
+            vector_ranges.emplace_back(first,
+                                       first + n - 1,
+                                       name,
+                                       n == 3
+                                         ? dealii::DataComponentInterpretation::
+                                           component_is_part_of_vector
+                                         : dealii::DataComponentInterpretation::
+                                           component_is_part_of_tensor);
+          return first;
+        }
+      };
+
+      /// Write this rank's patches as NAME.RANK.vtu and, on rank 0, the
+      /// index NAME.pvtu of all ranks' pieces; both atomically.
+      template <int dim>
+      void
+      write_piece_and_index(
+        const std::string                                     &directory,
+        const std::string                                     &name,
+        const unsigned int                                     rank,
+        const unsigned int                                     n_ranks,
+        const std::vector<dealii::DataOutBase::Patch<dim, 3>> &patches,
+        const Fields                                          &fields)
+      {
+        dealii::DataOutBase::VtkFlags flags;
+        flags.compression_level
+          = dealii::DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
+        std::ostringstream piece;
+        dealii::DataOutBase::write_vtu(
+          patches, fields.names, fields.vector_ranges, flags, piece);
         write_file_atomically(
           join_path(directory, name + "." + std::to_string(rank) + ".vtu"),
-          piece);
+          piece.str());
         if (rank != 0)
           return;
-        std::ostringstream pv;
-        pv << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" "
-              "version=\"0.1\" byte_order=\"LittleEndian\">\n"
-              "<PUnstructuredGrid GhostLevel=\"0\">\n"
-           << data_declarations
-           << "<PPoints><PDataArray type=\"Float64\" "
-              "NumberOfComponents=\"3\"/></PPoints>\n";
+        std::vector<std::string> pieces;
         for (unsigned int r = 0; r < n_ranks; ++r)
-          pv << "<Piece Source=\"" << name << "." << r << ".vtu\"/>\n";
-        pv << "</PUnstructuredGrid>\n</VTKFile>\n";
-        write_file_atomically(join_path(directory, name + ".pvtu"), pv.str());
+          pieces.push_back(name + "." + std::to_string(r) + ".vtu");
+        std::ostringstream index;
+        dealii::DataOutBase::write_pvtu_record(
+          index, pieces, fields.names, fields.vector_ranges, flags);
+        write_file_atomically(join_path(directory, name + ".pvtu"),
+                              index.str());
       }
     } // namespace
 
@@ -100,94 +114,66 @@ namespace tribodyn
             }
           selected.push_back(k);
         }
-      std::ostringstream o;
-      o << std::setprecision(8);
-      o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
-           "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
-        << "<Piece NumberOfPoints=\"" << selected.size()
-        << "\" NumberOfCells=\"" << selected.size() << "\">\n";
-      o << "<PointData Scalars=\"material\">\n";
-      auto scalar = [&](const std::string &field, const auto &value) {
-        o << "<DataArray type=\"Float64\" Name=\"" << field
-          << "\" format=\"ascii\">\n";
-        for (const unsigned int k : selected)
-          o << value(k) << "\n";
-        o << "</DataArray>\n";
-      };
-      auto vector = [&](const std::string &field, const auto &value) {
-        o << "<DataArray type=\"Float64\" Name=\"" << field
-          << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-        for (const unsigned int k : selected)
-          {
-            const Vec3 a = value(k);
-            o << a[0] << " " << a[1] << " " << a[2] << "\n";
-          }
-        o << "</DataArray>\n";
-      };
-      scalar("id", [&](unsigned k) { return static_cast<double>(id[k]); });
-      scalar("rank", [&](unsigned) { return static_cast<double>(rank); });
-      scalar("material", [&](unsigned k) { return double(mat[k]); });
-      scalar("body", [&](unsigned k) { return double(body_index(k)); });
-      scalar("bonded_neighbours",
-             [&](unsigned k) { return double(nbonded[k]); });
-      scalar("unbonded_contacts", [&](unsigned k) { return double(nfree[k]); });
-      scalar("plastic_strain", [&](unsigned k) { return eps_p[k]; });
+      // The fields (each once: name, components, value of automaton k).
       const bool with_elastic = !prm.interaction.elastic_regions.empty();
-      if (with_elastic)
-        scalar("elastic", [&](unsigned k) { return double(elastic(k)); });
-      // graded scenes: the size 2^L d of each automaton (ParaView's glyph
-      // scale)
-      if (graded)
-        scalar("size", [&](unsigned k) { return automaton_size(k); });
-      vector("velocity", [&](unsigned k) { return v[k]; });
-      vector("displacement", [&](unsigned k) { return u[k]; });
-      vector("angular_velocity", [&](unsigned k) { return w[k]; });
-      if (with_stress)
+      Fields     fields;
+      const unsigned int c_id
+        = fields.add("id", 1),
+        c_rank = fields.add("rank", 1), c_mat = fields.add("material", 1),
+        c_body = fields.add("body", 1),
+        c_nb   = fields.add("bonded_neighbours", 1),
+        c_nu   = fields.add("unbonded_contacts", 1),
+        c_ep   = fields.add("plastic_strain", 1),
+        c_el   = with_elastic ? fields.add("elastic", 1) : 0,
+        // graded scenes: the size 2^L d of each automaton
+        // (ParaView's glyph scale)
+        c_size = graded ? fields.add("size", 1) : 0,
+        c_v = fields.add("velocity", 3), c_u = fields.add("displacement", 3),
+        c_w  = fields.add("angular_velocity", 3),
+        c_s  = with_stress ? fields.add("stress", 9) : 0,
+        c_p  = with_stress ? fields.add("pressure", 1) : 0,
+        c_vm = with_stress ? fields.add("von_mises", 1) : 0;
+
+      std::vector<dealii::DataOutBase::Patch<0, 3>> patches(selected.size());
+      for (unsigned int n = 0; n < selected.size(); ++n)
         {
-          o << "<DataArray type=\"Float64\" Name=\"stress\" "
-               "NumberOfComponents=\"9\" format=\"ascii\">\n";
-          for (const unsigned int k : selected)
+          const unsigned int k     = selected[n];
+          auto              &patch = patches[n];
+          patch.vertices[0]        = x[k];
+          patch.patch_index        = n;
+          patch.data.reinit(fields.names.size(), 1);
+          auto set = [&](const unsigned int c, const double value) {
+            patch.data(c, 0) = static_cast<float>(value);
+          };
+          set(c_id, id[k]);
+          set(c_rank, rank);
+          set(c_mat, mat[k]);
+          set(c_body, body_index(k));
+          set(c_nb, nbonded[k]);
+          set(c_nu, nfree[k]);
+          set(c_ep, eps_p[k]);
+          if (with_elastic)
+            set(c_el, elastic(k));
+          if (graded)
+            set(c_size, automaton_size(k));
+          for (unsigned int e = 0; e < 3; ++e)
             {
-              const Sym3 &s = stress[k];
-              o << s[0] << " " << s[5] << " " << s[4] << " " << s[5] << " "
-                << s[1] << " " << s[3] << " " << s[4] << " " << s[3] << " "
-                << s[2] << "\n";
+              set(c_v + e, v[k][e]);
+              set(c_u + e, u[k][e]);
+              set(c_w + e, w[k][e]);
             }
-          o << "</DataArray>\n";
-          scalar("pressure", [&](unsigned k) {
-            return -(stress[k][0] + stress[k][1] + stress[k][2]) / 3;
-          });
-          scalar("von_mises", [&](unsigned k) { return von_mises(stress[k]); });
+          if (with_stress)
+            {
+              // Sym3 (xx, yy, zz, yz, xz, xy) as a full 3x3 tensor
+              const Sym3        &t    = stress[k];
+              const unsigned int m[9] = {0, 5, 4, 5, 1, 3, 4, 3, 2};
+              for (unsigned int e = 0; e < 9; ++e)
+                set(c_s + e, t[m[e]]);
+              set(c_p, -(t[0] + t[1] + t[2]) / 3);
+              set(c_vm, von_mises(t));
+            }
         }
-      o << "</PointData>\n<Points>\n<DataArray type=\"Float64\" "
-           "NumberOfComponents=\"3\" format=\"ascii\">\n";
-      for (const unsigned int k : selected)
-        o << x[k][0] << " " << x[k][1] << " " << x[k][2] << "\n";
-      write_cells_and_close(o, selected.size(), 1, 1);
-      std::ostringstream pv;
-      pv << "<PPointData Scalars=\"material\">\n";
-      for (const char *s : {"id",
-                            "rank",
-                            "material",
-                            "body",
-                            "bonded_neighbours",
-                            "unbonded_contacts",
-                            "plastic_strain"})
-        pv << "<PDataArray type=\"Float64\" Name=\"" << s << "\"/>\n";
-      if (with_elastic)
-        pv << "<PDataArray type=\"Float64\" Name=\"elastic\"/>\n";
-      if (graded)
-        pv << "<PDataArray type=\"Float64\" Name=\"size\"/>\n";
-      for (const char *s : {"velocity", "displacement", "angular_velocity"})
-        pv << "<PDataArray type=\"Float64\" Name=\"" << s
-           << "\" NumberOfComponents=\"3\"/>\n";
-      if (with_stress)
-        pv << "<PDataArray type=\"Float64\" Name=\"stress\" "
-              "NumberOfComponents=\"9\"/>\n<PDataArray type=\"Float64\" "
-              "Name=\"pressure\"/>\n<PDataArray type=\"Float64\" "
-              "Name=\"von_mises\"/>\n";
-      pv << "</PPointData>\n";
-      write_piece_and_index(directory, name, rank, n_ranks, o.str(), pv.str());
+      write_piece_and_index(directory, name, rank, n_ranks, patches, fields);
       return name + ".pvtu";
     }
 
@@ -216,35 +202,25 @@ namespace tribodyn
             continue;
           selected.push_back(p);
         }
-      std::ostringstream o;
-      o << std::setprecision(8);
-      o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
-           "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
-        << "<Piece NumberOfPoints=\"" << 2 * selected.size()
-        << "\" NumberOfCells=\"" << selected.size() << "\">\n";
-      o << "<CellData Scalars=\"sigma\">\n<DataArray type=\"Float64\" "
-           "Name=\"sigma\" format=\"ascii\">\n";
-      for (const unsigned int p : selected)
-        o << 0.5 * (sig_i[p] + sig_j[p]) << "\n";
-      o << "</DataArray>\n</CellData>\n<Points>\n<DataArray type=\"Float64\" "
-           "NumberOfComponents=\"3\" format=\"ascii\">\n";
-      for (const unsigned int p : selected)
+      // One line per pair, sigma (mean of both ends') at both vertices.
+      Fields             fields;
+      const unsigned int c_sigma = fields.add("sigma", 1);
+      std::vector<dealii::DataOutBase::Patch<1, 3>> patches(selected.size());
+      for (unsigned int n = 0; n < selected.size(); ++n)
         {
-          const Point3 xi = cells.wrap(x[pi[p]]);
-          const Vec3   dn = pair_vector(p);
-          o << xi[0] << " " << xi[1] << " " << xi[2] << "\n"
-            << xi[0] + dn[0] << " " << xi[1] + dn[1] << " " << xi[2] + dn[2]
-            << "\n";
+          const unsigned int p     = selected[n];
+          auto              &patch = patches[n];
+          const Point3       xi    = cells.wrap(x[pi[p]]);
+          const Vec3         dn    = pair_vector(p);
+          patch.vertices[0]        = xi;
+          patch.vertices[1]
+            = Point3(xi[0] + dn[0], xi[1] + dn[1], xi[2] + dn[2]);
+          patch.patch_index = n;
+          patch.data.reinit(fields.names.size(), 2);
+          patch.data(c_sigma, 0) = patch.data(c_sigma, 1)
+            = static_cast<float>(0.5 * (sig_i[p] + sig_j[p]));
         }
-      write_cells_and_close(o, selected.size(), 2, 3);
-      write_piece_and_index(directory,
-                            name,
-                            rank,
-                            n_ranks,
-                            o.str(),
-                            "<PCellData Scalars=\"sigma\">\n<PDataArray "
-                            "type=\"Float64\" Name=\"sigma\"/>\n"
-                            "</PCellData>\n");
+      write_piece_and_index(directory, name, rank, n_ranks, patches, fields);
       return name + ".pvtu";
     }
   } // namespace mca

@@ -24,6 +24,9 @@ from check_tools import finish, report
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from series_compare import largest_relative_difference  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "scripts"))
+import plot_tools  # noqa: E402  (read_vtu)
 
 build, prefix = sys.argv[1], sys.argv[2]
 interface = float(sys.argv[3]) if len(sys.argv) > 4 else None
@@ -45,15 +48,9 @@ def ranks_near_interface(folder, z0):
     last = sorted({re.sub(r"\.\d+\.vtu$", "", f) for f in files})[-1]
     owners = set()
     for f in glob.glob(last + ".*.vtu"):
-        text = open(f).read()
-        rank_block = re.search(r'Name="rank" format="ascii">\n(.*?)</DataArray>', text, re.S)
-        points = re.search(r"<Points>\n<DataArray[^>]*>\n(.*?)</DataArray>", text, re.S)
-        if not rank_block or not points:
-            continue
-        rk = [float(v) for v in rank_block.group(1).split()]
-        xyz = [float(v) for v in points.group(1).split()]
-        for k, r in enumerate(rk):
-            if abs(xyz[3 * k + 2] - z0) < band:
+        a = plot_tools.read_vtu(f)
+        for r, xyz in zip(a.get("rank", []), a.get("points", [])):
+            if abs(xyz[2] - z0) < band:
                 owners.add(int(r))
     return owners
 
