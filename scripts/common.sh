@@ -48,6 +48,8 @@ tribodyn_install_packages() {
     --no-install-recommends "${missing[@]}"
 }
 
+# tribodyn_build [TARGET...]: configure, then build the TARGETs (default:
+# everything, the test programs included).
 tribodyn_build() {
   cmake -S "$TRIBODYN_ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" \
     ${TRIBODYN_CMAKE_ARGS:-} > "$BUILD_DIR.configure.log" 2>&1 || {
@@ -55,11 +57,16 @@ tribodyn_build() {
       echo "tribodyn: error: CMake configuration failed (log above)." >&2
       exit 1
     }
-  cmake --build "$BUILD_DIR" -j "$JOBS"
+  local targets=()
+  for target in "$@"; do
+    targets+=(--target "$target")
+  done
+  cmake --build "$BUILD_DIR" -j "$JOBS" "${targets[@]}"
 }
 
+# tribodyn_setup [TARGET...]: packages, then tribodyn_build TARGET...
 tribodyn_setup() {
   tribodyn_install_packages
   mkdir -p "$BUILD_DIR"
-  tribodyn_build
+  tribodyn_build "$@"
 }
