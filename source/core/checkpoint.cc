@@ -107,7 +107,7 @@ namespace tribodyn
 
   namespace
   {
-    // Format 2 frames each rank's file (frame() below); format 1 files
+    // Format 2 frames each rank's file (frame_of() below); format 1 files
     // (no frame) are still read.
     constexpr const char *format_line = "tribodyn checkpoint 2";
     constexpr const char *format_1    = "tribodyn checkpoint 1";
@@ -132,18 +132,20 @@ namespace tribodyn
     constexpr std::size_t frame_header = 24;
 
     std::string
-    frame(const std::string &blob)
+    frame_of(const std::string &blob)
     {
-      std::string         out("TDYNBLOB");
+      std::string         head("TDYNBLOB");
       const std::uint64_t words[2]
         = {blob.size(), fnv1a(blob.data(), blob.size())};
-      out.append(reinterpret_cast<const char *>(words), sizeof(words));
-      return out + blob;
+      head.append(reinterpret_cast<const char *>(words), sizeof(words));
+      return head;
     }
 
-    /// The blob of a framed file, or false if the frame does not hold.
+    /// Check the frame of a file's content @p file and remove it, leaving
+    /// the blob (in place: no copy of a large checkpoint); false if the
+    /// frame does not hold.
     bool
-    unframe(const std::string &file, std::string &blob)
+    unframe(std::string &file)
     {
       if (file.size() < frame_header || file.compare(0, 8, "TDYNBLOB") != 0)
         return false;
@@ -152,15 +154,17 @@ namespace tribodyn
       if (words[0] != file.size() - frame_header
           || words[1] != fnv1a(file.data() + frame_header, words[0]))
         return false;
-      blob = file.substr(frame_header);
+      file.erase(0, frame_header);
       return true;
     }
 
-    /// Write @p content to @p path through a temporary file that is
-    /// flushed to disk (fsync) before the rename: after the rename the
-    /// file is complete even if the machine stops.
+    /// Write @p head, then @p content, to @p path through a temporary file
+    /// that is flushed to disk (fsync) before the rename: after the rename
+    /// the file is complete even if the machine stops.
     void
-    write_durably(const std::string &path, const std::string &content)
+    write_durably(const std::string &path,
+                  const std::string &content,
+                  const std::string &head = std::string())
     {
       const std::string temporary = path + ".tmp";
       const int         fd
@@ -168,22 +172,25 @@ namespace tribodyn
       if (fd < 0)
         throw RunError("Cannot write the checkpoint file '" + temporary
                        + "': " + std::strerror(errno) + ".");
-      std::size_t done = 0;
-      while (done < content.size())
+      for (const std::string *part : {&head, &content})
         {
-          const ssize_t n
-            = ::write(fd, content.data() + done, content.size() - done);
-          if (n < 0 && errno == EINTR)
-            continue;
-          if (n <= 0)
+          std::size_t done = 0;
+          while (done < part->size())
             {
-              const std::string reason = std::strerror(errno);
-              ::close(fd);
-              std::remove(temporary.c_str());
-              throw RunError("Writing the checkpoint file '" + temporary
-                             + "' failed (" + reason + "; disk full?).");
+              const ssize_t n
+                = ::write(fd, part->data() + done, part->size() - done);
+              if (n < 0 && errno == EINTR)
+                continue;
+              if (n <= 0)
+                {
+                  const std::string reason = std::strerror(errno);
+                  ::close(fd);
+                  std::remove(temporary.c_str());
+                  throw RunError("Writing the checkpoint file '" + temporary
+                                 + "' failed (" + reason + "; disk full?).");
+                }
+              done += static_cast<std::size_t>(n);
             }
-          done += static_cast<std::size_t>(n);
         }
       const bool synced = ::fsync(fd) == 0;
       ::close(fd);
@@ -280,7 +287,7 @@ namespace tribodyn
     fail_collectively(comm, error);
     try
       {
-        write_durably(rank_file(slot, rank), frame(blob));
+        write_durably(rank_file(slot, rank), blob, frame_of(blob));
       }
     catch (const std::exception &e)
       {
@@ -394,10 +401,7 @@ namespace tribodyn
                        + "' is incomplete: a rank's file (e.g. '" + file
                        + "') cannot be read. Start afresh with "
                          "'Checkpoint/Resume = false'.");
-    std::string content;
-    const bool  intact = !framed || unframe(blob, content);
-    if (framed)
-      blob.swap(content);
+    const bool         intact = !framed || unframe(blob);
     const unsigned int first_damaged
       = dealii::Utilities::MPI::min(intact ? n_ranks : rank, comm);
     if (first_damaged < n_ranks)
