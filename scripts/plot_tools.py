@@ -169,8 +169,7 @@ def read_vtu(path):
                     raw += zlib.decompress(data[offset:offset + b])
                     offset += b
             else:
-                raw = base64.b64decode(body)
-                raw = raw[struct.unpack(word, raw[:size])[0] and size:]
+                raw = base64.b64decode(body)[size:]  # after its byte count
             values = list(struct.unpack("<%d%s" % (len(raw) // struct.calcsize(code),
                                                    code), raw))
         else:

@@ -117,22 +117,23 @@ namespace tribodyn
       // The fields (each once: name, components, value of automaton k).
       const bool with_elastic = !prm.interaction.elastic_regions.empty();
       Fields     fields;
-      const unsigned int c_id
-        = fields.add("id", 1),
-        c_rank = fields.add("rank", 1), c_mat = fields.add("material", 1),
-        c_body = fields.add("body", 1),
-        c_nb   = fields.add("bonded_neighbours", 1),
-        c_nu   = fields.add("unbonded_contacts", 1),
-        c_ep   = fields.add("plastic_strain", 1),
-        c_el   = with_elastic ? fields.add("elastic", 1) : 0,
-        // graded scenes: the size 2^L d of each automaton
-        // (ParaView's glyph scale)
-        c_size = graded ? fields.add("size", 1) : 0,
-        c_v = fields.add("velocity", 3), c_u = fields.add("displacement", 3),
-        c_w  = fields.add("angular_velocity", 3),
-        c_s  = with_stress ? fields.add("stress", 9) : 0,
-        c_p  = with_stress ? fields.add("pressure", 1) : 0,
-        c_vm = with_stress ? fields.add("von_mises", 1) : 0;
+      const unsigned int c_id   = fields.add("id", 1);
+      const unsigned int c_rank = fields.add("rank", 1);
+      const unsigned int c_mat  = fields.add("material", 1);
+      const unsigned int c_body = fields.add("body", 1);
+      const unsigned int c_nb   = fields.add("bonded_neighbours", 1);
+      const unsigned int c_nu   = fields.add("unbonded_contacts", 1);
+      const unsigned int c_ep   = fields.add("plastic_strain", 1);
+      const unsigned int c_el   = with_elastic ? fields.add("elastic", 1) : 0;
+      // graded scenes: the size 2^L d of each automaton (ParaView's glyph
+      // scale)
+      const unsigned int c_size = graded ? fields.add("size", 1) : 0;
+      const unsigned int c_v    = fields.add("velocity", 3);
+      const unsigned int c_u    = fields.add("displacement", 3);
+      const unsigned int c_w    = fields.add("angular_velocity", 3);
+      const unsigned int c_s    = with_stress ? fields.add("stress", 9) : 0;
+      const unsigned int c_p    = with_stress ? fields.add("pressure", 1) : 0;
+      const unsigned int c_vm   = with_stress ? fields.add("von_mises", 1) : 0;
 
       std::vector<dealii::DataOutBase::Patch<0, 3>> patches(selected.size());
       for (unsigned int n = 0; n < selected.size(); ++n)

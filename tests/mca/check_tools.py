@@ -5,6 +5,10 @@ which exits with 1 when any check failed."""
 import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "scripts"))
+import plot_tools  # noqa: E402  (read_parameters, read_vtu)
+
 _failed = False
 
 
@@ -34,27 +38,14 @@ def finish():
 
 
 def parameter(out, path):
-    """Value of parameter PATH ('Materials/Steel/Density', or a bare name
-    when it is unique) in the parameters.prm that the run wrote to OUT: the
-    input as the run read it, defaults included. Numbers come back as float,
-    anything else as the string."""
-    want = path.split("/")
-    stack = []
-    found = []
-    with open(os.path.join(out, "parameters.prm")) as f:
-        for line in f:
-            words = line.split("#")[0].split()
-            if not words:
-                continue
-            if words[0] == "subsection":
-                stack.append(" ".join(words[1:]))
-            elif words[0] == "end":
-                stack.pop()
-            elif words[0] == "set":
-                name, value = " ".join(words[1:]).split("=", 1)
-                full = stack + [name.strip()]
-                if full[-len(want):] == want:
-                    found.append(value.strip())
+    """Value of parameter PATH ('Materials/Steel/Density', or its last
+    components when they name one parameter) in the parameters.prm that
+    the run wrote to OUT: the input as the run read it, defaults included
+    (plot_tools.read_parameters). Numbers come back as float, anything else
+    as the string; KeyError unless exactly one parameter matches."""
+    want = "/" + path
+    found = [v for k, v in plot_tools.read_parameters(out).items()
+             if ("/" + k).endswith(want)]
     if len(found) != 1:
         raise KeyError("%s: %d matches in %s/parameters.prm" % (path, len(found), out))
     try:

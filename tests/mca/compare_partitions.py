@@ -20,13 +20,10 @@ import os
 import re
 import sys
 
-from check_tools import finish, report
+from check_tools import finish, plot_tools, report  # plot_tools: read_vtu
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from series_compare import largest_relative_difference  # noqa: E402
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "scripts"))
-import plot_tools  # noqa: E402  (read_vtu)
 
 build, prefix = sys.argv[1], sys.argv[2]
 interface = float(sys.argv[3]) if len(sys.argv) > 4 else None
