@@ -1,16 +1,27 @@
 // Checkpoints of the contact solver: the state of the time loop as a Boost
-// binary archive (one per rank; restored on the same number of ranks, whose
-// p4est partition of the pin is the same), so that a resumed run continues
-// bit for bit (doc/user_guide.md, "Checkpoints").
+// binary archive per rank, keyed by place, not by rank: each owned degree of
+// freedom is saved with its node's coordinates and each contact node with
+// its x, so that a checkpoint written on N ranks resumes on any number M
+// (doc/user_guide.md, "Checkpoints"). On resume every rank reads its share
+// of the writers' files, sends each record to the ranks whose cells hold
+// its node (route_records_by_point()) and keeps those of the dofs it owns.
+// The values are copied exactly: the resumed run continues bit for bit on
+// the same number of ranks, and to the round-off of the cross-rank sums on
+// another (ctests stability_contact_restart_*).
+#include <algorithm>
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 #include <boost/serialization/binary_object.hpp>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
+#include <cmath>
+#include <deal.II/grid/filtered_iterator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <sstream>
 #include <tribodyn/contact/contact_solver.h>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/redistribution.h>
 #include <type_traits>
 
 namespace tribodyn
@@ -19,19 +30,43 @@ namespace tribodyn
   {
     namespace
     {
-      constexpr unsigned int state_version = 1;
+      // 2: records keyed by place (any number of ranks)
+      constexpr unsigned int state_version = 2;
 
       static_assert(std::is_trivially_copyable<Sample>::value,
                     "Sample is saved as raw bytes");
 
-      /// The owned entries of @p v.
-      template <typename VectorType>
-      std::vector<double>
-      owned_values(const VectorType &v, const unsigned int n_owned)
+      // A dof record: its node's x, y, the component, then u, u_prev, p,
+      // w, a. A contact-node record: x, 0, then the node's state.
+      constexpr unsigned int dof_stride = 8, node_stride = 7;
+
+      std::string
+      unreadable(const std::exception &e)
       {
-        return std::vector<double>(v.begin(), v.begin() + n_owned);
+        return std::string("The checkpoint cannot be read (") + e.what()
+               + "): it is damaged or from another version of tribodyn. "
+                 "Start afresh with 'Checkpoint/Resume = false'.";
       }
     } // namespace
+
+
+    std::vector<std::array<double, 2>>
+    ContactSolver::owned_dof_points() const
+    {
+      const auto                        &partitioner = *u.get_partitioner();
+      std::vector<std::array<double, 2>> points(mass.size());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int c = 0; c < 2; ++c)
+              {
+                const auto g = cell->vertex_dof_index(v, c);
+                if (locally_owned.is_element(g))
+                  points[partitioner.global_to_local(g)]
+                    = {{cell->vertex(v)[0], cell->vertex(v)[1]}};
+              }
+      return points;
+    }
 
 
     std::string
@@ -41,101 +76,216 @@ namespace tribodyn
       std::ostringstream out(std::ios::binary);
       {
         boost::archive::binary_oarchive ar(out);
-        ar << state_version << n_owned << dt << step_count;
-        // Solver state: the vectors the next step reads (u_n, u_{n-1},
-        // p_n, w = u_n + beta p_n, a_{n-1} for the samples).
-        for (const VectorType *v : {&u, &u_prev, &p, &w, &a})
-          {
-            const std::vector<double> values = owned_values(*v, n_owned);
-            ar << values;
-          }
+        // The run's state, the same on every rank: what the writer of rank
+        // 0 saved is what every rank of the resumed run takes.
+        std::ostringstream global_out(std::ios::binary);
+        {
+          boost::archive::binary_oarchive g(global_out);
+          g << dt << step_count << energy_initial << scale_energy;
+          // The samples so far (the summary's averages and spectra).
+          const std::size_t n_samples = history.size();
+          g << n_samples;
+          if (n_samples > 0)
+            g << boost::serialization::make_binary_object(
+              const_cast<Sample *>(history.data()), n_samples * sizeof(Sample));
+          // Loop counters and outputs already written.
+          g << loop.sample_count << loop.field_count << loop.next_field
+            << loop.csv_rows << loop.face_rows << loop.pvd;
+        }
+        const std::string global = global_out.str();
+        ar << state_version << global;
+        // This rank's partial sums (the samples add them over the ranks).
+        ar << pgs_iterations_max << work_external << work_internal
+           << work_contact << dissipation_friction;
+        // The vectors the next step reads (u_n, u_{n-1}, p_n,
+        // w = u_n + beta p_n, a_{n-1} for the samples), by node.
+        const auto          points = owned_dof_points();
+        std::vector<double> dofs;
+        dofs.reserve(std::size_t(dof_stride) * n_owned);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          dofs.insert(dofs.end(),
+                      {points[i][0],
+                       points[i][1],
+                       double(component[i]),
+                       u.local_element(i),
+                       u_prev.local_element(i),
+                       p.local_element(i),
+                       w.local_element(i),
+                       a.local_element(i)});
+        ar << dofs;
         // Contact nodes: multipliers, friction state, status, slip rate.
         std::vector<double> nodes;
         for (const ContactNode &node : contact_nodes)
           nodes.insert(nodes.end(),
-                       {node.lambda_n,
+                       {node.x,
+                        0.,
+                        node.lambda_n,
                         node.lambda_t,
                         node.tau,
                         double(node.status),
                         node.slip_rate});
         ar << nodes;
-        ar << pgs_iterations_max << work_external << work_internal
-           << work_contact << dissipation_friction << energy_initial
-           << scale_energy;
-        // The samples so far (the summary's averages and spectra).
-        const std::size_t n_samples = history.size();
-        ar << n_samples;
-        if (n_samples > 0)
-          ar << boost::serialization::make_binary_object(
-            const_cast<Sample *>(history.data()), n_samples * sizeof(Sample));
-        // Loop counters and outputs already written.
-        ar << loop.sample_count << loop.field_count << loop.next_field
-           << loop.csv_rows << loop.face_rows << loop.pvd;
       }
       return out.str();
     }
 
 
     void
-    ContactSolver::load_state(const std::string &blob, LoopState &loop)
+    ContactSolver::load_state(const std::vector<std::string> &blobs,
+                              LoopState                      &loop)
     {
-      const unsigned int n_owned = mass.size();
-      std::istringstream in(blob, std::ios::binary);
+      // This rank's share of the writers' records, and their sums.
+      std::string         global;
+      std::vector<double> dofs, nodes;
+      work_external = work_internal = work_contact = dissipation_friction = 0;
+      pgs_iterations_max                                                  = 0;
+      std::string error;
+      for (const std::string &blob : blobs)
+        try
+          {
+            std::istringstream              in(blob, std::ios::binary);
+            boost::archive::binary_iarchive ar(in);
+            unsigned int                    version = 0;
+            ar >> version;
+            if (version != state_version)
+              throw InputError(
+                "The checkpoint was written by another version of tribodyn "
+                "(state format "
+                + std::to_string(version) + ", this one "
+                + std::to_string(state_version)
+                + "). Start afresh with 'Checkpoint/Resume = false'.");
+            std::string         g;
+            unsigned int        pgs = 0;
+            double              works[4];
+            std::vector<double> d, n;
+            ar >> g >> pgs >> works[0] >> works[1] >> works[2] >> works[3];
+            ar >> d >> n;
+            if (global.empty())
+              global = std::move(g);
+            pgs_iterations_max = std::max(pgs_iterations_max, pgs);
+            work_external += works[0];
+            work_internal += works[1];
+            work_contact += works[2];
+            dissipation_friction += works[3];
+            dofs.insert(dofs.end(), d.begin(), d.end());
+            nodes.insert(nodes.end(), n.begin(), n.end());
+          }
+        catch (const InputError &e)
+          {
+            error = e.what();
+          }
+        catch (const std::exception &e)
+          {
+            error = unreadable(e);
+          }
+      refuse_collectively(comm, !error.empty(), error);
+
+      // The run's state from the writer of rank 0 (read by rank 0).
+      global = dealii::Utilities::MPI::broadcast(comm, global, 0);
       try
         {
-          boost::archive::binary_iarchive ar(in);
-          unsigned int                    version = 0, n_saved = 0;
+          std::istringstream              in(global, std::ios::binary);
+          boost::archive::binary_iarchive g(in);
           double                          saved_dt = 0;
-          ar >> version >> n_saved >> saved_dt >> step_count;
-          if (version != state_version || n_saved != n_owned || saved_dt != dt)
-            throw InputError(
-              "The checkpoint does not fit this run: it holds "
-              + std::to_string(n_saved) + " degrees of freedom on this rank "
-              + "and a time step of " + format_number(saved_dt)
-              + " s, this run has " + std::to_string(n_owned) + " and "
-              + format_number(dt)
-              + " s. Resume with the parameters and number of MPI ranks of "
-                "the checkpointed run.");
-          for (VectorType *v : {&u, &u_prev, &p, &w, &a})
-            {
-              std::vector<double> values;
-              ar >> values;
-              AssertDimension(values.size(), n_owned);
-              std::copy(values.begin(), values.end(), v->begin());
-            }
-          std::vector<double> nodes;
-          ar >> nodes;
-          AssertDimension(nodes.size(), 5 * contact_nodes.size());
-          for (std::size_t k = 0; k < contact_nodes.size(); ++k)
-            {
-              ContactNode &node = contact_nodes[k];
-              node.lambda_n     = nodes[5 * k];
-              node.lambda_t     = nodes[5 * k + 1];
-              node.tau          = nodes[5 * k + 2];
-              node.status = static_cast<ContactStatus>(int(nodes[5 * k + 3]));
-              node.slip_rate = nodes[5 * k + 4];
-            }
-          ar >> pgs_iterations_max >> work_external >> work_internal
-            >> work_contact >> dissipation_friction >> energy_initial
-            >> scale_energy;
+          g >> saved_dt >> step_count >> energy_initial >> scale_energy;
+          if (saved_dt != dt)
+            throw InputError("The checkpoint does not fit this run: its time "
+                             "step is "
+                             + format_number(saved_dt) + " s, this run's "
+                             + format_number(dt)
+                             + " s. Resume with the parameters of the "
+                               "checkpointed run.");
           std::size_t n_samples = 0;
-          ar >> n_samples;
+          g >> n_samples;
           history.resize(n_samples);
           if (n_samples > 0)
-            ar >> boost::serialization::make_binary_object(history.data(),
-                                                           n_samples
-                                                             * sizeof(Sample));
-          ar >> loop.sample_count >> loop.field_count >> loop.next_field
+            g >> boost::serialization::make_binary_object(history.data(),
+                                                          n_samples
+                                                            * sizeof(Sample));
+          g >> loop.sample_count >> loop.field_count >> loop.next_field
             >> loop.csv_rows >> loop.face_rows >> loop.pvd;
         }
-      catch (const boost::archive::archive_exception &e)
+      catch (const InputError &e)
         {
-          throw InputError(std::string("The checkpoint cannot be read (")
-                           + e.what()
-                           + "): it is damaged or from another version of "
-                             "tribodyn. Start afresh with 'Checkpoint/Resume "
-                             "= false'.");
+          error = e.what();
         }
+      catch (const std::exception &e)
+        {
+          error = unreadable(e);
+        }
+      refuse_collectively(comm, !error.empty(), error);
+
+      // Each record to the ranks whose cells hold its node.
+      const auto boxes = dealii::GridTools::compute_mesh_predicate_bounding_box(
+        triangulation,
+        std::function<bool(
+          const typename dealii::Triangulation<2>::active_cell_iterator &)>(
+          [](const auto &cell) { return cell->is_locally_owned(); }),
+        0,
+        true,
+        8);
+      dofs  = route_records_by_point<2>(dofs, dof_stride, boxes, comm);
+      nodes = route_records_by_point<2>(nodes, node_stride, boxes, comm);
+
+      // Keep those of the owned dofs and contact nodes, found by place (the
+      // coordinates to a millionth of a cell: the mesh is made anew from
+      // the same parameters).
+      const double scale = 1e-6 * std::min(cell_hx, cell_hy);
+      using Key          = std::array<long long, 3>;
+      auto key           = [scale](const double x, const double y, int c) {
+        return Key{{std::llround(x / scale), std::llround(y / scale), c}};
+      };
+      const unsigned int                        n_owned = mass.size();
+      const auto                                points  = owned_dof_points();
+      std::vector<std::pair<Key, unsigned int>> owned(n_owned);
+      for (unsigned int i = 0; i < n_owned; ++i)
+        owned[i] = {key(points[i][0], points[i][1], component[i]), i};
+      std::sort(owned.begin(), owned.end());
+      std::vector<unsigned char> filled(n_owned, 0);
+      auto                       find = [](const auto &list, const Key &k) {
+        const auto it
+          = std::lower_bound(list.begin(), list.end(), std::make_pair(k, 0u));
+        return it != list.end() && it->first == k ? int(it->second) : -1;
+      };
+      for (std::size_t o = 0; o + dof_stride <= dofs.size(); o += dof_stride)
+        {
+          const double *r = dofs.data() + o;
+          const int     i = find(owned, key(r[0], r[1], int(r[2])));
+          if (i < 0)
+            continue;
+          VectorType *const targets[5] = {&u, &u_prev, &p, &w, &a};
+          for (unsigned int v = 0; v < 5; ++v)
+            targets[v]->local_element(i) = r[3 + v];
+          filled[i] = 1;
+        }
+      std::vector<std::pair<Key, unsigned int>> bottom;
+      for (unsigned int k = 0; k < contact_nodes.size(); ++k)
+        bottom.emplace_back(key(contact_nodes[k].x, 0, 0), k);
+      std::sort(bottom.begin(), bottom.end());
+      unsigned int n_nodes_filled = 0;
+      for (std::size_t o = 0; o + node_stride <= nodes.size(); o += node_stride)
+        {
+          const double *r = nodes.data() + o;
+          const int     k = find(bottom, key(r[0], 0, 0));
+          if (k < 0)
+            continue;
+          ContactNode &node = contact_nodes[k];
+          node.lambda_n     = r[2];
+          node.lambda_t     = r[3];
+          node.tau          = r[4];
+          node.status       = static_cast<ContactStatus>(int(r[5]));
+          node.slip_rate    = r[6];
+          ++n_nodes_filled;
+        }
+      const unsigned int n_filled = std::count(filled.begin(), filled.end(), 1);
+      refuse_collectively(
+        comm,
+        n_filled != n_owned || n_nodes_filled != contact_nodes.size(),
+        "The checkpoint does not fit this run: it holds no state for "
+          + std::to_string(n_owned - n_filled) + " degrees of freedom and "
+          + std::to_string(contact_nodes.size() - n_nodes_filled)
+          + " contact nodes of this rank's part of the pin (another mesh?). "
+            "Resume with the parameters of the checkpointed run.");
       r = 0;
     }
   } // namespace contact

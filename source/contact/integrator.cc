@@ -230,9 +230,17 @@ namespace tribodyn
         {
           CheckpointInfo info;
           load_state(store->read(checkpoint_parameters, info), loop);
+          const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
           if (root)
-            std::cout << "Resuming from the checkpoint at t = " << info.time
-                      << " s (step " << info.step << ")" << std::endl;
+            {
+              std::cout << "Resuming from the checkpoint at t = " << info.time
+                        << " s (step " << info.step << ")";
+              if (info.n_ranks != n_ranks)
+                std::cout << ", written by " << info.n_ranks
+                          << " MPI rank(s): state redistributed over "
+                          << n_ranks;
+              std::cout << std::endl;
+            }
         }
       else
         set_initial_state();

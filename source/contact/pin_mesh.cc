@@ -258,17 +258,12 @@ namespace tribodyn
     ContactSolver::setup_element_data()
     {
       // All cells are identical axis-parallel rectangles: take the shape
-      // gradients of the first one (every rank computes the same numbers
-      // from its first cell, or from the first coarse cell if it owns none).
-      typename DoFHandler<2>::active_cell_iterator first = dof_handler.end();
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            first = cell;
-            break;
-          }
-      if (first == dof_handler.end())
-        first = dof_handler.begin_active();
+      // gradients of the first active cell of the mesh, the same cell on
+      // every rank (owned or not: the coarse mesh is known everywhere), so
+      // that the element data and the time step have the same bits on any
+      // number of ranks (a checkpoint restarts on another number).
+      const typename Triangulation<2>::active_cell_iterator first
+        = triangulation.begin_active();
       cell_hx = first->vertex(1)[0] - first->vertex(0)[0];
       cell_hy = first->vertex(2)[1] - first->vertex(0)[1];
 

@@ -41,9 +41,10 @@ namespace tribodyn
       dealii::Patterns::Bool(),
       "true: continue from the latest checkpoint in 'Output directory' "
       "(same parameters except the end time, which may be larger, and this "
-      "subsection; same number of MPI ranks). The CSV series are continued "
-      "without duplicate or missing rows and the run reaches the same "
-      "result as an uninterrupted one. false: start afresh (older "
+      "subsection; any number of MPI ranks: the state is redistributed "
+      "when the count changed). The CSV series are continued without "
+      "duplicate or missing rows and the run reaches the same result as an "
+      "uninterrupted one. false: start afresh (older "
       "checkpoints of the directory are forgotten).");
     prm.leave_subsection();
   }
@@ -318,7 +319,7 @@ namespace tribodyn
   }
 
 
-  std::string
+  std::vector<std::string>
   CheckpointStore::read(const std::vector<std::string> &parameters,
                         CheckpointInfo                 &info)
   {
@@ -363,14 +364,11 @@ namespace tribodyn
                        + info.problem + "' run, not to '" + problem
                        + "': set 'Checkpoint/Resume = false' or choose "
                          "another 'Output directory'.");
-    if (info.n_ranks != n_ranks)
-      throw InputError("The checkpoint in '" + path + "' was written by "
-                       + std::to_string(info.n_ranks)
-                       + " MPI rank(s); this run has " + std::to_string(n_ranks)
-                       + ". Resume with 'mpirun -np "
-                       + std::to_string(info.n_ranks)
-                       + "' (results are continued bit for "
-                         "bit on the same number of ranks only).");
+    if (info.n_ranks == 0)
+      throw InputError("The checkpoint in '" + path
+                       + "' does not say how many MPI ranks wrote it (file "
+                         "'latest' damaged). Start afresh with "
+                         "'Checkpoint/Resume = false'.");
     if (stored != parameters)
       {
         const std::set<std::string> a(stored.begin(), stored.end()),
@@ -393,25 +391,36 @@ namespace tribodyn
             "afresh with 'Checkpoint/Resume = false'.");
       }
 
-    const std::string file = rank_file(info.slot, rank);
-    std::string       blob = read_whole_file(file, ok);
-    const bool all_ok = dealii::Utilities::MPI::min(ok ? 1u : 0u, comm) == 1u;
-    if (!all_ok)
-      throw InputError("The checkpoint in '" + path
-                       + "' is incomplete: a rank's file (e.g. '" + file
-                       + "') cannot be read. Start afresh with "
-                         "'Checkpoint/Resume = false'.");
-    const bool         intact = !framed || unframe(blob);
+    // This rank's share of the writers' files: r, r + M, ...
+    std::vector<std::string> blobs;
+    std::string              unreadable, damaged;
+    for (unsigned int writer = rank; writer < info.n_ranks; writer += n_ranks)
+      {
+        const std::string file = rank_file(info.slot, writer);
+        blobs.push_back(read_whole_file(file, ok));
+        if (!ok && unreadable.empty())
+          unreadable = file;
+        else if (ok && framed && damaged.empty() && !unframe(blobs.back()))
+          damaged = file;
+      }
+    const unsigned int first_unreadable
+      = dealii::Utilities::MPI::min(unreadable.empty() ? n_ranks : rank, comm);
+    if (first_unreadable < n_ranks)
+      throw InputError(
+        "The checkpoint in '" + path + "' is incomplete: a rank's file (e.g. '"
+        + dealii::Utilities::MPI::broadcast(comm, unreadable, first_unreadable)
+        + "') cannot be read. Start afresh with 'Checkpoint/Resume = false'.");
+    const bool         intact = damaged.empty();
     const unsigned int first_damaged
       = dealii::Utilities::MPI::min(intact ? n_ranks : rank, comm);
     if (first_damaged < n_ranks)
-      throw InputError("The checkpoint in '" + path + "' is damaged: '"
-                       + rank_file(info.slot, first_damaged)
-                       + "' does not hold what was written (its size or "
-                         "checksum differ). Start afresh with "
-                         "'Checkpoint/Resume = false'.");
+      throw InputError(
+        "The checkpoint in '" + path + "' is damaged: '"
+        + dealii::Utilities::MPI::broadcast(comm, damaged, first_damaged)
+        + "' does not hold what was written (its size or checksum differ). "
+          "Start afresh with 'Checkpoint/Resume = false'.");
     next_slot = 1 - info.slot;
-    return blob;
+    return blobs;
   }
 
 

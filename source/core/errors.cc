@@ -35,6 +35,22 @@ namespace tribodyn
   }
 
 
+  void
+  refuse_collectively(const MPI_Comm     comm,
+                      const bool         failed,
+                      const std::string &message)
+  {
+    try
+      {
+        throw_collectively(comm, failed, message);
+      }
+    catch (const RunError &e)
+      {
+        throw InputError(e.what());
+      }
+  }
+
+
   std::string
   format_number(const double value)
   {

@@ -5,7 +5,9 @@
 // and its partition are rebuilt identically by setup() on the same number
 // of ranks, so saving the arrays and restoring them after setup() continues
 // the run bit for bit. A partition weighted anew during the run
-// (rebalance.cc) is rebuilt by replaying the weights this rank gave.
+// (rebalance.cc) is rebuilt by replaying the weights this rank gave. On
+// another number of ranks the saved arrays are read one writer at a time
+// and turned into records sent to the new owners (redistribution.cc).
 //
 // MCA_CHECKPOINT_STATE and MCA_CHECKPOINT_PAIR_LISTS below, with the
 // persistent pair fields of AutomatonSystem::register_pair_fields() between
@@ -132,40 +134,62 @@ namespace tribodyn
 
 
     void
-    AutomatonSystem::load_state(boost::archive::binary_iarchive &ar)
+    AutomatonSystem::read_saved_arrays(
+      boost::archive::binary_iarchive        &ar,
+      const bool                              same_ranks,
+      std::vector<unsigned int>              &offsets,
+      std::vector<std::vector<unsigned int>> &send)
     {
       unsigned int       version = 0, saved_ranks = 0;
       double             saved_dt     = 0;
       unsigned long long saved_global = 0;
       ar >> version >> saved_ranks >> saved_dt >> saved_global;
-      if (version != state_version || saved_ranks != n_ranks || saved_dt != dt
-          || saved_global != n_global)
+      if (version != state_version || (same_ranks && saved_ranks != n_ranks)
+          || saved_dt != dt || saved_global != n_global)
         throw InputError(
           "The checkpoint does not fit this run (it has "
-          + std::to_string(saved_global) + " automata on "
-          + std::to_string(saved_ranks) + " rank(s) and dt = "
-          + format_number(saved_dt) + " s; this run " + std::to_string(n_global)
-          + ", " + std::to_string(n_ranks) + ", " + format_number(dt)
-          + " s). Resume with the parameters and the number of MPI ranks "
-            "of the checkpointed run.");
+          + std::to_string(saved_global) + " automata and dt = "
+          + format_number(saved_dt) + " s, format " + std::to_string(version)
+          + "; this run " + std::to_string(n_global) + ", " + format_number(dt)
+          + " s, format " + std::to_string(state_version)
+          + "). Resume with the parameters of the checkpointed run and this "
+            "version of tribodyn.");
 #define MCA_GET(member) get(ar, member);
       MCA_CHECKPOINT_STATE(MCA_GET)
       pair_fields.for_each_array([&](auto &a) { get(ar, a); },
                                  [&](auto &a) { get(ar, a); });
       MCA_CHECKPOINT_PAIR_LISTS(MCA_GET)
 #undef MCA_GET
+      get(ar, offsets);
+      std::size_t n_lists = 0;
+      ar >> n_lists;
+      send.assign(n_lists, {});
+      for (auto &list : send)
+        get(ar, list);
+    }
+
+
+    void
+    AutomatonSystem::load_state(boost::archive::binary_iarchive &ar)
+    {
+      std::vector<unsigned int>              offsets;
+      std::vector<std::vector<unsigned int>> send;
+      read_saved_arrays(ar, true, offsets, send);
       // the checkpointed partition (the saved arrays are numbered by its
       // cells)
       if (!rebalance_history.empty())
         replay_rebalances();
-      std::vector<unsigned int> offsets;
-      get(ar, offsets);
-      std::size_t n_lists = 0;
-      ar >> n_lists;
-      std::vector<std::vector<unsigned int>> send(n_lists);
-      for (auto &list : send)
-        get(ar, list);
       neighbours.set_ghost_lists(std::move(send), std::move(offsets));
+    }
+
+
+    void
+    AutomatonSystem::absorb_state(boost::archive::binary_iarchive &ar)
+    {
+      std::vector<unsigned int>              offsets;
+      std::vector<std::vector<unsigned int>> send;
+      read_saved_arrays(ar, false, offsets, send);
+      absorb_current_arrays();
     }
 
 #undef MCA_CHECKPOINT_STATE

@@ -371,18 +371,7 @@ namespace tribodyn
         }
       if (n_kept == n_pairs)
         return;
-      unsigned int q = 0;
-      for (unsigned int p = 0; p < n_pairs; ++p)
-        if (keep[p])
-          {
-            pi[q]     = pi[p];
-            pj[q]     = pj[p];
-            pshift[q] = pshift[p];
-            ++q;
-          }
-      pi.resize(n_kept);
-      pj.resize(n_kept);
-      pshift.resize(n_kept);
+      compact_pair_list(keep);
       pair_fields.compact(keep);
     }
   } // namespace mca

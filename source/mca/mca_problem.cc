@@ -111,37 +111,90 @@ namespace tribodyn
       }
 
 
+      /// What follows the automata in a rank's checkpoint: the outputs
+      /// written so far and the observers' series (the same on every rank).
       void
-      load_checkpoint(const std::string                        &blob,
+      read_run_state(boost::archive::binary_iarchive          &ar,
+                     const std::vector<std::vector<double> *> &observed,
+                     unsigned int                             &output_number,
+                     std::size_t                              &series_rows,
+                     const std::vector<PvdWriter *>           &pvds)
+      {
+        ar >> output_number >> series_rows;
+        for (auto *pvd : pvds)
+          {
+            std::vector<std::pair<double, std::string>> entries;
+            ar >> entries;
+            pvd->restore(entries);
+          }
+        for (auto *series : observed)
+          ar >> *series;
+      }
+
+
+      /**
+       * Restore the checkpoint this rank read: on the number of ranks that
+       * wrote it, its own state (@p blobs holds one); on another number,
+       * the states of its share of the writers, redistributed over this
+       * run's partition (AutomatonSystem::absorb_state()), with the run's
+       * own state taken from the writer of rank 0.
+       */
+      void
+      load_checkpoint(const std::vector<std::string>           &blobs,
+                      const bool                                same_ranks,
                       AutomatonSystem                          &system,
                       const std::vector<std::vector<double> *> &observed,
                       unsigned int                             &output_number,
                       std::size_t                              &series_rows,
-                      const std::vector<PvdWriter *>           &pvds)
+                      const std::vector<PvdWriter *>           &pvds,
+                      const MPI_Comm                            comm)
       {
-        std::istringstream in(blob, std::ios::binary);
-        try
-          {
-            boost::archive::binary_iarchive ar(in);
-            system.load_state(ar);
-            ar >> output_number >> series_rows;
-            for (auto *pvd : pvds)
-              {
-                std::vector<std::pair<double, std::string>> entries;
-                ar >> entries;
-                pvd->restore(entries);
-              }
-            for (auto *series : observed)
-              ar >> *series;
-          }
-        catch (const boost::archive::archive_exception &e)
-          {
-            throw InputError(std::string("The checkpoint cannot be read (")
-                             + e.what()
-                             + "): it is damaged or from another version of "
-                               "tribodyn. Start afresh with "
-                               "'Checkpoint/Resume = false'.");
-          }
+        std::string error;
+        std::string run_state; // from the first blob read (writer 0 on rank 0)
+        for (const std::string &blob : blobs)
+          try
+            {
+              std::istringstream              in(blob, std::ios::binary);
+              boost::archive::binary_iarchive ar(in);
+              if (same_ranks)
+                system.load_state(ar);
+              else
+                system.absorb_state(ar);
+              read_run_state(ar, observed, output_number, series_rows, pvds);
+              if (run_state.empty())
+                {
+                  // the run's state again, to be sent to every rank
+                  std::ostringstream out(std::ios::binary);
+                  {
+                    boost::archive::binary_oarchive copy(out);
+                    copy << output_number << series_rows;
+                    for (const auto *pvd : pvds)
+                      copy << pvd->entries();
+                    for (const auto *series : observed)
+                      copy << *series;
+                  }
+                  run_state = out.str();
+                }
+            }
+          catch (const InputError &e)
+            {
+              error = e.what();
+            }
+          catch (const boost::archive::archive_exception &e)
+            {
+              error = std::string("The checkpoint cannot be read (") + e.what()
+                      + "): it is damaged or from another version of "
+                        "tribodyn. Start afresh with "
+                        "'Checkpoint/Resume = false'.";
+            }
+        refuse_collectively(comm, !error.empty(), error);
+        if (same_ranks)
+          return;
+        run_state = dealii::Utilities::MPI::broadcast(comm, run_state, 0);
+        std::istringstream              in(run_state, std::ios::binary);
+        boost::archive::binary_iarchive ar(in);
+        read_run_state(ar, observed, output_number, series_rows, pvds);
+        system.redistribute_absorbed();
       }
     } // namespace
 
@@ -285,13 +338,16 @@ namespace tribodyn
       if (checkpoint.resume)
         {
           CheckpointInfo info;
-          std::size_t    rows = 0;
-          load_checkpoint(store.read(checkpoint_lines, info),
+          std::size_t    rows  = 0;
+          const auto     blobs = store.read(checkpoint_lines, info);
+          load_checkpoint(blobs,
+                          info.n_ranks == n_ranks,
                           system,
                           observed,
                           output_number,
                           rows,
-                          {&pvd, &pvd_slab, &pvd_pairs});
+                          {&pvd, &pvd_slab, &pvd_pairs},
+                          comm);
           if (system.step_number() >= n_steps)
             throw InputError("Nothing to resume: the checkpoint is at step "
                              + std::to_string(system.step_number())
@@ -306,7 +362,13 @@ namespace tribodyn
           series
             = std::make_unique<CsvWriter>(series_path, columns, root, rows);
           pcout << "Resuming from the checkpoint at t = " << info.time
-                << " s (step " << info.step << ")" << std::endl;
+                << " s (step " << info.step << ")";
+          if (info.n_ranks != n_ranks)
+            pcout << ", written by " << info.n_ranks
+                  << " MPI rank(s): automata and pair states redistributed "
+                     "over "
+                  << n_ranks;
+          pcout << std::endl;
         }
       else
         {

@@ -91,5 +91,23 @@ namespace tribodyn
       std::vector<Candidate>().swap(found);
       pi.shrink_to_fit(), pj.shrink_to_fit(), pshift.shrink_to_fit();
     }
+
+
+    void
+    AutomatonSystem::compact_pair_list(const std::vector<unsigned char> &keep)
+    {
+      unsigned int q = 0;
+      for (unsigned int p = 0; p < pi.size(); ++p)
+        if (keep[p])
+          {
+            pi[q]     = pi[p];
+            pj[q]     = pj[p];
+            pshift[q] = pshift[p];
+            ++q;
+          }
+      pi.resize(q);
+      pj.resize(q);
+      pshift.resize(q);
+    }
   } // namespace mca
 } // namespace tribodyn

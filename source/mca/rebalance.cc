@@ -16,7 +16,8 @@
 // Checkpoints: a rank keeps the weights it gave at each rebalance. On
 // resume, setup() builds the set-up partition on the same ranks, and
 // replaying the weights in order rebuilds the checkpointed partition (p4est
-// cuts by the weights alone), so the saved arrays fit it.
+// cuts by the weights alone), so the saved arrays fit it. On another number
+// of ranks the weights are not replayed (redistribution.cc).
 
 #include "record_bits.h"
 

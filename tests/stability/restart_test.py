@@ -15,14 +15,27 @@ identical) for contact, 1e-12 relative for mca.
 
 Usage: restart_test.py TRIBODYN BASE.prm WORKDIR END_SECTION T TOLERANCE
        "LAUNCHER" FILE [FILE...] [--before-checkpoint KEY]
+       [--resume-launcher "LAUNCHER2"]
 END_SECTION is the subsection holding 'End time' ('Time integration' for
 contact, 'Time' for mca); FILE are the CSV files to compare. With
 --before-checkpoint KEY, the first part's summary.json must have KEY > 0
 (e.g. n_rebalances: the state to restore existed at the checkpoint).
+
+With --resume-launcher (restart on another number of ranks, issue #21), A
+and the resumed part run with LAUNCHER2 (e.g. "mpirun -np 1") and the first
+part with LAUNCHER (e.g. "mpirun -np 2"): the resumed part must say that it
+redistributed the state, and the CSV values agree to TOLERANCE relative to
+the largest magnitude of their column's family (family(): the sums over
+ranks change order, so a quantity that vanishes is judged at the scale of
+its kind, not of its round-off), the summary's numbers to TOLERANCE
+relative to the larger of the two (lists: to their largest component),
+except round-off errors (..._error) and n_rebalances (the partitions of
+each part's own ranks).
 """
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -85,6 +98,12 @@ def compare_csv(name, path_a, path_b, tolerance):
     return errors[:5]
 
 
+# Restart on another number of ranks: lists of numbers are compared at the
+# scale of their largest component (a force component that vanishes by
+# symmetry is round-off noise).
+VECTOR_SCALE = False
+
+
 def compare_json(a, b, tolerance, where="summary.json"):
     errors = []
     if isinstance(a, dict):
@@ -99,6 +118,14 @@ def compare_json(a, b, tolerance, where="summary.json"):
     elif isinstance(a, list):
         if len(a) != len(b):
             errors.append(f"{where}: lengths differ")
+        numbers = all(isinstance(x, (int, float)) and not isinstance(x, bool)
+                      for x in a + b)
+        if VECTOR_SCALE and numbers and a:
+            # a vector (a group's force): its components at its own scale
+            scale = max(abs(x) for x in a + b)
+            if any(abs(x - y) > tolerance * scale for x, y in zip(a, b)):
+                errors.append(f"{where}: {a!r} uninterrupted, {b!r} restarted")
+            return errors
         for k, (x, y) in enumerate(zip(a, b)):
             errors += compare_json(x, y, tolerance, f"{where}[{k}]")
     elif isinstance(a, (int, float)) and not isinstance(a, bool):
@@ -109,9 +136,53 @@ def compare_json(a, b, tolerance, where="summary.json"):
     return errors
 
 
+def family(name):
+    """Columns judged at one scale: those with the same last word
+    (tangential_velocity and normal_velocity; kinetic_energy and
+    elastic_energy), the components of a vector (<group>_fx, _fy, _fz)."""
+    last = name.split("_")[-1]
+    return last[0] if re.fullmatch(r"[fu][xyz]", last) else last
+
+
+def compare_csv_scaled(name, path_a, path_b, tolerance):
+    """Every value within tolerance of the largest magnitude of its
+    column's family in the uninterrupted run; columns of round-off errors
+    (..._error) are not compared (their values are noise)."""
+    rows_a = [r.split(",") for r in open(path_a).read().splitlines()]
+    rows_b = [r.split(",") for r in open(path_b).read().splitlines()]
+    if len(rows_a) != len(rows_b) or rows_a[0] != rows_b[0]:
+        return [f"{name}: {len(rows_b) - 1} rows after the restart, "
+                f"{len(rows_a) - 1} uninterrupted (or other columns)"]
+    header = rows_a[0]
+    columns_a = [[float(r[c]) for r in rows_a[1:]] for c in range(len(header))]
+    columns_b = [[float(r[c]) for r in rows_b[1:]] for c in range(len(header))]
+    scale = {}
+    for c, h in enumerate(header):
+        m = max((abs(x) for x in columns_a[c]), default=0.0)
+        scale[family(h)] = max(scale.get(family(h), 0.0), m)
+    worst, column = 0.0, ""
+    for c, h in enumerate(header):
+        if h.endswith("error"):
+            continue
+        d = max((abs(x - y) for x, y in zip(columns_a[c], columns_b[c])),
+                default=0.0) / max(scale[family(h)], 1e-300)
+        if d > worst:
+            worst, column = d, h
+    print(f"{name}: largest difference {worst:.3g} of its column family's "
+          f"largest magnitude (column {column or '-'}; tolerance {tolerance})")
+    return [f"{name}: column {column} differs by {worst:.3g}"] \
+        if not worst <= tolerance else []
+
+
 def main():
-    tribodyn, base, work, section, t_end, tolerance, launcher = sys.argv[1:8]
-    files = sys.argv[8:]
+    args = sys.argv[1:]
+    resume_launcher = None
+    if "--resume-launcher" in args:
+        at = args.index("--resume-launcher")
+        resume_launcher = args[at + 1]
+        args = args[:at] + args[at + 2:]
+    tribodyn, base, work, section, t_end, tolerance, launcher = args[:7]
+    files = args[7:]
     required = None
     if "--before-checkpoint" in files:
         at = files.index("--before-checkpoint")
@@ -128,7 +199,7 @@ def main():
               t_end / 2, False)
     write_prm(os.path.join(work, "b2.prm"), base, b, section, 2 * t_end,
               t_end / 2, True)
-    run(launcher, tribodyn, "a.prm", work)
+    run(resume_launcher or launcher, tribodyn, "a.prm", work)
     run(launcher, tribodyn, "b1.prm", work)
     if required is not None:
         value = json.load(open(os.path.join(b, "summary.json"))).get(required)
@@ -149,13 +220,27 @@ def main():
             f.write(b"partial")
         with open(os.path.join(other, name + ".tmp"), "wb") as f:
             f.write(b"partial")
-    out = run(launcher, tribodyn, "b2.prm", work)
+    ranks_b1 = json.load(open(os.path.join(b, "summary.json")))["n_mpi_ranks"]
+    out = run(resume_launcher or launcher, tribodyn, "b2.prm", work)
     if "Resuming from the checkpoint" not in out:
         sys.exit("FAIL: the second part did not resume")
     errors = []
+    if resume_launcher:
+        ranks_b2 = json.load(open(os.path.join(b, "summary.json")))["n_mpi_ranks"]
+        line = [l for l in out.splitlines() if "Resuming" in l][0]
+        print(f"first part on {ranks_b1} rank(s), resumed on {ranks_b2}: "
+              f"{line.strip()}")
+        if ranks_b1 == ranks_b2 or "redistributed" not in line:
+            errors.append("the resumed part did not change the number of "
+                          "ranks or did not redistribute the state")
+        # n_rebalances counts the partitions of each part's own ranks
+        TIMING_KEYS.update({"energy_balance_error", "n_rebalances"})
+        global VECTOR_SCALE
+        VECTOR_SCALE = True
     for name in files:
-        errors += compare_csv(name, os.path.join(a, name),
-                              os.path.join(b, name), tolerance)
+        compare = compare_csv_scaled if resume_launcher else compare_csv
+        errors += compare(name, os.path.join(a, name),
+                          os.path.join(b, name), tolerance)
         last = open(os.path.join(b, name)).read().splitlines()[-1]
         print(f"{name}: last row after the restart: {last[:150]}")
     summary_a = json.load(open(os.path.join(a, "summary.json")))

@@ -276,11 +276,15 @@ namespace tribodyn
       void
       set_initial_state();
       /// The state after step_count steps as a Boost binary archive, and
-      /// back (source/contact/checkpoint.cc; same ranks and mesh).
+      /// back from this rank's share of the writers' archives (any number
+      /// of ranks; source/contact/checkpoint.cc).
       std::string
       save_state(const LoopState &loop) const;
       void
-      load_state(const std::string &blob, LoopState &loop);
+      load_state(const std::vector<std::string> &blobs, LoopState &loop);
+      /// Coordinates of the node of each owned dof (local index).
+      std::vector<std::array<double, 2>>
+      owned_dof_points() const;
       /// Collective: find the worst dof and throw RunError describing the
       /// instability found at step @p step (time @p time).
       [[noreturn]] void

@@ -82,12 +82,16 @@ namespace tribodyn
           const std::vector<std::string> &parameters);
 
     /**
-     * Collective: this rank's blob of the latest checkpoint. Throws
-     * InputError with the fix when there is none, when it was written by
-     * another number of ranks or another problem, or when @p parameters
-     * differ from the checkpointed run's (naming the parameters).
+     * Collective: this rank's share of the latest checkpoint, which may
+     * have been written by another number of ranks N (info.n_ranks): the
+     * blobs of the writing ranks r, r + M, r + 2M, ... (M: ranks of this
+     * run, r: this rank), in that order; on the same number of ranks, the
+     * one blob this rank wrote. Throws InputError with the fix when there
+     * is no checkpoint, when it belongs to another problem, when a rank's
+     * file is missing or damaged, or when @p parameters differ from the
+     * checkpointed run's (naming the parameters).
      */
-    std::string
+    std::vector<std::string>
     read(const std::vector<std::string> &parameters, CheckpointInfo &info);
 
     /// Directory of the checkpoints.

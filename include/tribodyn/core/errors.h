@@ -38,6 +38,13 @@ namespace tribodyn
                      const bool         failed,
                      const std::string &message);
 
+  /// The same with an InputError (exit code 2): input that does not fit
+  /// the run, found by one rank (e.g. a checkpoint of another mesh).
+  void
+  refuse_collectively(const MPI_Comm     comm,
+                      const bool         failed,
+                      const std::string &message);
+
   /// Exit codes of the tribodyn executable.
   namespace exit_code
   {

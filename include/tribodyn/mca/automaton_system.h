@@ -131,6 +131,15 @@ namespace tribodyn
       save_state(boost::archive::binary_oarchive &archive) const;
       void
       load_state(boost::archive::binary_iarchive &archive);
+      /// Restart on another number of ranks (source/mca/redistribution.cc):
+      /// after setup(), absorb_state() takes each state of a checkpointed
+      /// rank this rank read (any number), then redistribute_absorbed()
+      /// (collective) sends the automata and pair states to their owners in
+      /// this run's partition and builds the pair list there.
+      void
+      absorb_state(boost::archive::binary_iarchive &archive);
+      void
+      redistribute_absorbed();
 
       /// Rebuild the pair list now (migration, ghosts, pair states carried
       /// over), as step() does when an automaton moved more than skin/2.
@@ -464,6 +473,10 @@ namespace tribodyn
       /// Pair list of the owned automata (neighbour_list.cc).
       void
       build_pair_list();
+      /// Keep the pairs p with @p keep[p] in the pair list (pi, pj, pshift;
+      /// the pair fields are the caller's).
+      void
+      compact_pair_list(const std::vector<unsigned char> &keep);
       /// Restore the pair states kept over a rebuild.
       void
       restore_pair_states(const bool initial);
@@ -547,6 +560,32 @@ namespace tribodyn
         for (unsigned int a = j_pairs_first[k]; a < j_pairs_first[k + 1]; ++a)
           f(j_pairs[a], 1u);
       }
+      // --- restart on another number of ranks (redistribution.cc)
+      /// The arrays of a saved state (checkpoint.cc), checked against this
+      /// run (with @p same_ranks, also the number of ranks); the ghost
+      /// lists go to @p offsets and @p send.
+      void
+      read_saved_arrays(boost::archive::binary_iarchive        &archive,
+                        const bool                              same_ranks,
+                        std::vector<unsigned int>              &offsets,
+                        std::vector<std::vector<unsigned int>> &send);
+      /// Records of the state in the arrays now (absorb_state()): owned
+      /// automata and the pair states of their pairs, with this rank's sums.
+      void
+      absorb_current_arrays();
+      /// The pairs of each owned automaton (i_pairs_first, j_pairs ...)
+      /// for the pair list now (neighbourhood_weights.cc).
+      void
+      index_pairs_of_automata();
+      struct Absorbed
+      {
+        std::vector<double> automata, pairs;
+        /// plastic, friction, load, damped and pair work
+        double             work[5] = {0, 0, 0, 0, 0};
+        unsigned long long dropped = 0;
+        std::vector<Vec3>  group_reaction;
+      };
+      Absorbed absorbed;
       /// Is local automaton @p k owned by this rank?
       bool
       owned(const unsigned int k) const
