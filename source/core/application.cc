@@ -48,6 +48,8 @@ namespace tribodyn
     {
       GlobalParameters::declare_parameters(prm);
       p.declare_parameters(prm);
+      if (p.declare_dependent_parameters)
+        p.declare_dependent_parameters(prm);
     }
 
 
@@ -113,6 +115,13 @@ namespace tribodyn
       declare_all(prm, description);
       try
         {
+          // parameters that depend on the file's values (e.g. a list of
+          // names): a lenient first reading, then their declaration
+          if (description.declare_dependent_parameters)
+            {
+              prm.parse_input(file, "", true);
+              description.declare_dependent_parameters(prm);
+            }
           prm.parse_input(file);
         }
       catch (const dealii::ExceptionBase &e)

@@ -192,7 +192,11 @@ namespace tribodyn
           cause = "there is no subsection '" + trim(e[1].str()) + "' in "
                   + (where.empty() ? std::string("the top level")
                                    : "subsection '" + where + "'")
-                  + " (check its spelling).";
+                  + (where == "Materials"
+                       ? " (a material's subsection exists for the names "
+                         "of 'Materials/Names' only: add the material's "
+                         "name there, or check its spelling)."
+                       : " (check its spelling).");
         else if (!where.empty())
           cause += " (in subsection '" + where + "')";
         return "Error in the parameter file '" + m[2].str() + "', line "

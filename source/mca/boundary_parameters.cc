@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/selection.h>
 #include <tribodyn/mca/parameters.h>
 
 namespace tribodyn
@@ -89,18 +90,17 @@ namespace tribodyn
               check_parameter(other.name != g.name,
                               p,
                               "the group name '" + g.name + "' is used twice.");
-            if (t[1] == "fixed")
-              g.type = BoundaryGroup::Type::fixed;
-            else if (t[1] == "velocity")
-              g.type = BoundaryGroup::Type::velocity;
-            else if (t[1] == "force")
-              g.type = BoundaryGroup::Type::force;
-            else if (t[1] == "damping")
-              g.type = BoundaryGroup::Type::damping;
-            else
+            const SelectionTable<BoundaryGroup::Type, 4> types{
+              {{"fixed", BoundaryGroup::Type::fixed},
+               {"velocity", BoundaryGroup::Type::velocity},
+               {"force", BoundaryGroup::Type::force},
+               {"damping", BoundaryGroup::Type::damping}}};
+            const auto *type = find_selection(types, t[1]);
+            if (type == nullptr)
               throw InputError("Parameter '" + p + "': unknown type '" + t[1]
-                               + "' in '" + entry
-                               + "'; use fixed, velocity, force or damping.");
+                               + "' in '" + entry + "'; use "
+                               + selection_choices(types) + ".");
+            g.type  = *type;
             g.lower = read_point(t, 2, p, entry);
             g.upper = read_point(t, 5, p, entry);
             const std::size_t expected

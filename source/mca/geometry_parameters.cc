@@ -9,6 +9,7 @@
 #include <limits>
 #include <sstream>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/selection.h>
 #include <tribodyn/mca/parameters.h>
 #include <unistd.h>
 
@@ -21,6 +22,13 @@ namespace tribodyn
     using dealii::Patterns::Double;
     using dealii::Patterns::Integer;
     using dealii::Patterns::Selection;
+
+    namespace
+    {
+      /// Geometry/Size bands/Size at free faces: fine (true) or band.
+      const SelectionTable<bool, 2> free_face_table{
+        {{"fine", true}, {"band", false}}};
+    } // namespace
     namespace Patterns = dealii::Patterns;
 
     using namespace parameter_tools;
@@ -128,7 +136,7 @@ namespace tribodyn
         prm.declare_entry(
           "Size at free faces",
           "fine",
-          Patterns::Selection("fine|band"),
+          selection_pattern(free_face_table),
           "Graded packing at the free lateral faces of the bodies (faces in "
           "x or y that are not periodic). fine: the FCC cells of size 2d "
           "whose sites lie closer than a = d sqrt(2) to such a face, and "
@@ -254,7 +262,8 @@ namespace tribodyn
                         "Geometry/Bodies",
                         "give at least one body.");
 
-        fine_free_faces = prm.get("Size at free faces") == "fine";
+        fine_free_faces
+          = get_selection(prm, "Size at free faces", free_face_table);
         size_bands.clear();
         for (const std::string &entry : split(prm.get("Size bands"), ';'))
           {

@@ -678,6 +678,7 @@ namespace tribodyn
           const RunContext         &context) -> std::unique_ptr<Problem> {
          return std::make_unique<McaProblem>(prm, context);
        },
-       &McaProblem::print_partition_report});
+       &McaProblem::print_partition_report,
+       &Parameters::declare_material_sections});
   } // namespace mca
 } // namespace tribodyn

@@ -1,11 +1,15 @@
 #include "parameter_tools.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <deal.II/base/patterns.h>
+#include <deal.II/base/utilities.h>
 #include <limits>
 #include <sstream>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/material.h>
+#include <tribodyn/core/selection.h>
 #include <tribodyn/mca/parameters.h>
 
 namespace tribodyn
@@ -21,220 +25,20 @@ namespace tribodyn
 
     using namespace parameter_tools;
 
+    namespace
+    {
+      const SelectionTable<AnalysisParameters::Type, 4> analysis_table{
+        {{"none", AnalysisParameters::Type::none},
+         {"uniaxial", AnalysisParameters::Type::uniaxial},
+         {"pulse", AnalysisParameters::Type::pulse},
+         {"friction", AnalysisParameters::Type::friction}}};
+      /// Coordinate axes by index.
+      const SelectionTable<unsigned int, 3> axis_table{
+        {{"x", 0u}, {"y", 1u}, {"z", 2u}}};
+    } // namespace
+
     void
     apply_friction_loading(Parameters &p); // friction_loading.cc
-
-
-    int
-    material_index(const std::vector<std::string> &names,
-                   const std::string              &name,
-                   const std::string              &parameter)
-    {
-      for (unsigned int i = 0; i < names.size(); ++i)
-        if (names[i] == name)
-          return i;
-      throw InputError("Parameter '" + parameter + "': unknown material '"
-                       + name + "'. The materials are: "
-                       + material_list_message(names) + ".");
-    }
-
-
-    // ------------------------------------------------------------------
-    MaterialParameters
-    MaterialParameters::steel()
-    {
-      MaterialParameters m;
-      m.name                 = "steel";
-      m.density              = 7800;
-      m.youngs_modulus       = 206e9;
-      m.poisson_ratio        = 0.28;
-      m.hardening            = Hardening::linear;
-      m.yield_stress         = 800e6;
-      m.hardening_modulus    = 2e9;
-      m.bond_breaking_stress = 1.2e9;
-      m.bond_energy_density  = 3.5e6;
-      return m;
-    }
-
-
-    MaterialParameters
-    MaterialParameters::carbon()
-    {
-      MaterialParameters m;
-      m.name                     = "carbon";
-      m.density                  = 2100;
-      m.youngs_modulus           = 40e9;
-      m.poisson_ratio            = 0.4;
-      m.hardening                = Hardening::bilinear;
-      m.yield_stress             = 32e6;
-      m.hardening_modulus        = 1e9;
-      m.second_hardening_modulus = 0.1e9;
-      m.second_hardening_onset   = 0.05;
-      m.bond_breaking_stress     = 100e6;
-      m.bond_energy_density      = 1.25e5;
-      return m;
-    }
-
-
-    double
-    MaterialParameters::p_wave_speed() const
-    {
-      return std::sqrt((bulk_modulus() + 4. / 3. * shear_modulus()) / density);
-    }
-
-
-    double
-    MaterialParameters::yield_stress_at(const double eps_p) const
-    {
-      switch (hardening)
-        {
-          case Hardening::elastic:
-            return inf;
-          case Hardening::linear:
-            return yield_stress + hardening_modulus * eps_p;
-          case Hardening::bilinear:
-            if (eps_p <= second_hardening_onset)
-              return yield_stress + hardening_modulus * eps_p;
-            return yield_stress + hardening_modulus * second_hardening_onset
-                   + second_hardening_modulus
-                       * (eps_p - second_hardening_onset);
-        }
-      return inf;
-    }
-
-
-    void
-    MaterialParameters::declare_parameters(ParameterHandler         &prm,
-                                           const MaterialParameters &d)
-    {
-      prm.declare_entry("Density",
-                        format_number(d.density),
-                        Double(),
-                        "Mass density rho (kg/m^3), > 0.");
-      prm.declare_entry("Young modulus",
-                        format_number(d.youngs_modulus),
-                        Double(),
-                        "Young's modulus E (Pa), > 0.");
-      prm.declare_entry("Poisson ratio",
-                        format_number(d.poisson_ratio),
-                        Double(),
-                        "Poisson's ratio nu, in (-1, 0.5). The pair law "
-                        "reproduces Hooke's law with these E and nu.");
-      prm.declare_entry(
-        "Hardening",
-        d.hardening == Hardening::elastic
-          ? "elastic"
-          : (d.hardening == Hardening::linear ? "linear" : "bilinear"),
-        Selection("elastic|linear|bilinear"),
-        "Response beyond the elastic range: elastic (no plasticity), "
-        "linear (sigma_y = Yield stress + Hardening modulus * eps_p) or "
-        "bilinear (slope Second hardening modulus beyond Second hardening "
-        "onset). Von Mises plasticity, Wilkins radial return.");
-      prm.declare_entry("Yield stress",
-                        format_number(d.yield_stress),
-                        Double(),
-                        "Initial yield stress sigma_y0 (Pa), > 0.");
-      prm.declare_entry("Hardening modulus",
-                        format_number(d.hardening_modulus),
-                        Double(),
-                        "Plastic hardening modulus H1 = dsigma_y/deps_p "
-                        "(Pa), >= 0. The uniaxial tangent modulus is "
-                        "E H1 / (E + H1).");
-      prm.declare_entry("Second hardening modulus",
-                        format_number(d.second_hardening_modulus),
-                        Double(),
-                        "Bilinear hardening: H2 = dsigma_y/deps_p beyond "
-                        "the onset (Pa), >= 0.");
-      prm.declare_entry("Second hardening onset",
-                        format_number(d.second_hardening_onset),
-                        Double(),
-                        "Bilinear hardening: plastic strain where the "
-                        "second branch starts, > 0.");
-      prm.declare_entry("Bond breaking stress",
-                        format_number(d.bond_breaking_stress),
-                        Double(),
-                        "A bonded pair breaks when the von Mises stress of "
-                        "its stress state reaches this value (Pa), > 0 "
-                        "(the smaller value of the two materials applies).");
-      prm.declare_entry("Bond energy density",
-                        format_number(d.bond_energy_density),
-                        Double(),
-                        "Energy to break a bond per unit volume of the pair "
-                        "(J/m^3): the bond energy of pair ij is this times "
-                        "S_ij (d_i + d_j)/2. The default is sigma_b^2/(2E) "
-                        "with sigma_b the bond breaking stress.");
-    }
-
-
-    void
-    MaterialParameters::parse_parameters(ParameterHandler  &prm,
-                                         const std::string &section)
-    {
-      density                  = prm.get_double("Density");
-      youngs_modulus           = prm.get_double("Young modulus");
-      poisson_ratio            = prm.get_double("Poisson ratio");
-      const std::string h      = prm.get("Hardening");
-      hardening                = h == "elastic"  ? Hardening::elastic
-                                 : h == "linear" ? Hardening::linear
-                                                 : Hardening::bilinear;
-      yield_stress             = prm.get_double("Yield stress");
-      hardening_modulus        = prm.get_double("Hardening modulus");
-      second_hardening_modulus = prm.get_double("Second hardening modulus");
-      second_hardening_onset   = prm.get_double("Second hardening onset");
-      bond_breaking_stress     = prm.get_double("Bond breaking stress");
-      bond_energy_density      = prm.get_double("Bond energy density");
-
-      check_parameter_range(section + "/Density",
-                            density,
-                            0,
-                            max_density,
-                            true,
-                            false,
-                            "The density is in kg/m^3.");
-      check_parameter_range(section + "/Young modulus",
-                            youngs_modulus,
-                            0,
-                            max_youngs_modulus,
-                            true,
-                            false,
-                            "Young's modulus is in Pa.");
-      check_parameter_range(section + "/Poisson ratio",
-                            poisson_ratio,
-                            -1,
-                            0.5,
-                            true,
-                            true,
-                            "An isotropic elastic material needs "
-                            "-1 < nu < 0.5.");
-      check_parameter_range(
-        section + "/Yield stress", yield_stress, 0, inf, true, true);
-      check_parameter_range(
-        section + "/Hardening modulus", hardening_modulus, 0, inf, false, true);
-      check_parameter_range(section + "/Second hardening modulus",
-                            second_hardening_modulus,
-                            0,
-                            inf,
-                            false,
-                            true);
-      check_parameter_range(section + "/Second hardening onset",
-                            second_hardening_onset,
-                            0,
-                            inf,
-                            true,
-                            true);
-      check_parameter_range(section + "/Bond breaking stress",
-                            bond_breaking_stress,
-                            0,
-                            inf,
-                            true,
-                            true);
-      check_parameter_range(section + "/Bond energy density",
-                            bond_energy_density,
-                            0,
-                            inf,
-                            false,
-                            true);
-    }
 
 
     // ------------------------------------------------------------------
@@ -420,7 +224,7 @@ namespace tribodyn
                           "(cross_section.pvd), as in seed Fig. 3 and 4.");
         prm.declare_entry("Cross section axis",
                           "x",
-                          Selection("x|y|z"),
+                          selection_pattern(axis_table),
                           "Normal of the cross-section slab.");
         prm.declare_entry("Cross section position",
                           "0",
@@ -441,12 +245,13 @@ namespace tribodyn
     {
       prm.enter_subsection("Output");
       {
-        output_interval         = prm.get_double("Output interval");
-        series_interval         = prm.get_double("Series interval");
-        write_particles         = prm.get_bool("Write particles");
-        write_stress            = prm.get_bool("Write stress");
-        cross_section           = prm.get_bool("Cross section");
-        cross_section_axis      = prm.get("Cross section axis")[0] - 'x';
+        output_interval = prm.get_double("Output interval");
+        series_interval = prm.get_double("Series interval");
+        write_particles = prm.get_bool("Write particles");
+        write_stress    = prm.get_bool("Write stress");
+        cross_section   = prm.get_bool("Cross section");
+        cross_section_axis
+          = get_selection(prm, "Cross section axis", axis_table);
         cross_section_position  = prm.get_double("Cross section position");
         cross_section_thickness = prm.get_double("Cross section thickness");
         check_parameter_range(
@@ -473,7 +278,7 @@ namespace tribodyn
         prm.declare_entry(
           "Type",
           "none",
-          Selection("none|uniaxial|pulse|friction"),
+          selection_pattern(analysis_table),
           "Headline figures: uniaxial (E, nu, sigma_y and hardening slope "
           "from the reaction of the loaded group and the lateral "
           "contraction), pulse (wave speed from the arrival times at two "
@@ -481,7 +286,7 @@ namespace tribodyn
           "loaded group).");
         prm.declare_entry("Axis",
                           "z",
-                          Selection("x|y|z"),
+                          selection_pattern(axis_table),
                           "Loading axis (uniaxial), propagation axis "
                           "(pulse), normal axis (friction).");
         prm.declare_entry("Loaded group",
@@ -549,12 +354,8 @@ namespace tribodyn
     {
       prm.enter_subsection("Analysis");
       {
-        const std::string t  = prm.get("Type");
-        type                 = t == "uniaxial"   ? Type::uniaxial
-                               : t == "pulse"    ? Type::pulse
-                               : t == "friction" ? Type::friction
-                                                 : Type::none;
-        axis                 = prm.get("Axis")[0] - 'x';
+        type                 = get_selection(prm, "Type", analysis_table);
+        axis                 = get_selection(prm, "Axis", axis_table);
         loaded_group         = prm.get("Loaded group");
         support_group        = prm.get("Support group");
         elastic_fit_fraction = prm.get_double("Elastic fit fraction");
@@ -589,17 +390,20 @@ namespace tribodyn
     Parameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Materials");
-      {
-        prm.enter_subsection("Steel");
-        MaterialParameters::declare_parameters(prm,
-                                               MaterialParameters::steel());
-        prm.leave_subsection();
-        prm.enter_subsection("Carbon");
-        MaterialParameters::declare_parameters(prm,
-                                               MaterialParameters::carbon());
-        prm.leave_subsection();
-      }
+      prm.declare_entry(
+        "Names",
+        "steel, carbon",
+        Patterns::List(Patterns::Anything()),
+        "The materials of the scene, by name (any number): each gets its "
+        "subsection Materials/<Name>, the name with its first letter in "
+        "upper case (steel: 'subsection Steel', oxide: 'subsection Oxide'), "
+        "and bodies, regions and inclusions refer to it by name. A material "
+        "named carbon starts from carbon's defaults, any other from "
+        "steel's: set what differs. Example of a third material: 'set Names "
+        "= steel, carbon, oxide' and 'subsection Oxide / set Density = 5200 "
+        "/ set Young modulus = 150e9 ... end'.");
       prm.leave_subsection();
+      declare_material_sections(prm);
       GeometryParameters::declare_parameters(prm);
       InteractionParameters::declare_parameters(prm);
       BoundaryParameters::declare_parameters(prm);
@@ -614,17 +418,7 @@ namespace tribodyn
     void
     Parameters::parse_parameters(ParameterHandler &prm)
     {
-      materials = {MaterialParameters::steel(), MaterialParameters::carbon()};
-      prm.enter_subsection("Materials");
-      {
-        prm.enter_subsection("Steel");
-        materials[0].parse_parameters(prm, "Materials/Steel");
-        prm.leave_subsection();
-        prm.enter_subsection("Carbon");
-        materials[1].parse_parameters(prm, "Materials/Carbon");
-        prm.leave_subsection();
-      }
-      prm.leave_subsection();
+      materials = parse_materials(prm);
       std::vector<std::string> names;
       for (const auto &m : materials)
         names.push_back(m.name);

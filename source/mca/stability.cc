@@ -75,8 +75,8 @@ namespace tribodyn
       m.precision(4);
       m << "The run became unstable at step " << n_steps_done
         << " (t = " << current_time << " s): automaton " << std::size_t(a[1])
-        << " (material " << (a[5] == 0 ? "steel" : "carbon") << ", at (" << a[2]
-        << ", " << a[3] << ", " << a[4] << ") m";
+        << " (material " << prm.materials[static_cast<unsigned int>(a[5])].name
+        << ", at (" << a[2] << ", " << a[3] << ", " << a[4] << ") m";
       std::string damped_group, loaded_group;
       double      damping_product = prm.boundary.global_damping * dt;
       for (unsigned int g = 0; g < prm.boundary.groups.size(); ++g)

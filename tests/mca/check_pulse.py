@@ -1,5 +1,6 @@
-"""Pulse time of flight returns c_p (prm/mca/wave_pulse.prm and the
-longer pulse of wave_pulse_long.prm).
+"""Pulse time of flight returns c_p (prm/mca/wave_pulse.prm, the longer
+pulse of wave_pulse_long.prm, and the example's column made of a third,
+user-named material, bronze: Materials/Names = steel, carbon, bronze).
 
 Independent of the code's own analysis: c_p = sqrt(E (1 - nu) / (rho (1 +
 nu) (1 - 2 nu))) from the Young modulus, Poisson ratio and density the run
@@ -17,7 +18,9 @@ spacing). Tolerances: 2 % for the example's pulse (l ~ 22 layers), 0.8 %
 for the pulse twice as long, and the error must shrink by at least a
 factor 1.5 from the first to the second (measured: 1.24 % -> 0.69 %; the
 pulse also broadens on its way, so the peak delay is not purely second
-order in h / l)."""
+order in h / l). Bronze (nu = 0.34, a pulse as long in space as the
+example's): measured 1.59 %, tolerance 2.5 %; steel's c_p in its place would
+be 32 % off."""
 import csv
 import json
 import math
@@ -37,15 +40,24 @@ def peak_time(t, v):
     return t[k] + 0.5 * (t[k + 1] - t[k]) * (y0 - y2) / (y0 - 2 * y1 + y2)
 
 
+def body_material(out):
+    """Subsection of the material of the column (the last word of
+    Geometry/Bodies, first letter in upper case: Materials/Names)."""
+    name = str(parameter(out, "Geometry/Bodies")).split()[-1]
+    return name[0].upper() + name[1:]
+
+
 errors = []
 for test, folder, tol in [("mca_wave_pulse", "output/mca/wave_pulse", 0.02),
-                          ("mca_wave_pulse_long", "output-mca-wave-pulse-long", 0.008)]:
+                          ("mca_wave_pulse_long", "output-mca-wave-pulse-long", 0.008),
+                          ("mca_wave_pulse_bronze", "output-mca-wave-pulse-bronze", 0.025)]:
     out = os.path.join(build, test, folder)
     with open(os.path.join(out, "summary.json")) as f:
         s = json.load(f)
-    E = parameter(out, "Materials/Steel/Young modulus")
-    nu = parameter(out, "Materials/Steel/Poisson ratio")
-    rho = parameter(out, "Materials/Steel/Density")
+    section = "Materials/" + body_material(out)
+    E = parameter(out, section + "/Young modulus")
+    nu = parameter(out, section + "/Poisson ratio")
+    rho = parameter(out, section + "/Density")
     cp = math.sqrt(E * (1 - nu) / (rho * (1 + nu) * (1 - 2 * nu)))
     with open(os.path.join(out, "series.csv")) as f:
         rows = list(csv.DictReader(f))
@@ -63,5 +75,5 @@ for test, folder, tol in [("mca_wave_pulse", "output/mca/wave_pulse", 0.02),
     errors.append(e)
     report(e <= tol, "%s: c = %.2f m/s vs c_p = %.2f m/s, error %.4f (tolerance %g)"
            % (test, c, cp, e, tol))
-report(errors[1] * 1.5 <= errors[0], "error shrinks: %.4f -> %.4f" % tuple(errors))
+report(errors[1] * 1.5 <= errors[0], "error shrinks: %.4f -> %.4f" % tuple(errors[:2]))
 finish()

@@ -82,6 +82,13 @@ namespace tribodyn
                        const unsigned int n_ranks,
                        std::ostream      &out)>
       partition_report = {};
+    /// Optional: declare the parameters that depend on values of the file
+    /// (the subsections of user-named materials, mca). Called after a first
+    /// lenient reading of the file into the handler (unknown entries
+    /// skipped), before the strict one; --print-parameters calls it on the
+    /// defaults.
+    std::function<void(dealii::ParameterHandler &)> declare_dependent_parameters
+      = {};
   };
 
   /**

@@ -46,6 +46,41 @@ namespace tribodyn
     throw InputError("'" + name + "' = '" + given + "' is not one of "
                      + selection_pattern(table).description() + ".");
   }
+
+  /// The text of @p value in @p table (the default of a selection entry).
+  template <typename Enum, std::size_t N>
+  std::string
+  selection_text(const SelectionTable<Enum, N> &table, const Enum value)
+  {
+    for (const auto &[text, v] : table)
+      if (v == value)
+        return text;
+    return table[0].first;
+  }
+
+  /// The value of the choice @p text of @p table (a word inside a list
+  /// entry), or nullptr when @p text is none of them.
+  template <typename Enum, std::size_t N>
+  const Enum *
+  find_selection(const SelectionTable<Enum, N> &table, const std::string &text)
+  {
+    for (const auto &entry : table)
+      if (text == entry.first)
+        return &entry.second;
+    return nullptr;
+  }
+
+  /// "a, b or c": the choices of @p table for a message.
+  template <typename Enum, std::size_t N>
+  std::string
+  selection_choices(const SelectionTable<Enum, N> &table)
+  {
+    std::string out;
+    for (std::size_t i = 0; i < N; ++i)
+      out += (i == 0 ? "" : (i + 1 == N ? " or " : ", "))
+             + std::string(table[i].first);
+    return out;
+  }
 } // namespace tribodyn
 
 #endif

@@ -511,6 +511,17 @@ namespace tribodyn
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
+      /// The subsections of the materials named in Materials/Names (its
+      /// value now): called by declare_parameters() for the default list,
+      /// and again once the parameter file's list is known (the problem's
+      /// declare_dependent_parameters, source/core/application.cc).
+      static void
+      declare_material_sections(dealii::ParameterHandler &prm);
+      /// The materials of Materials/Names with their parameters, in the
+      /// list's order (source/mca/material_parameters.cc).
+      static std::vector<MaterialParameters>
+      parse_materials(dealii::ParameterHandler &prm);
+
       /// Defaults for programmatic use (tests): steel and carbon.
       Parameters();
 
@@ -518,7 +529,8 @@ namespace tribodyn
       any_plastic() const;
     };
 
-    /// Index of material @p name ("steel", "carbon"); throws InputError.
+    /// Index of material @p name among @p names (Materials/Names); throws
+    /// InputError naming @p parameter and the known materials.
     int
     material_index(const std::vector<std::string> &names,
                    const std::string              &name,
