@@ -4,7 +4,7 @@
 // its x, so that a checkpoint written on N ranks resumes on any number M
 // (doc/user_guide.md, "Checkpoints"). On resume every rank reads its share
 // of the writers' files, sends each record to the ranks whose cells hold
-// its node (route_records_by_point()) and keeps those of the dofs it owns.
+// its node (PointRouter) and keeps those of the dofs it owns.
 // The values are copied exactly: the resumed run continues bit for bit on
 // the same number of ranks, and to the round-off of the cross-rank sums on
 // another (ctests stability_contact_restart_*).
@@ -16,8 +16,6 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 #include <cmath>
-#include <deal.II/grid/filtered_iterator.h>
-#include <deal.II/grid/grid_tools.h>
 #include <sstream>
 #include <tribodyn/contact/contact_solver.h>
 #include <tribodyn/core/errors.h>
@@ -40,13 +38,6 @@ namespace tribodyn
       // w, a. A contact-node record: x, 0, then the node's state.
       constexpr unsigned int dof_stride = 8, node_stride = 7;
 
-      std::string
-      unreadable(const std::exception &e)
-      {
-        return std::string("The checkpoint cannot be read (") + e.what()
-               + "): it is damaged or from another version of tribodyn. "
-                 "Start afresh with 'Checkpoint/Resume = false'.";
-      }
     } // namespace
 
 
@@ -139,93 +130,61 @@ namespace tribodyn
       std::vector<double> dofs, nodes;
       work_external = work_internal = work_contact = dissipation_friction = 0;
       pgs_iterations_max                                                  = 0;
-      std::string error;
-      for (const std::string &blob : blobs)
-        try
-          {
-            std::istringstream              in(blob, std::ios::binary);
-            boost::archive::binary_iarchive ar(in);
-            unsigned int                    version = 0;
-            ar >> version;
-            if (version != state_version)
-              throw InputError(
-                "The checkpoint was written by another version of tribodyn "
-                "(state format "
-                + std::to_string(version) + ", this one "
-                + std::to_string(state_version)
-                + "). Start afresh with 'Checkpoint/Resume = false'.");
-            std::string         g;
-            unsigned int        pgs = 0;
-            double              works[4];
-            std::vector<double> d, n;
-            ar >> g >> pgs >> works[0] >> works[1] >> works[2] >> works[3];
-            ar >> d >> n;
-            if (global.empty())
-              global = std::move(g);
-            pgs_iterations_max = std::max(pgs_iterations_max, pgs);
-            work_external += works[0];
-            work_internal += works[1];
-            work_contact += works[2];
-            dissipation_friction += works[3];
-            dofs.insert(dofs.end(), d.begin(), d.end());
-            nodes.insert(nodes.end(), n.begin(), n.end());
-          }
-        catch (const InputError &e)
-          {
-            error = e.what();
-          }
-        catch (const std::exception &e)
-          {
-            error = unreadable(e);
-          }
-      refuse_collectively(comm, !error.empty(), error);
+      read_checkpoint_blobs(comm, blobs, [&](auto &ar) {
+        unsigned int version = 0;
+        ar >> version;
+        if (version != state_version)
+          throw InputError(
+            "The checkpoint was written by another version of tribodyn "
+            "(state format "
+            + std::to_string(version) + ", this one "
+            + std::to_string(state_version)
+            + "). Start afresh with 'Checkpoint/Resume = false'.");
+        std::string         g;
+        unsigned int        pgs = 0;
+        double              works[4];
+        std::vector<double> d, n;
+        ar >> g >> pgs >> works[0] >> works[1] >> works[2] >> works[3];
+        ar >> d >> n;
+        if (global.empty())
+          global = std::move(g);
+        pgs_iterations_max = std::max(pgs_iterations_max, pgs);
+        work_external += works[0];
+        work_internal += works[1];
+        work_contact += works[2];
+        dissipation_friction += works[3];
+        dofs.insert(dofs.end(), d.begin(), d.end());
+        nodes.insert(nodes.end(), n.begin(), n.end());
+      });
 
       // The run's state from the writer of rank 0 (read by rank 0).
       global = dealii::Utilities::MPI::broadcast(comm, global, 0);
-      try
-        {
-          std::istringstream              in(global, std::ios::binary);
-          boost::archive::binary_iarchive g(in);
-          double                          saved_dt = 0;
-          g >> saved_dt >> step_count >> energy_initial >> scale_energy;
-          if (saved_dt != dt)
-            throw InputError("The checkpoint does not fit this run: its time "
-                             "step is "
-                             + format_number(saved_dt) + " s, this run's "
-                             + format_number(dt)
-                             + " s. Resume with the parameters of the "
-                               "checkpointed run.");
-          std::size_t n_samples = 0;
-          g >> n_samples;
-          history.resize(n_samples);
-          if (n_samples > 0)
-            g >> boost::serialization::make_binary_object(history.data(),
-                                                          n_samples
-                                                            * sizeof(Sample));
-          g >> loop.sample_count >> loop.field_count >> loop.next_field
-            >> loop.csv_rows >> loop.face_rows >> loop.pvd;
-        }
-      catch (const InputError &e)
-        {
-          error = e.what();
-        }
-      catch (const std::exception &e)
-        {
-          error = unreadable(e);
-        }
-      refuse_collectively(comm, !error.empty(), error);
+      read_checkpoint_blobs(comm, {global}, [&](auto &g) {
+        double saved_dt = 0;
+        g >> saved_dt >> step_count >> energy_initial >> scale_energy;
+        if (saved_dt != dt)
+          throw InputError("The checkpoint does not fit this run: its time "
+                           "step is "
+                           + format_number(saved_dt) + " s, this run's "
+                           + format_number(dt)
+                           + " s. Resume with the parameters of the "
+                             "checkpointed run.");
+        std::size_t n_samples = 0;
+        g >> n_samples;
+        history.resize(n_samples);
+        if (n_samples > 0)
+          g >> boost::serialization::make_binary_object(history.data(),
+                                                        n_samples
+                                                          * sizeof(Sample));
+        g >> loop.sample_count >> loop.field_count >> loop.next_field
+          >> loop.csv_rows >> loop.face_rows >> loop.pvd;
+      });
 
-      // Each record to the ranks whose cells hold its node.
-      const auto boxes = dealii::GridTools::compute_mesh_predicate_bounding_box(
-        triangulation,
-        std::function<bool(
-          const typename dealii::Triangulation<2>::active_cell_iterator &)>(
-          [](const auto &cell) { return cell->is_locally_owned(); }),
-        0,
-        true,
-        8);
-      dofs  = route_records_by_point<2>(dofs, dof_stride, boxes, comm);
-      nodes = route_records_by_point<2>(nodes, node_stride, boxes, comm);
+      // Each record to the ranks whose cells hold its node (the pin's
+      // coarse cells: boxes at level 0).
+      const PointRouter<2> router(triangulation, 0, comm);
+      dofs  = router.route(dofs, dof_stride);
+      nodes = router.route(nodes, node_stride);
 
       // Keep those of the owned dofs and contact nodes, found by place (the
       // coordinates to a millionth of a cell: the mesh is made anew from

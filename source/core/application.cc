@@ -48,8 +48,6 @@ namespace tribodyn
     {
       GlobalParameters::declare_parameters(prm);
       p.declare_parameters(prm);
-      if (p.declare_dependent_parameters)
-        p.declare_dependent_parameters(prm);
     }
 
 

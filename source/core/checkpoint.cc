@@ -2,6 +2,7 @@
 // the Checkpoint parameters, CSV truncation for resumed runs, and the
 // SIGTERM/SIGINT handling of long runs (doc/user_guide.md, "Checkpoints").
 #include <algorithm>
+#include <boost/archive/binary_iarchive.hpp>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
@@ -215,22 +216,6 @@ namespace tribodyn
       s << in.rdbuf();
       return s.str();
     }
-
-
-    /// Throw RunError on every rank when one failed (message of the
-    /// lowest failing rank).
-    void
-    fail_collectively(const MPI_Comm comm, const std::string &local_error)
-    {
-      const unsigned int n  = dealii::Utilities::MPI::n_mpi_processes(comm);
-      const unsigned int me = dealii::Utilities::MPI::this_mpi_process(comm);
-      const unsigned int first
-        = dealii::Utilities::MPI::min(local_error.empty() ? n : me, comm);
-      if (first == n)
-        return;
-      throw RunError(dealii::Utilities::MPI::broadcast(
-        comm, me == first ? local_error : std::string(), first));
-    }
   } // namespace
 
 
@@ -285,7 +270,7 @@ namespace tribodyn
         {
           error = e.what();
         }
-    fail_collectively(comm, error);
+    throw_collectively(comm, !error.empty(), error);
     try
       {
         write_durably(rank_file(slot, rank), blob, frame_of(blob));
@@ -294,7 +279,7 @@ namespace tribodyn
       {
         error = e.what();
       }
-    fail_collectively(comm, error);
+    throw_collectively(comm, !error.empty(), error);
     if (rank == 0)
       {
         std::ostringstream text;
@@ -314,7 +299,7 @@ namespace tribodyn
             error = e.what();
           }
       }
-    fail_collectively(comm, error);
+    throw_collectively(comm, !error.empty(), error);
     next_slot = 1 - slot;
   }
 
@@ -403,24 +388,52 @@ namespace tribodyn
         else if (ok && framed && damaged.empty() && !unframe(blobs.back()))
           damaged = file;
       }
-    const unsigned int first_unreadable
-      = dealii::Utilities::MPI::min(unreadable.empty() ? n_ranks : rank, comm);
-    if (first_unreadable < n_ranks)
-      throw InputError(
-        "The checkpoint in '" + path + "' is incomplete: a rank's file (e.g. '"
-        + dealii::Utilities::MPI::broadcast(comm, unreadable, first_unreadable)
-        + "') cannot be read. Start afresh with 'Checkpoint/Resume = false'.");
-    const bool         intact = damaged.empty();
-    const unsigned int first_damaged
-      = dealii::Utilities::MPI::min(intact ? n_ranks : rank, comm);
-    if (first_damaged < n_ranks)
-      throw InputError(
-        "The checkpoint in '" + path + "' is damaged: '"
-        + dealii::Utilities::MPI::broadcast(comm, damaged, first_damaged)
-        + "' does not hold what was written (its size or checksum differ). "
-          "Start afresh with 'Checkpoint/Resume = false'.");
+    refuse_collectively(comm,
+                        !unreadable.empty(),
+                        "The checkpoint in '" + path
+                          + "' is incomplete: a rank's file (e.g. '"
+                          + unreadable
+                          + "') cannot be read. Start afresh with "
+                            "'Checkpoint/Resume = false'.");
+    refuse_collectively(comm,
+                        !damaged.empty(),
+                        "The checkpoint in '" + path + "' is damaged: '"
+                          + damaged
+                          + "' does not hold what was written (its size or "
+                            "checksum differ). Start afresh with "
+                            "'Checkpoint/Resume = false'.");
     next_slot = 1 - info.slot;
     return blobs;
+  }
+
+
+  void
+  read_checkpoint_blobs(
+    const MPI_Comm                                                comm,
+    const std::vector<std::string>                               &blobs,
+    const std::function<void(boost::archive::binary_iarchive &)> &read)
+  {
+    std::string error;
+    for (const std::string &blob : blobs)
+      try
+        {
+          std::istringstream              in(blob, std::ios::binary);
+          boost::archive::binary_iarchive archive(in);
+          read(archive);
+        }
+      catch (const InputError &e)
+        {
+          error = e.what();
+          break;
+        }
+      catch (const std::exception &e)
+        {
+          error = std::string("The checkpoint cannot be read (") + e.what()
+                  + "): it is damaged or from another version of tribodyn. "
+                    "Start afresh with 'Checkpoint/Resume = false'.";
+          break;
+        }
+    refuse_collectively(comm, !error.empty(), error);
   }
 
 

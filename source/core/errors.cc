@@ -18,20 +18,38 @@ namespace tribodyn
   }
 
 
+  namespace
+  {
+    /// Collective: whether any rank @p failed, and then in @p text the
+    /// @p message of the lowest failing rank (on every rank).
+    bool
+    lowest_failure(const MPI_Comm     comm,
+                   const bool         failed,
+                   const std::string &message,
+                   std::string       &text)
+    {
+      const unsigned int n_ranks
+        = dealii::Utilities::MPI::n_mpi_processes(comm);
+      const unsigned int me = dealii::Utilities::MPI::this_mpi_process(comm);
+      const unsigned int first
+        = dealii::Utilities::MPI::min(failed ? me : n_ranks, comm);
+      if (first == n_ranks)
+        return false;
+      text = dealii::Utilities::MPI::broadcast(
+        comm, me == first ? message : std::string(), first);
+      return true;
+    }
+  } // namespace
+
+
   void
   throw_collectively(const MPI_Comm     comm,
                      const bool         failed,
                      const std::string &message)
   {
-    const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
-    const unsigned int me      = dealii::Utilities::MPI::this_mpi_process(comm);
-    const unsigned int first
-      = dealii::Utilities::MPI::min(failed ? me : n_ranks, comm);
-    if (first == n_ranks)
-      return;
-    std::string text = me == first ? message : std::string();
-    text             = dealii::Utilities::MPI::broadcast(comm, text, first);
-    throw RunError(text);
+    std::string text;
+    if (lowest_failure(comm, failed, message, text))
+      throw RunError(text);
   }
 
 
@@ -40,14 +58,9 @@ namespace tribodyn
                       const bool         failed,
                       const std::string &message)
   {
-    try
-      {
-        throw_collectively(comm, failed, message);
-      }
-    catch (const RunError &e)
-      {
-        throw InputError(e.what());
-      }
+    std::string text;
+    if (lowest_failure(comm, failed, message, text))
+      throw InputError(text);
   }
 
 

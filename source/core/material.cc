@@ -29,12 +29,11 @@ namespace tribodyn
 
 
   void
-  IsotropicElasticMaterial::parse_parameters(dealii::ParameterHandler &prm,
-                                             const std::string        &section)
+  check_isotropic_elastic_constants(const std::string &section,
+                                    const double       youngs_modulus,
+                                    const double       poisson_ratio,
+                                    const double       density)
   {
-    youngs_modulus = prm.get_double("Young modulus");
-    poisson_ratio  = prm.get_double("Poisson ratio");
-    density        = prm.get_double("Density");
     check_parameter_range(section + "/Young modulus",
                           youngs_modulus,
                           0,
@@ -59,6 +58,20 @@ namespace tribodyn
                           false,
                           "The density is in kg/m^3 and must be positive "
                           "(the limit is four times osmium's).");
+  }
+
+
+  void
+  IsotropicElasticMaterial::parse_parameters(dealii::ParameterHandler &prm,
+                                             const std::string        &section)
+  {
+    youngs_modulus = prm.get_double("Young modulus");
+    poisson_ratio  = prm.get_double("Poisson ratio");
+    density        = prm.get_double("Density");
+    check_isotropic_elastic_constants(section,
+                                      youngs_modulus,
+                                      poisson_ratio,
+                                      density);
   }
 
 

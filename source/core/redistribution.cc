@@ -2,41 +2,66 @@
 // another number of ranks).
 #include <algorithm>
 #include <deal.II/grid/grid_tools.h>
-#include <deal.II/numerics/rtree.h>
 #include <map>
 #include <tribodyn/core/redistribution.h>
 
 namespace tribodyn
 {
+  namespace
+  {
+    template <int dim>
+    std::vector<dealii::BoundingBox<dim>>
+    owned_boxes(const dealii::Triangulation<dim> &mesh,
+                const unsigned int                box_level)
+    {
+      const auto boxes = dealii::GridTools::compute_mesh_predicate_bounding_box(
+        mesh,
+        std::function<bool(
+          const typename dealii::Triangulation<dim>::active_cell_iterator &)>(
+          [](const auto &cell) { return cell->is_locally_owned(); }),
+        box_level,
+        true,
+        64);
+      std::vector<dealii::BoundingBox<dim>> widened;
+      for (const auto &box : boxes)
+        {
+          auto   corners = box.get_boundary_points();
+          double size    = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            size = std::max(size, corners.second[d] - corners.first[d]);
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              corners.first[d] -= 1e-9 * size;
+              corners.second[d] += 1e-9 * size;
+            }
+          widened.emplace_back(corners);
+        }
+      return widened;
+    }
+  } // namespace
+
+
+  template <int dim>
+  PointRouter<dim>::PointRouter(const dealii::Triangulation<dim> &mesh,
+                                const unsigned int                box_level,
+                                const MPI_Comm                    comm)
+      : comm(comm)
+      , tree(dealii::GridTools::build_global_description_tree(
+          owned_boxes(mesh, box_level),
+          comm))
+  {
+  }
+
+
   template <int dim>
   std::vector<double>
-  route_records_by_point(
-    const std::vector<double>                   &records,
-    const unsigned int                           stride,
-    const std::vector<dealii::BoundingBox<dim>> &owned_boxes,
-    const MPI_Comm                               comm)
+  PointRouter<dim>::route(const std::vector<double> &records,
+                          const unsigned int         stride) const
   {
     namespace bgi = boost::geometry::index;
-    // Boxes widened by 1e-9 of their size: a point on a face is inside.
-    std::vector<dealii::BoundingBox<dim>> boxes;
-    for (const auto &box : owned_boxes)
-      {
-        auto   corners = box.get_boundary_points();
-        double size    = 0;
-        for (unsigned int d = 0; d < dim; ++d)
-          size = std::max(size, corners.second[d] - corners.first[d]);
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            corners.first[d] -= 1e-9 * size;
-            corners.second[d] += 1e-9 * size;
-          }
-        boxes.emplace_back(corners);
-      }
-    const auto tree
-      = dealii::GridTools::build_global_description_tree(boxes, comm);
-
     std::map<unsigned int, std::vector<double>>                    out;
     std::vector<std::pair<dealii::BoundingBox<dim>, unsigned int>> hits;
+    std::vector<unsigned int>                                      ranks;
     for (std::size_t o = 0; o + stride <= records.size(); o += stride)
       {
         dealii::Point<dim> p;
@@ -44,7 +69,7 @@ namespace tribodyn
           p[d] = records[o + d];
         hits.clear();
         tree.query(bgi::intersects(p), std::back_inserter(hits));
-        std::vector<unsigned int> ranks;
+        ranks.clear();
         for (const auto &hit : hits)
           ranks.push_back(hit.second);
         std::sort(ranks.begin(), ranks.end());
@@ -65,14 +90,6 @@ namespace tribodyn
   }
 
 
-  template std::vector<double>
-  route_records_by_point<2>(const std::vector<double> &,
-                            const unsigned int,
-                            const std::vector<dealii::BoundingBox<2>> &,
-                            const MPI_Comm);
-  template std::vector<double>
-  route_records_by_point<3>(const std::vector<double> &,
-                            const unsigned int,
-                            const std::vector<dealii::BoundingBox<3>> &,
-                            const MPI_Comm);
+  template class PointRouter<2>;
+  template class PointRouter<3>;
 } // namespace tribodyn

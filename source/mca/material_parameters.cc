@@ -185,28 +185,10 @@ namespace tribodyn
       bond_breaking_stress     = prm.get_double("Bond breaking stress");
       bond_energy_density      = prm.get_double("Bond energy density");
 
-      check_parameter_range(section + "/Density",
-                            density,
-                            0,
-                            max_density,
-                            true,
-                            false,
-                            "The density is in kg/m^3.");
-      check_parameter_range(section + "/Young modulus",
-                            youngs_modulus,
-                            0,
-                            max_youngs_modulus,
-                            true,
-                            false,
-                            "Young's modulus is in Pa.");
-      check_parameter_range(section + "/Poisson ratio",
-                            poisson_ratio,
-                            -1,
-                            0.5,
-                            true,
-                            true,
-                            "An isotropic elastic material needs "
-                            "-1 < nu < 0.5.");
+      check_isotropic_elastic_constants(section,
+                                        youngs_modulus,
+                                        poisson_ratio,
+                                        density);
       check_parameter_range(
         section + "/Yield stress", yield_stress, 0, inf, true, true);
       check_parameter_range(

@@ -88,31 +88,21 @@ namespace tribodyn
 
     namespace
     {
-      /// This rank's checkpoint: the automata, the observers' series, the
-      /// outputs written so far.
-      std::string
-      save_checkpoint_blob(const AutomatonSystem                    &system,
-                           const std::vector<std::vector<double> *> &observed,
-                           const unsigned int                    output_number,
-                           const std::size_t                     series_rows,
-                           const std::vector<const PvdWriter *> &pvds)
-      {
-        std::ostringstream out(std::ios::binary);
-        {
-          boost::archive::binary_oarchive ar(out);
-          system.save_state(ar);
-          ar << output_number << series_rows;
-          for (const auto *pvd : pvds)
-            ar << pvd->entries();
-          for (const auto *series : observed)
-            ar << *series;
-        }
-        return out.str();
-      }
-
-
       /// What follows the automata in a rank's checkpoint: the outputs
       /// written so far and the observers' series (the same on every rank).
+      void
+      write_run_state(boost::archive::binary_oarchive          &ar,
+                      const std::vector<std::vector<double> *> &observed,
+                      const unsigned int                        output_number,
+                      const std::size_t                         series_rows,
+                      const std::vector<const PvdWriter *>     &pvds)
+      {
+        ar << output_number << series_rows;
+        for (const auto *pvd : pvds)
+          ar << pvd->entries();
+        for (const auto *series : observed)
+          ar << *series;
+      }
       void
       read_run_state(boost::archive::binary_iarchive          &ar,
                      const std::vector<std::vector<double> *> &observed,
@@ -132,12 +122,31 @@ namespace tribodyn
       }
 
 
+      /// This rank's checkpoint: the automata, the observers' series, the
+      /// outputs written so far.
+      std::string
+      save_checkpoint_blob(const AutomatonSystem                    &system,
+                           const std::vector<std::vector<double> *> &observed,
+                           const unsigned int                    output_number,
+                           const std::size_t                     series_rows,
+                           const std::vector<const PvdWriter *> &pvds)
+      {
+        std::ostringstream out(std::ios::binary);
+        {
+          boost::archive::binary_oarchive ar(out);
+          system.save_state(ar);
+          write_run_state(ar, observed, output_number, series_rows, pvds);
+        }
+        return out.str();
+      }
+
+
       /**
        * Restore the checkpoint this rank read: on the number of ranks that
        * wrote it, its own state (@p blobs holds one); on another number,
        * the states of its share of the writers, redistributed over this
        * run's partition (AutomatonSystem::absorb_state()), with the run's
-       * own state taken from the writer of rank 0.
+       * own state taken from the writer of rank 0 (read by rank 0).
        */
       void
       load_checkpoint(const std::vector<std::string>           &blobs,
@@ -149,51 +158,35 @@ namespace tribodyn
                       const std::vector<PvdWriter *>           &pvds,
                       const MPI_Comm                            comm)
       {
-        std::string error;
-        std::string run_state; // from the first blob read (writer 0 on rank 0)
-        for (const std::string &blob : blobs)
-          try
+        const bool  root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+        std::string run_state;
+        read_checkpoint_blobs(comm, blobs, [&](auto &ar) {
+          if (same_ranks)
+            system.load_state(ar);
+          else
+            system.absorb_state(ar);
+          read_run_state(ar, observed, output_number, series_rows, pvds);
+          if (!same_ranks && root && run_state.empty())
             {
-              std::istringstream              in(blob, std::ios::binary);
-              boost::archive::binary_iarchive ar(in);
-              if (same_ranks)
-                system.load_state(ar);
-              else
-                system.absorb_state(ar);
-              read_run_state(ar, observed, output_number, series_rows, pvds);
-              if (run_state.empty())
-                {
-                  // the run's state again, to be sent to every rank
-                  std::ostringstream out(std::ios::binary);
-                  {
-                    boost::archive::binary_oarchive copy(out);
-                    copy << output_number << series_rows;
-                    for (const auto *pvd : pvds)
-                      copy << pvd->entries();
-                    for (const auto *series : observed)
-                      copy << *series;
-                  }
-                  run_state = out.str();
-                }
+              // writer 0's run state again, to be sent to every rank
+              std::ostringstream out(std::ios::binary);
+              {
+                boost::archive::binary_oarchive copy(out);
+                write_run_state(copy,
+                                observed,
+                                output_number,
+                                series_rows,
+                                {pvds.begin(), pvds.end()});
+              }
+              run_state = out.str();
             }
-          catch (const InputError &e)
-            {
-              error = e.what();
-            }
-          catch (const boost::archive::archive_exception &e)
-            {
-              error = std::string("The checkpoint cannot be read (") + e.what()
-                      + "): it is damaged or from another version of "
-                        "tribodyn. Start afresh with "
-                        "'Checkpoint/Resume = false'.";
-            }
-        refuse_collectively(comm, !error.empty(), error);
+        });
         if (same_ranks)
           return;
         run_state = dealii::Utilities::MPI::broadcast(comm, run_state, 0);
-        std::istringstream              in(run_state, std::ios::binary);
-        boost::archive::binary_iarchive ar(in);
-        read_run_state(ar, observed, output_number, series_rows, pvds);
+        read_checkpoint_blobs(comm, {run_state}, [&](auto &ar) {
+          read_run_state(ar, observed, output_number, series_rows, pvds);
+        });
         system.redistribute_absorbed();
       }
     } // namespace

@@ -113,13 +113,19 @@ namespace tribodyn
     }
 
     void
-    AutomatonSystem::evaluate_pairs(const double step_dt)
+    AutomatonSystem::update_ghost_kinematics()
     {
-      // Ghost kinematics: x, v, w from their owners (one message per
-      // neighbour rank; a rank that owns no automata still takes part, with
-      // empty messages, or its neighbours would wait for it).
+      // one message per neighbour rank; a rank that owns no automata still
+      // takes part, with empty messages, or its neighbours would wait for it
       if (neighbours.active())
         neighbours.update({{flat(x), 3}, {flat(v), 3}, {flat(w), 3}});
+    }
+
+
+    void
+    AutomatonSystem::evaluate_pairs(const double step_dt)
+    {
+      update_ghost_kinematics();
       // Neighbourhoods that changed at the last step (contacts, bonds).
       if (any_changed)
         update_neighbourhood_weights(false);

@@ -15,7 +15,7 @@
 //    (pair_fields.pack(), as a migration carries them);
 //
 // and sends them to the ranks whose cells held the automaton at the last
-// rebuild (route_records_by_point(): deal.II's global bounding-box tree).
+// rebuild (PointRouter: deal.II's global bounding-box tree).
 // The new owners then redo the last rebuild on this partition: with the
 // automata at their positions of then, they order them, exchange ghosts and
 // list the pairs (with a range wider by 1e-4 for the single-precision
@@ -31,7 +31,6 @@
 #include "record_bits.h"
 
 #include <algorithm>
-#include <deal.II/grid/grid_tools.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/redistribution.h>
 #include <tribodyn/mca/automaton_system.h>
@@ -63,12 +62,6 @@ namespace tribodyn
       // pairs beyond the checkpointed list are dropped again.
       constexpr double listing_margin = 1e-4;
 
-      template <class Vector>
-      double *
-      flat(std::vector<Vector> &a)
-      {
-        return a.empty() ? nullptr : &a[0][0];
-      }
     } // namespace
 
 
@@ -145,23 +138,17 @@ namespace tribodyn
     {
       // Each record to the ranks whose cells may hold it: boxes of this
       // rank's cells merged at one level above the cells (a few per rank).
-      const auto &tria = cells.triangulation();
-      const int   top  = static_cast<int>(tria.n_global_levels()) - 1;
-      const auto boxes = dealii::GridTools::compute_mesh_predicate_bounding_box(
-        tria,
-        std::function<bool(
-          const typename dealii::Triangulation<3>::active_cell_iterator &)>(
-          [](const auto &cell) { return cell->is_locally_owned(); }),
-        static_cast<unsigned int>(std::max(0, top - 1)),
-        true,
-        64);
+      const int top
+        = static_cast<int>(cells.triangulation().n_global_levels()) - 1;
+      const PointRouter<3> router(cells.triangulation(),
+                                  static_cast<unsigned int>(
+                                    std::max(0, top - 1)),
+                                  comm);
       const unsigned int  stride = field::props + migration_properties + extras;
       const unsigned int  width  = pair_head + pair_fields.width();
-      std::vector<double> in_automata
-        = route_records_by_point<3>(absorbed.automata, stride, boxes, comm);
+      std::vector<double> in_automata = router.route(absorbed.automata, stride);
       std::vector<double>().swap(absorbed.automata);
-      std::vector<double> in_pairs
-        = route_records_by_point<3>(absorbed.pairs, width, boxes, comm);
+      std::vector<double> in_pairs = router.route(absorbed.pairs, width);
       std::vector<double>().swap(absorbed.pairs);
       auto owned_here = [this](const double *r) {
         return cells.local_cell(Point3(r[0], r[1], r[2]))
@@ -311,8 +298,7 @@ namespace tribodyn
               any_damp = any_damp || e[11] != 0;
             }
         }
-      if (neighbours.active())
-        neighbours.update({{flat(x), 3}, {flat(v), 3}, {flat(w), 3}});
+      update_ghost_kinematics();
       restore_pair_states(false);
       index_pairs_of_automata();
       const unsigned int n_pairs = pi.size();

@@ -4,9 +4,18 @@
 #include <csignal>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+namespace boost
+{
+  namespace archive
+  {
+    class binary_iarchive;
+  } // namespace archive
+} // namespace boost
 
 namespace tribodyn
 {
@@ -110,6 +119,20 @@ namespace tribodyn
     MPI_Comm     comm;
     unsigned int next_slot = 0;
   };
+
+  /**
+   * Collective: call @p read on a Boost binary archive of each of @p blobs
+   * (this rank's share of a checkpoint, CheckpointStore::read(), or data
+   * derived from it). If it fails on any rank, every rank throws InputError
+   * with the message of the lowest failing rank: that of an InputError
+   * @p read threw, or, for any other exception (an archive's on damaged
+   * data or on another version's format), "cannot be read".
+   */
+  void
+  read_checkpoint_blobs(
+    const MPI_Comm                                                comm,
+    const std::vector<std::string>                               &blobs,
+    const std::function<void(boost::archive::binary_iarchive &)> &read);
 
   /**
    * Keep the header and the first @p n_rows data lines of the CSV file

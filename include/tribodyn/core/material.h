@@ -18,6 +18,14 @@ namespace tribodyn
   constexpr double max_youngs_modulus = 1e13;
   constexpr double max_density        = 1e5;
 
+  /// Throw InputError naming `@p section/...` unless E > 0, -1 < nu < 0.5
+  /// and rho > 0 (and E, rho below the limits above).
+  void
+  check_isotropic_elastic_constants(const std::string &section,
+                                    const double       youngs_modulus,
+                                    const double       poisson_ratio,
+                                    const double       density);
+
   struct IsotropicElasticMaterial
   {
     double youngs_modulus = 30e9;

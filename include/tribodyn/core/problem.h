@@ -85,8 +85,8 @@ namespace tribodyn
     /// Optional: declare the parameters that depend on values of the file
     /// (the subsections of user-named materials, mca). Called after a first
     /// lenient reading of the file into the handler (unknown entries
-    /// skipped), before the strict one; --print-parameters calls it on the
-    /// defaults.
+    /// skipped), before the strict one; declare_parameters declares them
+    /// for the default values (what --print-parameters shows).
     std::function<void(dealii::ParameterHandler &)> declare_dependent_parameters
       = {};
   };

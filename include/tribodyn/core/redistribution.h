@@ -3,6 +3,9 @@
 
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/numerics/rtree.h>
+#include <utility>
 #include <vector>
 
 namespace tribodyn
@@ -12,24 +15,35 @@ namespace tribodyn
    * records of a checkpoint written on N ranks go to the ranks of this run
    * whose part of the mesh holds their place.
    *
-   * Each record is @p stride doubles, its point first (@p dim coordinates).
-   * @p owned_boxes cover the cells this rank owns (from
-   * GridTools::compute_mesh_predicate_bounding_box()); they are exchanged
-   * once (deal.II's global description R-tree, GridTools::
-   * build_global_description_tree()), and a record is sent to every rank
-   * with a box holding its point within the relative tolerance 1e-9 of
-   * the box's size. Points on the border of two ranks' parts reach both:
-   * the receiver keeps what it owns (the caller's test) and the callers
-   * check the global counts. Returns the records received, flat, in the
-   * order of the sending ranks.
+   * Built once (collective): the boxes of the cells this rank owns, merged
+   * at refinement level @p box_level (GridTools::
+   * compute_mesh_predicate_bounding_box()), widened by 1e-9 of their size
+   * so that a point on a face is inside, and exchanged into deal.II's
+   * global description R-tree (GridTools::build_global_description_tree()).
    */
   template <int dim>
-  std::vector<double>
-  route_records_by_point(
-    const std::vector<double>                   &records,
-    const unsigned int                           stride,
-    const std::vector<dealii::BoundingBox<dim>> &owned_boxes,
-    const MPI_Comm                               comm);
+  class PointRouter
+  {
+  public:
+    PointRouter(const dealii::Triangulation<dim> &mesh,
+                const unsigned int                box_level,
+                const MPI_Comm                    comm);
+
+    /**
+     * Collective: send each record (@p stride doubles, its point first,
+     * @p dim coordinates) to every rank with a box holding its point. Points
+     * on the border of two ranks' parts reach both: the receiver keeps what
+     * it owns (the caller's test) and the callers check the global counts.
+     * Returns the records received, flat, in the order of the sending
+     * ranks.
+     */
+    std::vector<double>
+    route(const std::vector<double> &records, const unsigned int stride) const;
+
+  private:
+    MPI_Comm                                                         comm;
+    dealii::RTree<std::pair<dealii::BoundingBox<dim>, unsigned int>> tree;
+  };
 } // namespace tribodyn
 
 #endif

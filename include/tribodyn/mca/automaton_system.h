@@ -484,6 +484,9 @@ namespace tribodyn
       resize_automaton_arrays(const unsigned int n);
 
       // --- dynamics (pair_kernel.cc)
+      /// Ghosts' x, v, w from their owners.
+      void
+      update_ghost_kinematics();
       void
       evaluate_pairs(const double step);
       template <bool rotations, bool plastic, bool bonds, class Pairs>
