@@ -36,6 +36,7 @@ namespace tribodyn
                 parameters.geometry.largest_pair_distance()
                   * (1 + parameters.interaction.skin),
                 communicator)
+        , friction_laws(parameters.interaction.friction)
     {
       const auto &g = prm.geometry;
       d             = g.automaton_size;
@@ -152,6 +153,8 @@ namespace tribodyn
                        nullptr,
                        [this] { return graded; },
                        {}});
+      // the friction law's state (Dieterich: theta), if it has one
+      friction_laws.register_pair_fields(pair_fields);
     }
 
 

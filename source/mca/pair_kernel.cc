@@ -1,8 +1,10 @@
 // The pair law of the automata (seed eqs. 1-3, design §6): strain
 // increments of the pairs, many-body mean-stress increments, pair stresses
-// with the plastic correction, contact constraints of unbonded pairs,
-// forces and torques; then bond breaking and formation.
+// with the plastic correction, contact constraints of unbonded pairs (the
+// friction law, include/tribodyn/mca/friction_law.h), forces and torques;
+// then bond breaking and formation (bond_switching.cc).
 
+#include "pair_blocks.h"
 #include "pair_geometry.h"
 #include "pair_moment_law.h"
 
@@ -29,57 +31,6 @@ namespace tribodyn
       }
 
 
-      /**
-       * Pair vectors, distances and their reciprocals of a block of
-       * consecutive pairs. The square roots and divisions (the dearest
-       * operations of a pair pass) run in one branch-free loop that the
-       * compiler vectorizes; the branchy pair law then reads them.
-       */
-      struct NormalBlock
-      {
-        static constexpr unsigned int size = 64;
-        alignas(64) double dn[3][size];
-        alignas(64) double r[size], inv_r[size];
-
-        /// Fill entries 0 .. nb-1 from pairs p0 .. p0+nb-1.
-        template <class PairVector>
-        void
-        fill(const unsigned int p0,
-             const unsigned int nb,
-             const PairVector  &pair_vector)
-        {
-          for (unsigned int b = 0; b < nb; ++b)
-            {
-              const Vec3 v = pair_vector(p0 + b);
-              for (unsigned int c = 0; c < 3; ++c)
-                dn[c][b] = v[c];
-            }
-          for (unsigned int b = 0; b < nb; ++b)
-            {
-              r[b]     = std::sqrt(dn[0][b] * dn[0][b] + dn[1][b] * dn[1][b]
-                               + dn[2][b] * dn[2][b]);
-              inv_r[b] = 1. / r[b];
-            }
-        }
-
-        Vec3
-        normal(const unsigned int b) const
-        {
-          return {
-            {dn[0][b] * inv_r[b], dn[1][b] * inv_r[b], dn[2][b] * inv_r[b]}};
-        }
-      };
-
-      /// 3 J2, the square of the von Mises stress: the bond criterion
-      /// compares it with the squared strength (no square root per pair).
-      inline double
-      von_mises_squared(const Sym3 &s)
-      {
-        const double m = (s[0] + s[1] + s[2]) / 3;
-        const double a = s[0] - m, b = s[1] - m, c = s[2] - m;
-        return 1.5 * (a * a + b * b + c * c)
-               + 3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-      }
     } // namespace
 
 
@@ -129,42 +80,52 @@ namespace tribodyn
       // Neighbourhoods that changed at the last step (contacts, bonds).
       if (any_changed)
         update_neighbourhood_weights(false);
-      // The kernel for the scene's combination of features and pair
-      // geometry, chosen once here: no per-pair flags in its loops.
-      const auto dispatch = [&](const auto &geometry) {
+      // The kernel for the scene's combination of features, pair geometry
+      // and friction law, chosen once here: no per-pair flags in its loops.
+      const auto dispatch = [&](const auto &geometry, auto &law) {
         using G        = std::decay_t<decltype(geometry)>;
+        using L        = std::decay_t<decltype(law)>;
         const bool rot = rotations;
         if (rot && plastic_scene && bond_scene)
-          pair_kernel<true, true, true, G>(step_dt, geometry);
+          pair_kernel<true, true, true, G, L>(step_dt, geometry, law);
         else if (rot && plastic_scene)
-          pair_kernel<true, true, false, G>(step_dt, geometry);
+          pair_kernel<true, true, false, G, L>(step_dt, geometry, law);
         else if (rot && bond_scene)
-          pair_kernel<true, false, true, G>(step_dt, geometry);
+          pair_kernel<true, false, true, G, L>(step_dt, geometry, law);
         else if (rot)
-          pair_kernel<true, false, false, G>(step_dt, geometry);
+          pair_kernel<true, false, false, G, L>(step_dt, geometry, law);
         else if (plastic_scene && bond_scene)
-          pair_kernel<false, true, true, G>(step_dt, geometry);
+          pair_kernel<false, true, true, G, L>(step_dt, geometry, law);
         else if (plastic_scene)
-          pair_kernel<false, true, false, G>(step_dt, geometry);
+          pair_kernel<false, true, false, G, L>(step_dt, geometry, law);
         else if (bond_scene)
-          pair_kernel<false, false, true, G>(step_dt, geometry);
+          pair_kernel<false, false, true, G, L>(step_dt, geometry, law);
         else
-          pair_kernel<false, false, false, G>(step_dt, geometry);
+          pair_kernel<false, false, false, G, L>(step_dt, geometry, law);
       };
-      if (graded)
-        dispatch(GradedPairs{
-          pair_area.data(), pair_half_rest.data(), r0, &face_offset, 1. / S});
-      else
-        dispatch(UniformPairs{S, r0, 1. / r0, d});
+      friction_laws.with_selected([&](auto &law) {
+        if (graded)
+          dispatch(GradedPairs{pair_area.data(),
+                               pair_half_rest.data(),
+                               r0,
+                               &face_offset,
+                               1. / S},
+                   law);
+        else
+          dispatch(UniformPairs{S, r0, 1. / r0, d}, law);
+      });
     }
 
 
-    template <bool rot, bool plastic, bool bonds, class Pairs>
+    template <bool rot, bool plastic, bool bonds, class Pairs, class Law>
     void
-    AutomatonSystem::pair_kernel(const double step_dt, const Pairs &geometry)
+    AutomatonSystem::pair_kernel(const double step_dt,
+                                 const Pairs &geometry,
+                                 Law         &law)
     {
       const unsigned int n_pairs = pi.size();
-      const double       mu      = prm.interaction.friction_coefficient;
+      if constexpr (Law::stateful)
+        law.prepare(n_pairs);
       // radius of the circular contact face of area S (moment limits)
       const double face_radius = std::sqrt(S / M_PI);
       if constexpr (plastic)
@@ -295,6 +256,7 @@ namespace tribodyn
                       // touching now: only the overlap counts, from r = d
                       in_contact[p] = 1;
                       mark(p);
+                      law.start_contact(p);
                       q_i[p] = touch / 2;
                       r_prev = touch;
                       dr_p   = r - touch;
@@ -358,7 +320,20 @@ namespace tribodyn
               const double dun = dot(du, nm);
               for (unsigned int c = 0; c < 3; ++c)
                 du[c] -= dun * nm[c];
+              // a rate-dependent friction law: the contact's state over
+              // the step at its slip rate, the relative tangential speed
+              // of the contact points
+              if constexpr (Law::stateful)
+                if (!bonded[p])
+                  law.advance(p, std::sqrt(dot(du, du)) / step_dt, step_dt);
               const Vec3 t{{b_t[0][b], b_t[1][b], b_t[2][b]}};
+              if constexpr (Law::stateful)
+                {
+                  const double t_norm = std::sqrt(dot(t, t));
+                  law.remember_shear(p,
+                                     std::abs(tau_scale_i[p]) * t_norm,
+                                     std::abs(tau_scale_j[p]) * t_norm);
+                }
               {
                 // series springs of the two halves: one shear stress
                 // (kj tau_i + ki tau_j + ki kj du) / (ki + kj)
@@ -536,9 +511,10 @@ namespace tribodyn
                 }
               if (!bonded[p])
                 {
-                  // no tension; Amontons-Coulomb on each side
-                  sig_i[p] = std::min(sig_i[p], 0.);
-                  sig_j[p] = std::min(sig_j[p], 0.);
+                  // no tension; the friction law's limit on each side
+                  const double mu = law.coefficient(p);
+                  sig_i[p]        = std::min(sig_i[p], 0.);
+                  sig_j[p]        = std::min(sig_j[p], 0.);
                   const SeriesSprings &k
                     = springs[mat[i] * n_materials + mat[j]];
                   const double scale = geometry.stiffness_scale(p);
@@ -555,10 +531,22 @@ namespace tribodyn
                           const double s = tn > 0 ? limit / tn : 0;
                           // work of the slip (tn - limit) / k_series of this
                           // side's half of the pair force, counted by the
-                          // owner of that side
+                          // owner of that side, at the mean of the side's
+                          // stress at the start of the step (t0) and at its
+                          // end (the limit): the pair force does work over
+                          // the step at the mean of the two (velocity
+                          // Verlet), so the elastic energy and the slip
+                          // balance also where the limit changes from step
+                          // to step (rate-dependent laws: mu moves with the
+                          // slip rate). Amontons-Coulomb: at the limit (t0
+                          // = limit to first order).
+                          double work = limit * (tn - limit);
+                          if constexpr (Law::stateful)
+                            work = 0.5 * (law.shear_at_start(p, side) + limit)
+                                   * (tn - limit);
                           if (owned(side == 0 ? i : j))
-                            friction_work += 0.5 * Sp * limit * (tn - limit)
-                                             * (ki + kj) / (ki * kj);
+                            friction_work
+                              += 0.5 * Sp * work * (ki + kj) / (ki * kj);
                           a *= s;
                         }
                     }
@@ -623,7 +611,7 @@ namespace tribodyn
                           = pair_moment_law::limit_unbonded(K,
                                                             n,
                                                             -Sp * sn,
-                                                            mu,
+                                                            law.coefficient(p),
                                                             radius,
                                                             f * ks.twist,
                                                             f * ks.bend);
@@ -649,101 +637,5 @@ namespace tribodyn
     }
 
 
-    template <bool plastic>
-    void
-    AutomatonSystem::bond_switching()
-    {
-      // Bond switching (takes effect at the next step), from the automata's
-      // stress tensors (eq. 4) exchanged with the neighbours.
-      // member buffer: no allocation per step
-      std::vector<double> &ex = bond_buffer;
-      ex.assign(static_cast<std::size_t>(n_local) * 7, 0.);
-      for (unsigned int k = 0; k < n_owned; ++k)
-        {
-          ex[7 * k + 6] = plastic_scene ? sigma_y[k] : mc[mat[k]].yield0;
-          // an automaton of an elastic region with only elastic partners
-          // takes part in no bond check: its stress is not needed
-          bool needed = !elastic(k);
-          if (!needed)
-            for_each_pair_of(
-              k, [&](const unsigned int p, const unsigned int side) {
-                needed = needed || !elastic(side ? pi[p] : pj[p]);
-              });
-          if (!needed)
-            continue;
-          const Sym3 s = fabric_corrected(k, trial[k]);
-          for (unsigned int c = 0; c < 6; ++c)
-            ex[7 * k + c] = s[c];
-        }
-      if (neighbours.active())
-        neighbours.update(ex.data(), 7);
-      const double heat_fraction = prm.interaction.bond_formation_heat_fraction;
-      const unsigned int n_pairs = pi.size();
-      NormalBlock        nblock;
-      auto               pair_vector_of
-        = [this](const unsigned int p) { return pair_vector(p); };
-      for (unsigned int p0 = 0; p0 < n_pairs; p0 += NormalBlock::size)
-        {
-          const unsigned int nb = std::min(NormalBlock::size, n_pairs - p0);
-          nblock.fill(p0, nb, pair_vector_of);
-          for (unsigned int b = 0; b < nb; ++b)
-            {
-              const unsigned int p = p0 + b, i = pi[p], j = pj[p];
-              if (elastic(i) && elastic(j))
-                continue; // no bond switching inside elastic regions
-              const double r  = nblock.r[b];
-              const Vec3   n  = nblock.normal(b);
-              const double sn = 0.5 * (sig_i[p] + sig_j[p]);
-              const double am = 0.5 * (tau_scale_i[p] + tau_scale_j[p]);
-              if (bonded[p] && prm.interaction.bond_breaking)
-                {
-                  Sym3 s;
-                  for (unsigned int c = 0; c < 6; ++c)
-                    s[c] = 0.5 * (ex[7 * i + c] + ex[7 * j + c]);
-                  // replace the normal and shear parts by the pair's own
-                  const double sxx = s[0], syy = s[1], szz = s[2], syz = s[3],
-                               sxz = s[4], sxy = s[5];
-                  Vec3         sn_vec{{sxx * n[0] + sxy * n[1] + sxz * n[2],
-                                       sxy * n[0] + syy * n[1] + syz * n[2],
-                                       sxz * n[0] + syz * n[1] + szz * n[2]}};
-                  const double snn = dot(sn_vec, n);
-                  Vec3         corr;
-                  for (unsigned int c = 0; c < 3; ++c)
-                    corr[c]
-                      = am * tau.component[c][p] - (sn_vec[c] - snn * n[c]);
-                  add_sym(s, sn - snn, n, n);
-                  add_sym(s, 1, n, corr);
-                  add_sym(s, 1, corr, n);
-                  const double limit
-                    = std::min(mc[mat[i]].sigma_b, mc[mat[j]].sigma_b);
-                  if (von_mises_squared(s) >= limit * limit)
-                    {
-                      bonded[p]     = 0;
-                      in_contact[p] = r < (graded ? 2 * pair_half_rest[p] : d);
-                      if (!heat.empty())
-                        heat[p] = 0;
-                      changed[i] = changed[j] = 1;
-                      any_changed             = true;
-                    }
-                }
-              else if (!bonded[p] && in_contact[p]
-                       && prm.interaction.bond_formation)
-                {
-                  const double sy = std::min(ex[7 * i + 6], ex[7 * j + 6]);
-                  const double Eb
-                    = std::min(mc[mat[i]].w_b, mc[mat[j]].w_b) * area_of(p) * r;
-                  const double h = heat.empty() ? 0. : heat[p];
-                  if (sn <= -sy && h >= heat_fraction * Eb)
-                    {
-                      bonded[p] = 1;
-                      if (!heat.empty())
-                        heat[p] = 0;
-                      changed[i] = changed[j] = 1;
-                      any_changed             = true;
-                    }
-                }
-            }
-        }
-    }
   } // namespace mca
 } // namespace tribodyn

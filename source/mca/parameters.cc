@@ -71,11 +71,7 @@ namespace tribodyn
                           "Unbonded pairs in compression at the yield "
                           "stress whose plastic heat reaches the fraction "
                           "below of the bond energy become bonded.");
-        prm.declare_entry("Friction coefficient",
-                          "0.3",
-                          Double(),
-                          "Amontons-Coulomb coefficient of unbonded pairs "
-                          "(|tau| <= mu |sigma|), >= 0.");
+        FrictionLaws::Parameters::declare_parameters(prm);
         prm.declare_entry(
           "Relative rotation stiffness",
           "0",
@@ -125,11 +121,11 @@ namespace tribodyn
     {
       prm.enter_subsection("Interaction");
       {
-        rotations            = prm.get_bool("Rotations");
-        plasticity           = prm.get_bool("Plasticity");
-        bond_breaking        = prm.get_bool("Bond breaking");
-        bond_formation       = prm.get_bool("Bond formation");
-        friction_coefficient = prm.get_double("Friction coefficient");
+        rotations      = prm.get_bool("Rotations");
+        plasticity     = prm.get_bool("Plasticity");
+        bond_breaking  = prm.get_bool("Bond breaking");
+        bond_formation = prm.get_bool("Bond formation");
+        friction.parse_parameters(prm);
         relative_rotation_stiffness
           = prm.get_double("Relative rotation stiffness");
         bond_formation_heat_fraction
@@ -149,12 +145,6 @@ namespace tribodyn
             r.b     = read_point(t, 3, "Interaction/Elastic regions", entry);
             elastic_regions.push_back(r);
           }
-        check_parameter_range("Interaction/Friction coefficient",
-                              friction_coefficient,
-                              0,
-                              inf,
-                              false,
-                              true);
         // Above pi d^2 / S = 2 sqrt(2) pi the moments' springs make the
         // rotation of an automaton whose neighbours turn the other way
         // stiffer than its shear springs make a rotation with them (the

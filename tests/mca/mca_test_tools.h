@@ -39,6 +39,21 @@ namespace tribodyn_test
     return p;
   }
 
+  /// Two automata of size @p d, bonded as packed, at the contact distance
+  /// along (1, 1, 0)/sqrt 2: one body of half an FCC cell in a box with
+  /// room around it (two_automata.cc, rate_state_pair.cc).
+  inline Parameters
+  two_automata_parameters(const double d)
+  {
+    const double a             = d * std::sqrt(2.);
+    Parameters   p             = block_parameters(1, d, 0);
+    p.geometry.domain_lower    = Point3(-2 * a, -2 * a, -2 * a);
+    p.geometry.domain_upper    = Point3(3 * a, 3 * a, 3 * a);
+    p.geometry.bodies[0].lower = Point3(0, 0, 0);
+    p.geometry.bodies[0].upper = Point3(a, a, a / 2);
+    return p;
+  }
+
   /// Hooke's stress (xx yy zz yz xz xy) for strain eps.
   inline Sym3
   hooke(const MaterialParameters &m, const double eps[3][3])

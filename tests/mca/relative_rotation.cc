@@ -78,8 +78,8 @@ namespace
         b1.lower                   = Point3(a / 2, a / 2, 0);
         p.geometry.bodies.push_back(b1);
       }
-    p.interaction.relative_rotation_stiffness = lambda;
-    p.interaction.friction_coefficient        = 0.3;
+    p.interaction.relative_rotation_stiffness        = lambda;
+    p.interaction.friction.get<AmontonsCoulomb>().mu = 0.3;
     return p;
   }
 

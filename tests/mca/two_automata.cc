@@ -25,19 +25,13 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const double                             d = 1e-3, a = d * std::sqrt(2.);
-  Parameters                               p = block_parameters(1, d, 0);
-  p.geometry.domain_lower                    = Point3(-2 * a, -2 * a, -2 * a);
-  p.geometry.domain_upper                    = Point3(3 * a, 3 * a, 3 * a);
-  p.geometry.bodies[0].lower                 = Point3(0, 0, 0);
-  p.geometry.bodies[0].upper                 = Point3(a, a, a / 2);
-  p.interaction.plasticity                   = true;
-  p.interaction.bond_breaking                = true;
-  p.interaction.bond_formation               = true;
-  p.interaction.friction_coefficient         = 0.3;
-  // the packing lattice starts at domain_lower + a/4: shift the body
-  p.geometry.bodies[0].lower = Point3(0, 0, 0);
-  const auto     &m          = p.materials[0];
+  const double                             d       = 1e-3;
+  Parameters                               p       = two_automata_parameters(d);
+  p.interaction.plasticity                         = true;
+  p.interaction.bond_breaking                      = true;
+  p.interaction.bond_formation                     = true;
+  p.interaction.friction.get<AmontonsCoulomb>().mu = 0.3;
+  const auto     &m                                = p.materials[0];
   AutomatonSystem system(p, MPI_COMM_WORLD);
   system.setup();
   check(system.n_global_automata() == 2,
@@ -112,7 +106,8 @@ main(int argc, char **argv)
       pv              = move(t, 1e-6 * d);
       const double tn = std::sqrt(pv.tau[0] * pv.tau[0] + pv.tau[1] * pv.tau[1]
                                   + pv.tau[2] * pv.tau[2]);
-      const double limit = p.interaction.friction_coefficient * -pv.sigma;
+      const double limit
+        = p.interaction.friction.get<AmontonsCoulomb>().mu * -pv.sigma;
       if (tn >= limit * (1 - 1e-12))
         {
           slid          = true;

@@ -489,9 +489,13 @@ namespace tribodyn
       update_ghost_kinematics();
       void
       evaluate_pairs(const double step);
-      template <bool rotations, bool plastic, bool bonds, class Pairs>
+      template <bool rotations,
+                bool plastic,
+                bool bonds,
+                class Pairs,
+                class FrictionLaw>
       void
-      pair_kernel(const double step, const Pairs &geometry);
+      pair_kernel(const double step, const Pairs &geometry, FrictionLaw &law);
       template <bool plastic>
       void
       bond_switching();
@@ -855,6 +859,9 @@ namespace tribodyn
       PairFieldTable pair_fields;
       void
       register_pair_fields();
+      /// The friction laws of unbonded pairs (the chosen one holds its
+      /// pair state, registered in pair_fields).
+      FrictionLaws friction_laws;
       /// Pair states received over a rebuild: records of
       /// pair_fields.width() doubles in id order (kept_states), and their
       /// keys (smaller id << 32 | larger id) with the record index, sorted.

@@ -7,6 +7,7 @@
 #include <deal.II/base/point.h>
 #include <memory>
 #include <string>
+#include <tribodyn/mca/friction_laws.h>
 #include <vector>
 
 namespace tribodyn
@@ -284,11 +285,12 @@ namespace tribodyn
     /// Subsection "Interaction": what the pair law includes.
     struct InteractionParameters
     {
-      bool   rotations            = true;
-      bool   plasticity           = true;
-      bool   bond_breaking        = false;
-      bool   bond_formation       = false;
-      double friction_coefficient = 0.3;
+      bool rotations      = true;
+      bool plasticity     = true;
+      bool bond_breaking  = false;
+      bool bond_formation = false;
+      /// The friction law of unbonded pairs and each law's constants.
+      FrictionLaws::Parameters friction;
       /// Factor lambda of the stiffnesses of the relative-rotation moment
       /// K_ij of seed eq. (1) (doc/theory/mca.md §3): twisting lambda k J,
       /// bending lambda k I of the pair's contact face. 0: no K_ij.

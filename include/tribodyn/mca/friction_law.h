@@ -1,0 +1,175 @@
+// Friction laws of unbonded pairs as policies (issue #17 items 1-2): the
+// pair kernel is instantiated on the law a scene uses, chosen once per
+// step in AutomatonSystem::evaluate_pairs(); the law's coefficient is an
+// inline call in the kernel's loops, without run-time flags per pair.
+//
+// A law is a class with
+//  - `static constexpr const char *name`: its name in `Interaction/Friction
+//    law`;
+//  - `struct Parameters` with `static declare_parameters(prm)` and
+//    `parse_parameters(prm)` (called inside subsection Interaction: a law
+//    with several constants declares a subsection of its own);
+//  - a constructor from its Parameters;
+//  - `static constexpr bool stateful`: whether it has a state per pair and
+//    needs the slip rate of each contact;
+//  - `register_pair_fields(table, in_use)`: its persistent pair fields
+//    (carried over rebuilds, migration and checkpoints by PairFieldTable);
+//  - `start_contact(p)`: pair p became a contact (it touched, or its bond
+//    broke);
+//  - `advance(p, slip_rate, dt)` (stateful laws): the state over a step at
+//    the contact's slip rate, and the coefficient of the step;
+//  - `coefficient(p)`: mu of pair p in this step.
+// A new law is one header in include/tribodyn/mca/friction_laws/ and its
+// name in the list of friction_laws.h.
+#ifndef tribodyn_mca_friction_law_h
+#define tribodyn_mca_friction_law_h
+
+#include <array>
+#include <deal.II/base/parameter_handler.h>
+#include <functional>
+#include <string>
+#include <tribodyn/core/selection.h>
+#include <tribodyn/mca/pair_fields.h>
+#include <tuple>
+#include <utility>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    /**
+     * The friction laws a run may choose from, as a list of types, and
+     * the one the parameters chose. Parameters holds every law's own
+     * parameter struct; the list itself holds one object of each law (only
+     * the chosen one allocates pair state).
+     */
+    template <class... Laws>
+    class FrictionLawList
+    {
+    public:
+      static constexpr std::size_t n_laws = sizeof...(Laws);
+
+      /// Names in Interaction/Friction law, by index.
+      static SelectionTable<unsigned int, n_laws>
+      table()
+      {
+        return table_of(std::index_sequence_for<Laws...>());
+      }
+
+      struct Parameters
+      {
+        /// Index of the chosen law in Laws.
+        unsigned int                             selected = 0;
+        std::tuple<typename Laws::Parameters...> laws;
+
+        static void
+        declare_parameters(dealii::ParameterHandler &prm)
+        {
+          std::string doc = "Friction law of the unbonded pairs in contact "
+                            "(doc/theory/mca.md Sec. 3): ";
+          doc += selection_choices(table());
+          doc += "; each law's constants are in its own entries below.";
+          prm.declare_entry("Friction law",
+                            table()[0].first,
+                            selection_pattern(table()),
+                            doc);
+          (Laws::Parameters::declare_parameters(prm), ...);
+        }
+
+        void
+        parse_parameters(dealii::ParameterHandler &prm)
+        {
+          selected = get_selection(prm, "Friction law", table());
+          std::apply([&](auto &...p) { (p.parse_parameters(prm), ...); }, laws);
+        }
+
+        template <class Law>
+        typename Law::Parameters &
+        get()
+        {
+          return std::get<typename Law::Parameters>(laws);
+        }
+        template <class Law>
+        const typename Law::Parameters &
+        get() const
+        {
+          return std::get<typename Law::Parameters>(laws);
+        }
+
+        /// The chosen law's name.
+        const char *
+        name() const
+        {
+          return table()[selected].first;
+        }
+
+        template <class Law>
+        bool
+        is() const
+        {
+          return table()[selected].first == std::string(Law::name);
+        }
+      };
+
+      explicit FrictionLawList(const Parameters &p)
+          : selected(p.selected)
+          , laws(Laws(std::get<typename Laws::Parameters>(p.laws))...)
+      {
+      }
+
+      /// Call @p f with the chosen law.
+      template <class F>
+      void
+      with_selected(const F &f)
+      {
+        with_index(f, std::index_sequence_for<Laws...>());
+      }
+
+      /// Call @p f with every law (events such as a broken bond).
+      template <class F>
+      void
+      for_each(const F &f)
+      {
+        std::apply([&](auto &...law) { (f(law), ...); }, laws);
+      }
+
+      /// Register the chosen law's persistent pair fields (every law
+      /// registers its own, in use only when chosen, so that the
+      /// checkpoint layout is the same for every choice).
+      void
+      register_pair_fields(PairFieldTable &table_of_fields)
+      {
+        register_each(table_of_fields, std::index_sequence_for<Laws...>());
+      }
+
+    private:
+      unsigned int        selected;
+      std::tuple<Laws...> laws;
+
+      template <std::size_t... I>
+      static SelectionTable<unsigned int, n_laws>
+      table_of(std::index_sequence<I...>)
+      {
+        return {{{Laws::name, static_cast<unsigned int>(I)}...}};
+      }
+
+      template <class F, std::size_t... I>
+      void
+      with_index(const F &f, std::index_sequence<I...>)
+      {
+        ((selected == I ? f(std::get<I>(laws)) : void()), ...);
+      }
+
+      template <std::size_t... I>
+      void
+      register_each(PairFieldTable &t, std::index_sequence<I...>)
+      {
+        (std::get<I>(laws).register_pair_fields(
+           t, [this] { return selected == I; }),
+         ...);
+      }
+    };
+  } // namespace mca
+} // namespace tribodyn
+
+#endif
