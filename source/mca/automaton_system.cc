@@ -510,7 +510,8 @@ namespace tribodyn
         add(*vec);
       add(mat), add(body), add(size_level), add(volume), add(groups),
         add(eps_p), add(sigma_y);
-      add(plast), add(bond_buffer), add(sum_qs), add(dsm);
+      add(plast), add(bond_buffer), add(sum_qs), add(dsm), add(pair_mu),
+        add(shear_at_start);
       add(trial), add(fabric_inverse), add(changed);
       add(pi), add(pj), add(pshift);
       bytes += pair_fields.memory_consumption();

@@ -63,6 +63,19 @@ namespace tribodyn
         }
     }
 
+    template <class Law>
+    inline double
+    AutomatonSystem::friction_coefficient(const Law         &law,
+                                          const unsigned int p) const
+    {
+      // a rate-dependent law's mu of this step, from pass A; a constant one
+      if constexpr (Law::stateful)
+        return pair_mu[p];
+      else
+        return law.coefficient();
+    }
+
+
     void
     AutomatonSystem::update_ghost_kinematics()
     {
@@ -125,7 +138,10 @@ namespace tribodyn
     {
       const unsigned int n_pairs = pi.size();
       if constexpr (Law::stateful)
-        law.prepare(n_pairs);
+        {
+          pair_mu.resize(n_pairs);
+          shear_at_start.resize(2 * static_cast<std::size_t>(n_pairs));
+        }
       // radius of the circular contact face of area S (moment limits)
       const double face_radius = std::sqrt(S / M_PI);
       if constexpr (plastic)
@@ -325,14 +341,14 @@ namespace tribodyn
               // of the contact points
               if constexpr (Law::stateful)
                 if (!bonded[p])
-                  law.advance(p, std::sqrt(dot(du, du)) / step_dt, step_dt);
+                  pair_mu[p]
+                    = law.advance(p, std::sqrt(dot(du, du)) / step_dt, step_dt);
               const Vec3 t{{b_t[0][b], b_t[1][b], b_t[2][b]}};
               if constexpr (Law::stateful)
                 {
-                  const double t_norm = std::sqrt(dot(t, t));
-                  law.remember_shear(p,
-                                     std::abs(tau_scale_i[p]) * t_norm,
-                                     std::abs(tau_scale_j[p]) * t_norm);
+                  const double t_norm       = std::sqrt(dot(t, t));
+                  shear_at_start[2 * p]     = std::abs(tau_scale_i[p]) * t_norm;
+                  shear_at_start[2 * p + 1] = std::abs(tau_scale_j[p]) * t_norm;
                 }
               {
                 // series springs of the two halves: one shear stress
@@ -512,7 +528,7 @@ namespace tribodyn
               if (!bonded[p])
                 {
                   // no tension; the friction law's limit on each side
-                  const double mu = law.coefficient(p);
+                  const double mu = friction_coefficient(law, p);
                   sig_i[p]        = std::min(sig_i[p], 0.);
                   sig_j[p]        = std::min(sig_j[p], 0.);
                   const SeriesSprings &k
@@ -542,7 +558,7 @@ namespace tribodyn
                           // = limit to first order).
                           double work = limit * (tn - limit);
                           if constexpr (Law::stateful)
-                            work = 0.5 * (law.shear_at_start(p, side) + limit)
+                            work = 0.5 * (shear_at_start[2 * p + side] + limit)
                                    * (tn - limit);
                           if (owned(side == 0 ? i : j))
                             friction_work
@@ -608,13 +624,14 @@ namespace tribodyn
                         if constexpr (Pairs::offsets)
                           radius = std::sqrt(geometry.area(p) / M_PI);
                         const double slip_work
-                          = pair_moment_law::limit_unbonded(K,
-                                                            n,
-                                                            -Sp * sn,
-                                                            law.coefficient(p),
-                                                            radius,
-                                                            f * ks.twist,
-                                                            f * ks.bend);
+                          = pair_moment_law::limit_unbonded(
+                            K,
+                            n,
+                            -Sp * sn,
+                            friction_coefficient(law, p),
+                            radius,
+                            f * ks.twist,
+                            f * ks.bend);
                         if (owned(i))
                           friction_work += slip_work;
                         pair_moment.set(p, K);

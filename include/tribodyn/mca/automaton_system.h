@@ -499,6 +499,10 @@ namespace tribodyn
       template <bool plastic>
       void
       bond_switching();
+      /// mu of unbonded pair @p p in this step under @p law.
+      template <class Law>
+      double
+      friction_coefficient(const Law &law, const unsigned int p) const;
       /// Elastic energy sum |K|^2 / 2k of the relative-rotation moments
       /// K_ij (updated in the pair kernel, pair_moment_law.h) of the pairs
       /// counted by this rank.
@@ -814,6 +818,10 @@ namespace tribodyn
       /// sum_qs: plastic-heat shares; dsm: the volumetric strain increment,
       /// then the mean-stress increment of each automaton.
       std::vector<double> sum_qs, dsm;
+      /// Rate-dependent friction laws: mu of each pair in this step, and
+      /// the shear stress of each side at the start of the step (the
+      /// friction work of a limit that moves, pair_kernel.cc).
+      std::vector<double> pair_mu, shear_at_start;
       /// Stress tensors T (eq. 4) of the owned automata: the plastic
       /// trial in pass B, the final one in pass C of bond scenes.
       std::vector<Mat3> trial;

@@ -16,9 +16,11 @@
 //    (carried over rebuilds, migration and checkpoints by PairFieldTable);
 //  - `start_contact(p)`: pair p became a contact (it touched, or its bond
 //    broke);
-//  - `advance(p, slip_rate, dt)` (stateful laws): the state over a step at
-//    the contact's slip rate, and the coefficient of the step;
-//  - `coefficient(p)`: mu of pair p in this step.
+//  - stateful laws: `advance(p, slip_rate, dt)`: the state of contact p
+//    over a step at its slip rate; returns the step's mu;
+//  - laws without state: `coefficient()`: their mu.
+// The kernel keeps what every law needs (the slip rate, mu of the step,
+// the sides' shear stresses at the start of a step for the friction work).
 // A new law is one header in include/tribodyn/mca/friction_laws/ and its
 // name in the list of friction_laws.h.
 #ifndef tribodyn_mca_friction_law_h

@@ -63,7 +63,7 @@ namespace tribodyn
       }
 
       double
-      coefficient(const unsigned int) const
+      coefficient() const
       {
         return mu;
       }

@@ -128,30 +128,6 @@ namespace tribodyn
                    {}});
       }
 
-      /// Before a pass over @p n_pairs pairs (no allocation once sized).
-      void
-      prepare(const unsigned int n_pairs)
-      {
-        mu.resize(n_pairs);
-        shear_before.resize(2 * n_pairs);
-      }
-
-      /// The shear stresses of the two sides of pair @p p at the start of
-      /// the step: the elastic energy a drop of mu releases is booked as
-      /// friction work (pair_kernel.cc).
-      void
-      remember_shear(const unsigned int p, const double ti, const double tj)
-      {
-        shear_before[2 * p]     = ti;
-        shear_before[2 * p + 1] = tj;
-      }
-
-      double
-      shear_at_start(const unsigned int p, const unsigned int side) const
-      {
-        return shear_before[2 * p + side];
-      }
-
       void
       start_contact(const unsigned int p)
       {
@@ -160,8 +136,8 @@ namespace tribodyn
       }
 
       /// The state of contact @p p over a step @p dt at slip rate @p V
-      /// (exact for V constant over the step), and the step's mu.
-      void
+      /// (exact for V constant over the step); returns the step's mu.
+      double
       advance(const unsigned int p, const double V, const double dt)
       {
         // theta' = theta e^-x + (D_c / V)(1 - e^-x), x = V dt / D_c;
@@ -170,15 +146,9 @@ namespace tribodyn
         const double one = -std::expm1(-x);
         const double t   = theta[p] * (1 - one) + dt * (x > 0 ? one / x : 1.);
         theta[p]         = t;
-        mu[p]            = std::max(0.,
-                         mu_shift + prm.a * std::log(std::max(V, prm.V_min))
-                           + prm.b * std::log(t));
-      }
-
-      double
-      coefficient(const unsigned int p) const
-      {
-        return mu[p];
+        return std::max(0.,
+                        mu_shift + prm.a * std::log(std::max(V, prm.V_min))
+                          + prm.b * std::log(t));
       }
 
     private:
@@ -187,9 +157,8 @@ namespace tribodyn
       double theta_new;
       /// mu0 - a ln V0 + b ln(V0 / D_c): mu = mu_shift + a ln V + b ln theta
       double mu_shift;
-      /// State theta of each pair (persistent); mu of this step and the
-      /// shear stresses of the sides at its start (scratch).
-      std::vector<double> theta, mu, shear_before;
+      /// State theta of each pair (persistent).
+      std::vector<double> theta;
     };
   } // namespace mca
 } // namespace tribodyn
