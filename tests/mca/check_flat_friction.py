@@ -46,6 +46,14 @@ contacts (a few 1e-3 d at the ~1 GPa pair stresses).
 Not the summary's mu_steady: its band test picks a window that is not a
 whole number of periods of this periodic signal.
 
+With Friction law = Dieterich (flat_friction_dieterich_{1,2,4}.prm, issue
+#17 item 2) the contact slides at V_rel / cos(alpha) on the path, its state
+is the steady one (D_c << a), and phi(alpha) = atan mu_ss(V_rel / cos(alpha))
+under the integral (midpoint rule). Measured deviations -0.0002, +0.0025,
++0.0051 at +-1, +-2, +-4 m/s, within the same TOLERANCE; an Amontons-Coulomb
+law at mu0 (mu_macro 0.3847) misses the slowest and fastest by 0.019 and
+0.028.
+
 4. Energy balance of the run (doc/theory/mca.md Sec. 8.4): kinetic + elastic
    + friction work + damped energy = work of the loads within
    ENERGY_TOLERANCE of the load work, and the integrator's bookkeeping

@@ -41,8 +41,8 @@ main(int argc, char **argv)
   const double                             d = 1e-3;
   Parameters                               p = two_automata_parameters(d);
   p.interaction.bond_breaking                = true;
-  auto &law                       = p.interaction.friction.get<Dieterich>();
-  p.interaction.friction.selected = 1;
+  auto &law = p.interaction.friction.get<Dieterich>();
+  p.interaction.friction.select<Dieterich>();
   check(p.interaction.friction.is<Dieterich>(), "Dieterich chosen");
   law.mu0    = 0.3;
   law.a      = 0.012;

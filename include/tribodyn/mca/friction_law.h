@@ -98,11 +98,13 @@ namespace tribodyn
           return std::get<typename Law::Parameters>(laws);
         }
 
-        /// The chosen law's name.
-        const char *
-        name() const
+        /// Choose @p Law (programs and tests; a parameter file chooses
+        /// by name).
+        template <class Law>
+        void
+        select()
         {
-          return table()[selected].first;
+          selected = *find_selection(table(), Law::name);
         }
 
         template <class Law>
