@@ -85,7 +85,7 @@ namespace tribodyn
                       bonded[p]     = 0;
                       in_contact[p] = r < (graded ? 2 * pair_half_rest[p] : d);
                       // a new contact for the friction law
-                      friction_laws.for_each(
+                      friction_laws.with_selected(
                         [p](auto &law) { law.start_contact(p); });
                       if (!heat.empty())
                         heat[p] = 0;

@@ -129,14 +129,6 @@ namespace tribodyn
         with_index(f, std::index_sequence_for<Laws...>());
       }
 
-      /// Call @p f with every law (events such as a broken bond).
-      template <class F>
-      void
-      for_each(const F &f)
-      {
-        std::apply([&](auto &...law) { (f(law), ...); }, laws);
-      }
-
       /// Register the chosen law's persistent pair fields (every law
       /// registers its own, in use only when chosen, so that the
       /// checkpoint layout is the same for every choice).

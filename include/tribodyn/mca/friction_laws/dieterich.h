@@ -131,8 +131,7 @@ namespace tribodyn
       void
       start_contact(const unsigned int p)
       {
-        if (p < theta.size())
-          theta[p] = theta_new;
+        theta[p] = theta_new;
       }
 
       /// The state of contact @p p over a step @p dt at slip rate @p V
