@@ -37,8 +37,10 @@ namespace tribodyn
     {
       // 2: with the relative-rotation moments (pair_moment); 3: size levels
       // and volumes of the automata (graded scenes); 4: the rebalances of
-      // the partition; 5: the friction law's pair state (Dieterich's theta)
-      constexpr unsigned int state_version = 5;
+      // the partition; 5: the friction law's pair state (Dieterich's theta);
+      // 6: the run's state that follows is the postprocessors' (in list
+      // order, source/mca/mca_problem.cc)
+      constexpr unsigned int state_version = 6;
 
       // Scalars and vectors of trivially copyable types as raw bytes (fast
       // and exact); anything else through Boost's own serialization.

@@ -1,4 +1,4 @@
-#include "analyses.h"
+#include "scene_report.h"
 
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
@@ -20,8 +20,8 @@
 #include <tribodyn/core/progress.h>
 #include <tribodyn/core/version.h>
 #include <tribodyn/mca/automaton_system.h>
-#include <tribodyn/mca/friction_observer.h>
 #include <tribodyn/mca/mca_problem.h>
+#include <tribodyn/mca/postprocessor.h>
 
 namespace tribodyn
 {
@@ -88,54 +88,42 @@ namespace tribodyn
 
     namespace
     {
-      /// What follows the automata in a rank's checkpoint: the outputs
-      /// written so far and the observers' series (the same on every rank).
+      using PostprocessorList = std::vector<std::unique_ptr<Postprocessor>>;
+
+      /// What follows the automata in a rank's checkpoint: the rows of
+      /// series.csv so far and the postprocessors' states, in list order
+      /// (the same on every rank).
       void
-      write_run_state(boost::archive::binary_oarchive          &ar,
-                      const std::vector<std::vector<double> *> &observed,
-                      const unsigned int                        output_number,
-                      const std::size_t                         series_rows,
-                      const std::vector<const PvdWriter *>     &pvds)
+      write_run_state(boost::archive::binary_oarchive &ar,
+                      const PostprocessorList         &postprocessors,
+                      const std::size_t                series_rows)
       {
-        ar << output_number << series_rows;
-        for (const auto *pvd : pvds)
-          ar << pvd->entries();
-        for (const auto *series : observed)
-          ar << *series;
+        ar << series_rows;
+        for (const auto &pp : postprocessors)
+          pp->save(ar);
       }
       void
-      read_run_state(boost::archive::binary_iarchive          &ar,
-                     const std::vector<std::vector<double> *> &observed,
-                     unsigned int                             &output_number,
-                     std::size_t                              &series_rows,
-                     const std::vector<PvdWriter *>           &pvds)
+      read_run_state(boost::archive::binary_iarchive &ar,
+                     const PostprocessorList         &postprocessors,
+                     std::size_t                     &series_rows)
       {
-        ar >> output_number >> series_rows;
-        for (auto *pvd : pvds)
-          {
-            std::vector<std::pair<double, std::string>> entries;
-            ar >> entries;
-            pvd->restore(entries);
-          }
-        for (auto *series : observed)
-          ar >> *series;
+        ar >> series_rows;
+        for (const auto &pp : postprocessors)
+          pp->load(ar);
       }
 
 
-      /// This rank's checkpoint: the automata, the observers' series, the
-      /// outputs written so far.
+      /// This rank's checkpoint: the automata, then the run's state.
       std::string
-      save_checkpoint_blob(const AutomatonSystem                    &system,
-                           const std::vector<std::vector<double> *> &observed,
-                           const unsigned int                    output_number,
-                           const std::size_t                     series_rows,
-                           const std::vector<const PvdWriter *> &pvds)
+      save_checkpoint_blob(const AutomatonSystem   &system,
+                           const PostprocessorList &postprocessors,
+                           const std::size_t        series_rows)
       {
         std::ostringstream out(std::ios::binary);
         {
           boost::archive::binary_oarchive ar(out);
           system.save_state(ar);
-          write_run_state(ar, observed, output_number, series_rows, pvds);
+          write_run_state(ar, postprocessors, series_rows);
         }
         return out.str();
       }
@@ -149,14 +137,12 @@ namespace tribodyn
        * own state taken from the writer of rank 0 (read by rank 0).
        */
       void
-      load_checkpoint(const std::vector<std::string>           &blobs,
-                      const bool                                same_ranks,
-                      AutomatonSystem                          &system,
-                      const std::vector<std::vector<double> *> &observed,
-                      unsigned int                             &output_number,
-                      std::size_t                              &series_rows,
-                      const std::vector<PvdWriter *>           &pvds,
-                      const MPI_Comm                            comm)
+      load_checkpoint(const std::vector<std::string> &blobs,
+                      const bool                      same_ranks,
+                      AutomatonSystem                &system,
+                      const PostprocessorList        &postprocessors,
+                      std::size_t                    &series_rows,
+                      const MPI_Comm                  comm)
       {
         const bool  root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
         std::string run_state;
@@ -165,18 +151,14 @@ namespace tribodyn
             system.load_state(ar);
           else
             system.absorb_state(ar);
-          read_run_state(ar, observed, output_number, series_rows, pvds);
+          read_run_state(ar, postprocessors, series_rows);
           if (!same_ranks && root && run_state.empty())
             {
               // writer 0's run state again, to be sent to every rank
               std::ostringstream out(std::ios::binary);
               {
                 boost::archive::binary_oarchive copy(out);
-                write_run_state(copy,
-                                observed,
-                                output_number,
-                                series_rows,
-                                {pvds.begin(), pvds.end()});
+                write_run_state(copy, postprocessors, series_rows);
               }
               run_state = out.str();
             }
@@ -185,7 +167,7 @@ namespace tribodyn
           return;
         run_state = dealii::Utilities::MPI::broadcast(comm, run_state, 0);
         read_checkpoint_blobs(comm, {run_state}, [&](auto &ar) {
-          read_run_state(ar, observed, output_number, series_rows, pvds);
+          read_run_state(ar, postprocessors, series_rows);
         });
         system.redistribute_absorbed();
       }
@@ -257,57 +239,14 @@ namespace tribodyn
             << " s (critical d/c_p = " << system.critical_time_step() << " s), "
             << n_steps << " steps" << std::endl;
 
-      // Series
-      std::vector<std::string> columns = {"time",
-                                          "kinetic_energy",
-                                          "elastic_energy",
-                                          "plastic_work",
-                                          "friction_work",
-                                          "n_bonded_pairs",
-                                          "n_unbonded_contacts",
-                                          "load_work",
-                                          "damped_work",
-                                          "pair_work"};
-      for (const auto &g : p.boundary.groups)
-        for (const char *c : {"fx", "fy", "fz", "ux", "uy", "uz"})
-          columns.push_back(g.name + "_" + c);
-      const bool friction
-        = p.analysis.type == AnalysisParameters::Type::friction;
-      int loaded = -1;
-      for (unsigned int g = 0; g < p.boundary.groups.size(); ++g)
-        if (p.boundary.groups[g].name == p.analysis.loaded_group)
-          loaded = g;
-      if (friction)
-        columns.push_back("mu");
-      if (p.analysis.type == AnalysisParameters::Type::uniaxial)
-        for (const auto &c : UniaxialAnalysis::series_columns())
+      // The outputs of this run (source/mca/postprocessors/), in order:
+      // their series columns side by side in series.csv.
+      const PostprocessorList postprocessors
+        = PostprocessorRegistry::create_all({system, p, comm, out_dir, root});
+      std::vector<std::string> columns;
+      for (const auto &pp : postprocessors)
+        for (const auto &c : pp->series_columns())
           columns.push_back(c);
-      if (p.analysis.type == AnalysisParameters::Type::pulse)
-        for (const auto &c : PulseAnalysis::series_columns())
-          columns.push_back(c);
-      PvdWriter pvd(join_path(out_dir, "particles.pvd"), root);
-      PvdWriter pvd_slab(join_path(out_dir, "cross_section.pvd"), root);
-      PvdWriter pvd_pairs(join_path(out_dir, "unbonded_pairs.pvd"), root);
-
-      std::unique_ptr<UniaxialAnalysis> uniaxial;
-      std::unique_ptr<PulseAnalysis>    pulse;
-      if (p.analysis.type == AnalysisParameters::Type::uniaxial)
-        uniaxial = std::make_unique<UniaxialAnalysis>(system, p, comm);
-      if (p.analysis.type == AnalysisParameters::Type::pulse)
-        pulse = std::make_unique<PulseAnalysis>(system, p, comm);
-      FrictionObserver friction_observer(p, loaded);
-      bool             staged = false;
-      for (const auto &g : p.boundary.groups)
-        staged = staged || g.switch_on_contact;
-      // The series of the observers (saved in checkpoints).
-      std::vector<std::vector<double> *> observed
-        = friction_observer.recorded_series();
-      for (auto *a : uniaxial ? uniaxial->recorded_series()
-                              : std::vector<std::vector<double> *>())
-        observed.push_back(a);
-      for (auto *a : pulse ? pulse->recorded_series()
-                           : std::vector<std::vector<double> *>())
-        observed.push_back(a);
 
       const unsigned long series_every
         = p.output.series_interval > 0
@@ -321,8 +260,6 @@ namespace tribodyn
                        static_cast<unsigned long>(
                          std::round(p.output.output_interval / dt)))
             : n_steps;
-      unsigned int output_number = 0;
-      const bool   need_stress   = p.output.write_stress;
 
       // A fresh start, or the state of the latest checkpoint.
       CheckpointStore            store(out_dir, "mca", comm);
@@ -333,14 +270,8 @@ namespace tribodyn
           CheckpointInfo info;
           std::size_t    rows  = 0;
           const auto     blobs = store.read(checkpoint_lines, info);
-          load_checkpoint(blobs,
-                          info.n_ranks == n_ranks,
-                          system,
-                          observed,
-                          output_number,
-                          rows,
-                          {&pvd, &pvd_slab, &pvd_pairs},
-                          comm);
+          load_checkpoint(
+            blobs, info.n_ranks == n_ranks, system, postprocessors, rows, comm);
           if (system.step_number() >= n_steps)
             throw InputError("Nothing to resume: the checkpoint is at step "
                              + std::to_string(system.step_number())
@@ -350,8 +281,8 @@ namespace tribodyn
                              + " s. Raise the end time to continue the run.");
           // Every check passed: the output directory may be touched.
           context.claim_output(OutputClaim::resume);
-          for (const PvdWriter *w : {&pvd, &pvd_slab, &pvd_pairs})
-            w->write();
+          for (const auto &pp : postprocessors)
+            pp->resume_outputs();
           series
             = std::make_unique<CsvWriter>(series_path, columns, root, rows);
           pcout << "Resuming from the checkpoint at t = " << info.time
@@ -372,36 +303,8 @@ namespace tribodyn
 
       auto write_outputs = [&]() {
         dealii::TimerOutput::Scope scope(timer, "output");
-        if (p.output.write_particles)
-          pvd.add(system.time(),
-                  system.write_particles(
-                    out_dir, "particles", output_number, need_stress));
-        if (p.output.cross_section)
-          {
-            const double th = p.output.cross_section_thickness > 0
-                                ? p.output.cross_section_thickness
-                                : 7 * p.geometry.automaton_size / std::sqrt(2.);
-            const double lo = p.output.cross_section_position - th / 2,
-                         hi = p.output.cross_section_position + th / 2;
-            pvd_slab.add(system.time(),
-                         system.write_particles(out_dir,
-                                                "cross_section",
-                                                output_number,
-                                                need_stress,
-                                                true,
-                                                p.output.cross_section_axis,
-                                                lo,
-                                                hi));
-            pvd_pairs.add(
-              system.time(),
-              system.write_unbonded_pairs(out_dir,
-                                          "unbonded_pairs",
-                                          output_number,
-                                          p.output.cross_section_axis,
-                                          lo,
-                                          hi));
-          }
-        ++output_number;
+        for (const auto &pp : postprocessors)
+          pp->write_output();
       };
 
       std::string key_figure;
@@ -410,45 +313,16 @@ namespace tribodyn
         const SystemEnergies       e      = system.energies();
         const auto                 forces = system.group_forces();
         const auto                 disp   = system.group_displacements();
-        std::vector<double>        row    = {system.time(),
-                                             e.kinetic,
-                                             e.elastic,
-                                             e.plastic_work,
-                                             e.friction_work,
-                                             double(e.n_bonded),
-                                             double(e.n_unbonded_contacts),
-                                             e.load_work,
-                                             e.damped_work,
-                                             e.pair_work};
-        for (unsigned int g = 0; g < forces.size(); ++g)
+        const SeriesSample         sample{system.time(), e, forces, disp};
+        std::vector<double>        row;
+        key_figure.clear();
+        for (const auto &pp : postprocessors)
           {
-            for (unsigned int c = 0; c < 3; ++c)
-              row.push_back(forces[g][c]);
-            for (unsigned int c = 0; c < 3; ++c)
-              row.push_back(disp[g][c]);
+            pp->record(sample, row);
+            const std::string figure = pp->key_figure();
+            if (!figure.empty())
+              key_figure += (key_figure.empty() ? "" : ", ") + figure;
           }
-        if (friction && loaded >= 0)
-          {
-            // With a staged loading, mu is recorded from the first contact
-            // of the bodies on (before it the layers carry no load).
-            double mu = 0;
-            if (!staged || system.contact_time() >= 0)
-              {
-                mu = friction_observer.record(system.time(), forces, e);
-                friction_observer.record_layer(system.time(), system, comm);
-              }
-            row.push_back(mu);
-            key_figure = "mu = " + format_number(mu);
-          }
-        if (uniaxial)
-          {
-            uniaxial->record();
-            for (const double v : uniaxial->series_values())
-              row.push_back(v);
-          }
-        if (pulse)
-          for (const double v : pulse->series_values())
-            row.push_back(v);
         series->add_row(row);
         series->flush();
       };
@@ -458,10 +332,8 @@ namespace tribodyn
         dealii::TimerOutput::Scope scope(timer, "checkpoint");
         series->flush(true);
         store.write(save_checkpoint_blob(system,
-                                         observed,
-                                         output_number,
-                                         series->n_rows(),
-                                         {&pvd, &pvd_slab, &pvd_pairs}),
+                                         postprocessors,
+                                         series->n_rows()),
                     system.step_number(),
                     system.time(),
                     checkpoint_lines);
@@ -487,17 +359,17 @@ namespace tribodyn
       // SIGTERM/SIGINT: polled between steps (checkpoint, clean stop).
       const InterruptHandlers interrupt_handlers;
       const auto              loop_start = std::chrono::steady_clock::now();
-      // A run that stops early keeps its friction series (friction.csv).
-      auto keep_friction_series = [&]() {
-        if (friction && friction_observer.recorded_series()[0]->size() >= 2)
-          friction_observer.write_series(out_dir, root);
+      // A run that stops early keeps what its samples give (friction.csv).
+      auto write_partial_results = [&]() {
+        for (const auto &pp : postprocessors)
+          pp->write_partial_results();
       };
       timer.enter_subsection("time steps");
       for (unsigned long s = first_step; s <= n_steps; ++s)
         {
           system.step();
-          if (pulse)
-            pulse->record(system.time());
+          for (const auto &pp : postprocessors)
+            pp->after_step();
           // Every step: finiteness and speed of the automata, signals and
           // the displacement that decides the next step's pair-list
           // rebuild, agreed by all ranks in one small MPI_Allreduce.
@@ -509,7 +381,7 @@ namespace tribodyn
           system.set_agreed_displacement_since_rebuild(displacement2);
           if (health.badness > 0)
             {
-              keep_friction_series();
+              write_partial_results();
               system.report_instability(v_limit);
             }
           const bool regular = s % series_every == 0;
@@ -534,7 +406,7 @@ namespace tribodyn
           if (health.signal != 0)
             {
               InterruptHandlers::acknowledge();
-              keep_friction_series();
+              write_partial_results();
             }
           if (health.signal != 0)
             throw Interrupted(
@@ -562,59 +434,11 @@ namespace tribodyn
       const double wall = std::chrono::duration<double>(
                             std::chrono::steady_clock::now() - start)
                             .count();
-      std::ostringstream figures_early;
-      figures_early << std::setprecision(6);
       JsonValue summary           = JsonValue::object();
       summary["problem"]          = "mca";
       summary["tribodyn_version"] = version_string;
       summary["n_mpi_ranks"]      = n_ranks;
-      summary["n_automata"]       = system.n_global_automata();
-      if (!parameters.geometry.size_bands.empty())
-        {
-          // automata of size d, 2d, 4d (Geometry/Size bands)
-          std::vector<unsigned long long> per_size(3, 0);
-          const auto                      levels = system.size_levels();
-          for (unsigned int k = 0; k < system.n_owned_automata(); ++k)
-            ++per_size[std::min(levels[k], 2u)];
-          dealii::Utilities::MPI::sum(per_size, comm, per_size);
-          JsonValue sizes = JsonValue::array();
-          for (const unsigned long long n : per_size)
-            sizes.push_back(n);
-          summary["n_automata_per_size"] = sizes;
-        }
-      summary["work_imbalance"]     = imbalance;
-      const double imbalance_end    = system.work_imbalance();
-      summary["work_imbalance_end"] = imbalance_end;
-      summary["n_rebalances"]       = system.n_rebalances();
-      if (system.n_rebalances() > 0)
-        pcout << "Partition weighted anew " << system.n_rebalances()
-              << " time(s) (Partition/Rebalance threshold); work imbalance "
-                 "at the end "
-              << std::setprecision(3) << imbalance_end << std::setprecision(6)
-              << std::endl;
-      summary["n_pairs"]               = system.n_global_pairs();
-      summary["n_steps"]               = n_steps;
-      summary["dt"]                    = dt;
-      summary["critical_dt"]           = system.critical_time_step();
-      summary["end_time"]              = system.time();
-      summary["n_pair_list_rebuilds"]  = system.n_rebuilds();
-      const unsigned long long dropped = system.n_dropped_bonds();
-      summary["n_dropped_bonds"]       = dropped;
-      if (dropped > 0)
-        pcout << "Warning: " << dropped
-              << " bonded pair(s) were stretched beyond the pair-list range "
-                 "(automaton size times 1 + Interaction/Skin) and their bonds "
-                 "were lost. With Bond breaking = false this is a large "
-                 "deformation the list cannot follow: raise Interaction/Skin."
-              << std::endl;
-      summary["n_ghost_automata_max"]
-        = dealii::Utilities::MPI::max(system.n_ghost_automata(), comm);
-      summary["n_owned_automata_min"]
-        = dealii::Utilities::MPI::min(system.n_owned_automata(), comm);
-      summary["n_owned_automata_max"]
-        = dealii::Utilities::MPI::max(system.n_owned_automata(), comm);
-      summary["memory_bytes_max"] = dealii::Utilities::MPI::max(
-        static_cast<double>(system.memory_consumption()), comm);
+      add_run_keys(system, p, n_steps, imbalance, comm, pcout, summary);
       summary["wall_time_s"] = wall;
       summary["time_loop_s"] = loop_seconds;
       summary["automaton_steps_per_second"]
@@ -625,31 +449,11 @@ namespace tribodyn
         = loop_seconds > 0 ? double(system.n_global_automata()) * steps_run
                                / loop_seconds / n_ranks
                            : 0.;
-      {
-        const SystemEnergies e         = system.energies();
-        summary["kinetic_energy"]      = e.kinetic;
-        summary["elastic_energy"]      = e.elastic;
-        summary["plastic_work"]        = e.plastic_work;
-        summary["friction_work"]       = e.friction_work;
-        summary["n_bonded_pairs"]      = e.n_bonded;
-        summary["n_unbonded_contacts"] = e.n_unbonded_contacts;
-        add_energy_balance(e, summary, figures_early);
-        const auto forces = system.group_forces();
-        JsonValue  groups = JsonValue::object();
-        for (unsigned int g = 0; g < forces.size(); ++g)
-          groups[p.boundary.groups[g].name]
-            = json_array({forces[g][0], forces[g][1], forces[g][2]});
-        summary["group_forces"] = groups;
-      }
       add_scene_keys(system, p, summary);
       std::ostringstream figures;
-      figures << std::setprecision(6) << figures_early.str();
-      if (uniaxial)
-        uniaxial->finish(summary, figures);
-      if (pulse)
-        pulse->finish(summary, figures);
-      if (friction)
-        friction_observer.finish(out_dir, root, summary, figures);
+      figures << std::setprecision(6);
+      for (const auto &pp : postprocessors)
+        pp->finish(summary, figures);
       pcout << figures.str();
       pcout << "Throughput: "
             << double(system.n_global_automata()) * steps_run

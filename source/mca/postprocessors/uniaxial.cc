@@ -1,18 +1,12 @@
-// The analyses of the mca driver besides friction (private header of
-// source/mca/mca_problem.cc): the uniaxial test (E, nu, sigma_y, H), the
-// pulse time of flight (c_p), and the report of the scene (staged loading,
-// inclusions) and of its energy balance.
-#ifndef tribodyn_source_mca_analyses_h
-#define tribodyn_source_mca_analyses_h
-
+// Postprocessor "uniaxial" (`Analysis/Type = uniaxial`): the figures of a
+// uniaxial test. Compressive stress from the reactions of the loaded and
+// supporting groups over the cross-section and from the interior automata,
+// axial strain from the groups' displacements, lateral strain from the two
+// lateral faces at mid-height; at the end E, nu (line fits in the elastic
+// window) and, if the test went plastic, sigma_y and the hardening modulus.
 #include <cmath>
-#include <deal.II/base/conditional_ostream.h>
-#include <ostream>
 #include <tribodyn/core/errors.h>
-#include <tribodyn/core/json.h>
-#include <tribodyn/mca/automaton_system.h>
-#include <tribodyn/mca/inclusions.h>
-#include <vector>
+#include <tribodyn/mca/postprocessor.h>
 
 namespace tribodyn
 {
@@ -47,18 +41,18 @@ namespace tribodyn
        * strain from their displacements, lateral strain from the two
        * lateral faces at mid-height.
        */
-      class UniaxialAnalysis
+      class UniaxialAnalysis : public Postprocessor
       {
       public:
-        UniaxialAnalysis(const AutomatonSystem &s,
-                         const Parameters      &p,
-                         const MPI_Comm         comm)
-            : system(s)
-            , prm(p)
-            , comm(comm)
+        explicit UniaxialAnalysis(const PostprocessorInputs &in)
+            : system(in.system)
+            , prm(in.parameters)
+            , comm(in.comm)
         {
-          axis    = p.analysis.axis;
-          lateral = (axis + 1) % 3;
+          const AutomatonSystem &s = in.system;
+          const Parameters      &p = in.parameters;
+          axis                     = p.analysis.axis;
+          lateral                  = (axis + 1) % 3;
           for (unsigned int g = 0; g < p.boundary.groups.size(); ++g)
             {
               if (p.boundary.groups[g].name == p.analysis.loaded_group)
@@ -148,12 +142,10 @@ namespace tribodyn
         }
 
         void
-        record()
+        record(const SeriesSample &sample, std::vector<double> &row) override
         {
-          const auto   forces = system.group_forces();
-          const auto   disp   = system.group_displacements();
-          const double sign   = forces[loaded][axis] >= 0 ? 1 : 1;
-          (void)sign;
+          const auto  &forces = sample.group_forces;
+          const auto  &disp   = sample.group_displacements;
           const double stress
             = (forces[loaded][axis] - forces[support][axis]) / (2 * area);
           const double strain = -(disp[loaded][axis] - disp[support][axis])
@@ -208,6 +200,11 @@ namespace tribodyn
           stresses.push_back(in[1] > 0 ? in[0] / in[1] : stress);
           nominal_stresses.push_back(stress);
           lateral_strains.push_back(lateral_strain);
+          row.insert(row.end(),
+                     {strains.back(),
+                      stresses.back(),
+                      nominal_stresses.back(),
+                      lateral_strains.back()});
         }
 
         bool
@@ -218,7 +215,7 @@ namespace tribodyn
         }
 
         void
-        finish(JsonValue &summary, std::ostream &out) const
+        finish(JsonValue &summary, std::ostream &out) const override
         {
           // nominal yield of the material of the first body sets the window
           const double sy0
@@ -293,20 +290,25 @@ namespace tribodyn
           summary["gauge_length"]       = length;
         }
 
-        /// The recorded series (checkpoints save and restore them).
-        std::vector<std::vector<double> *>
-        recorded_series()
+        void
+        save(boost::archive::binary_oarchive &ar) const override
         {
-          return {&strains, &stresses, &nominal_stresses, &lateral_strains};
+          save_series(
+            ar, {&strains, &stresses, &nominal_stresses, &lateral_strains});
+        }
+        void
+        load(boost::archive::binary_iarchive &ar) override
+        {
+          load_series(
+            ar, {&strains, &stresses, &nominal_stresses, &lateral_strains});
         }
 
-        /// Columns of series.csv this analysis adds (values of the last
-        /// record()): the strain between the loading layers, the axial
-        /// stress of the interior automata behind E and sigma_y
+        /// Columns of series.csv: the strain between the loading layers,
+        /// the axial stress of the interior automata behind E and sigma_y
         /// (compression positive, Pa), the nominal stress (reaction over
         /// the cross-section) and the lateral strain behind nu.
-        static std::vector<std::string>
-        series_columns()
+        std::vector<std::string>
+        series_columns() const override
         {
           return {"interior_strain",
                   "interior_stress",
@@ -314,21 +316,9 @@ namespace tribodyn
                   "lateral_strain"};
         }
 
-        std::vector<double>
-        series_values() const
-        {
-          if (strains.empty())
-            return {0., 0., 0., 0.};
-          return {strains.back(),
-                  stresses.back(),
-                  nominal_stresses.back(),
-                  lateral_strains.back()};
-        }
-
+      private:
         std::vector<double> strains, stresses, nominal_stresses,
           lateral_strains;
-
-      private:
         const AutomatonSystem &system;
         const Parameters      &prm;
         MPI_Comm               comm;
@@ -339,212 +329,15 @@ namespace tribodyn
       };
 
 
-      /// Arrival of a pulse at two probe planes (peak of the mean axial
-      /// velocity of the automata of each plane).
-      class PulseAnalysis
-      {
-      public:
-        PulseAnalysis(const AutomatonSystem &s,
-                      const Parameters      &p,
-                      const MPI_Comm         comm)
-            : system(s)
-            , prm(p)
-            , comm(comm)
-        {
-        }
-
-        void
-        record(const double t)
-        {
-          const auto        &x = system.positions();
-          const auto        &u = system.displacements();
-          const auto        &v = system.velocities();
-          const unsigned int a = prm.analysis.axis;
-          const double half = prm.geometry.automaton_size * std::sqrt(2.) / 8;
-          double       s[4] = {0, 0, 0, 0};
-          for (unsigned int k = 0; k < system.n_owned_automata(); ++k)
-            {
-              const double y = x[k][a] - u[k][a];
-              if (std::abs(y - prm.analysis.probe_1) < half)
-                {
-                  s[0] += v[k][a];
-                  s[1] += 1;
-                }
-              if (std::abs(y - prm.analysis.probe_2) < half)
-                {
-                  s[2] += v[k][a];
-                  s[3] += 1;
-                }
-            }
-          MPI_Allreduce(MPI_IN_PLACE, s, 4, MPI_DOUBLE, MPI_SUM, comm);
-          if (s[1] == 0 || s[3] == 0)
-            throw InputError("Parameters 'Analysis/Probe 1' and 'Probe 2' "
-                             "must lie on layers of automata (none found "
-                             "within a/8 of them).");
-          times.push_back(t);
-          v1.push_back(s[0] / s[1]);
-          v2.push_back(s[2] / s[3]);
-        }
-
-        static double
-        peak_time(const std::vector<double> &t, const std::vector<double> &v)
-        {
-          std::size_t best = 0;
-          for (std::size_t k = 0; k < v.size(); ++k)
-            if (std::abs(v[k]) > std::abs(v[best]))
-              best = k;
-          if (best == 0 || best + 1 >= v.size())
-            return t[best];
-          // parabola through three points
-          const double y0 = v[best - 1], y1 = v[best], y2 = v[best + 1];
-          const double h   = t[best + 1] - t[best];
-          const double den = y0 - 2 * y1 + y2;
-          return den == 0 ? t[best] : t[best] + 0.5 * h * (y0 - y2) / den;
-        }
-
-        void
-        finish(JsonValue &summary, std::ostream &out) const
-        {
-          const double t1 = peak_time(times, v1), t2 = peak_time(times, v2);
-          const double c
-            = std::abs(prm.analysis.probe_2 - prm.analysis.probe_1) / (t2 - t1);
-          summary["arrival_time_1"] = t1;
-          summary["arrival_time_2"] = t2;
-          summary["wave_speed"]     = c;
-          const double cp
-            = prm.materials[prm.geometry.bodies[0].material].p_wave_speed();
-          summary["p_wave_speed_reference"] = cp;
-          out << "Pulse: arrival at the probes " << t1 << " s and " << t2
-              << " s, wave speed " << c
-              << " m/s (c_p = sqrt((K + 4G/3)/rho) = " << cp << " m/s)"
-              << std::endl;
-        }
-
-        /// The recorded series (checkpoints save and restore them).
-        std::vector<std::vector<double> *>
-        recorded_series()
-        {
-          return {&times, &v1, &v2};
-        }
-
-        /// Columns of series.csv this analysis adds: the mean velocity
-        /// along the axis of the automata of each probe layer (m/s), whose
-        /// peaks time the pulse (the automata start at rest).
-        static std::vector<std::string>
-        series_columns()
-        {
-          return {"probe_1_velocity", "probe_2_velocity"};
-        }
-
-        std::vector<double>
-        series_values() const
-        {
-          if (times.empty())
-            return {0., 0.};
-          return {v1.back(), v2.back()};
-        }
-
-      private:
-        const AutomatonSystem &system;
-        const Parameters      &prm;
-        MPI_Comm               comm;
-        std::vector<double>    times, v1, v2;
-      };
-
-
-      /// Staged loading and inclusions: what the set-up produced.
-      void
-      report_scene(const AutomatonSystem      &system,
-                   const Parameters           &p,
-                   dealii::ConditionalOStream &out)
-      {
-        if (p.loading.enabled)
-          out << "Friction loading: separation " << p.geometry.interface_gap
-              << " m, shift " << p.geometry.interface_shift_y
-              << " m along y, damping of the loading layers "
-              << p.loading_damping << " 1/s"
-              << (p.loading.damping > 0 ? " (given)"
-                                        : " (seed criterion c_p / (2 h))")
-              << std::endl;
-        if (const auto *layout = p.geometry.inclusion_layout.get())
-          {
-            const auto counts = system.contacting_part_counts();
-            out << "Inclusions:";
-            for (const auto &part : layout->parts)
-              out << " body " << part.body << ": " << part.set.n_cylinders
-                  << " cylinders (" << 100 * part.set.cylinder_volume_fraction
-                  << " % of the "
-                  << "part's box), " << part.set.n_voids << " voids ("
-                  << 100 * part.set.void_volume_fraction << " %);";
-            out << " automata: " << counts.second << " of " << counts.first
-                << " in the contacting parts = "
-                << 100. * counts.second / std::max(1ull, counts.first) << " %"
-                << std::endl;
-          }
-      }
-
-
-      void
-      add_scene_keys(const AutomatonSystem &system,
-                     const Parameters      &p,
-                     JsonValue             &summary)
-      {
-        summary["contact_time"] = system.contact_time() >= 0
-                                    ? JsonValue(system.contact_time())
-                                    : JsonValue();
-        if (p.loading.enabled)
-          {
-            summary["loading_damping"]    = p.loading_damping;
-            summary["loading_separation"] = p.geometry.interface_gap;
-            summary["loading_shift_y"]    = p.geometry.interface_shift_y;
-          }
-        if (const auto *layout = p.geometry.inclusion_layout.get())
-          {
-            const auto counts = system.contacting_part_counts();
-            summary["inclusion_volume_fraction"]
-              = double(counts.second) / std::max(1ull, counts.first);
-            double f = 0, fv = 0;
-            for (const auto &part : layout->parts)
-              {
-                f += part.set.cylinder_volume_fraction / layout->parts.size();
-                fv += part.set.void_volume_fraction / layout->parts.size();
-              }
-            summary["inclusion_volume_fraction_generated"] = f;
-            summary["void_volume_fraction_generated"]      = fv;
-          }
-        else
-          summary["inclusion_volume_fraction"] = 0.;
-      }
-
-
-      /// Energy balance since the start (the scene starts at rest and
-      /// unstressed): kinetic + elastic + plastic + friction + damped =
-      /// work of the loads; and the pairs' side of it (their work on the
-      /// automata against what they stored or dissipated).
-      void
-      add_energy_balance(const SystemEnergies &e,
-                         JsonValue            &summary,
-                         std::ostream         &figures)
-      {
-        const double stored = e.kinetic + e.elastic + e.plastic_work
-                              + e.friction_work + e.damped_work;
-        summary["load_work"]               = e.load_work;
-        summary["damped_work"]             = e.damped_work;
-        summary["pair_work"]               = e.pair_work;
-        summary["energy_balance_residual"] = stored - e.load_work;
-        summary["energy_balance_relative"]
-          = e.load_work != 0 ? (stored - e.load_work) / std::abs(e.load_work)
-                             : 0.;
-        figures << "Energy: load work " << e.load_work << " J = kinetic "
-                << e.kinetic << " + elastic " << e.elastic << " + plastic "
-                << e.plastic_work << " + friction " << e.friction_work
-                << " + damped " << e.damped_work << " J + residual "
-                << e.load_work - stored << " J" << std::endl;
-      }
+      const bool registered = PostprocessorRegistry::add(
+        {"uniaxial",
+         40,
+         [](const PostprocessorInputs &in) -> std::unique_ptr<Postprocessor> {
+           if (in.parameters.analysis.type
+               != AnalysisParameters::Type::uniaxial)
+             return nullptr;
+           return std::make_unique<UniaxialAnalysis>(in);
+         }});
     } // namespace
-
-
-  } // namespace mca
+  }   // namespace mca
 } // namespace tribodyn
-
-#endif
