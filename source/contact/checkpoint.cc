@@ -28,15 +28,18 @@ namespace tribodyn
   {
     namespace
     {
-      // 2: records keyed by place (any number of ranks)
-      constexpr unsigned int state_version = 2;
+      // 2: records keyed by place (any number of ranks); 3: a contact
+      // node's state is ContactNode::for_each_state_field() (with the
+      // friction law's state)
+      constexpr unsigned int state_version = 3;
 
       static_assert(std::is_trivially_copyable<Sample>::value,
                     "Sample is saved as raw bytes");
 
       // A dof record: its node's x, y, the component, then u, u_prev, p,
       // w, a. A contact-node record: x, 0, then the node's state.
-      constexpr unsigned int dof_stride = 8, node_stride = 7;
+      constexpr unsigned int dof_stride  = 8;
+      const unsigned int     node_stride = 2 + ContactNode::n_state_fields();
 
     } // namespace
 
@@ -104,17 +107,15 @@ namespace tribodyn
                        w.local_element(i),
                        a.local_element(i)});
         ar << dofs;
-        // Contact nodes: multipliers, friction state, status, slip rate.
+        // Contact nodes: position, then the state variables of
+        // ContactNode::for_each_state_field().
         std::vector<double> nodes;
-        for (const ContactNode &node : contact_nodes)
-          nodes.insert(nodes.end(),
-                       {node.x,
-                        0.,
-                        node.lambda_n,
-                        node.lambda_t,
-                        node.tau,
-                        double(node.status),
-                        node.slip_rate});
+        for (ContactNode node : contact_nodes)
+          {
+            nodes.insert(nodes.end(), {node.x, 0.});
+            node.for_each_state_field(
+              [&](const char *, double &value) { nodes.push_back(value); });
+          }
         ar << nodes;
       }
       return out.str();
@@ -228,12 +229,9 @@ namespace tribodyn
           const int     k = find(bottom, key(r[0], 0, 0));
           if (k < 0)
             continue;
-          ContactNode &node = contact_nodes[k];
-          node.lambda_n     = r[2];
-          node.lambda_t     = r[3];
-          node.tau          = r[4];
-          node.status       = static_cast<ContactStatus>(int(r[5]));
-          node.slip_rate    = r[6];
+          unsigned int field = 2;
+          contact_nodes[k].for_each_state_field(
+            [&](const char *, double &value) { value = r[field++]; });
           ++n_nodes_filled;
         }
       const unsigned int n_filled = std::count(filled.begin(), filled.end(), 1);

@@ -44,39 +44,9 @@ namespace tribodyn
     }
 
 
-    template <FrictionLaw law>
-    double
-    ContactSolver::previous_tau(const ContactNode &node,
-                                const double       trial,
-                                const double       lambda_n) const
-    {
-      if (node.status != separated)
-        return node.tau;
-      switch (prm.contact.recontact_state)
-        {
-          case RecontactState::keep:
-            return node.tau;
-          case RecontactState::reset_to_mu_sigma:
-            return (trial >= 0 ? 1. : -1.) * friction_step.mu * lambda_n;
-          default:
-            return 0.;
-        }
-    }
-
-
-    double
-    ContactSolver::node_decay(const ContactNode &node) const
-    {
-      if (prm.contact.regularization_rate
-          == RegularizationRate::local_slip_rate)
-        return std::exp(-dt * node.slip_rate / slip_length);
-      return step_decay;
-    }
-
-
-    template <FrictionLaw law>
+    template <class Law>
     void
-    ContactSolver::contact_node_wise(const double /*time_next*/)
+    ContactSolver::contact_node_wise(const Law &law)
     {
       const double  gap0  = prm.loading.initial_gap;
       const double  slide = plane_slide;
@@ -86,7 +56,6 @@ namespace tribodyn
       double       *un    = u_next.begin();
       double       *av    = a.begin();
       double        wc = 0, df = 0;
-      FrictionStep  f = friction_step;
       for (ContactNode &node : contact_nodes)
         {
           // Gap at t_{n+1} of the predicted configuration (plane at
@@ -105,17 +74,11 @@ namespace tribodyn
           const double lambda_n = -node.m * g / h;
           const double trial = node.m * (uv[node.ix] + slide - un[node.ix]) / h;
           ContactStatus status;
-          f.decay               = node_decay(node);
-          const double lambda_t = tangential_multiplier<law>(
-            trial,
-            lambda_n,
-            previous_tau<law>(node, trial, lambda_n),
-            f,
-            status);
-          node.lambda_n = lambda_n;
-          node.lambda_t = lambda_t;
-          node.tau      = lambda_t;
-          node.status   = status;
+          const double lambda_t = law.tangential(node, trial, lambda_n, status);
+          node.lambda_n         = lambda_n;
+          node.lambda_t         = lambda_t;
+          node.tau              = lambda_t;
+          node.status           = status;
           un[node.iy] += h * lambda_n / node.m;
           un[node.ix] += h * lambda_t / node.m;
           av[node.iy] += lambda_n / node.m;
@@ -125,15 +88,16 @@ namespace tribodyn
                    + lambda_t * (un[node.ix] - up[node.ix]));
           df += lambda_t * (slide - (un[node.ix] - uv[node.ix]));
           node.slip_rate = std::abs(un[node.ix] - uv[node.ix] - slide) / dt;
+          law.end_step(node, dt);
         }
       work_contact += wc;
       dissipation_friction += df;
     }
 
 
-    template <FrictionLaw law>
+    template <class Law>
     void
-    ContactSolver::contact_gauss_seidel(const double /*time_next*/)
+    ContactSolver::contact_gauss_seidel(const Law &law)
     {
       // General projected Gauss-Seidel over constraint rows. A row is a list
       // of (dof, coefficient); the normal row of contact k reads
@@ -170,7 +134,6 @@ namespace tribodyn
         un[dof] += h * coefficient * d_lambda / m;
         av[dof] += coefficient * d_lambda / m;
       };
-      FrictionStep f         = friction_step;
       unsigned int iteration = 0;
       for (; iteration < prm.contact.pgs_max_iterations; ++iteration)
         {
@@ -192,13 +155,7 @@ namespace tribodyn
                 {
                   const double s     = (un[node.ix] - uv[node.ix]) - slide;
                   const double trial = node.lambda_t - s / W;
-                  f.decay            = node_decay(before[k]);
-                  lambda_t           = tangential_multiplier<law>(
-                    trial,
-                    lambda_n,
-                    previous_tau<law>(before[k], trial, lambda_n),
-                    f,
-                    status);
+                  lambda_t = law.tangential(before[k], trial, lambda_n, status);
                 }
               apply(node.ix, 1., lambda_t - node.lambda_t, node.m);
               change = std::max(change, std::abs(lambda_t - node.lambda_t));
@@ -230,6 +187,7 @@ namespace tribodyn
                    + node.lambda_t * (un[node.ix] - up[node.ix]));
           df += node.lambda_t * (slide - (un[node.ix] - uv[node.ix]));
           node.slip_rate = std::abs(un[node.ix] - uv[node.ix] - slide) / dt;
+          law.end_step(node, dt);
         }
       work_contact += wc;
       dissipation_friction += df;
@@ -243,42 +201,39 @@ namespace tribodyn
       // constant plane velocity of the default loading).
       const auto  &L = prm.loading;
       const double t = time_next - dt;
-      if (L.constant_plane_velocity())
+      PlaneStep    step;
+      step.dt                = dt;
+      step.speed             = std::abs(L.plane_velocity);
+      step.constant_velocity = L.constant_plane_velocity();
+      if (step.constant_velocity)
         {
           plane_slide  = L.plane_velocity * dt;
           plane_x_next = L.plane_velocity * time_next;
-          step_decay   = friction_step.decay;
         }
       else
         {
           plane_x_next = L.plane_position_at(time_next);
           plane_slide  = plane_x_next - L.plane_position_at(t);
-          // t* = L*/|V(t)|, L* = Regularization time x |V|: the relaxation
-          // stops while the plane is at rest.
-          const double V = std::abs(L.plane_velocity);
-          step_decay     = V > 0 ? std::exp(-std::abs(plane_slide)
-                                        / (V * prm.contact.regularization_time))
-                                 : friction_step.decay;
         }
-      slip_length
-        = prm.contact.regularization_time * std::abs(L.plane_velocity);
+      step.slide = plane_slide;
+      // The law chosen for the run: the contact loops are compiled per law.
       const bool gs
         = prm.contact.algorithm == ContactAlgorithm::projected_gauss_seidel;
-      switch (prm.contact.law)
-        {
-          case FrictionLaw::frictionless:
-            gs ? contact_gauss_seidel<FrictionLaw::frictionless>(time_next)
-               : contact_node_wise<FrictionLaw::frictionless>(time_next);
-            break;
-          case FrictionLaw::coulomb:
-            gs ? contact_gauss_seidel<FrictionLaw::coulomb>(time_next)
-               : contact_node_wise<FrictionLaw::coulomb>(time_next);
-            break;
-          case FrictionLaw::regularized:
-            gs ? contact_gauss_seidel<FrictionLaw::regularized>(time_next)
-               : contact_node_wise<FrictionLaw::regularized>(time_next);
-            break;
-        }
+      FrictionLaws::visit(friction_law, [&](auto &law) {
+        law.begin_step(step);
+        gs ? contact_gauss_seidel(law) : contact_node_wise(law);
+      });
+    }
+
+
+    void
+    ContactSolver::report_friction_law(JsonValue    &summary,
+                                       std::ostream &figures) const
+    {
+      auto &law = const_cast<FrictionLaws::Variant &>(friction_law);
+      FrictionLaws::visit(law, [&](const auto &l) {
+        l.report(summary, figures, comm);
+      });
     }
 
 

@@ -16,10 +16,6 @@ namespace tribodyn
       constexpr SelectionTable<ContactAlgorithm, 2> algorithm_choices{
         {{"node-wise", ContactAlgorithm::node_wise},
          {"projected Gauss-Seidel", ContactAlgorithm::projected_gauss_seidel}}};
-      constexpr SelectionTable<FrictionLaw, 3> law_choices{
-        {{"frictionless", FrictionLaw::frictionless},
-         {"Coulomb", FrictionLaw::coulomb},
-         {"regularized", FrictionLaw::regularized}}};
       constexpr SelectionTable<RegularizationRate, 2> rate_choices{
         {{"plane speed", RegularizationRate::plane_speed},
          {"local slip rate", RegularizationRate::local_slip_rate}}};
@@ -380,13 +376,7 @@ namespace tribodyn
                         "projected Gauss-Seidel iteration over constraint "
                         "rows (for coupled constraints; gives the same result "
                         "here).");
-      prm.declare_entry("Friction law",
-                        "regularized",
-                        selection_pattern(law_choices),
-                        "'Coulomb': |tau| <= mu |sigma|, slip at mu |sigma|. "
-                        "'regularized': the simplified Prakash-Clifton law "
-                        "of seed 001 eq. (4): during slip tau relaxes towards "
-                        "alpha mu |sigma| with time constant L*/|V|.");
+      FrictionLaws::declare_parameters(prm);
       prm.declare_entry("Friction coefficient",
                         "0.25",
                         Double(),
@@ -431,8 +421,8 @@ namespace tribodyn
     ContactLawParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
-      algorithm            = get_selection(prm, "Algorithm", algorithm_choices);
-      law                  = get_selection(prm, "Friction law", law_choices);
+      algorithm = get_selection(prm, "Algorithm", algorithm_choices);
+      friction.parse_parameters(prm, "Friction law");
       friction_coefficient = prm.get_double("Friction coefficient");
       regularization_time  = prm.get_double("Regularization time");
       pgs_tolerance        = prm.get_double("Gauss-Seidel tolerance");

@@ -47,24 +47,6 @@ namespace tribodyn
     }
 
 
-    namespace
-    {
-      const char *
-      law_name(const FrictionLaw law)
-      {
-        switch (law)
-          {
-            case FrictionLaw::frictionless:
-              return "frictionless";
-            case FrictionLaw::coulomb:
-              return "Coulomb";
-            default:
-              return "regularized";
-          }
-      }
-    } // namespace
-
-
     void
     ContactProblem::run()
     {
@@ -117,7 +99,7 @@ namespace tribodyn
             << "Time step " << solver.time_step() << " s (critical "
             << solver.critical_time_step() << " s, CFL l_min/c_max "
             << solver.cfl_time_step() << " s), " << n_steps << " steps, "
-            << "friction law " << law_name(parameters.contact.law)
+            << "friction law " << parameters.contact.friction.selected_name()
             << ", P = " << parameters.loading.pressure / 1e6 << " MPa"
             << std::endl;
 
@@ -141,7 +123,7 @@ namespace tribodyn
       summary["tribodyn_version"] = version_string;
       summary["n_mpi_ranks"]    = dealii::Utilities::MPI::n_mpi_processes(comm);
       summary["material"]       = solver.material_description();
-      summary["friction_law"]   = law_name(parameters.contact.law);
+      summary["friction_law"]   = parameters.contact.friction.selected_name();
       summary["pressure"]       = parameters.loading.pressure;
       summary["plane_velocity"] = parameters.loading.plane_velocity;
       summary["mu_global_mean"] = s.mu_global_mean;
@@ -184,6 +166,8 @@ namespace tribodyn
         = s.dof_steps_per_second
           / dealii::Utilities::MPI::n_mpi_processes(comm);
       summary["wall_time_s"] = wall_time;
+      std::ostringstream law_figures;
+      solver.report_friction_law(summary, law_figures);
       if (root)
         write_file_atomically(join_path(context.output_directory,
                                         "summary.json"),
@@ -210,7 +194,8 @@ namespace tribodyn
             << s.dof_steps_per_second
                  / dealii::Utilities::MPI::n_mpi_processes(comm)
             << " per rank)\n"
-            << "Results written to " << context.output_directory
+            << law_figures.str() << "Results written to "
+            << context.output_directory
             << "/ (summary.json, friction.csv, point_M.csv, "
                "contact_status.csv, spectrum.csv, fields.pvd)"
             << std::endl;

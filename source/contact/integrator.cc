@@ -166,7 +166,7 @@ namespace tribodyn
       scale_energy = energy_initial;
       history.clear();
       for (ContactNode &node : contact_nodes)
-        node = ContactNode{node.ix, node.iy, node.m, node.x};
+        node = ContactNode{node.ix, node.iy, node.m, node.x, node.length};
     }
 
 

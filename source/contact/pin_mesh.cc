@@ -430,10 +430,18 @@ namespace tribodyn
                     else if (face->boundary_id() == 2)
                       {
                         ContactNode node;
-                        node.ix    = lx;
-                        node.iy    = ly;
-                        node.m     = mass[ly];
-                        node.x     = face->vertex(v)[0];
+                        node.ix = lx;
+                        node.iy = ly;
+                        node.m  = mass[ly];
+                        node.x  = face->vertex(v)[0];
+                        // half of each adjacent bottom face (the cells
+                        // are identical rectangles): half at the corners
+                        const double x = node.x;
+                        node.length
+                          = (x > 0.5 * cell_hx
+                             && x < prm.geometry.width - 0.5 * cell_hx)
+                              ? cell_hx
+                              : 0.5 * cell_hx;
                         bottom[ly] = node;
                       }
                   }
@@ -458,6 +466,12 @@ namespace tribodyn
         = prm.material.type == ContactMaterialParameters::Type::morphology
             ? prm.morphology.width
             : cell_hx * std::round(prm.geometry.width / cell_hx);
+      // Tributary length of each node: half of each adjacent bottom face
+      // (the cells are identical rectangles), half a cell at the corners.
+      for (ContactNode &node : contact_nodes)
+        node.length = (node.x > 0.5 * cell_hx && node.x < width - 0.5 * cell_hx)
+                        ? cell_hx
+                        : 0.5 * cell_hx;
       double best       = std::numeric_limits<double>::max();
       int    best_index = -1;
       for (unsigned int k = 0; k < contact_nodes.size(); ++k)
@@ -531,11 +545,9 @@ namespace tribodyn
                 "root of the materials' Density / Young modulus: check them "
                 "if it is unexpectedly small.)");
         }
-      h                   = dt * dt * (0.5 + b2);
-      friction_step.mu    = prm.contact.law == FrictionLaw::frictionless
-                              ? 0.
-                              : prm.contact.friction_coefficient;
-      friction_step.decay = std::exp(-dt / prm.contact.regularization_time);
+      h = dt * dt * (0.5 + b2);
+      // the chosen friction law, for this time step
+      friction_law = FrictionLaws::make(prm.contact, dt);
     }
 
 

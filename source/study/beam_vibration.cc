@@ -245,14 +245,14 @@ namespace tribodyn
       p.loading.plane_velocity            = 0;
       p.loading.top_held_in_x             = false;
       p.loading.initial_gap               = 10 * H;
-      p.contact.law                       = contact::FrictionLaw::frictionless;
-      p.time.time_step                    = 1.;
-      p.time.automatic_time_step          = true;
-      p.time.safety_factor                = bp.safety_factor;
-      p.time.damping                      = bp.damping;
-      p.time.end_time         = bp.periods / result.frequency_reference_hz;
-      p.output.average_start  = 0;
-      p.output.field_interval = 0;
+      p.contact.friction.select<contact::Frictionless>();
+      p.time.time_step           = 1.;
+      p.time.automatic_time_step = true;
+      p.time.safety_factor       = bp.safety_factor;
+      p.time.damping             = bp.damping;
+      p.time.end_time            = bp.periods / result.frequency_reference_hz;
+      p.output.average_start     = 0;
+      p.output.field_interval    = 0;
 
       // A timer that is never printed, on MPI_COMM_SELF: its destructor
       // then needs no exchange (and prints no warning) when a stop or an

@@ -1,6 +1,6 @@
-// The friction laws of the contact loop (include/tribodyn/contact/friction.h)
-// against their closed forms (round-off tolerances 1e-14), and the meso
-// pin against its morphology.
+// The friction laws of the contact loop (include/tribodyn/contact/
+// friction_laws/) against their closed forms (round-off tolerances 1e-14),
+// and the meso pin against its morphology.
 // (a) Coulomb: stick inside the cone (lambda_T = trial), slip on it
 //     (lambda_T = mu lambda_N sign(trial)).
 // (b) Regularized law, seed eq. (4): with lambda_N fixed and the trial
@@ -15,7 +15,7 @@
 #include "contact_test_tools.h"
 
 #include <cmath>
-#include <tribodyn/contact/friction.h>
+#include <tribodyn/contact/friction_laws.h>
 #include <tribodyn/core/morphology.h>
 
 int
@@ -23,37 +23,41 @@ main(int argc, char **argv)
 {
   using namespace tribodyn_test;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  FrictionStep                             f;
-  f.mu = 0.25;
+  ContactLawParameters                     contact;
+  contact.friction_coefficient = 0.25;
   ContactStatus status;
+  ContactNode   node; // in contact before the step (status stick)
+  node.status = stick;
   {
-    const double t
-      = tangential_multiplier<FrictionLaw::coulomb>(0.2, 1., 0., f, status);
+    const Coulomb law(contact, {}, 5e-9);
+    const double  t = law.tangential(node, 0.2, 1., status);
     check(t == 0.2 && status == stick, "Coulomb: inside the cone sticks");
-    const double s
-      = tangential_multiplier<FrictionLaw::coulomb>(-0.3, 1., 0., f, status);
+    const double s = law.tangential(node, -0.3, 1., status);
     check(s == -0.25 && status == slip, "Coulomb: outside slips at -mu N");
   }
   {
     const double dt = 5e-9, t_star = 1.5e-6, lambda_n = 2.;
-    f.decay    = std::exp(-dt / t_star);
-    double tau = 0;
+    contact.regularization_time = t_star;
+    Regularized law(contact, {}, dt);
+    PlaneStep   step;
+    step.dt    = dt;
+    step.speed = 1;
+    law.begin_step(step);
+    node.tau = 0;
     for (unsigned int n = 1; n <= 1000; ++n)
-      tau = tangential_multiplier<FrictionLaw::regularized>(
-        -10., lambda_n, tau, f, status);
-    check_relative(tau,
+      node.tau = law.tangential(node, -10., lambda_n, status);
+    check_relative(node.tau,
                    -0.25 * lambda_n * (1 - std::exp(-1000 * dt / t_star)),
                    1e-14,
                    "regularized: exact relaxation over 1000 steps");
     check(status == slip, "regularized: status slip");
-    const double inside = tangential_multiplier<FrictionLaw::regularized>(
-      0.4, lambda_n, tau, f, status);
+    const double inside = law.tangential(node, 0.4, lambda_n, status);
     check(inside == 0.4 && status == stick,
           "regularized: inside the cone sticks");
     // tau_old above the cone (normal force dropped): relaxation would give
     // more than the stick trial, so the point sticks instead.
-    const double capped = tangential_multiplier<FrictionLaw::regularized>(
-      0.6, lambda_n, 5., f, status);
+    node.tau            = 5.;
+    const double capped = law.tangential(node, 0.6, lambda_n, status);
     check(capped == 0.6 && status == stick,
           "regularized: never more than the stick trial");
   }

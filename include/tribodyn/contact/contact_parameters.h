@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 #include <string>
+#include <tribodyn/contact/friction_laws.h>
 #include <tribodyn/core/material.h>
 #include <tribodyn/core/morphology.h>
 #include <vector>
@@ -153,28 +154,6 @@ namespace tribodyn
       parse_parameters(dealii::ParameterHandler &prm);
     };
 
-    enum class FrictionLaw
-    {
-      frictionless,
-      coulomb,
-      regularized ///< simplified Prakash-Clifton law, seed 001 eq. (4)
-    };
-
-    /// Time constant t* of the regularized law during slip.
-    enum class RegularizationRate
-    {
-      plane_speed,    ///< t* = L*/|V(t)| (seed eq. (4))
-      local_slip_rate ///< t* = L*/|[u']| of the node (Prakash-Clifton)
-    };
-
-    /// Friction state tau of a node that comes back into contact.
-    enum class RecontactState
-    {
-      reset_to_zero,
-      keep,
-      reset_to_mu_sigma
-    };
-
     enum class ContactAlgorithm
     {
       node_wise, ///< closed form per node (rigid plane, lumped mass)
@@ -184,9 +163,10 @@ namespace tribodyn
     /// Subsection "Contact".
     struct ContactLawParameters
     {
-      ContactAlgorithm algorithm            = ContactAlgorithm::node_wise;
-      FrictionLaw      law                  = FrictionLaw::regularized;
-      double           friction_coefficient = 0.25;
+      ContactAlgorithm algorithm = ContactAlgorithm::node_wise;
+      /// Contact/Friction law and the laws' own parameters
+      FrictionLaws::Parameters friction = FrictionLaws::choosing<Regularized>();
+      double                   friction_coefficient = 0.25;
       /// L*/|V| of the regularized law (s); 1.5e-6 = 300 x 5 ns.
       double             regularization_time = 1.5e-6;
       RegularizationRate regularization_rate = RegularizationRate::plane_speed;

@@ -15,8 +15,9 @@
 #include <memory>
 #include <string>
 #include <tribodyn/contact/contact_parameters.h>
-#include <tribodyn/contact/friction.h>
+#include <tribodyn/contact/friction_laws.h>
 #include <tribodyn/core/checkpoint.h>
+#include <tribodyn/core/json.h>
 #include <tribodyn/core/output_directory.h>
 #include <vector>
 
@@ -131,6 +132,17 @@ namespace tribodyn
       {
         output_claim = std::move(claim);
       }
+
+      /// This rank's contact nodes and their state after the last step.
+      const std::vector<ContactNode> &
+      contact_node_states() const
+      {
+        return contact_nodes;
+      }
+
+      /// The friction law's figures at the end of the run (collective).
+      void
+      report_friction_law(JsonValue &summary, std::ostream &figures) const;
 
       /// The default key figure of the progress lines: mu_global and the
       /// stick/slip/separation fractions of the contact nodes.
@@ -314,12 +326,12 @@ namespace tribodyn
       /// the small-strain or the large-deformation path, and compress r.
       void
       add_internal_forces(const bool large);
-      template <FrictionLaw law>
+      template <class Law>
       void
-      contact_node_wise(const double time_next);
-      template <FrictionLaw law>
+      contact_node_wise(const Law &law);
+      template <class Law>
       void
-      contact_gauss_seidel(const double time_next);
+      contact_gauss_seidel(const Law &law);
       void
       solve_contact(const double time_next);
 
@@ -373,33 +385,12 @@ namespace tribodyn
       double cell_hx = 0, cell_hy = 0;
       bool   single_material = true;
 
-      // Contact nodes (owned): local dofs, mass, x coordinate, multipliers,
-      // friction state, status.
-      struct ContactNode
-      {
-        unsigned int  ix, iy;
-        double        m;
-        double        x;
-        double        lambda_n = 0, lambda_t = 0, tau = 0;
-        ContactStatus status = separated;
-        /// |slip increment| / dt of the last step (local slip rate).
-        double slip_rate = 0;
-      };
+      // Contact nodes (owned; include/tribodyn/contact/friction_law.h).
       /// Plane height under a node at x (current position) when the plane
       /// has moved by @p plane_x: 0 for a flat plane, in [-A, 0] with the
       /// waviness (y = -gap + this).
       double
       plane_height(const double x, const double plane_x) const;
-      /// The friction constants of node @p node for this step (per-node
-      /// decay for the local slip rate) and its tau before the step (state
-      /// on re-contact).
-      template <FrictionLaw law>
-      double
-      previous_tau(const ContactNode &node,
-                   const double       trial,
-                   const double       lambda_n) const;
-      double
-                               node_decay(const ContactNode &node) const;
       std::vector<ContactNode> contact_nodes;
       unsigned int             n_contact_nodes_global      = 0;
       unsigned int             n_contact_face_ranks_global = 0;
@@ -417,11 +408,11 @@ namespace tribodyn
       std::vector<std::string> checkpoint_parameters;
       double                   mass_total = 0;
       std::string              material_text;
-      FrictionStep             friction_step;
+      /// The friction law of the run (Contact/Friction law).
+      FrictionLaws::Variant friction_law;
       // Plane motion over the current step (t_n -> t_{n+1}): displacement
-      // and position at t_{n+1}; decay of the regularized law for the
-      // plane speed of this step; L* for the local slip rate.
-      double plane_slide = 0, plane_x_next = 0, step_decay = 0, slip_length = 0;
+      // and position at t_{n+1}.
+      double        plane_slide = 0, plane_x_next = 0;
       unsigned long step_count         = 0;
       unsigned long steps_at_start     = 0; ///< step_count when run() began
       unsigned int  pgs_iterations_max = 0;

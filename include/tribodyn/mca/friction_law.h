@@ -30,6 +30,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <functional>
 #include <string>
+#include <tribodyn/core/law_selection.h>
 #include <tribodyn/core/selection.h>
 #include <tribodyn/mca/pair_fields.h>
 #include <tuple>
@@ -49,69 +50,36 @@ namespace tribodyn
     class FrictionLawList
     {
     public:
-      static constexpr std::size_t n_laws = sizeof...(Laws);
+      using Selection                     = LawSelection<Laws...>;
+      static constexpr std::size_t n_laws = Selection::n_laws;
 
       /// Names in Interaction/Friction law, by index.
       static SelectionTable<unsigned int, n_laws>
       table()
       {
-        return table_of(std::index_sequence_for<Laws...>());
+        return Selection::table();
       }
 
-      struct Parameters
+      /// The choice (`Interaction/Friction law`) and every law's own
+      /// parameters.
+      struct Parameters : Selection::Parameters
       {
-        /// Index of the chosen law in Laws.
-        unsigned int                             selected = 0;
-        std::tuple<typename Laws::Parameters...> laws;
-
         static void
         declare_parameters(dealii::ParameterHandler &prm)
         {
-          std::string doc = "Friction law of the unbonded pairs in contact "
-                            "(doc/theory/mca.md Sec. 3): ";
-          doc += selection_choices(table());
-          doc += "; each law's constants are in its own entries below.";
-          prm.declare_entry("Friction law",
-                            table()[0].first,
-                            selection_pattern(table()),
-                            doc);
-          (Laws::Parameters::declare_parameters(prm), ...);
+          Selection::Parameters::declare_parameters(
+            prm,
+            "Friction law",
+            table()[0].first,
+            "Friction law of the unbonded pairs in contact "
+            "(doc/theory/mca.md Sec. 5); each law's constants are in its "
+            "own entries.");
         }
 
         void
         parse_parameters(dealii::ParameterHandler &prm)
         {
-          selected = get_selection(prm, "Friction law", table());
-          std::apply([&](auto &...p) { (p.parse_parameters(prm), ...); }, laws);
-        }
-
-        template <class Law>
-        typename Law::Parameters &
-        get()
-        {
-          return std::get<typename Law::Parameters>(laws);
-        }
-        template <class Law>
-        const typename Law::Parameters &
-        get() const
-        {
-          return std::get<typename Law::Parameters>(laws);
-        }
-
-        /// Choose @p Law (programs and tests; a parameter file chooses
-        /// by name).
-        template <class Law>
-        void
-        select()
-        {
-          selected = *find_selection(table(), Law::name);
-        }
-
-        template <class Law>
-        bool
-        is() const
-        {
-          return table()[selected].first == std::string(Law::name);
+          Selection::Parameters::parse_parameters(prm, "Friction law");
         }
       };
 
@@ -126,7 +94,7 @@ namespace tribodyn
       void
       with_selected(const F &f)
       {
-        with_index(f, std::index_sequence_for<Laws...>());
+        Selection::with_selected(selected, laws, f);
       }
 
       /// Register the chosen law's persistent pair fields (every law
@@ -141,20 +109,6 @@ namespace tribodyn
     private:
       unsigned int        selected;
       std::tuple<Laws...> laws;
-
-      template <std::size_t... I>
-      static SelectionTable<unsigned int, n_laws>
-      table_of(std::index_sequence<I...>)
-      {
-        return {{{Laws::name, static_cast<unsigned int>(I)}...}};
-      }
-
-      template <class F, std::size_t... I>
-      void
-      with_index(const F &f, std::index_sequence<I...>)
-      {
-        ((selected == I ? f(std::get<I>(laws)) : void()), ...);
-      }
 
       template <std::size_t... I>
       void

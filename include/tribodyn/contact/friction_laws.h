@@ -1,0 +1,20 @@
+// The friction laws of the contact pin (`Contact/Friction law`): one header
+// each in friction_laws/, listed here once.
+#ifndef tribodyn_contact_friction_laws_h
+#define tribodyn_contact_friction_laws_h
+
+#include <tribodyn/contact/friction_laws/coulomb.h>
+#include <tribodyn/contact/friction_laws/frictionless.h>
+#include <tribodyn/contact/friction_laws/regularized.h>
+#include <tribodyn/contact/friction_laws/tabulated.h>
+
+namespace tribodyn
+{
+  namespace contact
+  {
+    using FrictionLaws
+      = FrictionLawList<Frictionless, Coulomb, Regularized, Tabulated>;
+  } // namespace contact
+} // namespace tribodyn
+
+#endif

@@ -1,0 +1,56 @@
+// Contact friction law "Coulomb": |tau| <= mu |sigma|, slip at mu |sigma|
+// (`Contact/Friction coefficient`).
+#ifndef tribodyn_contact_friction_laws_coulomb_h
+#define tribodyn_contact_friction_laws_coulomb_h
+
+#include <tribodyn/contact/friction_law.h>
+
+namespace tribodyn
+{
+  namespace contact
+  {
+    struct Coulomb : FrictionLawBase
+    {
+      static constexpr const char *name = "Coulomb";
+
+      struct Parameters
+      {
+        static void
+        declare_parameters(dealii::ParameterHandler &)
+        {
+        }
+        void
+        parse_parameters(dealii::ParameterHandler &)
+        {
+        }
+      };
+
+      template <class ContactLawParameters>
+      Coulomb(const ContactLawParameters &contact, const Parameters &, double)
+          : mu(contact.friction_coefficient)
+      {
+      }
+
+      /// Stick while the trial is within the cone, else slip at its edge.
+      double
+      tangential(const ContactNode &,
+                 const double   trial,
+                 const double   lambda_n,
+                 ContactStatus &status) const
+      {
+        const double limit = mu * lambda_n;
+        if (std::abs(trial) <= limit)
+          {
+            status = stick;
+            return trial;
+          }
+        status = slip;
+        return (trial >= 0 ? 1. : -1.) * limit;
+      }
+
+      double mu;
+    };
+  } // namespace contact
+} // namespace tribodyn
+
+#endif
