@@ -33,7 +33,7 @@ namespace tribodyn
                          + "cannot be read (missing, or no permission). Give "
                            "the path of a CSV table of mu with columns "
                            "pressure, speed, mu (e.g. written by "
-                           "scripts/mca_friction_study --table).");
+                           "scripts/mca_friction_table).");
       std::string              line;
       std::vector<std::string> header;
       unsigned int             line_number = 0;

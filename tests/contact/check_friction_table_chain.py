@@ -1,0 +1,85 @@
+#!/usr/bin/python3
+"""The bridge between the scales as one command chain (issue #20 item 4),
+small: scripts/mca_friction_table on a 2 x 2 grid of pressures and sliding
+speeds of prm/mca/friction_steel.prm cut to 0.6 ns (one seed, one rank:
+the bodies touch at ~0.59 ns, so each run's mu is that of its first
+samples: this checks the chain, not the physics), then the short pin with
+`Friction law = tabulated` reading the table.
+
+    check_friction_table_chain.py TRIBODYN SOURCE_DIR OUT_DIR
+
+Checks: the table holds the full grid, one row per (pressure, speed), each
+mu equal to its run's mu_steady (summary.json, exactly: the script copies,
+not recomputes); the pin runs with it (summary: friction_law = tabulated,
+the clamped evaluations counted) and its contact mu, sum |lambda_T| / sum
+lambda_N, lies within [0, the table's largest mu] (every node's |lambda_T|
+<= mu(p, v) lambda_N with mu from the table).
+"""
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+
+tribodyn, source, out = sys.argv[1:4]
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+           OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+table_dir = os.path.join(out, "table")
+subprocess.run([os.path.join(source, "scripts", "mca_friction_table"),
+                "--scene", os.path.join(source, "prm/mca/friction_steel.prm"),
+                "--pressures", "150e6,300e6", "--speeds", "5,10",
+                "--seeds", "1", "--ranks", "1", "--end-time", "6e-10",
+                "--tribodyn", tribodyn, "--out", table_dir],
+               check=True, env=env, stdout=subprocess.DEVNULL)
+failures = 0
+
+
+def check(condition, what):
+    global failures
+    print(("PASS  " if condition else "FAIL  ") + what)
+    failures += 0 if condition else 1
+
+
+path = os.path.join(table_dir, "mu_table.csv")
+with open(path) as f:
+    rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+grid = {(float(r["pressure"]), float(r["speed"])) for r in rows}
+check(len(rows) == 4 and grid == {(p, v) for p in (150e6, 300e6)
+                                  for v in (5., 10.)},
+      "mu_table.csv: the full 2 x 2 grid (%d rows)" % len(rows))
+copied = True
+for r in rows:
+    d = os.path.join(table_dir, "p%g_v%g" % (float(r["pressure"]),
+                                             float(r["speed"])), "seed_1")
+    with open(os.path.join(d, "summary.json")) as f:
+        copied = copied and float(r["mu"]) == json.load(f)["mu_steady"]
+check(copied, "each mu = its run's mu_steady")
+check(os.path.exists(os.path.join(table_dir, "mu_table.png")),
+      "mu_table.png written")
+mu_max = max(float(r["mu"]) for r in rows)
+
+pin_dir = os.path.join(out, "pin")
+prm = os.path.join(out, "pin.prm")
+with open(os.path.join(source, "tests/contact/short_pin.prm")) as f:
+    text = f.read()
+with open(prm, "w") as f:
+    f.write(text.replace("set Output directory = output",
+                         "set Output directory = " + pin_dir)
+            + "subsection Contact\n  set Friction law = tabulated\n"
+            "  subsection Tabulated friction\n    set File = " + path
+            + "\n    set Pressure scale = 300\n    set Speed scale = 3.75\n"
+            "  end\nend\n")
+subprocess.run([tribodyn, prm], check=True, env=env,
+               stdout=subprocess.DEVNULL)
+with open(os.path.join(pin_dir, "summary.json")) as f:
+    s = json.load(f)
+check(s["friction_law"] == "tabulated", "pin: friction_law = tabulated")
+check("tabulated_friction_clamped" in s,
+      "pin: clamped evaluations counted (%s)"
+      % s.get("tabulated_friction_clamped"))
+mu = s["mu_contact_mean"]
+check(mu is not None and math.isfinite(mu) and 0 <= abs(mu) <= mu_max * (1 + 1e-9),
+      "pin: contact mu %r within [0, largest mu of the table %r]"
+      % (mu, mu_max))
+sys.exit(1 if failures else 0)
