@@ -10,8 +10,8 @@ namespace tribodyn
   namespace mca
   {
     void
-    save_series(boost::archive::binary_oarchive                &ar,
-                const std::vector<const std::vector<double> *> &series)
+    save_series(boost::archive::binary_oarchive          &ar,
+                const std::vector<std::vector<double> *> &series)
     {
       for (const auto *s : series)
         ar << *s;

@@ -124,6 +124,22 @@ namespace tribodyn
       bool constant_velocity = true;
     };
 
+    /// Coulomb's cone: stick (the trial) while |trial| <= limit, else slip
+    /// at the limit with the trial's sign.
+    inline double
+    coulomb_tangential(const double   trial,
+                       const double   limit,
+                       ContactStatus &status)
+    {
+      if (std::abs(trial) <= limit)
+        {
+          status = stick;
+          return trial;
+        }
+      status = slip;
+      return (trial >= 0 ? 1. : -1.) * limit;
+    }
+
     /// Defaults of the optional members of a law.
     struct FrictionLawBase
     {

@@ -15,10 +15,25 @@
 #include <string>
 #include <tribodyn/core/selection.h>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 namespace tribodyn
 {
+  /// The parameters of a law that has none of its own (or whose entries
+  /// are shared, declared by the caller).
+  struct NoLawParameters
+  {
+    static void
+    declare_parameters(dealii::ParameterHandler &)
+    {
+    }
+    void
+    parse_parameters(dealii::ParameterHandler &)
+    {
+    }
+  };
+
   template <class... Laws>
   struct LawSelection
   {
@@ -36,6 +51,16 @@ namespace tribodyn
     name(const unsigned int index)
     {
       return table()[index].first;
+    }
+
+    /// The position of @p Law in Laws.
+    template <class Law>
+    static constexpr std::size_t
+    index_of()
+    {
+      std::size_t index = 0, k = 0;
+      ((std::is_same_v<Law, Laws> ? (void)(index = k) : (void)0, ++k), ...);
+      return index;
     }
 
     /// The choice and every law's own parameters.
@@ -73,13 +98,13 @@ namespace tribodyn
       typename Law::Parameters &
       get()
       {
-        return std::get<typename Law::Parameters>(laws);
+        return std::get<index_of<Law>()>(laws);
       }
       template <class Law>
       const typename Law::Parameters &
       get() const
       {
-        return std::get<typename Law::Parameters>(laws);
+        return std::get<index_of<Law>()>(laws);
       }
 
       /// Choose @p Law (programs and tests; a parameter file chooses by

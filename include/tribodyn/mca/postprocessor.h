@@ -45,6 +45,15 @@ namespace tribodyn
       const std::vector<Vec3> &group_displacements;
     };
 
+    /// Save or restore (with Boost's serialization of vectors) a list of
+    /// recorded series: the state of most postprocessors.
+    void
+    save_series(boost::archive::binary_oarchive          &ar,
+                const std::vector<std::vector<double> *> &series);
+    void
+    load_series(boost::archive::binary_iarchive          &ar,
+                const std::vector<std::vector<double> *> &series);
+
     /**
      * One output of an mca run (ASPECT's postprocess interface): it owns its
      * series.csv columns, its files, its summary.json keys and the state it
@@ -101,17 +110,26 @@ namespace tribodyn
         return {};
       }
 
+      /// The recorded series a resumed run needs, in a fixed order: what
+      /// the default save() and load() carry (most postprocessors' state).
+      virtual std::vector<std::vector<double> *>
+      saved_series()
+      {
+        return {};
+      }
+
       /// Save and restore the state a resumed run needs (the same on every
       /// rank; the checkpoint of writer 0 is read on another rank count).
+      /// Default: saved_series().
       virtual void
       save(boost::archive::binary_oarchive &ar) const
       {
-        (void)ar;
+        save_series(ar, const_cast<Postprocessor *>(this)->saved_series());
       }
       virtual void
       load(boost::archive::binary_iarchive &ar)
       {
-        (void)ar;
+        load_series(ar, saved_series());
       }
 
       /// A resumed run has claimed its output directory: rewrite the index
@@ -141,14 +159,6 @@ namespace tribodyn
     using PostprocessorRegistry
       = PluginRegistry<Postprocessor, PostprocessorInputs>;
 
-    /// Save or restore (with Boost's serialization of vectors) a list of
-    /// recorded series: the state of most postprocessors.
-    void
-    save_series(boost::archive::binary_oarchive                &ar,
-                const std::vector<const std::vector<double> *> &series);
-    void
-    load_series(boost::archive::binary_iarchive          &ar,
-                const std::vector<std::vector<double> *> &series);
   } // namespace mca
 } // namespace tribodyn
 

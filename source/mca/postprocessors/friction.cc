@@ -2,8 +2,6 @@
 // group at each series sample (column "mu"), the quasi-fluid layer, and at
 // the end friction.csv, layer.csv, layer_profile.csv, the quasi-steady
 // regime and the block-averaged steady mu with its standard error.
-#include <boost/archive/binary_iarchive.hpp>
-#include <boost/archive/binary_oarchive.hpp>
 #include <cmath>
 #include <tribodyn/core/output.h>
 #include <tribodyn/mca/friction_analysis.h>
@@ -54,10 +52,21 @@ namespace tribodyn
 
         /// The recorded series; the last layer profiles are not saved: the
         /// next sample, at the latest the run's last, recomputes them.
-        void
-        save(boost::archive::binary_oarchive &ar) const override;
-        void
-        load(boost::archive::binary_iarchive &ar) override;
+        std::vector<std::vector<double> *>
+        saved_series() override
+        {
+          return {&times,
+                  &normal,
+                  &tangential,
+                  &bonded,
+                  &unbonded,
+                  &layer_times,
+                  &layer_thickness,
+                  &layer_center,
+                  &strain_thickness,
+                  &strain_center,
+                  &layer_peak};
+        }
 
       private:
         /// Append one sample of the forces; returns mu.
@@ -169,42 +178,6 @@ namespace tribodyn
       {
         if (times.size() >= 2)
           write_series();
-      }
-
-
-      void
-      FrictionObserver::save(boost::archive::binary_oarchive &ar) const
-      {
-        save_series(ar,
-                    {&times,
-                     &normal,
-                     &tangential,
-                     &bonded,
-                     &unbonded,
-                     &layer_times,
-                     &layer_thickness,
-                     &layer_center,
-                     &strain_thickness,
-                     &strain_center,
-                     &layer_peak});
-      }
-
-
-      void
-      FrictionObserver::load(boost::archive::binary_iarchive &ar)
-      {
-        load_series(ar,
-                    {&times,
-                     &normal,
-                     &tangential,
-                     &bonded,
-                     &unbonded,
-                     &layer_times,
-                     &layer_thickness,
-                     &layer_center,
-                     &strain_thickness,
-                     &strain_center,
-                     &layer_peak});
       }
 
 

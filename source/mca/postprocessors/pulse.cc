@@ -93,15 +93,10 @@ namespace tribodyn
               << std::endl;
         }
 
-        void
-        save(boost::archive::binary_oarchive &ar) const override
+        std::vector<std::vector<double> *>
+        saved_series() override
         {
-          save_series(ar, {&times, &v1, &v2});
-        }
-        void
-        load(boost::archive::binary_iarchive &ar) override
-        {
-          load_series(ar, {&times, &v1, &v2});
+          return {&times, &v1, &v2};
         }
 
         /// Columns of series.csv: the mean velocity along the axis of the

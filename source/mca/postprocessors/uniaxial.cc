@@ -290,17 +290,10 @@ namespace tribodyn
           summary["gauge_length"]       = length;
         }
 
-        void
-        save(boost::archive::binary_oarchive &ar) const override
+        std::vector<std::vector<double> *>
+        saved_series() override
         {
-          save_series(
-            ar, {&strains, &stresses, &nominal_stresses, &lateral_strains});
-        }
-        void
-        load(boost::archive::binary_iarchive &ar) override
-        {
-          load_series(
-            ar, {&strains, &stresses, &nominal_stresses, &lateral_strains});
+          return {&strains, &stresses, &nominal_stresses, &lateral_strains};
         }
 
         /// Columns of series.csv: the strain between the loading layers,

@@ -13,17 +13,8 @@ namespace tribodyn
     {
       static constexpr const char *name = "Coulomb";
 
-      struct Parameters
-      {
-        static void
-        declare_parameters(dealii::ParameterHandler &)
-        {
-        }
-        void
-        parse_parameters(dealii::ParameterHandler &)
-        {
-        }
-      };
+      /// (its Friction coefficient is an entry of Contact)
+      using Parameters = NoLawParameters;
 
       template <class ContactLawParameters>
       Coulomb(const ContactLawParameters &contact, const Parameters &, double)
@@ -38,14 +29,7 @@ namespace tribodyn
                  const double   lambda_n,
                  ContactStatus &status) const
       {
-        const double limit = mu * lambda_n;
-        if (std::abs(trial) <= limit)
-          {
-            status = stick;
-            return trial;
-          }
-        status = slip;
-        return (trial >= 0 ? 1. : -1.) * limit;
+        return coulomb_tangential(trial, mu * lambda_n, status);
       }
 
       double mu;

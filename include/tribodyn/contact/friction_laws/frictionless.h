@@ -12,17 +12,7 @@ namespace tribodyn
     {
       static constexpr const char *name = "frictionless";
 
-      struct Parameters
-      {
-        static void
-        declare_parameters(dealii::ParameterHandler &)
-        {
-        }
-        void
-        parse_parameters(dealii::ParameterHandler &)
-        {
-        }
-      };
+      using Parameters = NoLawParameters;
 
       template <class ContactLawParameters>
       Frictionless(const ContactLawParameters &, const Parameters &, double)

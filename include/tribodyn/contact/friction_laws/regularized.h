@@ -15,17 +15,9 @@ namespace tribodyn
     {
       static constexpr const char *name = "regularized";
 
-      struct Parameters
-      {
-        static void
-        declare_parameters(dealii::ParameterHandler &)
-        {
-        }
-        void
-        parse_parameters(dealii::ParameterHandler &)
-        {
-        }
-      };
+      /// (its entries are in Contact: Friction coefficient, Regularization
+      /// time, Regularization rate, State on re-contact)
+      using Parameters = NoLawParameters;
 
       template <class ContactLawParameters>
       Regularized(const ContactLawParameters &contact,

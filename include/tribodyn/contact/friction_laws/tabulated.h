@@ -132,14 +132,7 @@ namespace tribodyn
         if (!warned && table.clamped() > 0)
           warn_clamped(pressure_scale * lambda_n / before.length,
                        speed_scale * v);
-        const double limit = mu * lambda_n;
-        if (std::abs(trial) <= limit)
-          {
-            status = stick;
-            return trial;
-          }
-        status = slip;
-        return (trial >= 0 ? 1. : -1.) * limit;
+        return coulomb_tangential(trial, mu * lambda_n, status);
       }
 
       void
