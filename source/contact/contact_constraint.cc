@@ -69,6 +69,7 @@ namespace tribodyn
                 node.tau = 0;
               node.status    = separated;
               node.slip_rate = std::abs(un[node.ix] - uv[node.ix] - slide) / dt;
+              law.end_step(node, dt);
               continue;
             }
           const double lambda_n = -node.m * g / h;
@@ -230,8 +231,7 @@ namespace tribodyn
     ContactSolver::report_friction_law(JsonValue    &summary,
                                        std::ostream &figures) const
     {
-      auto &law = const_cast<FrictionLaws::Variant &>(friction_law);
-      FrictionLaws::visit(law, [&](const auto &l) {
+      FrictionLaws::visit(friction_law, [&](const auto &l) {
         l.report(summary, figures, comm);
       });
     }

@@ -18,9 +18,9 @@
 //    and the normal multiplier (sets status to stick or slip);
 //  - optionally (FrictionLawBase's do nothing): `begin_step(const PlaneStep
 //    &)` (constants of the step), `end_step(ContactNode &, double dt)` (its
-//    state per node, after the multipliers of the step: the node's
-//    law_state, checkpointed with the node), `report(summary, figures,
-//    comm)` (its figures at the end of the run).
+//    state per node after the step, called for every node, in contact or
+//    not: the node's law_state, checkpointed with the node),
+//    `report(summary, figures, comm)` (its figures at the end of the run).
 // A new law is one header in include/tribodyn/contact/friction_laws/ and
 // its name in the list of friction_laws.h.
 #ifndef tribodyn_contact_friction_law_h
@@ -203,9 +203,9 @@ namespace tribodyn
       }
 
       /// Call @p f with the law in @p v (made by make()).
-      template <class F>
+      template <class V, class F>
       static void
-      visit(Variant &v, const F &f)
+      visit(V &v, const F &f)
       {
         std::visit(
           [&](auto &law) {
