@@ -3,7 +3,9 @@
 // TIFF, each 8-bit grey, 16-bit grey, indexed and RGB. Segmented by Otsu's
 // method into three phases, all eight must give the material map of the
 // 8-bit grey PNG pixel for pixel, and the pixel size of their resolution
-// tags (PNG pHYs 1e6 per m, TIFF 1e4 per cm) must be 1 um. Also: 16-bit
+// tags (PNG pHYs 1e6 per m, TIFF 1e4 per cm) must be 1 um. (The 16-bit
+// files hold the 8-bit level in the high byte and a varying low byte, so a
+// wrong byte order changes the map.) Also: 16-bit
 // thresholds in 16-bit levels, and a crop window, which must give the
 // window of the full map.
 
@@ -56,8 +58,8 @@ main(int argc, char **argv)
     MorphologyParameters p
       = image_parameters(image_path("formats_grey16.png"), 3);
     p.image.segmentation = ImageParameters::Segmentation::thresholds;
-    p.image.thresholds   = {80 * 257, 175 * 257};
-    same(Morphology::create(p), "formats_grey16.png, thresholds 20560, 44975");
+    p.image.thresholds   = {80 * 256, 175 * 256};
+    same(Morphology::create(p), "formats_grey16.png, thresholds 20480, 44800");
   }
 
   // A crop window is the window of the full map (rows from the top).
