@@ -111,6 +111,13 @@ namespace tribodyn
       materials.parse_parameters(prm);
       cell_problem_parameters.parse_parameters(prm);
       output_parameters.parse_parameters(prm);
+      // A map read from a file (image or grid) may hold other phases than
+      // those named: refuse it now, with the other parameter errors.
+      if (morphology_parameters.generator
+            == MorphologyParameters::Generator::image
+          || morphology_parameters.generator
+               == MorphologyParameters::Generator::grid_file)
+        check_phases(Morphology::create(morphology_parameters));
     }
 
 
