@@ -18,7 +18,8 @@ export OMPI_MCA_btl_vader_single_copy_mechanism=none
 
 TRIBODYN_PACKAGES=(libdeal.ii-dev libeigen3-dev numdiff python3
                    python3-matplotlib cmake g++ make openmpi-bin
-                   nlohmann-json3-dev libfftw3-dev pkg-config)
+                   nlohmann-json3-dev libfftw3-dev pkg-config
+                   libtiff-dev libpng-dev)
 
 tribodyn_install_packages() {
   local missing=()

@@ -529,6 +529,32 @@ namespace tribodyn
       geometry.parse_parameters(prm);
       material.parse_parameters(prm);
       morphology.parse_parameters(prm);
+      if (material.type == ContactMaterialParameters::Type::morphology
+          && (morphology.generator == MorphologyParameters::Generator::image
+              || morphology.generator
+                   == MorphologyParameters::Generator::grid_file))
+        {
+          // The meso pin has the two phases of Material/Matrix and
+          // Material/Heterogeneity: refuse a map of more.
+          const bool image
+            = morphology.generator == MorphologyParameters::Generator::image;
+          const unsigned int n = Morphology::create(morphology).n_phases();
+          check_parameter(
+            n <= 2,
+            image ? "Morphology/Image/Segmentation" : "Morphology/Grid file",
+            "the meso pin ('Material/Type = morphology') has two phases "
+            "(material id 0: 'Material/Matrix', 1: "
+            "'Material/Heterogeneity'), but the "
+              + (image
+                   ? "image '" + morphology.image.file + "' is segmented into "
+                   : "grid file '" + morphology.grid_file + "' holds ")
+              + std::to_string(n) + " phases. "
+              + (image ? "Segment it into two (one threshold, 'Otsu phases "
+                         "= 2' or two colours), or homogenize"
+                       : "Use ids 0 and 1 only, or homogenize")
+              + " the map with 'set Problem = homogenization' and use its "
+                "constants with 'Material/Type = homogenization summary'.");
+        }
       loading.parse_parameters(prm);
       time.parse_parameters(prm);
       contact.parse_parameters(prm);

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/grid/grid_generator.h>
 #include <fstream>
@@ -14,11 +15,12 @@ namespace tribodyn
   namespace
   {
     using Generator = MorphologyParameters::Generator;
-    constexpr SelectionTable<Generator, 4> generator_choices{
+    constexpr SelectionTable<Generator, 5> generator_choices{
       {{"homogeneous", Generator::homogeneous},
        {"random vertical", Generator::random_vertical},
        {"laminate", Generator::laminate},
-       {"grid file", Generator::grid_file}}};
+       {"grid file", Generator::grid_file},
+       {"image", Generator::image}}};
     using LaminateNormal = MorphologyParameters::LaminateNormal;
     constexpr SelectionTable<LaminateNormal, 2> laminate_normal_choices{
       {{"x", LaminateNormal::x}, {"y", LaminateNormal::y}}};
@@ -75,7 +77,9 @@ namespace tribodyn
         "How the material map is made: 'homogeneous' (matrix only), "
         "'random vertical' (random non-overlapping vertical heterogeneities, "
         "seed 001 Fig. 1), 'laminate' (layers through the whole rectangle), "
-        "'grid file' (plain-text grid of material ids, see 'Grid file').");
+        "'grid file' (plain-text grid of material ids, see 'Grid file'), "
+        "'image' (a segmented PNG or TIFF micrograph, any number of phases, "
+        "see the subsection 'Image').");
       prm.declare_entry("Width",
                         "0.028",
                         Double(),
@@ -135,9 +139,11 @@ namespace tribodyn
                         "",
                         dealii::Patterns::Anything(),
                         "Plain-text grid of material ids (0 matrix, 1 "
-                        "heterogeneity), one row of pixels per line, top "
-                        "row first; '#' starts a comment line. The grid is "
-                        "stretched over Width x Height.");
+                        "heterogeneity; or 0 to N-1 for the N phases of "
+                        "'Materials/Phases'), one row of pixels per line, "
+                        "top row first; '#' starts a comment line. The grid "
+                        "is stretched over Width x Height.");
+      ImageParameters::declare_parameters(prm);
     }
     prm.leave_subsection();
   }
@@ -163,6 +169,8 @@ namespace tribodyn
         = get_selection(prm, "Laminate normal", laminate_normal_choices);
       n_laminate_periods = prm.get_integer("Laminate periods");
       grid_file          = prm.get("Grid file");
+      if (generator == Generator::image)
+        image.parse_parameters(prm);
     }
     prm.leave_subsection();
 
@@ -217,6 +225,22 @@ namespace tribodyn
         prm.set("Pixels in y", static_cast<long int>(n_pixels_y));
         prm.leave_subsection();
       }
+    if (generator == Generator::image)
+      {
+        // Read and segment the image now, so that a bad file is refused
+        // before any output, and record its size as for a grid file.
+        const SegmentedImage segmented = segment_image(image);
+        n_pixels_x                     = segmented.n_x;
+        n_pixels_y                     = segmented.n_y;
+        width                          = segmented.n_x * segmented.pixel_width;
+        height                         = segmented.n_y * segmented.pixel_height;
+        prm.enter_subsection("Morphology");
+        prm.set("Pixels in x", static_cast<long int>(n_pixels_x));
+        prm.set("Pixels in y", static_cast<long int>(n_pixels_y));
+        prm.set("Width", width);
+        prm.set("Height", height);
+        prm.leave_subsection();
+      }
   }
 
 
@@ -234,6 +258,18 @@ namespace tribodyn
   {
     if (ids.size() != static_cast<std::size_t>(n_x) * n_y)
       throw std::logic_error("Morphology: ids do not match the grid size");
+  }
+
+
+  Morphology::Morphology(const double                     width,
+                         const double                     height,
+                         const unsigned int               n_x,
+                         const unsigned int               n_y,
+                         const std::vector<unsigned int> &ids,
+                         const std::string               &origin)
+      : Morphology(width, height, n_x, n_y, ids)
+  {
+    this->origin = origin;
   }
 
 
@@ -280,6 +316,18 @@ namespace tribodyn
     using Generator = MorphologyParameters::Generator;
     if (p.generator == Generator::grid_file)
       return read_grid_file(p.grid_file, p.width, p.height);
+    if (p.generator == Generator::image)
+      {
+        const SegmentedImage s = segment_image(p.image);
+        Morphology           m(s.n_x * s.pixel_width,
+                     s.n_y * s.pixel_height,
+                     s.n_x,
+                     s.n_y,
+                     s.ids,
+                     s.description);
+        m.n_placed = m.count_connected_heterogeneities();
+        return m;
+      }
 
     const unsigned int        nx = p.n_pixels_x, ny = p.n_pixels_y;
     std::vector<unsigned int> ids(static_cast<std::size_t>(nx) * ny,
@@ -406,62 +454,6 @@ namespace tribodyn
   }
 
 
-  Morphology
-  Morphology::read_grid_file(const std::string &file_name,
-                             const double       width,
-                             const double       height)
-  {
-    std::ifstream in(file_name);
-    if (!in)
-      throw InputError("Cannot read the morphology grid file '" + file_name
-                       + "' (parameter 'Morphology/Grid file'): it does not "
-                         "exist or is not readable.");
-    std::vector<std::vector<unsigned int>> rows;
-    std::string                            line;
-    unsigned int                           line_number = 0;
-    while (std::getline(in, line))
-      {
-        ++line_number;
-        const auto first = line.find_first_not_of(" \t\r");
-        if (first == std::string::npos || line[first] == '#')
-          continue;
-        std::istringstream        tokens(line);
-        std::string               token;
-        std::vector<unsigned int> row;
-        while (tokens >> token)
-          {
-            if (token != "0" && token != "1")
-              throw InputError("Morphology grid file '" + file_name + "', line "
-                               + std::to_string(line_number) + ": '" + token
-                               + "' is not a material id. Allowed ids are 0 "
-                                 "(matrix) and 1 (heterogeneity).");
-            row.push_back(token == "1" ? material_id::heterogeneity
-                                       : material_id::matrix);
-          }
-        if (!rows.empty() && row.size() != rows.front().size())
-          throw InputError("Morphology grid file '" + file_name + "', line "
-                           + std::to_string(line_number) + " has "
-                           + std::to_string(row.size())
-                           + " ids where the first row has "
-                           + std::to_string(rows.front().size())
-                           + ": every row must have the same length.");
-        rows.push_back(row);
-      }
-    if (rows.empty())
-      throw InputError("Morphology grid file '" + file_name
-                       + "' holds no rows of material ids.");
-    const unsigned int        nx = rows.front().size(), ny = rows.size();
-    std::vector<unsigned int> ids(static_cast<std::size_t>(nx) * ny);
-    for (unsigned int r = 0; r < ny; ++r)
-      for (unsigned int i = 0; i < nx; ++i)
-        ids[(ny - 1 - r) * nx + i] = rows[r][i]; // top row first in the file
-    Morphology m(width, height, nx, ny, ids);
-    m.origin   = "grid file " + file_name;
-    m.n_placed = m.count_connected_heterogeneities();
-    return m;
-  }
-
-
   unsigned int
   Morphology::count_connected_heterogeneities() const
   {
@@ -571,6 +563,25 @@ namespace tribodyn
 
 
   unsigned int
+  Morphology::n_phases() const
+  {
+    return std::max(2u, *std::max_element(ids.begin(), ids.end()) + 1);
+  }
+
+
+  std::vector<double>
+  Morphology::phase_fractions() const
+  {
+    std::vector<double> fractions(n_phases(), 0.);
+    for (const unsigned int id : ids)
+      fractions[id] += 1;
+    for (double &f : fractions)
+      f /= ids.size();
+    return fractions;
+  }
+
+
+  unsigned int
   Morphology::n_heterogeneities() const
   {
     return n_placed;
@@ -582,28 +593,20 @@ namespace tribodyn
   {
     std::ostringstream s;
     s << origin << "; " << n_x << " x " << n_y << " pixels over "
-      << rectangle_width * 1e3 << " mm x " << rectangle_height * 1e3
-      << " mm; heterogeneity fraction " << heterogeneity_fraction();
+      << rectangle_width * 1e3 << " mm x " << rectangle_height * 1e3 << " mm";
+    if (origin.rfind("image", 0) == 0 || n_phases() > 2)
+      {
+        // Any number of phases: the fraction of each.
+        const std::vector<double> f = phase_fractions();
+        s << "; phase fractions";
+        for (unsigned int k = 0; k < f.size(); ++k)
+          s << (k == 0 ? " " : ", ") << f[k];
+        return s.str();
+      }
+    s << "; heterogeneity fraction " << heterogeneity_fraction();
     if (n_placed > 0)
       s << " (" << n_placed << " heterogeneities)";
     return s.str();
-  }
-
-
-  void
-  Morphology::write_grid_file(const std::string &file_name) const
-  {
-    std::ostringstream out;
-    out << "# tribodyn morphology: " << description() << "\n"
-        << "# one row of pixels per line, top row first; 0 matrix, 1 "
-           "heterogeneity\n";
-    for (unsigned int r = 0; r < n_y; ++r)
-      {
-        for (unsigned int i = 0; i < n_x; ++i)
-          out << (i > 0 ? " " : "") << pixel(i, n_y - 1 - r);
-        out << "\n";
-      }
-    write_file_atomically(file_name, out.str());
   }
 
 

@@ -1,4 +1,5 @@
 #include <deal.II/base/symmetric_tensor.h>
+#include <limits>
 #include <stdexcept>
 #include <tribodyn/homogenization/effective_properties.h>
 
@@ -146,6 +147,67 @@ namespace tribodyn
             }
         }
       return properties_from_stiffness(C_eff, c_z);
+    }
+
+
+    PlaneModuli
+    plane_moduli(const IsotropicElasticMaterial &phase)
+    {
+      return {phase.lambda() + phase.mu(), phase.mu()};
+    }
+
+
+    PlaneModuli
+    isotropic_projection(const VoigtMatrix &C)
+    {
+      const double c12 = 0.5 * (C[0][1] + C[1][0]);
+      return {0.25 * (C[0][0] + C[1][1] + 2 * c12),
+              0.5 * (0.25 * (C[0][0] + C[1][1] - 2 * c12) + C[2][2])};
+    }
+
+
+    double
+    anisotropy(const VoigtMatrix &C)
+    {
+      const PlaneModuli m = isotropic_projection(C);
+      VoigtMatrix       iso;
+      iso[0][0] = iso[1][1] = m.kappa + m.mu;
+      iso[0][1] = iso[1][0] = m.kappa - m.mu;
+      iso[2][2]             = m.mu;
+      return (C - iso).norm() / C.norm();
+    }
+
+
+    PlaneModuliBounds
+    hashin_shtrikman_bounds(const std::vector<IsotropicElasticMaterial> &phases,
+                            const std::vector<double> &fractions)
+    {
+      // The comparison material of each bound: the stiffest (upper) or the
+      // softest (lower) kappa and mu of the phases, taken separately.
+      PlaneModuli largest{0, 0};
+      PlaneModuli smallest{std::numeric_limits<double>::max(),
+                           std::numeric_limits<double>::max()};
+      for (const auto &phase : phases)
+        {
+          const PlaneModuli m = plane_moduli(phase);
+          largest.kappa       = std::max(largest.kappa, m.kappa);
+          largest.mu          = std::max(largest.mu, m.mu);
+          smallest.kappa      = std::min(smallest.kappa, m.kappa);
+          smallest.mu         = std::min(smallest.mu, m.mu);
+        }
+      const auto bound = [&](const PlaneModuli &reference) {
+        const double z = reference.mu * reference.kappa
+                         / (reference.kappa + 2 * reference.mu);
+        double sum_kappa = 0, sum_mu = 0;
+        for (unsigned int k = 0; k < phases.size(); ++k)
+          {
+            const PlaneModuli m = plane_moduli(phases[k]);
+            sum_kappa += fractions[k] / (m.kappa + reference.mu);
+            sum_mu += fractions[k] / (m.mu + z);
+          }
+        return PlaneModuli{1. / sum_kappa - reference.mu, 1. / sum_mu - z};
+      };
+      return {bound(smallest), bound(largest)};
     }
 
 

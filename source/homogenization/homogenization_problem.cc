@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -21,6 +22,7 @@ namespace tribodyn
     {
       prm.enter_subsection("Materials");
       TwoPhaseMaterials::declare_parameters(prm);
+      PhaseMaterials::declare_parameters(prm);
       prm.leave_subsection();
     }
 
@@ -30,7 +32,31 @@ namespace tribodyn
     {
       prm.enter_subsection("Materials");
       TwoPhaseMaterials::parse_parameters(prm, "Materials");
+      named.parse_parameters(prm, "Materials");
       prm.leave_subsection();
+    }
+
+
+    std::vector<IsotropicElasticMaterial>
+    MaterialsParameters::phases() const
+    {
+      return named.given() ? named.phases() : TwoPhaseMaterials::phases();
+    }
+
+
+    std::vector<std::string>
+    MaterialsParameters::names() const
+    {
+      return named.given()
+               ? named.names
+               : std::vector<std::string>{"matrix", "heterogeneity"};
+    }
+
+
+    std::vector<bool>
+    MaterialsParameters::pores() const
+    {
+      return named.given() ? named.pore : std::vector<bool>(2, false);
     }
 
 
@@ -85,11 +111,51 @@ namespace tribodyn
       materials.parse_parameters(prm);
       cell_problem_parameters.parse_parameters(prm);
       output_parameters.parse_parameters(prm);
+      // A map read from a file (image or grid) may hold other phases than
+      // those named: refuse it now, with the other parameter errors.
+      if (morphology_parameters.generator
+            == MorphologyParameters::Generator::image
+          || morphology_parameters.generator
+               == MorphologyParameters::Generator::grid_file)
+        check_phases(Morphology::create(morphology_parameters));
     }
 
 
     namespace
     {
+      /// SUBC puts the traction Sigma n on the whole boundary, pores too:
+      /// their ersatz material then deforms by about Sigma / E_pore and
+      /// the apparent SUBC stiffness falls to the order of E_pore.
+      void
+      warn_about_boundary_pores(const Morphology        &morphology,
+                                const std::vector<bool> &pores,
+                                const std::vector<BoundaryCondition> &bcs,
+                                dealii::ConditionalOStream           &pcout)
+      {
+        if (std::find(bcs.begin(), bcs.end(), BoundaryCondition::subc)
+            == bcs.end())
+          return;
+        const unsigned int nx = morphology.n_pixels_x(),
+                           ny = morphology.n_pixels_y();
+        unsigned int n        = 0;
+        for (unsigned int j = 0; j < ny; ++j)
+          for (unsigned int i = 0; i < nx; ++i)
+            if ((i == 0 || j == 0 || i + 1 == nx || j + 1 == ny)
+                && morphology.pixel(i, j) < pores.size()
+                && pores[morphology.pixel(i, j)])
+              ++n;
+        if (n > 0)
+          pcout << "Warning: " << n
+                << " pore pixels touch the boundary. SUBC loads them with "
+                   "the traction Sigma n, which a pore cannot carry: the "
+                   "SUBC apparent stiffness then reflects the ersatz pore "
+                   "stiffness ('Materials/Phases/Pore stiffness ratio') and "
+                   "tends to zero with it. Use KUBC and periodic, or crop "
+                   "the image so that no pore cuts its edges."
+                << std::endl;
+      }
+
+
       void
       print_table_row(std::ostream               &out,
                       const std::string          &label,
@@ -119,6 +185,125 @@ namespace tribodyn
 
 
     void
+    HomogenizationProblem::check_phases(const Morphology &morphology) const
+    {
+      const unsigned int n_given = materials.names().size();
+      const bool         image   = morphology_parameters.generator
+                         == MorphologyParameters::Generator::image;
+      if (!materials.named.given())
+        check_parameter(morphology.n_phases() <= 2,
+                        "Materials/Phases/Names",
+                        "the morphology has "
+                          + std::to_string(morphology.n_phases())
+                          + " phases (material ids 0 to "
+                          + std::to_string(morphology.n_phases() - 1)
+                          + ") but only two are given ('Materials/Matrix' and "
+                            "'Materials/Heterogeneity'). Name every phase in "
+                            "'Materials/Phases' (Names, Young moduli, Poisson "
+                            "ratios, Densities), in the order of the "
+                            "segmentation.");
+      else if (image)
+        check_parameter(morphology.n_phases() == n_given,
+                        "Materials/Phases/Names",
+                        "the image is segmented into "
+                          + std::to_string(morphology.n_phases())
+                          + " phases by 'Morphology/Image/Segmentation', but "
+                          + std::to_string(n_given)
+                          + " phases are named. Give as many names (and "
+                            "constants) as the segmentation has phases, or "
+                            "change the segmentation.");
+      else
+        check_parameter(morphology.n_phases() <= n_given,
+                        "Materials/Phases/Names",
+                        "the morphology has material ids up to "
+                          + std::to_string(morphology.n_phases() - 1)
+                          + " but only " + std::to_string(n_given)
+                          + " phases are named.");
+    }
+
+
+    JsonValue
+    HomogenizationProblem::phases_to_json(
+      const std::vector<double> &fractions) const
+    {
+      const auto names = materials.names();
+      const auto pores = materials.pores();
+      const auto given = materials.named.given() ? materials.named.materials
+                                                 : materials.phases();
+      const auto used  = materials.phases();
+      JsonValue  list  = JsonValue::array();
+      for (unsigned int k = 0; k < names.size(); ++k)
+        {
+          JsonValue p                     = JsonValue::object();
+          p["name"]                       = names[k];
+          p["material_id"]                = k;
+          p["young_modulus"]              = given[k].youngs_modulus;
+          p["poisson_ratio"]              = given[k].poisson_ratio;
+          p["density"]                    = given[k].density;
+          p["pore"]                       = static_cast<bool>(pores[k]);
+          p["cell_problem_young_modulus"] = used[k].youngs_modulus;
+          p["fraction"] = k < fractions.size() ? fractions[k] : 0.;
+          list.push_back(p);
+        }
+      return list;
+    }
+
+
+    void
+    HomogenizationProblem::report_isotropic_moduli(
+      const std::vector<CellProblemResult>        &results,
+      const std::vector<IsotropicElasticMaterial> &phases,
+      const std::vector<double>                   &fractions,
+      JsonValue                                   &summary,
+      std::ostream                                &table) const
+    {
+      const PlaneModuliBounds hs = hashin_shtrikman_bounds(phases, fractions);
+      const PlaneModuli       voigt
+        = isotropic_projection(voigt_estimate(phases, fractions).C);
+      const PlaneModuli reuss
+        = isotropic_projection(reuss_estimate(phases, fractions).C);
+      JsonValue j                           = JsonValue::object();
+      j["kappa_lower"]                      = hs.lower.kappa;
+      j["kappa_upper"]                      = hs.upper.kappa;
+      j["mu_lower"]                         = hs.lower.mu;
+      j["mu_upper"]                         = hs.upper.mu;
+      summary["bounds"]["hashin_shtrikman"] = j;
+
+      table << "\nIn-plane isotropic moduli (GPa): 2D bulk kappa = (C11 + C22 "
+               "+ 2 C12)/4, shear mu = ((C11 + C22 - 2 C12)/4 + C66)/2;\n"
+               "Hashin-Shtrikman bounds apply to an in-plane isotropic "
+               "microstructure (see anisotropy):\n"
+            << std::left << std::setw(10) << "estimate" << std::right
+            << std::setw(10) << "kappa" << std::setw(10) << "mu"
+            << std::setw(12) << "anisotropy"
+            << "\n";
+      const auto row
+        = [&](const std::string &label, const PlaneModuli &m, const double a) {
+            table << std::left << std::setw(10) << label << std::right
+                  << std::fixed << std::setprecision(3) << std::setw(10)
+                  << m.kappa / 1e9 << std::setw(10) << m.mu / 1e9;
+            if (a >= 0)
+              table << std::setw(12) << std::setprecision(4) << a;
+            table << "\n";
+          };
+      for (const auto &r : results)
+        {
+          const PlaneModuli m = isotropic_projection(r.properties.C);
+          const double      a = anisotropy(r.properties.C);
+          row(to_string(r.boundary_condition), m, a);
+          auto &entry         = summary[to_string(r.boundary_condition)];
+          entry["kappa"]      = m.kappa;
+          entry["mu"]         = m.mu;
+          entry["anisotropy"] = a;
+        }
+      row("HS upper", hs.upper, -1);
+      row("HS lower", hs.lower, -1);
+      row("Voigt", voigt, -1);
+      row("Reuss", reuss, -1);
+    }
+
+
+    void
     HomogenizationProblem::run()
     {
       const auto     start = std::chrono::steady_clock::now();
@@ -133,6 +318,7 @@ namespace tribodyn
       const Morphology morphology = Morphology::create(morphology_parameters);
       pcout << "Morphology: " << morphology.description() << std::endl;
       const std::vector<IsotropicElasticMaterial> phases = materials.phases();
+      check_phases(morphology);
 
       CellProblem cell_problem(
         comm, morphology, phases, cell_problem_parameters, timer);
@@ -142,7 +328,11 @@ namespace tribodyn
             << std::endl;
 
       const std::vector<double> fractions = cell_problem.phase_fractions();
-      const std::string        &out_dir   = context.output_directory;
+      warn_about_boundary_pores(morphology,
+                                materials.pores(),
+                                cell_problem_parameters.boundary_conditions,
+                                pcout);
+      const std::string &out_dir = context.output_directory;
       // Every check passed (morphology, mesh): the directory may be touched.
       context.claim_output();
       if (output_parameters.write_morphology)
@@ -159,6 +349,7 @@ namespace tribodyn
       summary["morphology"]  = morphology.description();
       summary["volume_fraction"]   = fractions[material_id::heterogeneity];
       summary["n_heterogeneities"] = morphology.n_heterogeneities();
+      summary["phases"]            = phases_to_json(fractions);
       summary["n_cells"]
         = static_cast<unsigned long long>(cell_problem.n_cells());
       summary["n_dofs"]
@@ -245,6 +436,7 @@ namespace tribodyn
                       : "VIOLATED")
                 << ")\n";
         }
+      report_isotropic_moduli(results, phases, fractions, summary, table);
       pcout << table.str() << std::endl;
 
       const double wall_time = std::chrono::duration<double>(

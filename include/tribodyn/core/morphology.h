@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
 #include <string>
+#include <tribodyn/core/image_morphology.h>
 #include <tribodyn/core/material.h>
 #include <vector>
 
@@ -54,7 +55,8 @@ namespace tribodyn
       homogeneous,     ///< only matrix
       random_vertical, ///< random non-overlapping vertical heterogeneities
       laminate,        ///< layers through the whole rectangle
-      grid_file        ///< material ids read from a plain-text grid
+      grid_file,       ///< material ids read from a plain-text grid
+      image            ///< a segmented PNG or TIFF micrograph
     };
     enum class LaminateNormal
     {
@@ -85,6 +87,9 @@ namespace tribodyn
     /// Grid file: path of the plain-text grid of material ids.
     std::string grid_file;
 
+    /// Image: file, pixel size, segmentation, crop (subsection "Image").
+    ImageParameters image;
+
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     void
@@ -106,6 +111,14 @@ namespace tribodyn
                const unsigned int               n_x,
                const unsigned int               n_y,
                const std::vector<unsigned int> &ids);
+
+    /// The same with the description's @p origin (e.g. "image a.png").
+    Morphology(const double                     width,
+               const double                     height,
+               const unsigned int               n_x,
+               const unsigned int               n_y,
+               const std::vector<unsigned int> &ids,
+               const std::string               &origin);
 
     /// Build the morphology the parameters describe (generator or file).
     static Morphology
@@ -143,6 +156,15 @@ namespace tribodyn
     /// Area fraction of heterogeneity pixels.
     double
     heterogeneity_fraction() const;
+
+    /// Number of phases: the largest material id plus one (at least 2:
+    /// matrix and heterogeneity, even when a map holds only matrix).
+    unsigned int
+    n_phases() const;
+
+    /// Area fraction of the pixels of each material id 0 .. n_phases()-1.
+    std::vector<double>
+    phase_fractions() const;
 
     /// Number of distinct heterogeneities: as placed by the generator, or
     /// for a grid file the connected groups of heterogeneity pixels (pixels

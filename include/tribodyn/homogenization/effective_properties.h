@@ -79,6 +79,60 @@ namespace tribodyn
                    const std::vector<double>                   &fractions,
                    const unsigned int                           normal);
 
+    /**
+     * In-plane isotropic moduli of plane strain: the 2D bulk modulus kappa
+     * (mean in-plane stress per unit in-plane dilatation, lambda + mu for
+     * an isotropic phase) and the shear modulus mu. An isotropic plane
+     * stiffness is [[kappa + mu, kappa - mu, 0], [kappa - mu, kappa + mu,
+     * 0], [0, 0, mu]].
+     */
+    struct PlaneModuli
+    {
+      double kappa = 0;
+      double mu    = 0;
+    };
+
+    /// kappa = lambda + mu and mu of an isotropic phase in plane strain.
+    PlaneModuli
+    plane_moduli(const IsotropicElasticMaterial &phase);
+
+    /**
+     * Isotropic projection of a plane stiffness: kappa = (C11 + C22 + 2
+     * C12)/4, mu = ((C11 + C22 - 2 C12)/4 + C66)/2 (both exact for an
+     * isotropic C).
+     */
+    PlaneModuli
+    isotropic_projection(const VoigtMatrix &C);
+
+    /// Relative distance |C - C_iso| / |C| (Frobenius norms of the Voigt
+    /// matrices) of @p C from its isotropic projection.
+    double
+    anisotropy(const VoigtMatrix &C);
+
+    /// Lower and upper bounds on kappa and mu.
+    struct PlaneModuliBounds
+    {
+      PlaneModuli lower;
+      PlaneModuli upper;
+    };
+
+    /**
+     * Hashin-Shtrikman bounds on the plane-strain bulk modulus kappa and
+     * the in-plane shear modulus mu of a statistically isotropic 2D
+     * (in-plane) composite of isotropic phases, any number of them, in
+     * Walpole's form (valid also when the phases are not well ordered):
+     *   kappa_HS = [sum_k f_k / (kappa_k + mu_0)]^-1 - mu_0,
+     *   mu_HS    = [sum_k f_k / (mu_k + z_0)]^-1 - z_0,
+     *   z_0 = mu_0 kappa_0 / (kappa_0 + 2 mu_0),
+     * with (kappa_0, mu_0) = (max kappa_k, max mu_k) for the upper bounds
+     * and the minima for the lower ones (theory:
+     * doc/theory/homogenization.md, "Bounds for N phases"). They bound the
+     * effective constants of an in-plane isotropic microstructure only.
+     */
+    PlaneModuliBounds
+    hashin_shtrikman_bounds(const std::vector<IsotropicElasticMaterial> &phases,
+                            const std::vector<double> &fractions);
+
     /// Smallest eigenvalue of the symmetric part of @p A.
     double
     min_eigenvalue_of_symmetric_part(const VoigtMatrix &A);

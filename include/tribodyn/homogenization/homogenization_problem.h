@@ -2,8 +2,11 @@
 #define tribodyn_homogenization_homogenization_problem_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <ostream>
+#include <tribodyn/core/json.h>
 #include <tribodyn/core/material.h>
 #include <tribodyn/core/morphology.h>
+#include <tribodyn/core/phase_materials.h>
 #include <tribodyn/core/problem.h>
 #include <tribodyn/homogenization/cell_problem.h>
 #include <vector>
@@ -12,13 +15,30 @@ namespace tribodyn
 {
   namespace homogenization
   {
-    /// Parameters of the subsection "Materials": the two phases.
+    /**
+     * Parameters of the subsection "Materials": the two phases "Matrix"
+     * and "Heterogeneity", or any number of named phases in "Phases"
+     * (which then takes over).
+     */
     struct MaterialsParameters : TwoPhaseMaterials
     {
+      PhaseMaterials named;
+
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
       parse_parameters(dealii::ParameterHandler &prm);
+
+      /// The phases the cell problems use, indexed by material id (pores
+      /// with their ersatz stiffness).
+      std::vector<IsotropicElasticMaterial>
+      phases() const;
+      /// Name of each phase ("matrix", "heterogeneity" for two).
+      std::vector<std::string>
+      names() const;
+      /// Whether each phase is a pore.
+      std::vector<bool>
+      pores() const;
     };
 
     /// Parameters of the subsection "Output" of the homogenization problem.
@@ -54,6 +74,23 @@ namespace tribodyn
       run() override;
 
     private:
+      /// Refuse a morphology whose material ids have no phase, or an image
+      /// segmented into another number of phases than 'Materials/Phases'.
+      void
+      check_phases(const Morphology &morphology) const;
+      /// Name, constants and area fraction of each phase (summary.json).
+      JsonValue
+      phases_to_json(const std::vector<double> &fractions) const;
+      /// The isotropic projections (kappa, mu) of the apparent stiffnesses
+      /// next to the Hashin-Shtrikman bounds: @p table and @p summary.
+      void
+      report_isotropic_moduli(
+        const std::vector<CellProblemResult>        &results,
+        const std::vector<IsotropicElasticMaterial> &phases,
+        const std::vector<double>                   &fractions,
+        JsonValue                                   &summary,
+        std::ostream                                &table) const;
+
       RunContext                     context;
       MorphologyParameters           morphology_parameters;
       MaterialsParameters            materials;

@@ -1,0 +1,134 @@
+#ifndef tribodyn_core_image_morphology_h
+#define tribodyn_core_image_morphology_h
+
+#include <array>
+#include <cstdint>
+#include <deal.II/base/parameter_handler.h>
+#include <string>
+#include <vector>
+
+namespace tribodyn
+{
+  /**
+   * Parameters of the subsection "Morphology/Image": a micrograph (PNG or
+   * TIFF) turned into a material map. Each image pixel becomes one pixel
+   * of the morphology; its material id is the phase the segmentation gives
+   * it: 0, 1, 2, ... in the order of the thresholds (darkest first) or of
+   * the entries of the colour table. The ids name the phases of
+   * "Materials/Phases" in the same order (theory and user guide:
+   * doc/theory/homogenization.md, "Images as morphologies",
+   * doc/user_guide/homogenization.md).
+   */
+  struct ImageParameters
+  {
+    enum class Segmentation
+    {
+      thresholds,  ///< grey-level thresholds given in the parameter file
+      otsu,        ///< thresholds by Otsu's method (multi-level)
+      colour_table ///< one colour (grey level, palette index, RGB) per phase
+    };
+
+    /// Path of the PNG or TIFF file (relative to the working directory).
+    std::string file;
+    /// Size of a pixel (m); 0 takes it from the image's resolution tag.
+    double       pixel_size   = 0;
+    Segmentation segmentation = Segmentation::otsu;
+    /// Increasing grey levels t_1 < ... < t_{N-1}: phase k holds the grey
+    /// levels g with t_k <= g < t_{k+1} (t_0 = -inf, t_N = +inf).
+    std::vector<double> thresholds;
+    /// Number of phases Otsu's method separates (2 to 4).
+    unsigned int n_otsu_phases = 2;
+    /// Colour table: phase k is every pixel of colour colour_table[k]
+    /// (one number: grey level, or palette index of an indexed image;
+    /// three numbers: red, green, blue).
+    std::vector<std::vector<unsigned int>> colour_table;
+    /// Crop window in image pixels: left column, top row (from the image's
+    /// top-left corner), width, height; all zero: the whole image.
+    std::array<unsigned int, 4> crop = {{0, 0, 0, 0}};
+
+    /// Declare the subsection "Image" in the current subsection.
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    /// Parse it (the current subsection must be "Morphology").
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+
+  /**
+   * A raster image as read from a PNG or TIFF file: grey, indexed
+   * (palette) or RGB samples of 8 or 16 bits; alpha channels are dropped.
+   */
+  struct RasterImage
+  {
+    enum class Kind
+    {
+      grey,
+      indexed,
+      rgb
+    };
+    std::string  format; ///< "PNG" or "TIFF"
+    Kind         kind      = Kind::grey;
+    unsigned int width     = 0;
+    unsigned int height    = 0;
+    unsigned int bit_depth = 8; ///< of the samples after reading: 8 or 16
+    /// Samples row-major, top row first: one per pixel (grey level or
+    /// palette index) or three (R, G, B).
+    std::vector<std::uint16_t> samples;
+    /// Palette of an indexed image, 8-bit R, G, B.
+    std::vector<std::array<unsigned int, 3>> palette;
+    /// Pixel size from the resolution tag (m); 0 when the file has none.
+    double pixel_width  = 0;
+    double pixel_height = 0;
+
+    /// Largest grey level: 255 or 65535 (255 for indexed images, whose
+    /// grey level is that of the palette colour).
+    unsigned int
+    max_grey() const;
+    /// Grey level of pixel (i, r), r counted from the top: the sample of a
+    /// grey image, the luma 0.299 R + 0.587 G + 0.114 B (rounded) of an
+    /// RGB pixel or of a palette colour.
+    unsigned int
+    grey(const unsigned int i, const unsigned int r) const;
+    /// "PNG, 8-bit grey, 120 x 80 pixels" and so on.
+    std::string
+    description() const;
+  };
+
+  /// Read a PNG or TIFF file (told apart by their signatures, not by the
+  /// file name). Throws InputError naming the file, @p parameter and the
+  /// cause for a missing, unreadable, corrupt or unsupported file.
+  RasterImage
+  read_raster_image(const std::string &file_name, const std::string &parameter);
+
+  /// Thresholds of Otsu's method for @p n_phases classes (2 to 4) on the
+  /// 256-bin histogram of the grey levels @p grey (levels 0..@p max_grey):
+  /// the n_phases - 1 thresholds (in grey levels) that maximise the
+  /// between-class variance.
+  std::vector<double>
+  otsu_thresholds(const std::vector<unsigned int> &grey,
+                  const unsigned int               max_grey,
+                  const unsigned int               n_phases);
+
+  /// A segmented image: material ids row-major from the bottom row, as
+  /// Morphology stores them.
+  struct SegmentedImage
+  {
+    unsigned int              n_x = 0, n_y = 0;
+    double                    pixel_width = 0, pixel_height = 0;
+    unsigned int              n_phases = 0;
+    std::vector<unsigned int> ids;
+    /// "image micrograph.png (PNG, 8-bit grey, ...), Otsu thresholds 85,
+    /// 170".
+    std::string description;
+  };
+
+  /// Read, crop and segment the image @p parameters describe. Throws
+  /// InputError for a bad file, a crop window outside the image, a
+  /// missing pixel size, a pixel in no entry of the colour table, or a
+  /// phase left empty.
+  SegmentedImage
+  segment_image(const ImageParameters &parameters);
+} // namespace tribodyn
+
+#endif

@@ -1,0 +1,58 @@
+#ifndef tribodyn_core_phase_materials_h
+#define tribodyn_core_phase_materials_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <string>
+#include <tribodyn/core/material.h>
+#include <vector>
+
+namespace tribodyn
+{
+  /**
+   * Any number of named isotropic phases (issue #19 item 2): the
+   * subsection "Phases" of the current subsection, ASPECT-style lists with
+   * one entry per phase, phase k being material id k of the morphology:
+   *
+   *   subsection Phases
+   *     set Names            = pores, matrix, fibres
+   *     set Young moduli     = 0, 30e9, 80e9
+   *     set Poisson ratios   = 0, 0.2, 0.2
+   *     set Densities        = 0, 1770, 1770
+   *   end
+   *
+   * A Young modulus of 0 makes the phase a pore. The cell problems stay
+   * well posed by giving pores an ersatz stiffness: E = 'Pore stiffness
+   * ratio' times the smallest solid E, nu = 0 (theory:
+   * doc/theory/homogenization.md, "Any number of phases, pores", with the error
+   * this causes). An empty 'Names' list (the default) leaves the two phases
+   * "Matrix" and "Heterogeneity" in charge, as before.
+   */
+  struct PhaseMaterials
+  {
+    std::vector<std::string>              names;
+    std::vector<IsotropicElasticMaterial> materials; ///< as given (E = 0: pore)
+    std::vector<bool>                     pore;
+    double                                pore_stiffness_ratio = 1e-6;
+
+    /// Declare "Phases" in the current subsection.
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    /// Parse it; @p section (e.g. "Materials") prefixes the names in error
+    /// messages.
+    void
+    parse_parameters(dealii::ParameterHandler &prm, const std::string &section);
+
+    /// True when the list is in use (Names not empty).
+    bool
+    given() const;
+    /// Number of phases.
+    unsigned int
+    size() const;
+    /// The phases the cell problems use, indexed by material id: pores
+    /// replaced by their ersatz material.
+    std::vector<IsotropicElasticMaterial>
+    phases() const;
+  };
+} // namespace tribodyn
+
+#endif

@@ -1,0 +1,419 @@
+// Micrographs as morphologies (issue #19 item 1): the parameters, cropping,
+// and segmenting the pixels into phases by grey-level thresholds, Otsu's
+// method or a colour table. The files are read in image_reader.cc. The theory
+// is in doc/theory/homogenization.md, "Images as morphologies".
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/utilities.h>
+#include <sstream>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/image_morphology.h>
+#include <tribodyn/core/selection.h>
+
+namespace tribodyn
+{
+  namespace
+  {
+    using Segmentation = ImageParameters::Segmentation;
+    constexpr SelectionTable<Segmentation, 3> segmentation_choices{
+      {{"thresholds", Segmentation::thresholds},
+       {"Otsu", Segmentation::otsu},
+       {"colour table", Segmentation::colour_table}}};
+
+    const std::string section = "Morphology/Image/";
+
+
+    /// Numbers of a comma- or space-separated list; throws naming
+    /// @p parameter when a word is not a number.
+    std::vector<double>
+    parse_list(const std::string &text, const std::string &parameter)
+    {
+      std::vector<double> values;
+      std::string         cleaned = text;
+      std::replace(cleaned.begin(), cleaned.end(), ',', ' ');
+      std::istringstream in(cleaned);
+      std::string        word;
+      while (in >> word)
+        {
+          std::size_t end = 0;
+          double      v   = 0;
+          try
+            {
+              v = std::stod(word, &end);
+            }
+          catch (const std::exception &)
+            {
+              end = 0;
+            }
+          if (end != word.size())
+            throw InputError("'" + parameter + "': '" + word
+                             + "' is not a number. Give numbers separated "
+                               "by commas.");
+          values.push_back(v);
+        }
+      return values;
+    }
+  } // namespace
+
+
+  void
+  ImageParameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using dealii::Patterns::Anything;
+    prm.enter_subsection("Image");
+    {
+      prm.declare_entry("File",
+                        "",
+                        Anything(),
+                        "PNG or TIFF micrograph ('Generator = image'): 8- or "
+                        "16-bit grey, indexed (palette) or RGB; alpha is "
+                        "ignored; a TIFF must be in strips (not tiles). "
+                        "Each image pixel is one pixel of the morphology; "
+                        "the top row of the image is the top of the "
+                        "rectangle.");
+      prm.declare_entry("Pixel size",
+                        "0",
+                        dealii::Patterns::Double(0),
+                        "Size of an image pixel in m; 0 takes it from the "
+                        "image's resolution tag (TIFF XResolution/"
+                        "YResolution with ResolutionUnit inch or cm, PNG "
+                        "pHYs in pixels per metre). Sets the rectangle's "
+                        "size: 'Width' and 'Height' are not used.");
+      prm.declare_entry("Segmentation",
+                        "Otsu",
+                        selection_pattern(segmentation_choices),
+                        "How pixels become phases (material ids 0, 1, ...): "
+                        "'thresholds' (grey-level thresholds, see "
+                        "'Thresholds'), 'Otsu' (thresholds by Otsu's "
+                        "method, see 'Otsu phases'), 'colour table' (one "
+                        "colour per phase, see 'Colour table'). RGB and "
+                        "indexed pixels are thresholded on their luma "
+                        "0.299 R + 0.587 G + 0.114 B.");
+      prm.declare_entry("Thresholds",
+                        "",
+                        Anything(),
+                        "Increasing grey levels t1, t2, ... (in the image's "
+                        "levels: 0-255 for 8 bits, 0-65535 for 16 bits): "
+                        "phase 0 is below t1, phase 1 in [t1, t2), ..., the "
+                        "last phase at or above the last threshold.");
+      prm.declare_entry("Otsu phases",
+                        "2",
+                        dealii::Patterns::Integer(2, 4),
+                        "Number of phases Otsu's method separates (2 to 4), "
+                        "darkest first.");
+      prm.declare_entry("Colour table",
+                        "",
+                        Anything(),
+                        "Colours of phases 0, 1, ... separated by ';': one "
+                        "number (grey level of a grey image, palette index "
+                        "of an indexed one, or the grey R = G = B of an RGB "
+                        "one) or three (red green blue). Example: '0 0 0; "
+                        "128 128 128; 255 255 255'. A pixel of another "
+                        "colour is an error.");
+      prm.declare_entry("Crop",
+                        "",
+                        Anything(),
+                        "Optional window of the image, in pixels: left "
+                        "column, top row (from the image's top-left "
+                        "corner), width, height. Empty: the whole image.");
+    }
+    prm.leave_subsection();
+  }
+
+
+  void
+  ImageParameters::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Image");
+    {
+      file          = prm.get("File");
+      pixel_size    = prm.get_double("Pixel size");
+      segmentation  = get_selection(prm, "Segmentation", segmentation_choices);
+      thresholds    = parse_list(prm.get("Thresholds"), section + "Thresholds");
+      n_otsu_phases = prm.get_integer("Otsu phases");
+      colour_table.clear();
+      for (const std::string &entry :
+           dealii::Utilities::split_string_list(prm.get("Colour table"), ';'))
+        {
+          const std::vector<double> c
+            = parse_list(entry, section + "Colour table");
+          check_parameter(
+            (c.size() == 1 || c.size() == 3)
+              && std::all_of(c.begin(),
+                             c.end(),
+                             [](const double v) {
+                               return v >= 0 && v <= 65535
+                                      && v == std::floor(v);
+                             }),
+            section + "Colour table",
+            "the entry '" + entry
+              + "' is not a colour: give one whole number (grey level or "
+                "palette index) or three (red green blue) per phase, "
+                "entries separated by ';'.");
+          colour_table.emplace_back(c.begin(), c.end());
+        }
+      const std::vector<double> c
+        = parse_list(prm.get("Crop"), section + "Crop");
+      check_parameter(c.empty()
+                        || (c.size() == 4 && c[0] >= 0 && c[1] >= 0 && c[2] >= 1
+                            && c[3] >= 1),
+                      section + "Crop",
+                      "give four whole numbers (left column, top row, "
+                      "width >= 1, height >= 1) or nothing for the whole "
+                      "image.");
+      crop = {{0, 0, 0, 0}};
+      for (unsigned int k = 0; k < c.size(); ++k)
+        crop[k] = static_cast<unsigned int>(c[k]);
+    }
+    prm.leave_subsection();
+
+    check_parameter(!file.empty(),
+                    section + "File",
+                    "'Generator = image' needs the path of a PNG or TIFF "
+                    "file.");
+    if (segmentation == Segmentation::thresholds)
+      {
+        check_parameter(!thresholds.empty(),
+                        section + "Thresholds",
+                        "'Segmentation = thresholds' needs at least one "
+                        "grey level (two phases).");
+        for (unsigned int k = 1; k < thresholds.size(); ++k)
+          check_parameter(thresholds[k] > thresholds[k - 1],
+                          section + "Thresholds",
+                          "the thresholds must increase.");
+      }
+    if (segmentation == Segmentation::colour_table)
+      check_parameter(colour_table.size() >= 2,
+                      section + "Colour table",
+                      "'Segmentation = colour table' needs the colours of at "
+                      "least two phases, separated by ';'.");
+  }
+
+
+  std::vector<double>
+  otsu_thresholds(const std::vector<unsigned int> &grey,
+                  const unsigned int               max_grey,
+                  const unsigned int               n_phases)
+  {
+    // Histogram of 256 bins (a 16-bit image's levels 256 to a bin), then
+    // the class boundaries b_1 < ... < b_{N-1} (class k holds the bins
+    // [b_k, b_{k+1})) that maximise sum_k w_k m_k^2, the between-class
+    // variance up to a constant (w_k: weight, m_k: mean bin of class k).
+    const unsigned int  n_bins = 256;
+    const double        scale  = (max_grey + 1.) / n_bins;
+    std::vector<double> w(n_bins + 1, 0.), m(n_bins + 1, 0.); // prefix sums
+    {
+      std::vector<double> histogram(n_bins, 0.);
+      for (const unsigned int g : grey)
+        histogram[std::min(n_bins - 1, static_cast<unsigned int>(g / scale))]
+          += 1;
+      for (unsigned int b = 0; b < n_bins; ++b)
+        {
+          w[b + 1] = w[b] + histogram[b];
+          m[b + 1] = m[b] + b * histogram[b];
+        }
+    }
+    const auto term = [&](const unsigned int from, const unsigned int to) {
+      const double weight = w[to] - w[from];
+      return weight > 0 ? (m[to] - m[from]) * (m[to] - m[from]) / weight : 0.;
+    };
+    std::vector<unsigned int> best(n_phases - 1), current(n_phases - 1);
+    double                    best_value = -1;
+    // Exhaustive search over the boundaries (C(255, N-1) sets: 2.7e6 for 4
+    // phases, a fraction of a second).
+    const auto search = [&](auto             &&self,
+                            const unsigned int level,
+                            const unsigned int from,
+                            const double       value) -> void {
+      if (level == n_phases - 1)
+        {
+          const double total = value + term(from, n_bins);
+          if (total > best_value)
+            {
+              best_value = total;
+              best       = current;
+            }
+          return;
+        }
+      for (unsigned int b = from + 1; b + (n_phases - 2 - level) < n_bins; ++b)
+        {
+          current[level] = b;
+          self(self, level + 1, b, value + term(from, b));
+        }
+    };
+    search(search, 0, 0, 0.);
+    std::vector<double> thresholds;
+    for (const unsigned int b : best)
+      thresholds.push_back(b * scale);
+    return thresholds;
+  }
+
+
+  SegmentedImage
+  segment_image(const ImageParameters &p)
+  {
+    const RasterImage image = read_raster_image(p.file, section + "File");
+
+    // Crop window (image rows counted from the top).
+    unsigned int x0 = 0, y0 = 0, nx = image.width, ny = image.height;
+    if (p.crop[2] > 0)
+      {
+        x0 = p.crop[0];
+        y0 = p.crop[1];
+        nx = p.crop[2];
+        ny = p.crop[3];
+        check_parameter(std::size_t(x0) + nx <= image.width
+                          && std::size_t(y0) + ny <= image.height,
+                        section + "Crop",
+                        "the window (" + std::to_string(x0) + ", "
+                          + std::to_string(y0) + ", " + std::to_string(nx)
+                          + ", " + std::to_string(ny)
+                          + ") does not fit in the image '" + p.file + "' of "
+                          + std::to_string(image.width) + " x "
+                          + std::to_string(image.height)
+                          + " pixels. Give left column, top row, width and "
+                            "height inside the image.");
+      }
+
+    SegmentedImage s;
+    s.n_x          = nx;
+    s.n_y          = ny;
+    s.pixel_width  = p.pixel_size > 0 ? p.pixel_size : image.pixel_width;
+    s.pixel_height = p.pixel_size > 0 ? p.pixel_size : image.pixel_height;
+    check_parameter(s.pixel_width > 0 && s.pixel_height > 0,
+                    section + "Pixel size",
+                    "the image '" + p.file
+                      + "' has no resolution tag (in inch, cm or m), so its "
+                        "pixel size is unknown. Give the size of a pixel in "
+                        "m.");
+
+    std::vector<unsigned int> grey(std::size_t(nx) * ny);
+    for (unsigned int r = 0; r < ny; ++r)
+      for (unsigned int i = 0; i < nx; ++i)
+        grey[std::size_t(r) * nx + i] = image.grey(x0 + i, y0 + r);
+
+    // Ids in image order (top row first), then flipped to bottom-first.
+    std::vector<unsigned int> ids(grey.size());
+    std::ostringstream        how;
+    std::vector<std::string>  phase_rule; // for the empty-phase message
+    if (p.segmentation == Segmentation::colour_table)
+      {
+        s.n_phases = p.colour_table.size();
+        for (const auto &c : p.colour_table)
+          phase_rule.push_back("colour '"
+                               + (c.size() == 1 ? std::to_string(c[0])
+                                                : std::to_string(c[0]) + " "
+                                                    + std::to_string(c[1]) + " "
+                                                    + std::to_string(c[2]))
+                               + "'");
+        for (unsigned int r = 0; r < ny; ++r)
+          for (unsigned int i = 0; i < nx; ++i)
+            {
+              const std::size_t k = std::size_t(y0 + r) * image.width + x0 + i;
+              std::array<unsigned int, 3> rgb;
+              unsigned int                single;
+              if (image.kind == RasterImage::Kind::rgb)
+                {
+                  rgb    = {{image.samples[3 * k],
+                             image.samples[3 * k + 1],
+                             image.samples[3 * k + 2]}};
+                  single = (rgb[0] == rgb[1] && rgb[1] == rgb[2]) ? rgb[0]
+                                                                  : 1u << 20;
+                }
+              else if (image.kind == RasterImage::Kind::indexed)
+                {
+                  single = image.samples[k];
+                  rgb    = image.palette.at(single);
+                }
+              else
+                {
+                  single = image.samples[k];
+                  rgb    = {{single, single, single}};
+                }
+              unsigned int phase = s.n_phases;
+              for (unsigned int q = 0; q < s.n_phases && phase == s.n_phases;
+                   ++q)
+                {
+                  const auto &c = p.colour_table[q];
+                  if ((c.size() == 1 && c[0] == single)
+                      || (c.size() == 3 && c[0] == rgb[0] && c[1] == rgb[1]
+                          && c[2] == rgb[2]))
+                    phase = q;
+                }
+              if (phase == s.n_phases)
+                throw InputError(
+                  "Pixel (column " + std::to_string(x0 + i) + ", row "
+                  + std::to_string(y0 + r) + " from the top) of the image '"
+                  + p.file + "' has the colour "
+                  + (image.kind == RasterImage::Kind::grey
+                       ? "grey " + std::to_string(single)
+                       : std::to_string(rgb[0]) + " " + std::to_string(rgb[1])
+                           + " " + std::to_string(rgb[2])
+                           + (image.kind == RasterImage::Kind::indexed
+                                ? " (index " + std::to_string(single) + ")"
+                                : ""))
+                  + ", which is in no entry of '" + section
+                  + "Colour table'. Add it to the entry of its phase's colour "
+                    "or use 'Segmentation = thresholds'.");
+              ids[std::size_t(r) * nx + i] = phase;
+            }
+        how << "colour table of " << s.n_phases << " colours";
+      }
+    else
+      {
+        std::vector<double> t = p.thresholds;
+        if (p.segmentation == Segmentation::otsu)
+          {
+            t = otsu_thresholds(grey, image.max_grey(), p.n_otsu_phases);
+            how << "Otsu thresholds";
+          }
+        else
+          how << "thresholds";
+        for (unsigned int k = 0; k < t.size(); ++k)
+          how << (k == 0 ? " " : ", ") << t[k];
+        s.n_phases = t.size() + 1;
+        for (unsigned int k = 0; k <= t.size(); ++k)
+          phase_rule.push_back(
+            "grey levels "
+            + (k == 0 ? std::string("below ") + format_number(t[0])
+               : k == t.size()
+                 ? std::string("at or above ") + format_number(t[k - 1])
+                 : "in [" + format_number(t[k - 1]) + ", " + format_number(t[k])
+                     + ")"));
+        for (std::size_t k = 0; k < grey.size(); ++k)
+          ids[k]
+            = std::upper_bound(t.begin(), t.end(), double(grey[k])) - t.begin();
+      }
+
+    std::vector<std::size_t> count(s.n_phases, 0);
+    for (const unsigned int id : ids)
+      ++count[id];
+    for (unsigned int k = 0; k < s.n_phases; ++k)
+      if (count[k] == 0)
+        throw InputError(
+          "The segmentation of the image '" + p.file + "' (" + how.str()
+          + ") leaves phase " + std::to_string(k) + " (" + phase_rule[k]
+          + ") empty: no pixel"
+          + (p.crop[2] > 0 ? " of the crop window" : std::string())
+          + " falls in it. Change '" + section
+          + (p.segmentation == Segmentation::colour_table ? "Colour table"
+             : p.segmentation == Segmentation::otsu       ? "Otsu phases"
+                                                          : "Thresholds")
+          + "' (the image's grey levels span "
+          + std::to_string(*std::min_element(grey.begin(), grey.end())) + " to "
+          + std::to_string(*std::max_element(grey.begin(), grey.end()))
+          + ") so that every phase has pixels.");
+
+    s.ids.resize(ids.size());
+    for (unsigned int r = 0; r < ny; ++r)
+      for (unsigned int i = 0; i < nx; ++i)
+        s.ids[std::size_t(ny - 1 - r) * nx + i] = ids[std::size_t(r) * nx + i];
+    std::ostringstream d;
+    d << "image " << p.file << " (" << image.description();
+    if (p.crop[2] > 0)
+      d << ", crop " << x0 << " " << y0 << " " << nx << " " << ny;
+    d << "; " << how.str() << ")";
+    s.description = d.str();
+    return s;
+  }
+} // namespace tribodyn
