@@ -1,0 +1,80 @@
+#!/usr/bin/python3
+"""Throughput of two tribodyn binaries, old and new in turn (issue #17 item
+8, #20 item 1: a speed claim is a ratio taken in one run, alternating).
+
+    python3 bench/alternating_throughput.py OLD_TRIBODYN NEW_TRIBODYN [REPEATS]
+        [--old-lib DIR]
+
+Cases: the pin of prm/contact/homogeneous_matrix.prm cut to 100 us (1 rank;
+dof_steps_per_second), prm/mca/two_body_friction.prm and the 10^5
+elastic block of bench/mca/make_block.py 29 30 elastic 300
+(automaton_steps_per_second); REPEATS runs each (default 5), the order
+of old and new swapped every repeat; prints each pair and the medians with
+new / old. --old-lib: LD_LIBRARY_PATH for the old binary (a copied build
+needs its libtribodyn.so). Outputs in bench-output/alternating/.
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+OUT = os.path.abspath(os.path.join("bench-output", "alternating"))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("old")
+    parser.add_argument("new")
+    parser.add_argument("repeats", type=int, nargs="?", default=5)
+    parser.add_argument("--old-lib", default="")
+    args = parser.parse_args()
+    os.makedirs(OUT, exist_ok=True)
+    block = os.path.join(OUT, "block.prm")
+    with open(block, "w") as f:
+        subprocess.run(["python3", os.path.join(ROOT, "bench/mca/make_block.py"),
+                        "29", "30", "elastic", "300",
+                        os.path.join(OUT, "block_out")], stdout=f, check=True)
+    cases = {
+        "contact pin": (os.path.join(ROOT, "prm/contact/homogeneous_matrix.prm"),
+                        "subsection Time integration\nset End time = 100e-6\n"
+                        "end\nsubsection Output\nset Averaging start time = "
+                        "20e-6\nset Field interval = 0\nend\n",
+                        "dof_steps_per_second"),
+        "two_body_friction": (os.path.join(ROOT,
+                                           "prm/mca/two_body_friction.prm"),
+                              "", "automaton_steps_per_second"),
+        "10^5 block": (block, "", "automaton_steps_per_second"),
+    }
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    results = {c: {"old": [], "new": []} for c in cases}
+    for rep in range(args.repeats):
+        for case, (prm, extra, key) in cases.items():
+            order = ("old", "new") if rep % 2 == 0 else ("new", "old")
+            for which in order:
+                d = os.path.join(OUT, "%s_%s" % (case.replace(" ", "_")
+                                                 .replace("^", ""), which))
+                with open(d + ".prm", "w") as f:
+                    f.write(open(prm).read() + "\nset Output directory = %s\n"
+                            % d + extra)
+                e = dict(env)
+                if which == "old" and args.old_lib:
+                    e["LD_LIBRARY_PATH"] = args.old_lib
+                subprocess.run([getattr(args, which), d + ".prm"], env=e,
+                               stdout=subprocess.DEVNULL,
+                               stderr=subprocess.DEVNULL, check=True)
+                with open(os.path.join(d, "summary.json")) as f:
+                    results[case][which].append(json.load(f)[key])
+            print(rep, case, results[case]["old"][-1],
+                  results[case]["new"][-1], flush=True)
+    for case in cases:
+        old = statistics.median(results[case]["old"])
+        new = statistics.median(results[case]["new"])
+        print("%s: median old %.4g, new %.4g, new/old %.3f"
+              % (case, old, new, new / old))
+
+
+if __name__ == "__main__":
+    main()
