@@ -2,7 +2,7 @@
 // mu(p, v) read from a CSV table of contact pressure and slip speed
 // (subsection `Contact/Tabulated friction`; FrictionTable: bilinear,
 // clamped outside the table with a warning). The table may come from the
-// automata (`scripts/mca_friction_study --table`): the bridge between the
+// automata (`scripts/mca_friction_table`): the bridge between the
 // scales (doc/user_guide/contact.md).
 #ifndef tribodyn_contact_friction_laws_tabulated_h
 #define tribodyn_contact_friction_laws_tabulated_h
