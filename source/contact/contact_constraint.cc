@@ -204,6 +204,7 @@ namespace tribodyn
       const double t = time_next - dt;
       PlaneStep    step;
       step.dt                = dt;
+      step.h                 = h;
       step.speed             = std::abs(L.plane_velocity);
       step.constant_velocity = L.constant_plane_velocity();
       if (step.constant_velocity)

@@ -172,6 +172,17 @@ namespace tribodyn
                         "Duration of the smooth ramp V(t) = V (1 - cos(pi "
                         "(t - t_start)/t_v))/2 of the plane velocity (s); 0 "
                         "starts the plane at V at once.");
+      prm.declare_entry("Plane velocity step time",
+                        "0",
+                        Double(0),
+                        "At this time the plane's velocity steps at once to "
+                        "'Plane velocity after step' (s), e.g. to see the "
+                        "transient of rate-and-state friction. 0: no step.");
+      prm.declare_entry("Plane velocity after step",
+                        "-2",
+                        Double(),
+                        "The plane's velocity after that step (m/s): "
+                        "nonzero, in the direction of 'Plane velocity'.");
       prm.declare_entry("Surface imperfection amplitude",
                         "0",
                         Double(0),
@@ -215,7 +226,9 @@ namespace tribodyn
       initial_velocity[1] = v[1];
       initial_gap         = prm.get_double("Initial gap");
       plane_start_time    = prm.get_double("Plane start time");
-      plane_velocity_ramp_time = prm.get_double("Plane velocity ramp time");
+      plane_velocity_ramp_time  = prm.get_double("Plane velocity ramp time");
+      plane_velocity_step_time  = prm.get_double("Plane velocity step time");
+      plane_velocity_after_step = prm.get_double("Plane velocity after step");
       imperfection_amplitude = prm.get_double("Surface imperfection amplitude");
       imperfection_wavelength
         = prm.get_double("Surface imperfection wavelength");
@@ -247,12 +260,40 @@ namespace tribodyn
                             "must not be negative.");
       check_parameter_range(
         "Loading/Plane velocity", plane_velocity, -1e4, 1e4, false, false);
+      if (plane_velocity_step_time > 0)
+        {
+          check_parameter(plane_velocity_step_time
+                            > plane_start_time + plane_velocity_ramp_time,
+                          "Loading/Plane velocity step time",
+                          "a time after the plane's start and velocity ramp ("
+                            + format_number(plane_start_time
+                                            + plane_velocity_ramp_time)
+                            + " s)");
+          check_parameter(plane_velocity_after_step * plane_velocity > 0
+                            && std::abs(plane_velocity_after_step) <= 1e4,
+                          "Loading/Plane velocity after step",
+                          "a velocity in the direction of 'Loading/Plane "
+                          "velocity' (friction is measured against that "
+                          "direction), at most 1e4 m/s in magnitude");
+        }
+    }
+
+
+    double
+    LoadingParameters::plane_speed_maximum() const
+    {
+      return std::max(std::abs(plane_velocity),
+                      plane_velocity_step_time > 0
+                        ? std::abs(plane_velocity_after_step)
+                        : 0.);
     }
 
 
     double
     LoadingParameters::plane_velocity_at(const double t) const
     {
+      if (plane_velocity_step_time > 0 && t >= plane_velocity_step_time)
+        return plane_velocity_after_step;
       if (t >= plane_start_time + plane_velocity_ramp_time)
         return plane_velocity;
       if (t <= plane_start_time)
@@ -276,6 +317,9 @@ namespace tribodyn
         x -= 0.5 * plane_velocity * tv / M_PI * std::sin(M_PI * s / tv);
       if (t > plane_start_time + tv)
         x += plane_velocity * (t - plane_start_time - tv);
+      if (plane_velocity_step_time > 0 && t > plane_velocity_step_time)
+        x += (plane_velocity_after_step - plane_velocity)
+             * (t - plane_velocity_step_time);
       return x;
     }
 

@@ -197,7 +197,7 @@ namespace tribodyn
     ContactSolver::velocity_limit() const
     {
       const auto &L = prm.loading;
-      return c_maximum + std::abs(L.plane_velocity) + L.initial_velocity.norm()
+      return c_maximum + L.plane_speed_maximum() + L.initial_velocity.norm()
              + L.velocity_perturbation;
     }
 

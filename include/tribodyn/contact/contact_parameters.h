@@ -99,6 +99,10 @@ namespace tribodyn
       /// smoothly to V over the velocity ramp time (s).
       double plane_start_time         = 0.;
       double plane_velocity_ramp_time = 0.;
+      /// At this time (0: never) the plane's velocity steps to the velocity
+      /// after the step (m/s): the velocity-step test of rate and state.
+      double plane_velocity_step_time  = 0.;
+      double plane_velocity_after_step = 0.;
       /// Waviness of the plane (absolute, m): its surface is
       /// y = -gap - A (1 - cos(2 pi xi / lambda)) / 2, xi the coordinate
       /// along the plane (it moves with the plane).
@@ -120,6 +124,9 @@ namespace tribodyn
       /// Velocity of the plane at time t (m/s).
       double
       plane_velocity_at(const double t) const;
+      /// The largest |plane velocity| of the run (m/s).
+      double
+      plane_speed_maximum() const;
       /// Displacement of the plane along x from 0 to t (m).
       double
       plane_position_at(const double t) const;
@@ -127,7 +134,8 @@ namespace tribodyn
       bool
       constant_plane_velocity() const
       {
-        return plane_start_time == 0 && plane_velocity_ramp_time == 0;
+        return plane_start_time == 0 && plane_velocity_ramp_time == 0
+               && plane_velocity_step_time == 0;
       }
     };
 

@@ -122,6 +122,9 @@ namespace tribodyn
       double speed = 0;
       /// Whether the plane moves at the constant Plane velocity.
       bool constant_velocity = true;
+      /// The scheme's update of a node's displacement by its multiplier
+      /// over the step: Delta u = h lambda / m.
+      double h = 0;
     };
 
     /// Coulomb's cone: stick (the trial) while |trial| <= limit, else slip

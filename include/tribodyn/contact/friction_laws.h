@@ -5,6 +5,7 @@
 
 #include <tribodyn/contact/friction_laws/coulomb.h>
 #include <tribodyn/contact/friction_laws/frictionless.h>
+#include <tribodyn/contact/friction_laws/rate_and_state.h>
 #include <tribodyn/contact/friction_laws/regularized.h>
 #include <tribodyn/contact/friction_laws/tabulated.h>
 
@@ -12,8 +13,11 @@ namespace tribodyn
 {
   namespace contact
   {
-    using FrictionLaws
-      = FrictionLawList<Frictionless, Coulomb, Regularized, Tabulated>;
+    using FrictionLaws = FrictionLawList<Frictionless,
+                                         Coulomb,
+                                         Regularized,
+                                         Tabulated,
+                                         RateAndState>;
   } // namespace contact
 } // namespace tribodyn
 
