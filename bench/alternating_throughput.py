@@ -3,7 +3,7 @@
 8, #20 item 1: a speed claim is a ratio taken in one run, alternating).
 
     python3 bench/alternating_throughput.py OLD_TRIBODYN NEW_TRIBODYN [REPEATS]
-        [--old-lib DIR]
+        [--old-lib DIR] [--only CASE]
 
 Cases: the pin of prm/contact/homogeneous_matrix.prm cut to 100 us (1 rank;
 dof_steps_per_second), prm/mca/two_body_friction.prm and the 10^5
@@ -11,7 +11,8 @@ elastic block of bench/mca/make_block.py 29 30 elastic 300
 (automaton_steps_per_second); REPEATS runs each (default 5), the order
 of old and new swapped every repeat; prints each pair and the medians with
 new / old. --old-lib: LD_LIBRARY_PATH for the old binary (a copied build
-needs its libtribodyn.so). Outputs in bench-output/alternating/.
+needs its libtribodyn.so). --only: one case ("contact pin",
+"two_body_friction", "10^5 block"). Outputs in bench-output/alternating/.
 """
 import argparse
 import json
@@ -29,6 +30,7 @@ def main():
     parser.add_argument("new")
     parser.add_argument("repeats", type=int, nargs="?", default=5)
     parser.add_argument("--old-lib", default="")
+    parser.add_argument("--only", default="")
     args = parser.parse_args()
     os.makedirs(OUT, exist_ok=True)
     block = os.path.join(OUT, "block.prm")
@@ -47,6 +49,8 @@ def main():
                               "", "automaton_steps_per_second"),
         "10^5 block": (block, "", "automaton_steps_per_second"),
     }
+    if args.only:
+        cases = {args.only: cases[args.only]}
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
                OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     results = {c: {"old": [], "new": []} for c in cases}

@@ -30,8 +30,9 @@ namespace tribodyn
     {
       // 2: records keyed by place (any number of ranks); 3: a contact
       // node's state is ContactNode::for_each_state_field() (with the
-      // friction law's state)
-      constexpr unsigned int state_version = 3;
+      // friction law's state); 4: the outputs' states are their
+      // postprocessors' (by name)
+      constexpr unsigned int state_version = 4;
 
       static_assert(std::is_trivially_copyable<Sample>::value,
                     "Sample is saved as raw bytes");
@@ -82,9 +83,8 @@ namespace tribodyn
           if (n_samples > 0)
             g << boost::serialization::make_binary_object(
               const_cast<Sample *>(history.data()), n_samples * sizeof(Sample));
-          // Loop counters and outputs already written.
-          g << loop.sample_count << loop.field_count << loop.next_field
-            << loop.csv_rows << loop.face_rows << loop.pvd;
+          // The outputs' states (rows written, fields), by name.
+          g << loop.outputs;
         }
         const std::string global = global_out.str();
         ar << state_version << global;
@@ -177,8 +177,7 @@ namespace tribodyn
           g >> boost::serialization::make_binary_object(history.data(),
                                                         n_samples
                                                           * sizeof(Sample));
-        g >> loop.sample_count >> loop.field_count >> loop.next_field
-          >> loop.csv_rows >> loop.face_rows >> loop.pvd;
+        g >> loop.outputs;
       });
 
       // Each record to the ranks whose cells hold its node (the pin's

@@ -22,6 +22,7 @@
 #include <sstream>
 #include <tribodyn/contact/contact_solver.h>
 #include <tribodyn/contact/element_kernels.h>
+#include <tribodyn/contact/postprocessor.h>
 #include <tribodyn/contact/spectrum.h>
 #include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
@@ -261,55 +262,34 @@ namespace tribodyn
         store->discard();
       steps_at_start = step_count;
 
-      std::unique_ptr<CsvWriter> friction_csv, point_csv, status_csv;
-      std::unique_ptr<PvdWriter> pvd;
+      // The outputs (source/contact/postprocessors/): made for runs that
+      // write, each with its state from the checkpoint (by name).
+      std::vector<std::unique_ptr<Postprocessor>> outputs;
+      std::vector<std::string>                    output_names;
       if (write)
         {
-          auto csv = [&](const char                     *name,
-                         const std::vector<std::string> &columns) {
-            const std::string path = join_path(output_directory, name);
-            return resumed ? std::make_unique<CsvWriter>(path,
-                                                         columns,
-                                                         root,
-                                                         loop.csv_rows)
-                           : std::make_unique<CsvWriter>(path, columns, root);
-          };
-          friction_csv = csv("friction.csv",
-                             {"time",
-                              "normal_force",
-                              "tangential_force",
-                              "mu_global",
-                              "contact_normal_force",
-                              "contact_tangential_force",
-                              "mu_contact",
-                              "kinetic_energy",
-                              "elastic_energy",
-                              "external_work",
-                              "contact_work",
-                              "damping_dissipation",
-                              "friction_dissipation",
-                              "energy_balance_error",
-                              "momentum_x",
-                              "momentum_y"});
-          point_csv    = csv("point_M.csv",
-                          {"time",
-                              "tangential_displacement",
-                              "tangential_velocity",
-                              "normal_displacement",
-                              "normal_velocity",
-                              "status"});
-          status_csv   = csv(
-            "contact_status.csv",
-            {"time", "stick_fraction", "slip_fraction", "separation_fraction"});
-          pvd = std::make_unique<PvdWriter>(join_path(output_directory,
-                                                      "fields.pvd"),
-                                            root);
-          pvd->restore(loop.pvd);
-          pvd->write();
-          if (prm.output.contact_face_interval > 0)
-            open_contact_face_files(output_directory,
-                                    resumed ? long(loop.face_rows) : -1);
+          const PostprocessorInputs in{
+            *this, prm, output_directory, comm, root};
+          for (const auto &entry : PostprocessorRegistry::list())
+            if (auto made = entry.create(in))
+              {
+                for (const auto &[name, state] : loop.outputs)
+                  if (name == entry.name)
+                    {
+                      std::istringstream              text(state);
+                      boost::archive::binary_iarchive ar(text);
+                      made->load(ar);
+                    }
+                output_names.push_back(entry.name);
+                outputs.push_back(std::move(made));
+              }
+          for (auto &o : outputs)
+            o->open(resumed);
         }
+      auto flush_outputs = [&](const bool complete) {
+        for (auto &o : outputs)
+          o->flush(complete);
+      };
 
       ProgressReporter progress(std::cout,
                                 root && progress_interval >= 0,
@@ -318,7 +298,6 @@ namespace tribodyn
                                 progress_label);
       progress.set_start_time(step_count * dt);
       const unsigned int sample_every = prm.output.sample_interval;
-      const double       field_every  = prm.output.field_interval;
       const double       v_limit      = velocity_limit();
       const double       interval     = checkpoint.interval;
       double             next_checkpoint
@@ -334,51 +313,15 @@ namespace tribodyn
       auto take_sample = [&](const unsigned long n, const double t) {
         const auto t0 = std::chrono::steady_clock::now();
         record_sample(t);
-        if (write && prm.output.contact_face_interval > 0
-            && loop.sample_count % prm.output.contact_face_interval == 0)
-          {
-            write_contact_face_row(t);
-            ++loop.face_rows;
-          }
-        ++loop.sample_count;
         Sample &smp          = history.back();
         smp.tangential_force = top_force;
         smp.mu_global        = prm.loading.top_held_in_x && smp.normal_force > 0
                                  ? -(prm.loading.plane_velocity >= 0 ? 1. : -1.)
                               * top_force / smp.normal_force
                                  : smp.mu_contact;
-        if (write)
-          {
-            friction_csv->add_row({smp.time,
-                                   smp.normal_force,
-                                   smp.tangential_force,
-                                   smp.mu_global,
-                                   smp.contact_normal_force,
-                                   smp.contact_tangential_force,
-                                   smp.mu_contact,
-                                   smp.kinetic_energy,
-                                   smp.elastic_energy,
-                                   smp.external_work,
-                                   smp.contact_work,
-                                   smp.damping_dissipation,
-                                   smp.friction_dissipation,
-                                   smp.energy_balance_error,
-                                   smp.momentum_x,
-                                   smp.momentum_y});
-            point_csv->add_row({smp.time,
-                                smp.M_ux,
-                                smp.M_vx,
-                                smp.M_uy,
-                                smp.M_vy,
-                                double(smp.M_status)});
-            status_csv->add_row({smp.time,
-                                 smp.stick_fraction,
-                                 smp.slip_fraction,
-                                 smp.separation_fraction});
-            friction_csv->flush();
-            point_csv->flush();
-            status_csv->flush();
-          }
+        for (auto &o : outputs)
+          o->sample(smp);
+        flush_outputs(false);
         progress.update(step_count, t + dt, progress_key(smp));
         if (!std::isfinite(smp.kinetic_energy) || !std::isfinite(smp.mu_global))
           throw RunError("The solution became non-finite at t = "
@@ -393,16 +336,17 @@ namespace tribodyn
         if (!store)
           return;
         const auto t0 = std::chrono::steady_clock::now();
-        if (write)
+        flush_outputs(true);
+        loop.outputs.clear();
+        for (std::size_t k = 0; k < outputs.size(); ++k)
           {
-            friction_csv->flush(true);
-            point_csv->flush(true);
-            status_csv->flush(true);
-            for (auto &f : face_files)
-              f->flush();
+            std::ostringstream text(std::ios::binary);
+            {
+              boost::archive::binary_oarchive ar(text);
+              outputs[k]->save(ar);
+            }
+            loop.outputs.emplace_back(output_names[k], text.str());
           }
-        loop.csv_rows = write ? friction_csv->n_rows() : 0;
-        loop.pvd      = write ? pvd->entries() : loop.pvd;
         store->write(save_state(loop),
                      step_count,
                      step_count * dt,
@@ -495,20 +439,11 @@ namespace tribodyn
             }
           if (regular)
             take_sample(n, t);
-          if (write && field_every > 0 && t + 0.5 * dt >= loop.next_field)
+          if (!outputs.empty())
             {
-              const auto         t0 = std::chrono::steady_clock::now();
-              TimerOutput::Scope scope(timer, "output fields");
-              // Fields at t_n: swap u_n back in for the writer.
-              u.swap(u_prev);
-              write_fields(output_directory, t, loop.field_count);
-              u.swap(u_prev);
-              const std::string name
-                = "fields_" + Utilities::int_to_string(loop.field_count, 5)
-                  + ".vtu";
-              pvd->add(t, name);
-              ++loop.field_count;
-              loop.next_field += field_every;
+              const auto t0 = std::chrono::steady_clock::now();
+              for (auto &o : outputs)
+                o->after_step(t);
               loop_seconds -= std::chrono::duration<double>(
                                 std::chrono::steady_clock::now() - t0)
                                 .count();
@@ -525,12 +460,7 @@ namespace tribodyn
             }
           if (signal != 0)
             {
-              if (write)
-                {
-                  friction_csv->flush(true);
-                  point_csv->flush(true);
-                  status_csv->flush(true);
-                }
+              flush_outputs(true);
               InterruptHandlers::acknowledge();
               throw Interrupted(
                 signal,
@@ -550,13 +480,9 @@ namespace tribodyn
                         .count();
       loop_wall_time = loop_seconds;
       progress.update(step_count, n_steps * dt, "", true);
-      if (write)
-        {
-          friction_csv->flush(true);
-          point_csv->flush(true);
-          status_csv->flush(true);
-          close_contact_face_files();
-        }
+      flush_outputs(true);
+      for (auto &o : outputs)
+        o->close();
       run_wall_time = std::chrono::duration<double>(
                         std::chrono::steady_clock::now() - start)
                         .count();

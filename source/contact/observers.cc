@@ -248,7 +248,7 @@ namespace tribodyn
     void
     ContactSolver::write_fields(const std::string &dir,
                                 const double       time,
-                                const unsigned int index)
+                                const std::string &file_name)
     {
       const unsigned int n_owned = mass.size();
       const double       b2      = prm.time.beta2;
@@ -316,11 +316,22 @@ namespace tribodyn
       DataOutBase::VtkFlags flags;
       flags.time = time;
       data_out.set_flags(flags);
-      data_out.write_vtu_in_parallel(
-        join_path(dir, "fields_" + Utilities::int_to_string(index, 5) + ".vtu"),
-        comm);
+      data_out.write_vtu_in_parallel(join_path(dir, file_name), comm);
       scratch_result.zero_out_ghost_values();
       scratch.zero_out_ghost_values();
+    }
+
+
+    void
+    ContactSolver::write_fields_of_step(const std::string &dir,
+                                        const double       time,
+                                        const std::string &file_name)
+    {
+      TimerOutput::Scope scope(timer, "output fields");
+      // Fields at t_n: swap u_n back in for the writer.
+      u.swap(u_prev);
+      write_fields(dir, time, file_name);
+      u.swap(u_prev);
     }
 
 
@@ -440,93 +451,5 @@ namespace tribodyn
       return Utilities::MPI::max(m, comm);
     }
 
-    void
-    ContactSolver::open_contact_face_files(const std::string &dir,
-                                           const long         resume_rows)
-    {
-      face_files.clear();
-      face_paths.clear();
-      // Coordinates of all contact nodes, in increasing x, on rank 0.
-      std::vector<double> x;
-      for (const ContactNode &node : contact_nodes)
-        x.push_back(node.x);
-      const auto all = Utilities::MPI::gather(comm, x, 0);
-      if (Utilities::MPI::this_mpi_process(comm) != 0)
-        return;
-      std::vector<double> xs;
-      for (const auto &v : all)
-        xs.insert(xs.end(), v.begin(), v.end());
-      std::sort(xs.begin(), xs.end());
-      std::ostringstream header;
-      header << "time" << std::setprecision(10);
-      for (const double xi : xs)
-        header << "," << xi;
-      for (const std::string name : {"contact_face_lambda_n.csv",
-                                     "contact_face_lambda_t.csv",
-                                     "contact_face_status.csv"})
-        {
-          face_paths.push_back(join_path(dir, name));
-          const std::string part = face_paths.back() + ".part";
-          // A resumed run continues the rows of the checkpointed run: from
-          // the unfinished file if it was interrupted, else the final one.
-          std::string kept = header.str() + "\n";
-          if (resume_rows >= 0)
-            kept = read_csv_rows(std::ifstream(part) ? part : face_paths.back(),
-                                 static_cast<std::size_t>(resume_rows));
-          // Written under a temporary name, renamed when complete.
-          face_files.push_back(std::make_unique<std::ofstream>(part));
-          if (!*face_files.back())
-            throw InputError("Cannot write '" + part
-                             + "'; check the output directory.");
-          *face_files.back() << kept << std::setprecision(8);
-        }
-    }
-
-
-    void
-    ContactSolver::write_contact_face_row(const double time)
-    {
-      // (x, lambda_n, lambda_t, status) of the owned contact nodes.
-      std::vector<double> local;
-      local.reserve(4 * contact_nodes.size());
-      for (const ContactNode &node : contact_nodes)
-        {
-          local.push_back(node.x);
-          local.push_back(node.lambda_n);
-          local.push_back(node.lambda_t);
-          local.push_back(node.status);
-        }
-      const auto all = Utilities::MPI::gather(comm, local, 0);
-      if (Utilities::MPI::this_mpi_process(comm) != 0 || face_files.empty())
-        return;
-      std::vector<std::array<double, 4>> rows;
-      for (const auto &v : all)
-        for (std::size_t i = 0; i + 3 < v.size(); i += 4)
-          rows.push_back({{v[i], v[i + 1], v[i + 2], v[i + 3]}});
-      std::sort(rows.begin(), rows.end());
-      for (unsigned int q = 0; q < 3; ++q)
-        {
-          std::ofstream &out = *face_files[q];
-          out << time;
-          for (const auto &r : rows)
-            out << "," << r[q + 1];
-          out << "\n";
-        }
-    }
-
-
-    void
-    ContactSolver::close_contact_face_files()
-    {
-      for (std::size_t q = 0; q < face_files.size(); ++q)
-        {
-          face_files[q]->close();
-          if (std::rename((face_paths[q] + ".part").c_str(),
-                          face_paths[q].c_str())
-              != 0)
-            throw InputError("Cannot rename '" + face_paths[q] + ".part'.");
-        }
-      face_files.clear();
-    }
   } // namespace contact
 } // namespace tribodyn

@@ -182,6 +182,16 @@ namespace tribodyn
       run(const std::string &output_directory,
           const double       progress_interval = 5.);
 
+      /**
+       * The fields of t_n (displacement, velocity, stresses, contact
+       * status) as the VTU file @p file_name in @p dir, called after step n
+       * (the state then holds t_{n+1}; the postprocessor "fields").
+       */
+      void
+      write_fields_of_step(const std::string &dir,
+                           const double       time,
+                           const std::string &file_name);
+
       /// Time averages, spectrum peak and regime over the averaging window.
       RunSummary
       summarize(const std::string &output_directory);
@@ -277,12 +287,8 @@ namespace tribodyn
       /// state (the rows of the series already written, the fields).
       struct LoopState
       {
-        unsigned long                               sample_count = 0;
-        unsigned int                                field_count  = 0;
-        double                                      next_field   = 0;
-        std::size_t                                 csv_rows     = 0;
-        std::size_t                                 face_rows    = 0;
-        std::vector<std::pair<double, std::string>> pvd;
+        /// The postprocessors' states by name (Postprocessor::save()).
+        std::vector<std::pair<std::string, std::string>> outputs;
       };
       /// Initial state u_0 = 0, p_0 = v_0 (run() without resume).
       void
@@ -340,7 +346,7 @@ namespace tribodyn
       void
       write_fields(const std::string &dir,
                    const double       time,
-                   const unsigned int index);
+                   const std::string &file_name);
       void
       cell_stresses(std::vector<std::array<double, 4>> &stress) const;
 
@@ -423,19 +429,7 @@ namespace tribodyn
       double scale_energy = 0; // largest energy seen (for the error)
 
       std::vector<Sample> history;
-      /// Space-time series of the contact face (rank 0 writes).
-      void
-      write_contact_face_row(const double time);
-      std::vector<std::unique_ptr<std::ofstream>> face_files;
-      std::vector<std::string>                    face_paths;
-      /// Open the three space-time files (@p resume_rows >= 0: keep that
-      /// many rows of the checkpointed run's files).
-      void
-      open_contact_face_files(const std::string &dir,
-                              const long         resume_rows = -1);
-      void
-             close_contact_face_files();
-      double run_wall_time = 0, loop_wall_time = 0;
+      double              run_wall_time = 0, loop_wall_time = 0;
     };
   } // namespace contact
 } // namespace tribodyn
