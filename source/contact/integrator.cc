@@ -207,12 +207,11 @@ namespace tribodyn
     ContactSolver::run(const std::string &output_directory,
                        const double       progress_interval)
     {
-      const bool         root    = Utilities::MPI::this_mpi_process(comm) == 0;
-      const bool         several = Utilities::MPI::n_mpi_processes(comm) > 1;
-      const auto         start   = std::chrono::steady_clock::now();
-      const unsigned int n_owned = mass.size();
-      const double       beta    = prm.time.damping;
-      const bool         large
+      const bool   root    = Utilities::MPI::this_mpi_process(comm) == 0;
+      const bool   several = Utilities::MPI::n_mpi_processes(comm) > 1;
+      const auto   start   = std::chrono::steady_clock::now();
+      const double beta    = prm.time.damping;
+      const bool   large
         = prm.material.kinematics
           == ContactMaterialParameters::Kinematics::large_deformation;
       const bool write = !output_directory.empty();
@@ -363,22 +362,7 @@ namespace tribodyn
           // Internal forces of u_n and the damping force beta K p_n.
           add_internal_forces(large);
 
-          // Predictor: a* = M^-1 (f_n - r), u* = u_n + dt p_n + h a*.
-          {
-            const double *uv = u.begin();
-            const double *pv = p.begin();
-            const double *rv = r.begin();
-            double       *un = u_next.begin();
-            double       *av = a.begin();
-            const double *fv = unit_load.data();
-            const double *mi = mass_inverse.data();
-            for (unsigned int i = 0; i < n_owned; ++i)
-              {
-                const double ai = (s * fv[i] - rv[i]) * mi[i];
-                un[i]           = uv[i] + dt * pv[i] + h * ai;
-                av[i]           = ai;
-              }
-          }
+          predict(s);
           const bool regular = n % sample_every == 0;
           const bool last    = n + 1 == n_steps;
           if (regular || last)
@@ -394,33 +378,7 @@ namespace tribodyn
           // Contact and friction: multipliers at t_{n+1}.
           solve_contact(t + dt);
 
-          // Velocities, energy accounting, next predictor velocity; count
-          // the dofs whose velocity is not finite or implausibly large.
-          {
-            const double *up = u_prev.begin();
-            const double *un = u_next.begin();
-            const double *av = a.begin();
-            double       *pv = p.begin();
-            double       *wv = w.begin();
-            double       *rv = r.begin();
-            const double *fv = unit_load.data();
-            double        we = 0, wi = 0;
-            unsigned int  bad = 0;
-            for (unsigned int i = 0; i < n_owned; ++i)
-              {
-                const double d = 0.5 * (un[i] - up[i]);
-                we += s * fv[i] * d;
-                wi += rv[i] * d;
-                const double pn = pv[i] + dt * av[i];
-                pv[i]           = pn;
-                wv[i]           = un[i] + beta * pn;
-                rv[i]           = 0;
-                bad += !(std::abs(pn) <= v_limit);
-              }
-            work_external += we;
-            work_internal += wi;
-            n_bad += bad;
-          }
+          n_bad += correct(s, beta, v_limit);
           u_prev.swap(u); // u_prev = u_n
           u.swap(u_next); // u = u_{n+1}
           ++step_count;
@@ -486,6 +444,59 @@ namespace tribodyn
       run_wall_time = std::chrono::duration<double>(
                         std::chrono::steady_clock::now() - start)
                         .count();
+    }
+
+
+    void
+    ContactSolver::predict(const double s)
+    {
+      // a* = M^-1 (f_n - r), u* = u_n + dt p_n + h a*.
+      const unsigned int n_owned = mass.size();
+      const double      *uv      = u.begin();
+      const double      *pv      = p.begin();
+      const double      *rv      = r.begin();
+      double            *un      = u_next.begin();
+      double            *av      = a.begin();
+      const double      *fv      = unit_load.data();
+      const double      *mi      = mass_inverse.data();
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          const double ai = (s * fv[i] - rv[i]) * mi[i];
+          un[i]           = uv[i] + dt * pv[i] + h * ai;
+          av[i]           = ai;
+        }
+    }
+
+
+    unsigned int
+    ContactSolver::correct(const double s,
+                           const double beta,
+                           const double v_limit)
+    {
+      const unsigned int n_owned = mass.size();
+      const double      *up      = u_prev.begin();
+      const double      *un      = u_next.begin();
+      const double      *av      = a.begin();
+      double            *pv      = p.begin();
+      double            *wv      = w.begin();
+      double            *rv      = r.begin();
+      const double      *fv      = unit_load.data();
+      double             we = 0, wi = 0;
+      unsigned int       bad = 0;
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          const double d = 0.5 * (un[i] - up[i]);
+          we += s * fv[i] * d;
+          wi += rv[i] * d;
+          const double pn = pv[i] + dt * av[i];
+          pv[i]           = pn;
+          wv[i]           = un[i] + beta * pn;
+          rv[i]           = 0;
+          bad += !(std::abs(pn) <= v_limit);
+        }
+      work_external += we;
+      work_internal += wi;
+      return bad;
     }
 
 

@@ -340,6 +340,15 @@ namespace tribodyn
       contact_gauss_seidel(const Law &law);
       void
       solve_contact(const double time_next);
+      /// The predictor of a step at load factor @p s: u_next = u* and
+      /// a = a*.
+      void
+      predict(const double s);
+      /// After the contact correction: velocities p_{n+1}, w = u + beta p,
+      /// the works of the step; returns the number of dofs whose velocity
+      /// is not finite or above @p v_limit.
+      unsigned int
+      correct(const double s, const double beta, const double v_limit);
 
       void
       record_sample(const double time);
