@@ -5,6 +5,7 @@
 #include <fstream>
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/number_list.h>
 #include <tribodyn/core/selection.h>
 
 namespace tribodyn
@@ -42,10 +43,9 @@ namespace tribodyn
         std::vector<double> values;
         try
           {
-            values = dealii::Utilities::string_to_double(
-              dealii::Utilities::split_string_list(text, ','));
+            values = parse_number_list(text, name);
           }
-        catch (...)
+        catch (const InputError &)
           {
             values.clear();
           }

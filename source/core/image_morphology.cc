@@ -8,6 +8,7 @@
 #include <sstream>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/image_morphology.h>
+#include <tribodyn/core/number_list.h>
 #include <tribodyn/core/selection.h>
 
 namespace tribodyn
@@ -21,38 +22,6 @@ namespace tribodyn
        {"colour table", Segmentation::colour_table}}};
 
     const std::string section = "Morphology/Image/";
-
-
-    /// Numbers of a comma- or space-separated list; throws naming
-    /// @p parameter when a word is not a number.
-    std::vector<double>
-    parse_list(const std::string &text, const std::string &parameter)
-    {
-      std::vector<double> values;
-      std::string         cleaned = text;
-      std::replace(cleaned.begin(), cleaned.end(), ',', ' ');
-      std::istringstream in(cleaned);
-      std::string        word;
-      while (in >> word)
-        {
-          std::size_t end = 0;
-          double      v   = 0;
-          try
-            {
-              v = std::stod(word, &end);
-            }
-          catch (const std::exception &)
-            {
-              end = 0;
-            }
-          if (end != word.size())
-            throw InputError("'" + parameter + "': '" + word
-                             + "' is not a number. Give numbers separated "
-                               "by commas.");
-          values.push_back(v);
-        }
-      return values;
-    }
   } // namespace
 
 
@@ -126,17 +95,18 @@ namespace tribodyn
   {
     prm.enter_subsection("Image");
     {
-      file          = prm.get("File");
-      pixel_size    = prm.get_double("Pixel size");
-      segmentation  = get_selection(prm, "Segmentation", segmentation_choices);
-      thresholds    = parse_list(prm.get("Thresholds"), section + "Thresholds");
+      file         = prm.get("File");
+      pixel_size   = prm.get_double("Pixel size");
+      segmentation = get_selection(prm, "Segmentation", segmentation_choices);
+      thresholds
+        = parse_number_list(prm.get("Thresholds"), section + "Thresholds");
       n_otsu_phases = prm.get_integer("Otsu phases");
       colour_table.clear();
       for (const std::string &entry :
            dealii::Utilities::split_string_list(prm.get("Colour table"), ';'))
         {
           const std::vector<double> c
-            = parse_list(entry, section + "Colour table");
+            = parse_number_list(entry, section + "Colour table");
           check_parameter(
             (c.size() == 1 || c.size() == 3)
               && std::all_of(c.begin(),
@@ -153,7 +123,7 @@ namespace tribodyn
           colour_table.emplace_back(c.begin(), c.end());
         }
       const std::vector<double> c
-        = parse_list(prm.get("Crop"), section + "Crop");
+        = parse_number_list(prm.get("Crop"), section + "Crop");
       check_parameter(c.empty()
                         || (c.size() == 4 && c[0] >= 0 && c[1] >= 0 && c[2] >= 1
                             && c[3] >= 1),

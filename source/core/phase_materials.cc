@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 #include <limits>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/number_list.h>
 #include <tribodyn/core/phase_materials.h>
 
 namespace tribodyn
@@ -53,35 +54,6 @@ namespace tribodyn
   }
 
 
-  namespace
-  {
-    std::vector<double>
-    numbers(const std::string &text, const std::string &parameter)
-    {
-      std::vector<double> values;
-      for (const std::string &word : dealii::Utilities::split_string_list(text))
-        {
-          std::size_t end = 0;
-          double      v   = 0;
-          try
-            {
-              v = std::stod(word, &end);
-            }
-          catch (const std::exception &)
-            {
-              end = 0;
-            }
-          if (word.empty() || end != word.size())
-            throw InputError("'" + parameter + "': '" + word
-                             + "' is not a number. Give one number per "
-                               "phase, separated by commas.");
-          values.push_back(v);
-        }
-      return values;
-    }
-  } // namespace
-
-
   void
   PhaseMaterials::parse_parameters(dealii::ParameterHandler &prm,
                                    const std::string        &section)
@@ -90,11 +62,11 @@ namespace tribodyn
     prm.enter_subsection("Phases");
     names = dealii::Utilities::split_string_list(prm.get("Names"));
     const std::vector<double> E
-      = numbers(prm.get("Young moduli"), s + "Young moduli");
+      = parse_number_list(prm.get("Young moduli"), s + "Young moduli");
     const std::vector<double> nu
-      = numbers(prm.get("Poisson ratios"), s + "Poisson ratios");
+      = parse_number_list(prm.get("Poisson ratios"), s + "Poisson ratios");
     const std::vector<double> rho
-      = numbers(prm.get("Densities"), s + "Densities");
+      = parse_number_list(prm.get("Densities"), s + "Densities");
     pore_stiffness_ratio = prm.get_double("Pore stiffness ratio");
     prm.leave_subsection();
     materials.clear();
