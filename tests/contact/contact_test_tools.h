@@ -58,6 +58,44 @@ namespace tribodyn_test
     }
   };
 
+  /// The held block of block_drag.cc: 4 x 2 mm (h = 0.25 mm) pressed with
+  /// 5 MPa (ramp 5 us) on the plane moving at -@p V, top face held in x,
+  /// automatic time step (at most 5 ns), damping @p damping, to
+  /// @p end_time, a sample every @p sample_interval steps.
+  inline std::string
+  held_block_prm(const double       V,
+                 const double       end_time,
+                 const double       damping         = 2e-8,
+                 const unsigned int sample_interval = 5)
+  {
+    return R"(
+      subsection Geometry
+        set Width = 4e-3
+        set Height = 2e-3
+        set Mesh size = 0.25e-3
+      end
+      subsection Loading
+        set Pressure = 5e6
+        set Plane velocity = )"
+           + format_number(-V) + R"(
+        set Ramp time = 5e-6
+      end
+      subsection Time integration
+        set Damping coefficient = )"
+           + format_number(damping) + R"(
+        set Automatic time step = true
+        set Time step = 5e-9
+        set End time = )"
+           + format_number(end_time) + R"(
+      end
+      subsection Output
+        set Sample interval = )"
+           + std::to_string(sample_interval) + R"(
+        set Averaging start time = 0
+      end
+    )";
+  }
+
   /// Parameters of a 1 x 8 mm column dropped at 1 m/s on the rigid plane at
   /// rest (frictionless, undamped, no pressure, mesh 0.1 mm): the 1D impact
   /// of the tests contact_bar_impact and contact_anisotropic_impact.

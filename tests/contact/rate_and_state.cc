@@ -47,36 +47,14 @@
 
 namespace
 {
+  /// The held block with the rate-and-state law of the lines @p law.
   std::string
   held_block(const double       V,
              const double       end_time,
              const std::string &law,
              const double       damping = 2e-8)
   {
-    return R"(
-    subsection Geometry
-      set Width = 4e-3
-      set Height = 2e-3
-      set Mesh size = 0.25e-3
-    end
-    subsection Loading
-      set Pressure = 5e6
-      set Plane velocity = )"
-           + tribodyn::format_number(-V) + R"(
-      set Ramp time = 5e-6
-    end
-    subsection Time integration
-      set Damping coefficient = )"
-           + tribodyn::format_number(damping) + R"(
-      set Automatic time step = true
-      set Time step = 5e-9
-      set End time = )"
-           + tribodyn::format_number(end_time) + R"(
-    end
-    subsection Output
-      set Sample interval = 1
-      set Averaging start time = 0
-    end
+    return tribodyn_test::held_block_prm(V, end_time, damping, 1) + R"(
     subsection Contact
       set Friction law = rate and state
       subsection Rate and state friction
@@ -84,6 +62,7 @@ namespace
       end
     end)";
   }
+
 
   double
   contact_mu(const tribodyn::contact::Sample &s)

@@ -60,28 +60,7 @@ namespace
     std::ofstream(name) << text;
   }
 
-  const std::string held_block = R"(
-    subsection Geometry
-      set Width = 4e-3
-      set Height = 2e-3
-      set Mesh size = 0.25e-3
-    end
-    subsection Loading
-      set Pressure = 5e6
-      set Plane velocity = -2
-      set Ramp time = 5e-6
-    end
-    subsection Time integration
-      set Damping coefficient = 2e-8
-      set Automatic time step = true
-      set Time step = 5e-9
-      set End time = 30e-6
-    end
-    subsection Output
-      set Sample interval = 5
-      set Averaging start time = 0
-    end
-  )";
+  const std::string held_block = tribodyn_test::held_block_prm(2, 30e-6);
 } // namespace
 
 

@@ -101,6 +101,29 @@ namespace tribodyn
                           "slip rate.");
       }
 
+      /// Declare the entries in the subsection @p name of the current one.
+      static void
+      declare_in(dealii::ParameterHandler &prm,
+                 const std::string        &name,
+                 const std::string        &mu0,
+                 const std::string        &Dc)
+      {
+        prm.enter_subsection(name);
+        declare_entries(prm, mu0, Dc);
+        prm.leave_subsection();
+      }
+
+      /// Read them from the subsection @p name; @p path: as below.
+      void
+      parse_in(dealii::ParameterHandler &prm,
+               const std::string        &name,
+               const std::string        &path)
+      {
+        prm.enter_subsection(name);
+        parse_entries(prm, path);
+        prm.leave_subsection();
+      }
+
       /// Read the entries of the current subsection; @p path (e.g.
       /// "Interaction/Dieterich/") names them in errors.
       void

@@ -50,17 +50,15 @@ namespace tribodyn
         static void
         declare_parameters(dealii::ParameterHandler &prm)
         {
-          prm.enter_subsection("Rate and state friction");
-          declare_entries(prm, "0.25", "1e-6");
-          prm.leave_subsection();
+          declare_in(prm, "Rate and state friction", "0.25", "1e-6");
         }
 
         void
         parse_parameters(dealii::ParameterHandler &prm)
         {
-          prm.enter_subsection("Rate and state friction");
-          parse_entries(prm, "Contact/Rate and state friction/");
-          prm.leave_subsection();
+          parse_in(prm,
+                   "Rate and state friction",
+                   "Contact/Rate and state friction/");
         }
       };
 

@@ -36,17 +36,13 @@ namespace tribodyn
         static void
         declare_parameters(dealii::ParameterHandler &prm)
         {
-          prm.enter_subsection("Dieterich");
-          declare_entries(prm, "0.3", "1e-9");
-          prm.leave_subsection();
+          declare_in(prm, "Dieterich", "0.3", "1e-9");
         }
 
         void
         parse_parameters(dealii::ParameterHandler &prm)
         {
-          prm.enter_subsection("Dieterich");
-          parse_entries(prm, "Interaction/Dieterich/");
-          prm.leave_subsection();
+          parse_in(prm, "Dieterich", "Interaction/Dieterich/");
         }
       };
 
