@@ -1,4 +1,5 @@
 #include "cell_integrals.h"
+#include "cell_multigrid.h"
 
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
@@ -20,6 +21,7 @@
 #include <sstream>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/core/selection.h>
 #include <tribodyn/homogenization/cell_problem.h>
 
 namespace tribodyn
@@ -30,6 +32,13 @@ namespace tribodyn
     using internal::AffineDisplacement;
     using internal::CellIntegrals;
     using internal::for_each_owned_cell_integral;
+
+    namespace
+    {
+      constexpr SelectionTable<CellPreconditioner, 2> preconditioner_choices{
+        {{"multigrid", CellPreconditioner::multigrid},
+         {"AMG", CellPreconditioner::amg}}};
+    } // namespace
 
     std::string
     to_string(const BoundaryCondition bc)
@@ -84,6 +93,18 @@ namespace tribodyn
                           "2000",
                           Patterns::Integer(1),
                           "Maximum number of CG iterations per load case.");
+        prm.declare_entry(
+          "Preconditioner",
+          selection_text(preconditioner_choices, CellPreconditioner::multigrid),
+          selection_pattern(preconditioner_choices),
+          "Preconditioner of CG: 'multigrid' (geometric multigrid on the "
+          "pixel hierarchy: matrix-free operator, Chebyshev smoothing, the "
+          "coarsest mesh solved directly; its iteration counts do not grow "
+          "as the mesh is refined) or 'AMG' (Trilinos ML on the assembled "
+          "matrix). Multigrid coarsens while the number of elements along "
+          "both axes is even; when the coarsest mesh keeps more than "
+          "50000 DoFs (pixel counts with few factors of 2), AMG is used "
+          "instead and the screen says so.");
       }
       prm.leave_subsection();
     }
@@ -113,6 +134,8 @@ namespace tribodyn
         fe_degree              = prm.get_integer("Finite element degree");
         solver_tolerance       = prm.get_double("Solver tolerance");
         max_iterations         = prm.get_integer("Max iterations");
+        preconditioner
+          = get_selection(prm, "Preconditioner", preconditioner_choices);
       }
       prm.leave_subsection();
       check_parameter(!boundary_conditions.empty(),
@@ -135,28 +158,58 @@ namespace tribodyn
         , parameters(parameters)
         , timer(timer)
         , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-        , triangulation(comm)
+        , triangulation(comm,
+                        Triangulation<2>::none,
+                        parallel::distributed::Triangulation<
+                          2>::construct_multigrid_hierarchy)
         , fe(FE_Q<2>(parameters.fe_degree), 2)
         , dof_handler(triangulation)
     {
-      setup_mesh();
+      setup_mesh(parameters.boundary_conditions.front()
+                 == BoundaryCondition::periodic);
       setup_dofs();
+      if (parameters.preconditioner == CellPreconditioner::multigrid
+          && !uses_multigrid())
+        pcout << "Note: the coarsest mesh of the multigrid hierarchy would "
+              << "have " << n_coarse_cells[0] << " x " << n_coarse_cells[1]
+              << " elements (" << n_coarse_dofs() << " DoFs > "
+              << max_coarse_dofs << "): the element counts along x and y "
+              << "have too few common factors of 2. Using AMG instead; "
+              << "pixel counts divisible by a power of 2 (or 'Subdivisions "
+              << "per pixel' = 2, 4, ...) allow multigrid." << std::endl;
     }
 
 
     void
-    CellProblem::setup_mesh()
+    CellProblem::setup_mesh(const bool periodic)
     {
       TimerOutput::Scope scope(timer, "mesh and dofs");
-      create_morphology_mesh(morphology,
-                             parameters.subdivisions_per_pixel,
-                             triangulation);
+      triangulation.clear();
+      // The elements of 'Subdivisions per pixel' are the pixel grid
+      // refined; the coarse mesh halves it while both counts are even, so
+      // that multigrid finds a hierarchy of L levels down to it.
+      n_coarse_cells
+        = {{morphology.n_pixels_x() * parameters.subdivisions_per_pixel,
+            morphology.n_pixels_y() * parameters.subdivisions_per_pixel}};
+      n_pixel_levels = 0;
+      while (n_coarse_cells[0] % 2 == 0 && n_coarse_cells[1] % 2 == 0)
+        {
+          n_coarse_cells[0] /= 2;
+          n_coarse_cells[1] /= 2;
+          ++n_pixel_levels;
+        }
+      GridGenerator::subdivided_hyper_rectangle(
+        triangulation,
+        {n_coarse_cells[0], n_coarse_cells[1]},
+        Point<2>(0, 0),
+        Point<2>(morphology.width(), morphology.height()),
+        /*colorize = */ true);
       // Periodic constraints on a distributed mesh need the ghost layer to
-      // reach across the periodic faces.
-      if (std::find(parameters.boundary_conditions.begin(),
-                    parameters.boundary_conditions.end(),
-                    BoundaryCondition::periodic)
-          != parameters.boundary_conditions.end())
+      // reach across the periodic faces. Registered only for the periodic
+      // problem: multigrid takes the periodicity of the triangulation into
+      // the constraints of every level.
+      mesh_is_periodic = periodic;
+      if (periodic)
         {
           std::vector<GridTools::PeriodicFacePair<
             parallel::distributed::Triangulation<2>::cell_iterator>>
@@ -165,7 +218,22 @@ namespace tribodyn
           GridTools::collect_periodic_faces(triangulation, 2, 3, 1, pairs);
           triangulation.add_periodicity(pairs);
         }
-      triangulation.refine_global(parameters.global_refinements);
+      triangulation.refine_global(n_pixel_levels
+                                  + parameters.global_refinements);
+      // Each element lies in one pixel: its material is that of its centre.
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (!cell->is_artificial())
+          cell->set_material_id(morphology.material_at(cell->center()));
+    }
+
+
+    std::array<double, 2>
+    CellProblem::element_size() const
+    {
+      const unsigned int refinements
+        = n_pixel_levels + parameters.global_refinements;
+      return {{morphology.width() / (n_coarse_cells[0] << refinements),
+               morphology.height() / (n_coarse_cells[1] << refinements)}};
     }
 
 
@@ -174,9 +242,44 @@ namespace tribodyn
     {
       TimerOutput::Scope scope(timer, "mesh and dofs");
       dof_handler.distribute_dofs(fe);
+      if (parameters.preconditioner == CellPreconditioner::multigrid)
+        dof_handler.distribute_mg_dofs();
       locally_owned_dofs = dof_handler.locally_owned_dofs();
       DoFTools::extract_locally_relevant_dofs(dof_handler,
                                               locally_relevant_dofs);
+    }
+
+
+    unsigned int
+    CellProblem::n_coarse_dofs() const
+    {
+      return 2 * (n_coarse_cells[0] * parameters.fe_degree + 1)
+             * (n_coarse_cells[1] * parameters.fe_degree + 1);
+    }
+
+
+    bool
+    CellProblem::uses_multigrid() const
+    {
+      return parameters.preconditioner == CellPreconditioner::multigrid
+             && n_coarse_dofs() <= max_coarse_dofs;
+    }
+
+
+    bool
+    CellProblem::uses_multigrid(const BoundaryCondition bc) const
+    {
+      // deal.II 9.4's matrix-free level transfer does not carry the
+      // periodicity constraints between levels (CG took 759 iterations
+      // where KUBC took 8): periodic problems keep AMG.
+      return uses_multigrid() && bc != BoundaryCondition::periodic;
+    }
+
+
+    unsigned int
+    CellProblem::n_multigrid_levels() const
+    {
+      return uses_multigrid() ? triangulation.n_global_levels() : 0;
     }
 
 
@@ -272,62 +375,61 @@ namespace tribodyn
     } // namespace
 
 
-    void
-    CellProblem::make_constraints(const BoundaryCondition bc)
+    std::vector<std::pair<Point<2>, std::vector<unsigned int>>>
+    CellProblem::pinned_vertices(const BoundaryCondition bc) const
     {
-      constraints.clear();
-      constraints.reinit(locally_relevant_dofs);
-      const unsigned int n_cells_x
-        = morphology.n_pixels_x() * parameters.subdivisions_per_pixel
-          << parameters.global_refinements;
-      const unsigned int n_cells_y
-        = morphology.n_pixels_y() * parameters.subdivisions_per_pixel
-          << parameters.global_refinements;
-      const double hx        = morphology.width() / n_cells_x;
-      const double hy        = morphology.height() / n_cells_y;
-      const double tolerance = 1e-3 * std::min(hx, hy);
-
       switch (bc)
         {
-          case BoundaryCondition::kubc:
-            // Fluctuation w = 0 on the whole boundary.
-            for (const types::boundary_id id : {0, 1, 2, 3})
-              VectorTools::interpolate_boundary_values(
-                dof_handler, id, Functions::ZeroFunction<2>(2), constraints);
-            break;
           case BoundaryCondition::periodic:
-            DoFTools::make_periodicity_constraints(
-              dof_handler, 0, 1, 0, constraints);
-            DoFTools::make_periodicity_constraints(
-              dof_handler, 2, 3, 1, constraints);
-            // Periodic w is defined up to a translation: pin an interior
-            // vertex (the one nearest to the centre).
-            pin_vertex(dof_handler,
-                       Point<2>((n_cells_x / 2) * hx, (n_cells_y / 2) * hy),
-                       {0, 1},
-                       tolerance,
-                       locally_relevant_dofs,
-                       constraints);
-            break;
+            // Periodic w is defined up to a translation: pin the vertex of
+            // the coarsest mesh nearest to the centre (a vertex on every
+            // level of the multigrid hierarchy).
+            return {{Point<2>((n_coarse_cells[0] / 2) * morphology.width()
+                                / n_coarse_cells[0],
+                              (n_coarse_cells[1] / 2) * morphology.height()
+                                / n_coarse_cells[1]),
+                     {0, 1}}};
           case BoundaryCondition::subc:
             // Pure traction problem: remove the rigid motions by fixing the
             // bottom-left corner and the vertical displacement of the
             // bottom-right one. The load is self-equilibrated, so these
             // supports carry no force.
-            pin_vertex(dof_handler,
-                       Point<2>(0, 0),
-                       {0, 1},
-                       tolerance,
-                       locally_relevant_dofs,
-                       constraints);
-            pin_vertex(dof_handler,
-                       Point<2>(morphology.width(), 0),
-                       {1},
-                       tolerance,
-                       locally_relevant_dofs,
-                       constraints);
+            return {{Point<2>(0, 0), {0, 1}},
+                    {Point<2>(morphology.width(), 0), {1}}};
+          case BoundaryCondition::kubc:
             break;
         }
+      return {};
+    }
+
+
+    void
+    CellProblem::make_constraints(const BoundaryCondition bc)
+    {
+      constraints.clear();
+      constraints.reinit(locally_relevant_dofs);
+      const auto   h         = element_size();
+      const double tolerance = 1e-3 * std::min(h[0], h[1]);
+
+      if (bc == BoundaryCondition::kubc)
+        // Fluctuation w = 0 on the whole boundary.
+        for (const types::boundary_id id : {0, 1, 2, 3})
+          VectorTools::interpolate_boundary_values(
+            dof_handler, id, Functions::ZeroFunction<2>(2), constraints);
+      if (bc == BoundaryCondition::periodic)
+        {
+          DoFTools::make_periodicity_constraints(
+            dof_handler, 0, 1, 0, constraints);
+          DoFTools::make_periodicity_constraints(
+            dof_handler, 2, 3, 1, constraints);
+        }
+      for (const auto &[point, components] : pinned_vertices(bc))
+        pin_vertex(dof_handler,
+                   point,
+                   components,
+                   tolerance,
+                   locally_relevant_dofs,
+                   constraints);
       constraints.close();
     }
 
@@ -468,67 +570,164 @@ namespace tribodyn
     }
 
 
+    namespace
+    {
+      /// Run @p solve (a CG solve with @p control), turning Trilinos's and
+      /// deal.II's failures into errors that say what to change.
+      template <typename F>
+      void
+      run_cg(const BoundaryCondition bc,
+             const unsigned int      load_case,
+             const double            rhs_norm,
+             const F                &solve)
+      {
+        try
+          {
+            solve();
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            throw RunError("The " + to_string(bc) + " cell problem, load case "
+                           + std::to_string(load_case)
+                           + ", did not converge: CG reached "
+                           + std::to_string(e.last_step)
+                           + " iterations with a relative residual of "
+                           + format_number(e.last_residual / rhs_norm)
+                           + ". Raise 'Cell problem/Max iterations' or 'Cell "
+                             "problem/Solver tolerance'.");
+          }
+        catch (const ExceptionBase &e)
+          {
+            // AztecOO breakdown or loss of precision.
+            std::ostringstream info;
+            e.print_info(info);
+            throw RunError("The " + to_string(bc) + " cell problem, load case "
+                           + std::to_string(load_case)
+                           + ", failed in CG: " + info.str()
+                           + " This happens when 'Cell problem/Solver "
+                             "tolerance' is below what double precision "
+                             "can reach; raise it (1e-10 is ample).");
+          }
+      }
+    } // namespace
+
+
+    void
+    CellProblem::solve_with_multigrid(
+      const BoundaryCondition                       bc,
+      std::array<TrilinosWrappers::MPI::Vector, 3> &solutions,
+      CellProblemResult                            &result)
+    {
+      internal::LevelConstraintDescription levels;
+      levels.zero_boundary = bc == BoundaryCondition::kubc;
+      levels.periodic      = bc == BoundaryCondition::periodic;
+      for (const auto &[point, components] : pinned_vertices(bc))
+        levels.pins.push_back({point, components});
+      const auto h     = element_size();
+      levels.tolerance = 1e-3 * std::min(h[0], h[1]);
+
+      // The coefficient of a cell on any level: the mean plane-strain
+      // stiffness of the elements (each in one pixel) it covers.
+      std::vector<VoigtMatrix> stiffness_of_phase;
+      for (const auto &phase : phases)
+        stiffness_of_phase.push_back(phase.plane_strain_voigt_stiffness());
+      const auto stiffness = [&](const Point<2> &lower, const Point<2> &upper) {
+        const int   i0 = static_cast<int>(std::lround(lower[0] / h[0]));
+        const int   i1 = static_cast<int>(std::lround(upper[0] / h[0]));
+        const int   j0 = static_cast<int>(std::lround(lower[1] / h[1]));
+        const int   j1 = static_cast<int>(std::lround(upper[1] / h[1]));
+        VoigtMatrix sum;
+        for (int j = j0; j < j1; ++j)
+          for (int i = i0; i < i1; ++i)
+            sum += stiffness_of_phase[morphology.material_at(
+              Point<2>((i + 0.5) * h[0], (j + 0.5) * h[1]))];
+        return VoigtMatrix(sum / double((i1 - i0) * (j1 - j0)));
+      };
+
+      const auto solver
+        = internal::make_cell_multigrid_solver(parameters.fe_degree,
+                                               dof_handler,
+                                               constraints,
+                                               levels,
+                                               stiffness,
+                                               timer);
+      for (unsigned int load_case = 0; load_case < 3; ++load_case)
+        {
+          TimerOutput::Scope scope(timer, "CG solve");
+          const double       rhs_norm
+            = solver->assemble_rhs(unit_load(load_case),
+                                   bc != BoundaryCondition::subc);
+          SolverControl control(parameters.max_iterations,
+                                parameters.solver_tolerance * rhs_norm,
+                                /*log_history = */ false,
+                                /*log_result = */ false);
+          run_cg(bc, load_case, rhs_norm, [&]() {
+            solver->solve(control, solutions[load_case]);
+          });
+          result.load_cases[load_case].cg_iterations = control.last_step();
+        }
+    }
+
+
+    void
+    CellProblem::solve_with_amg(
+      const BoundaryCondition                       bc,
+      std::array<TrilinosWrappers::MPI::Vector, 3> &solutions,
+      CellProblemResult                            &result)
+    {
+      assemble(bc);
+      setup_preconditioner();
+      for (unsigned int load_case = 0; load_case < 3; ++load_case)
+        {
+          TimerOutput::Scope         scope(timer, "CG solve");
+          const double               rhs_norm = load_scale[load_case];
+          SolverControl              control(parameters.max_iterations,
+                                parameters.solver_tolerance * rhs_norm,
+                                /*log_history = */ false,
+                                /*log_result = */ false);
+          TrilinosWrappers::SolverCG cg(control);
+          run_cg(bc, load_case, rhs_norm, [&]() {
+            cg.solve(system_matrix,
+                     solutions[load_case],
+                     system_rhs[load_case],
+                     preconditioner);
+          });
+          result.load_cases[load_case].cg_iterations = control.last_step();
+        }
+    }
+
+
     CellProblemResult
     CellProblem::solve(const BoundaryCondition bc,
                        const std::string      &output_directory)
     {
+      // The periodic problem needs the periodic faces registered in the
+      // mesh, the others must not see them (multigrid would carry the
+      // periodicity into their levels).
+      if ((bc == BoundaryCondition::periodic) != mesh_is_periodic)
+        {
+          setup_mesh(bc == BoundaryCondition::periodic);
+          setup_dofs();
+        }
       make_constraints(bc);
-      assemble(bc);
-      setup_preconditioner();
 
       CellProblemResult result;
       result.boundary_condition = bc;
+      std::array<TrilinosWrappers::MPI::Vector, 3> solutions;
+      for (auto &solution : solutions)
+        solution.reinit(locally_owned_dofs, mpi_communicator);
+      if (uses_multigrid(bc))
+        solve_with_multigrid(bc, solutions, result);
+      else
+        solve_with_amg(bc, solutions, result);
+
       for (unsigned int load_case = 0; load_case < 3; ++load_case)
         {
-          TrilinosWrappers::MPI::Vector solution(locally_owned_dofs,
-                                                 mpi_communicator);
-          {
-            TimerOutput::Scope         scope(timer, "CG solve");
-            const double               rhs_norm = load_scale[load_case];
-            SolverControl              control(parameters.max_iterations,
-                                  parameters.solver_tolerance * rhs_norm,
-                                  /*log_history = */ false,
-                                  /*log_result = */ false);
-            TrilinosWrappers::SolverCG cg(control);
-            try
-              {
-                cg.solve(system_matrix,
-                         solution,
-                         system_rhs[load_case],
-                         preconditioner);
-              }
-            catch (const SolverControl::NoConvergence &e)
-              {
-                throw RunError(
-                  "The " + to_string(bc) + " cell problem, load case "
-                  + std::to_string(load_case)
-                  + ", did not converge: CG reached "
-                  + std::to_string(e.last_step)
-                  + " iterations with a relative residual of "
-                  + format_number(e.last_residual / rhs_norm)
-                  + ". Raise 'Cell problem/Max iterations' or 'Cell "
-                    "problem/Solver tolerance'.");
-              }
-            catch (const ExceptionBase &e)
-              {
-                // AztecOO breakdown or loss of precision.
-                std::ostringstream info;
-                e.print_info(info);
-                throw RunError(
-                  "The " + to_string(bc) + " cell problem, load case "
-                  + std::to_string(load_case) + ", failed in CG: " + info.str()
-                  + " This happens when 'Cell problem/Solver "
-                    "tolerance' is below what double precision "
-                    "can reach; raise it (1e-10 is ample).");
-              }
-            result.load_cases[load_case].cg_iterations = control.last_step();
-            constraints.distribute(solution);
-          }
-
+          constraints.distribute(solutions[load_case]);
           TrilinosWrappers::MPI::Vector ghosted(locally_owned_dofs,
                                                 locally_relevant_dofs,
                                                 mpi_communicator);
-          ghosted = solution;
+          ghosted = solutions[load_case];
           const unsigned int iterations
             = result.load_cases[load_case].cg_iterations;
           result.load_cases[load_case] = postprocess(bc, load_case, ghosted);

@@ -37,6 +37,13 @@ namespace tribodyn
     std::string
     to_string(const BoundaryCondition bc);
 
+    /// Preconditioners of the cell problems' CG.
+    enum class CellPreconditioner
+    {
+      multigrid, ///< geometric multigrid on the pixel hierarchy, matrix-free
+      amg        ///< Trilinos ML algebraic multigrid on the assembled matrix
+    };
+
     /// Parameters of the subsection "Cell problem".
     struct CellProblemParameters
     {
@@ -50,8 +57,9 @@ namespace tribodyn
       unsigned int fe_degree = 1;
       /// Tolerance of CG: residual relative to the norm of the unassembled
       /// element loads.
-      double       solver_tolerance = 1e-10;
-      unsigned int max_iterations   = 2000;
+      double             solver_tolerance = 1e-10;
+      unsigned int       max_iterations   = 2000;
+      CellPreconditioner preconditioner   = CellPreconditioner::multigrid;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -83,8 +91,11 @@ namespace tribodyn
      * periodic) solve for the fluctuation w in u = E x + w; the stress-driven
      * one (SUBC) solves for u with the load written as the volume term
      * int eps(v) : Sigma (equal to the boundary work of t = Sigma n).
-     * CG with ML AMG (rigid-body modes as near-null space), one hierarchy per
-     * boundary condition reused for its three load cases.
+     * CG preconditioned by geometric multigrid (matrix-free, on the mesh's
+     * refinement hierarchy down to the coarsest mesh whose cells are
+     * 2^L pixels wide) or by ML AMG (rigid-body modes as near-null space);
+     * one preconditioner per boundary condition, reused for its three load
+     * cases.
      */
     class CellProblem
     {
@@ -108,6 +119,19 @@ namespace tribodyn
 
       dealii::types::global_dof_index
       n_dofs() const;
+      /// Whether CG is preconditioned by geometric multigrid ('Preconditioner
+      /// = multigrid' and a coarsest mesh of at most max_coarse_dofs DoFs).
+      bool
+      uses_multigrid() const;
+      /// Whether the problem of @p bc is solved with multigrid: KUBC and
+      /// SUBC when uses_multigrid(); periodic problems always use AMG.
+      bool
+      uses_multigrid(const BoundaryCondition bc) const;
+      /// Levels of the multigrid hierarchy (0 with AMG).
+      unsigned int
+      n_multigrid_levels() const;
+      /// The largest coarsest level that multigrid solves directly.
+      static constexpr unsigned int max_coarse_dofs = 50000;
       dealii::types::global_cell_index
       n_cells() const;
       /// Area fraction of each material id, measured on the mesh.
@@ -115,10 +139,36 @@ namespace tribodyn
       phase_fractions() const;
 
     private:
+      /// The mesh: the coarsest rectangle grid whose cells are 2^L times
+      /// the element size, refined L + 'Global refinements' times, with
+      /// periodic faces registered when @p periodic.
       void
-      setup_mesh();
+      setup_mesh(const bool periodic);
       void
       setup_dofs();
+      /// The pinned vertices of @p bc (rigid motions of SUBC, the
+      /// translation of periodic): vertices of the coarsest mesh.
+      std::vector<std::pair<dealii::Point<2>, std::vector<unsigned int>>>
+      pinned_vertices(const BoundaryCondition bc) const;
+      /// DoFs of the coarsest mesh.
+      unsigned int
+      n_coarse_dofs() const;
+      /// Element size along x and y of the active mesh.
+      std::array<double, 2>
+      element_size() const;
+      /// Solve the three load cases with geometric multigrid: fills the
+      /// solutions and the iteration counts.
+      void
+      solve_with_multigrid(
+        const BoundaryCondition                               bc,
+        std::array<dealii::TrilinosWrappers::MPI::Vector, 3> &solutions,
+        CellProblemResult                                    &result);
+      /// The same with AMG on the assembled matrix.
+      void
+      solve_with_amg(
+        const BoundaryCondition                               bc,
+        std::array<dealii::TrilinosWrappers::MPI::Vector, 3> &solutions,
+        CellProblemResult                                    &result);
       void
       make_constraints(const BoundaryCondition bc);
       void
@@ -145,6 +195,12 @@ namespace tribodyn
       const CellProblemParameters                  parameters;
       dealii::TimerOutput                         &timer;
       dealii::ConditionalOStream                   pcout;
+
+      /// Coarse cells along x and y, and the refinements L from the coarse
+      /// mesh to the elements of 'Subdivisions per pixel'.
+      std::array<unsigned int, 2> n_coarse_cells   = {{0, 0}};
+      unsigned int                n_pixel_levels   = 0;
+      bool                        mesh_is_periodic = false;
 
       dealii::parallel::distributed::Triangulation<2> triangulation;
       dealii::FESystem<2>                             fe;

@@ -1,0 +1,691 @@
+// Geometric multigrid for the cell problems: the matrix-free operator, the
+// level constraints, the V-cycle and CG (declared in cell_multigrid.h).
+#include "cell_multigrid.h"
+
+#include <array>
+#include <deal.II/base/vectorization.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/diagonal_matrix.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/matrix_free/fe_evaluation.h>
+#include <deal.II/matrix_free/matrix_free.h>
+#include <deal.II/matrix_free/operators.h>
+#include <deal.II/matrix_free/tools.h>
+#include <deal.II/multigrid/mg_coarse.h>
+#include <deal.II/multigrid/mg_constrained_dofs.h>
+#include <deal.II/multigrid/mg_matrix.h>
+#include <deal.II/multigrid/mg_smoother.h>
+#include <deal.II/multigrid/mg_tools.h>
+#include <deal.II/multigrid/mg_transfer_matrix_free.h>
+#include <deal.II/multigrid/multigrid.h>
+#include <map>
+
+namespace tribodyn
+{
+  namespace homogenization
+  {
+    namespace internal
+    {
+      namespace
+      {
+        using namespace dealii;
+        using VectorType = LinearAlgebra::distributed::Vector<double>;
+        using Tensor2    = SymmetricTensor<2, 2, VectorizedArray<double>>;
+
+
+        /**
+         * Plane-strain elasticity, int eps(v) : C eps(u), with one constant
+         * stiffness per cell: on the active mesh or on one level of the
+         * hierarchy (whichever MatrixFree object it is initialized with).
+         * C is symmetric: its six distinct entries are stored per cell
+         * batch (C00, C01, C02, C11, C12, C22 of the Voigt matrix acting on
+         * (eps_xx, eps_yy, gamma_xy)).
+         */
+        template <int degree>
+        class ElasticityOperator
+            : public MatrixFreeOperators::Base<2, VectorType>
+        {
+        public:
+          using FEEval    = FEEvaluation<2, degree, degree + 1, 2, double>;
+          using Stiffness = std::array<VectorizedArray<double>, 6>;
+
+          /// Evaluate @p stiffness on the box of every cell.
+          void
+          set_stiffness(const StiffnessOverBox &stiffness)
+          {
+            const auto &mf = *this->get_matrix_free();
+            coefficient.resize(mf.n_cell_batches());
+            for (unsigned int batch = 0; batch < mf.n_cell_batches(); ++batch)
+              for (unsigned int lane = 0;
+                   lane < mf.n_active_entries_per_cell_batch(batch);
+                   ++lane)
+                {
+                  const auto cell = mf.get_cell_iterator(batch, lane);
+                  // Vertices 0 and 3 of an axis-parallel rectangle are its
+                  // lower-left and upper-right corners.
+                  const VoigtMatrix C
+                    = stiffness(cell->vertex(0), cell->vertex(3));
+                  Stiffness &c = coefficient[batch];
+                  c[0][lane]   = C[0][0];
+                  c[1][lane]   = C[0][1];
+                  c[2][lane]   = C[0][2];
+                  c[3][lane]   = C[1][1];
+                  c[4][lane]   = C[1][2];
+                  c[5][lane]   = C[2][2];
+                }
+          }
+
+          /// sigma = C eps of a Voigt strain, as a symmetric tensor.
+          static Tensor2
+          stress(const Stiffness               &c,
+                 const VectorizedArray<double> &exx,
+                 const VectorizedArray<double> &eyy,
+                 const VectorizedArray<double> &gxy)
+          {
+            Tensor2 s;
+            s[0][0] = c[0] * exx + c[1] * eyy + c[2] * gxy;
+            s[1][1] = c[1] * exx + c[3] * eyy + c[4] * gxy;
+            s[0][1] = c[2] * exx + c[4] * eyy + c[5] * gxy;
+            return s;
+          }
+
+          /// The cell integral on the values in @p phi (also used for the
+          /// diagonal and the coarse matrix).
+          void
+          local_apply(FEEval &phi) const
+          {
+            local_apply(phi, coefficient[phi.get_current_cell_index()]);
+          }
+
+          /// The same with the stiffness @p c.
+          static void
+          local_apply(FEEval &phi, const Stiffness &c)
+          {
+            phi.evaluate(EvaluationFlags::gradients);
+            for (const unsigned int q : phi.quadrature_point_indices())
+              {
+                const Tensor2 e = phi.get_symmetric_gradient(q);
+                phi.submit_symmetric_gradient(
+                  stress(c, e[0][0], e[1][1], 2. * e[0][1]), q);
+              }
+            phi.integrate(EvaluationFlags::gradients);
+          }
+
+          /**
+           * Bilinear elements (degree 1) on the pixel grid: every cell of a
+           * level has the same rectangle, so its 8 x 8 element matrix
+           * depends on the cell's stiffness only. The distinct stiffnesses
+           * (the phases on the active mesh; the mixtures of coarse cells)
+           * get their element matrix once, computed by local_apply() on unit
+           * vectors (so in FEEvaluation's own DoF order); the cell loop then
+           * multiplies by it: 64 multiply-adds per cell instead of the
+           * general evaluate/integrate.
+           */
+          void
+          tabulate_element_matrices(
+            const AffineConstraints<double> &constraints)
+          {
+            if constexpr (degree == 1)
+              {
+                const auto &mf = *this->get_matrix_free();
+                FEEval      phi(mf);
+                std::map<std::array<double, 6>, unsigned int> index_of;
+                matrix_of_cell.clear();
+                element_matrices.clear();
+                element_stiffness.clear();
+                phi.reinit(0);
+                {
+                  const auto cell = mf.get_cell_iterator(0, 0);
+                  cell_size       = {{cell->vertex(3)[0] - cell->vertex(0)[0],
+                                      cell->vertex(3)[1] - cell->vertex(0)[1]}};
+                }
+                for (unsigned int batch = 0; batch < mf.n_cell_batches();
+                     ++batch)
+                  for (unsigned int lane = 0;
+                       lane < mf.n_active_entries_per_cell_batch(batch);
+                       ++lane)
+                    {
+                      std::array<double, 6> key;
+                      Stiffness             c;
+                      for (unsigned int k = 0; k < 6; ++k)
+                        {
+                          key[k] = coefficient[batch][k][lane];
+                          c[k]   = key[k];
+                        }
+                      const auto [it, inserted]
+                        = index_of.emplace(key, element_matrices.size());
+                      if (inserted)
+                        {
+                          std::array<double, 64> K;
+                          for (unsigned int j = 0; j < 8; ++j)
+                            {
+                              for (unsigned int i = 0; i < 8; ++i)
+                                phi.begin_dof_values()[i] = i == j ? 1. : 0.;
+                              local_apply(phi, c);
+                              for (unsigned int i = 0; i < 8; ++i)
+                                K[8 * i + j] = phi.begin_dof_values()[i][0];
+                            }
+                          element_matrices.push_back(K);
+                          element_stiffness.push_back(key);
+                        }
+                      matrix_of_cell.push_back(it->second);
+                    }
+                tabulate_cell_dofs(constraints);
+              }
+          }
+
+          /**
+           * Degree 1: the vector-local indices of the 8 DoFs of every cell in
+           * FEEvaluation's order (component-major, vertices in lexicographic
+           * order; FESystem numbers them vertex by vertex, 2 v + c), with
+           * constrained DoFs (all homogeneous here: boundary and pins)
+           * marked invalid: they are read as zero and not written, as
+           * MatrixFree does.
+           */
+          void
+          tabulate_cell_dofs(const AffineConstraints<double> &constraints)
+          {
+            const auto        &mf          = *this->get_matrix_free();
+            const auto        &partitioner = *mf.get_vector_partitioner();
+            const unsigned int level       = mf.get_mg_level();
+            cell_dofs.clear();
+            std::vector<types::global_dof_index> dofs(8);
+            for (unsigned int batch = 0; batch < mf.n_cell_batches(); ++batch)
+              for (unsigned int lane = 0;
+                   lane < mf.n_active_entries_per_cell_batch(batch);
+                   ++lane)
+                {
+                  const auto cell = mf.get_cell_iterator(batch, lane);
+                  if (level == numbers::invalid_unsigned_int)
+                    cell->get_dof_indices(dofs);
+                  else
+                    cell->get_mg_dof_indices(dofs);
+                  auto &local = cell_dofs.emplace_back();
+                  for (unsigned int c = 0; c < 2; ++c)
+                    for (unsigned int v = 0; v < 4; ++v)
+                      {
+                        const auto dof = dofs[2 * v + c];
+                        AssertThrow(
+                          !constraints.is_constrained(dof)
+                            || constraints.is_identity_constrained(dof)
+                            || (constraints.get_constraint_entries(dof)->empty()
+                                && constraints.get_inhomogeneity(dof) == 0),
+                          ExcInternalError());
+                        local[4 * c + v] = constraints.is_constrained(dof)
+                                             ? numbers::invalid_unsigned_int
+                                             : partitioner.global_to_local(dof);
+                      }
+                }
+          }
+
+          /// Right-hand side of a unit load (see CellMultigridSolver).
+          double
+          assemble_rhs(VectorType        &rhs,
+                       const VoigtVector &load,
+                       const bool         strain_driven) const
+          {
+            const auto &mf = *this->get_matrix_free();
+            mf.initialize_dof_vector(rhs);
+            if constexpr (degree == 1)
+              return assemble_rhs_bilinear(rhs, load, strain_driven);
+            FEEval phi(mf);
+            double scale = 0;
+            for (unsigned int batch = 0; batch < mf.n_cell_batches(); ++batch)
+              {
+                phi.reinit(batch);
+                const VectorizedArray<double> l0 = load[0], l1 = load[1],
+                                              l2 = load[2];
+                Tensor2 s;
+                if (strain_driven)
+                  s = -stress(coefficient[batch], l0, l1, l2);
+                else
+                  {
+                    s[0][0] = l0;
+                    s[1][1] = l1;
+                    s[0][1] = l2;
+                  }
+                for (const unsigned int q : phi.quadrature_point_indices())
+                  phi.submit_symmetric_gradient(s, q);
+                phi.integrate(EvaluationFlags::gradients);
+                for (unsigned int i = 0; i < phi.dofs_per_cell; ++i)
+                  for (unsigned int lane = 0;
+                       lane < mf.n_active_entries_per_cell_batch(batch);
+                       ++lane)
+                    scale += phi.begin_dof_values()[i][lane]
+                             * phi.begin_dof_values()[i][lane];
+                phi.distribute_local_to_global(rhs);
+              }
+            rhs.compress(VectorOperation::add);
+            return std::sqrt(
+              Utilities::MPI::sum(scale, rhs.get_mpi_communicator()));
+          }
+
+          /**
+           * Degree 1: the load of a cell is its element matrix times the
+           * nodal values of the affine displacement of its constant strain
+           * (E, or C^-1 Sigma for SUBC): Q1 holds affine fields exactly, so
+           * K u_E = int B^T C E. Relative to the cell's corner (K ignores
+           * translations), u_E is the same on every cell: one load vector
+           * per distinct element matrix.
+           */
+          double
+          assemble_rhs_bilinear(VectorType        &rhs,
+                                const VoigtVector &load,
+                                const bool         strain_driven) const
+          {
+            std::vector<std::array<double, 8>> loads(element_matrices.size());
+            for (unsigned int m = 0; m < element_matrices.size(); ++m)
+              {
+                VoigtVector strain = load;
+                if (!strain_driven)
+                  {
+                    const auto &c = element_stiffness[m];
+                    VoigtMatrix C;
+                    C[0][0] = c[0];
+                    C[0][1] = C[1][0] = c[1];
+                    C[0][2] = C[2][0] = c[2];
+                    C[1][1]           = c[3];
+                    C[1][2] = C[2][1] = c[4];
+                    C[2][2]           = c[5];
+                    strain            = invert(C) * load;
+                  }
+                double u[8];
+                for (unsigned int v = 0; v < 4; ++v)
+                  {
+                    const double x = (v & 1) * cell_size[0];
+                    const double y = (v >> 1) * cell_size[1];
+                    u[v]           = strain[0] * x + 0.5 * strain[2] * y;
+                    u[4 + v]       = 0.5 * strain[2] * x + strain[1] * y;
+                  }
+                const double sign = strain_driven ? -1. : 1.;
+                for (unsigned int i = 0; i < 8; ++i)
+                  {
+                    double sum = 0;
+                    for (unsigned int j = 0; j < 8; ++j)
+                      sum += element_matrices[m][8 * i + j] * u[j];
+                    loads[m][i] = sign * sum;
+                  }
+              }
+            double scale = 0;
+            for (std::size_t cell = 0; cell < cell_dofs.size(); ++cell)
+              {
+                const auto &f = loads[matrix_of_cell[cell]];
+                for (unsigned int i = 0; i < 8; ++i)
+                  {
+                    scale += f[i] * f[i];
+                    if (cell_dofs[cell][i] != numbers::invalid_unsigned_int)
+                      rhs.local_element(cell_dofs[cell][i]) += f[i];
+                  }
+              }
+            rhs.compress(VectorOperation::add);
+            return std::sqrt(
+              Utilities::MPI::sum(scale, rhs.get_mpi_communicator()));
+          }
+
+          void
+          compute_diagonal() override
+          {
+            if constexpr (degree == 1)
+              {
+                // The diagonal of the assembled operator from the element
+                // matrices' diagonals.
+                this->inverse_diagonal_entries
+                  = std::make_shared<DiagonalMatrix<VectorType>>();
+                VectorType &diagonal
+                  = this->inverse_diagonal_entries->get_vector();
+                this->initialize_dof_vector(diagonal);
+                for (std::size_t cell = 0; cell < cell_dofs.size(); ++cell)
+                  for (unsigned int i = 0; i < 8; ++i)
+                    if (cell_dofs[cell][i] != numbers::invalid_unsigned_int)
+                      diagonal.local_element(cell_dofs[cell][i])
+                        += element_matrices[matrix_of_cell[cell]][9 * i];
+                diagonal.compress(VectorOperation::add);
+                this->set_constrained_entries_to_one(diagonal);
+                for (unsigned int i = 0; i < diagonal.locally_owned_size(); ++i)
+                  diagonal.local_element(i) = 1. / diagonal.local_element(i);
+                return;
+              }
+            this->inverse_diagonal_entries
+              = std::make_shared<DiagonalMatrix<VectorType>>();
+            VectorType &diagonal = this->inverse_diagonal_entries->get_vector();
+            this->initialize_dof_vector(diagonal);
+            MatrixFreeTools::compute_diagonal(*this->get_matrix_free(),
+                                              diagonal,
+                                              &ElasticityOperator::local_apply,
+                                              this);
+            this->set_constrained_entries_to_one(diagonal);
+            for (unsigned int i = 0; i < diagonal.locally_owned_size(); ++i)
+              diagonal.local_element(i) = 1. / diagonal.local_element(i);
+          }
+
+        private:
+          void
+          apply_add(VectorType &dst, const VectorType &src) const override
+          {
+            if constexpr (degree == 1)
+              apply_add_bilinear(dst, src);
+            else
+              this->data->cell_loop(&ElasticityOperator::cell_range,
+                                    this,
+                                    dst,
+                                    src);
+          }
+
+          /// Degree 1: gather, multiply by the cell's element matrix,
+          /// scatter; ghost values exchanged as MatrixFree's cell loop does.
+          void
+          apply_add_bilinear(VectorType &dst, const VectorType &src) const
+          {
+            const bool src_had_ghosts = src.has_ghost_elements();
+            if (!src_had_ghosts)
+              src.update_ghost_values();
+            dst.zero_out_ghost_values();
+            const unsigned int invalid = numbers::invalid_unsigned_int;
+            for (std::size_t cell = 0; cell < cell_dofs.size(); ++cell)
+              {
+                const auto &dofs = cell_dofs[cell];
+                double      x[8];
+                for (unsigned int i = 0; i < 8; ++i)
+                  x[i] = dofs[i] == invalid ? 0. : src.local_element(dofs[i]);
+                const double *K = element_matrices[matrix_of_cell[cell]].data();
+                for (unsigned int i = 0; i < 8; ++i)
+                  if (dofs[i] != invalid)
+                    {
+                      double sum = 0;
+                      for (unsigned int j = 0; j < 8; ++j)
+                        sum += K[8 * i + j] * x[j];
+                      dst.local_element(dofs[i]) += sum;
+                    }
+              }
+            dst.compress(VectorOperation::add);
+            if (!src_had_ghosts)
+              src.zero_out_ghost_values();
+          }
+
+          void
+          cell_range(const MatrixFree<2, double>                 &data,
+                     VectorType                                  &dst,
+                     const VectorType                            &src,
+                     const std::pair<unsigned int, unsigned int> &range) const
+          {
+            FEEval phi(data);
+            for (unsigned int batch = range.first; batch < range.second;
+                 ++batch)
+              {
+                phi.reinit(batch);
+                phi.read_dof_values(src);
+                local_apply(phi);
+                phi.distribute_local_to_global(dst);
+              }
+          }
+
+          std::vector<Stiffness> coefficient;
+          /// Degree 1: the distinct element matrices (row-major), and per
+          /// locally owned cell (in the order of the cell batches and their
+          /// lanes) its matrix and its DoFs.
+          std::vector<std::array<double, 64>>      element_matrices;
+          std::vector<unsigned int>                matrix_of_cell;
+          std::vector<std::array<unsigned int, 8>> cell_dofs;
+          /// The six stiffness entries of each element matrix, and the
+          /// cells' size along x and y.
+          std::vector<std::array<double, 6>> element_stiffness;
+          std::array<double, 2>              cell_size = {{0, 0}};
+        };
+
+
+        /// The coarsest level solved with a factorization of its matrix.
+        class DirectCoarseSolver : public MGCoarseGridBase<VectorType>
+        {
+        public:
+          explicit DirectCoarseSolver(
+            const TrilinosWrappers::SparseMatrix &matrix)
+              : control(1, 0)
+              , solver(control)
+          {
+            solver.initialize(matrix);
+          }
+
+          void
+          operator()(const unsigned int,
+                     VectorType       &dst,
+                     const VectorType &src) const override
+          {
+            solver.solve(dst, src);
+          }
+
+        private:
+          SolverControl                          control;
+          mutable TrilinosWrappers::SolverDirect solver;
+        };
+
+
+        /// DoFs of level @p level at the vertices @p pin designates.
+        IndexSet
+        pinned_level_dofs(const DoFHandler<2>                   &dofs,
+                          const unsigned int                     level,
+                          const LevelConstraintDescription::Pin &pin,
+                          const double                           tolerance)
+        {
+          IndexSet pinned(dofs.n_dofs(level));
+          for (const auto &cell : dofs.mg_cell_iterators_on_level(level))
+            if (cell->level_subdomain_id() != numbers::artificial_subdomain_id)
+              for (const unsigned int v : cell->vertex_indices())
+                if (cell->vertex(v).distance(pin.point) < tolerance)
+                  for (const unsigned int c : pin.components)
+                    pinned.add_index(cell->mg_vertex_dof_index(level, v, c));
+          return pinned;
+        }
+
+
+        template <int degree>
+        class MultigridSolver : public CellMultigridSolver
+        {
+        public:
+          using LevelOperator = ElasticityOperator<degree>;
+          using Smoother      = PreconditionChebyshev<LevelOperator,
+                                                 VectorType,
+                                                 DiagonalMatrix<VectorType>>;
+
+          MultigridSolver(const DoFHandler<2>              &dof_handler,
+                          const AffineConstraints<double>  &constraints,
+                          const LevelConstraintDescription &description,
+                          const StiffnessOverBox           &stiffness,
+                          TimerOutput                      &timer)
+              : dof_handler(dof_handler)
+          {
+            TimerOutput::Scope scope(timer, "multigrid setup");
+            typename MatrixFree<2, double>::AdditionalData data;
+            data.tasks_parallel_scheme
+              = MatrixFree<2, double>::AdditionalData::none;
+            data.mapping_update_flags = update_gradients | update_JxW_values;
+            const QGauss<1> quadrature(degree + 1);
+
+            // The active mesh.
+            {
+              auto mf = std::make_shared<MatrixFree<2, double>>();
+              mf->reinit(mapping, dof_handler, constraints, quadrature, data);
+              fine_operator.initialize(mf);
+              fine_operator.set_stiffness(stiffness);
+              fine_operator.tabulate_element_matrices(constraints);
+            }
+
+            // The constraints on the levels: periodicity (if the
+            // triangulation has it), the boundary, the pinned vertices.
+            const unsigned int n_levels
+              = dof_handler.get_triangulation().n_global_levels();
+            mg_constrained_dofs.initialize(dof_handler);
+            if (description.zero_boundary)
+              mg_constrained_dofs.make_zero_boundary_constraints(dof_handler,
+                                                                 {0, 1, 2, 3});
+            for (unsigned int level = 0; level < n_levels; ++level)
+              for (const auto &pin : description.pins)
+                mg_constrained_dofs.add_boundary_indices(
+                  dof_handler,
+                  level,
+                  pinned_level_dofs(
+                    dof_handler, level, pin, description.tolerance));
+
+            level_operators.resize(0, n_levels - 1);
+            AffineConstraints<double> coarse_constraints;
+            for (unsigned int level = 0; level < n_levels; ++level)
+              {
+                IndexSet relevant;
+                DoFTools::extract_locally_relevant_level_dofs(dof_handler,
+                                                              level,
+                                                              relevant);
+                AffineConstraints<double> level_constraints;
+                level_constraints.reinit(relevant);
+                level_constraints.add_lines(
+                  mg_constrained_dofs.get_boundary_indices(level));
+                if (description.periodic)
+                  level_constraints.merge(
+                    mg_constrained_dofs.get_level_constraints(level),
+                    AffineConstraints<double>::left_object_wins);
+                level_constraints.close();
+
+                data.mg_level = level;
+                auto mf       = std::make_shared<MatrixFree<2, double>>();
+                mf->reinit(
+                  mapping, dof_handler, level_constraints, quadrature, data);
+                level_operators[level].initialize(mf,
+                                                  mg_constrained_dofs,
+                                                  level);
+                level_operators[level].set_stiffness(stiffness);
+                level_operators[level].tabulate_element_matrices(
+                  level_constraints);
+                level_operators[level].compute_diagonal();
+                if (level == 0)
+                  coarse_constraints.copy_from(level_constraints);
+              }
+
+            transfer = std::make_unique<MGTransferMatrixFree<2, double>>(
+              mg_constrained_dofs);
+            transfer->build(dof_handler);
+
+            // Chebyshev smoothing of degree 3 (fewest operator applications
+            // per solve of degrees 2-6 on the 1.1e6-DoF bench) over
+            // [lambda_max / 15, 1.1 lambda_max] of
+            // the Jacobi-preconditioned level operator.
+            MGLevelObject<typename Smoother::AdditionalData> smoother_data(
+              0, n_levels - 1);
+            for (unsigned int level = 0; level < n_levels; ++level)
+              {
+                smoother_data[level].smoothing_range     = 15.;
+                smoother_data[level].degree              = 3;
+                smoother_data[level].eig_cg_n_iterations = 15;
+                smoother_data[level].preconditioner
+                  = level_operators[level].get_matrix_diagonal_inverse();
+              }
+            smoother.initialize(level_operators, smoother_data);
+
+            // The coarsest level's matrix, factorized once.
+            {
+              const MPI_Comm comm  = dof_handler.get_communicator();
+              const IndexSet owned = dof_handler.locally_owned_mg_dofs(0);
+              IndexSet       relevant;
+              DoFTools::extract_locally_relevant_level_dofs(dof_handler,
+                                                            0,
+                                                            relevant);
+              DynamicSparsityPattern dsp(relevant);
+              MGTools::make_sparsity_pattern(dof_handler,
+                                             dsp,
+                                             0,
+                                             coarse_constraints);
+              SparsityTools::distribute_sparsity_pattern(dsp,
+                                                         owned,
+                                                         comm,
+                                                         relevant);
+              coarse_matrix.reinit(owned, owned, dsp, comm);
+              MatrixFreeTools::compute_matrix(
+                *level_operators[0].get_matrix_free(),
+                coarse_constraints,
+                coarse_matrix,
+                &LevelOperator::local_apply,
+                &level_operators[0]);
+              coarse = std::make_unique<DirectCoarseSolver>(coarse_matrix);
+            }
+
+            mg_matrix
+              = std::make_unique<mg::Matrix<VectorType>>(level_operators);
+            multigrid = std::make_unique<Multigrid<VectorType>>(
+              *mg_matrix, *coarse, *transfer, smoother, smoother);
+            preconditioner = std::make_unique<
+              PreconditionMG<2, VectorType, MGTransferMatrixFree<2, double>>>(
+              dof_handler, *multigrid, *transfer);
+          }
+
+          double
+          assemble_rhs(const VoigtVector &load,
+                       const bool         strain_driven) override
+          {
+            return fine_operator.assemble_rhs(rhs, load, strain_driven);
+          }
+
+          void
+          solve(SolverControl                 &control,
+                TrilinosWrappers::MPI::Vector &solution) override
+          {
+            VectorType x;
+            fine_operator.initialize_dof_vector(x);
+            SolverCG<VectorType> cg(control);
+            cg.solve(fine_operator, x, rhs, *preconditioner);
+            for (const auto i : x.locally_owned_elements())
+              solution(i) = x(i);
+            solution.compress(VectorOperation::insert);
+          }
+
+        private:
+          const DoFHandler<2>                             &dof_handler;
+          const MappingQ1<2>                               mapping;
+          LevelOperator                                    fine_operator;
+          VectorType                                       rhs;
+          MGConstrainedDoFs                                mg_constrained_dofs;
+          MGLevelObject<LevelOperator>                     level_operators;
+          std::unique_ptr<MGTransferMatrixFree<2, double>> transfer;
+          MGSmootherPrecondition<LevelOperator, Smoother, VectorType> smoother;
+          TrilinosWrappers::SparseMatrix          coarse_matrix;
+          std::unique_ptr<DirectCoarseSolver>     coarse;
+          std::unique_ptr<mg::Matrix<VectorType>> mg_matrix;
+          std::unique_ptr<Multigrid<VectorType>>  multigrid;
+          std::unique_ptr<
+            PreconditionMG<2, VectorType, MGTransferMatrixFree<2, double>>>
+            preconditioner;
+        };
+      } // namespace
+
+
+      std::unique_ptr<CellMultigridSolver>
+      make_cell_multigrid_solver(
+        const unsigned int                       fe_degree,
+        const dealii::DoFHandler<2>             &dof_handler,
+        const dealii::AffineConstraints<double> &constraints,
+        const LevelConstraintDescription        &level_constraints,
+        const StiffnessOverBox                  &stiffness,
+        dealii::TimerOutput                     &timer)
+      {
+        switch (fe_degree)
+          {
+            case 1:
+              return std::make_unique<MultigridSolver<1>>(
+                dof_handler, constraints, level_constraints, stiffness, timer);
+            case 2:
+              return std::make_unique<MultigridSolver<2>>(
+                dof_handler, constraints, level_constraints, stiffness, timer);
+            case 3:
+              return std::make_unique<MultigridSolver<3>>(
+                dof_handler, constraints, level_constraints, stiffness, timer);
+            default:
+              return std::make_unique<MultigridSolver<4>>(
+                dof_handler, constraints, level_constraints, stiffness, timer);
+          }
+      }
+    } // namespace internal
+  }   // namespace homogenization
+} // namespace tribodyn

@@ -1,0 +1,98 @@
+// Geometric multigrid for the cell problems (issue #19 item 4): a
+// matrix-free plane-strain elasticity operator on the pixel hierarchy,
+// Chebyshev smoothing and a direct solve on the coarsest mesh, as the
+// preconditioner of CG. Private to the homogenization sources.
+#ifndef tribodyn_source_homogenization_cell_multigrid_h
+#define tribodyn_source_homogenization_cell_multigrid_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <functional>
+#include <memory>
+#include <tribodyn/homogenization/effective_properties.h>
+#include <vector>
+
+namespace tribodyn
+{
+  namespace homogenization
+  {
+    namespace internal
+    {
+      /// The constraints of a boundary condition, on every level: zero
+      /// fluctuation on the whole boundary (KUBC), periodicity (taken from
+      /// the triangulation), and pinned components of single vertices.
+      struct LevelConstraintDescription
+      {
+        bool zero_boundary = false;
+        bool periodic      = false;
+        struct Pin
+        {
+          dealii::Point<2>          point;
+          std::vector<unsigned int> components;
+        };
+        std::vector<Pin> pins;
+        /// Distance below which a vertex is the pinned point.
+        double tolerance = 0;
+      };
+
+      /// Plane-strain Voigt stiffness averaged over a rectangle of the
+      /// cell (lower-left and upper-right corners): the coefficient of a
+      /// cell on any level of the hierarchy.
+      using StiffnessOverBox
+        = std::function<VoigtMatrix(const dealii::Point<2> &lower,
+                                    const dealii::Point<2> &upper)>;
+
+      /**
+       * CG preconditioned by a geometric multigrid V-cycle, for one set of
+       * constraints (one boundary condition) and any number of load cases.
+       * The operator is applied matrix-free (deal.II's MatrixFree with one
+       * constant stiffness per cell); the levels are those of the mesh's
+       * refinement hierarchy, with the coefficient of a coarse cell the
+       * arithmetic mean of the fine cells it covers; Chebyshev smoothing
+       * (degree 3) around point Jacobi; the coarsest level solved directly
+       * (Amesos KLU). Bilinear elements take a fast path: one 8 x 8 element
+       * matrix per distinct stiffness, applied cell by cell.
+       */
+      class CellMultigridSolver
+      {
+      public:
+        virtual ~CellMultigridSolver() = default;
+
+        /// Right-hand side of a unit load: -int eps(v) : C E for the
+        /// macroscopic strain E (@p strain_driven) or int eps(v) : Sigma
+        /// for the macroscopic stress Sigma. Returns the norm of the
+        /// unassembled element loads (the scale of the CG tolerance).
+        virtual double
+        assemble_rhs(const VoigtVector &load, const bool strain_driven)
+          = 0;
+
+        /// Solve for the last assembled right-hand side; @p solution gets
+        /// the locally owned values (constraints not yet distributed).
+        /// Throws SolverControl::NoConvergence.
+        virtual void
+        solve(dealii::SolverControl                 &control,
+              dealii::TrilinosWrappers::MPI::Vector &solution)
+          = 0;
+      };
+
+      /// The solver for elements of degree @p fe_degree (1 to 4) on
+      /// @p dof_handler (multigrid DoFs distributed), with the active
+      /// level's @p constraints and the description of the same
+      /// constraints on the levels.
+      std::unique_ptr<CellMultigridSolver>
+      make_cell_multigrid_solver(
+        const unsigned int                       fe_degree,
+        const dealii::DoFHandler<2>             &dof_handler,
+        const dealii::AffineConstraints<double> &constraints,
+        const LevelConstraintDescription        &level_constraints,
+        const StiffnessOverBox                  &stiffness,
+        dealii::TimerOutput                     &timer);
+    } // namespace internal
+  }   // namespace homogenization
+} // namespace tribodyn
+
+#endif
