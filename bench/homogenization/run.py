@@ -2,8 +2,17 @@
 """Benchmarks and studies of the homogenization problem (not run by ctest).
 
   bench/homogenization/run.py scaling      [--tribodyn build/tribodyn]
+                                           [--old OLD --old-lib DIR --repeats N]
       wall time of a ~1.1e6-DoF cell problem (KUBC + SUBC, 3 load cases
-      each = 6 solves) on 1 and 2 MPI ranks.
+      each = 6 solves) on 1 and 2 MPI ranks. With --old (an older
+      tribodyn binary; --old-lib the directory of its libtribodyn.so) the
+      two binaries alternate N times per rank count and the ratio of the
+      mean wall times is printed (a speed claim taken in one run).
+  bench/homogenization/run.py large        [--ranks 2]
+      a 2000 x 2000-pixel three-phase micrograph (written to
+      bench-output/homogenization/large.png; fibres, matrix, pores),
+      homogenized with KUBC + SUBC: 8.0e6 DoFs; wall time, CG iterations
+      and the peak resident memory of each rank, per DoF.
   bench/homogenization/run.py convergence
       E_L, E_T, G_LT (KUBC and SUBC) of the default morphology as the mesh is
       refined (h = 0.1, 0.05, 0.025, 0.0125 mm); error against the Richardson
@@ -30,26 +39,43 @@ ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIR
            OMPI_MCA_rmaps_base_oversubscribe="1")
 
 
-def run(tribodyn, name, overrides, ranks=1):
-    """Run the default prm with @p overrides (list of prm lines) appended."""
+def run(tribodyn, name, overrides, ranks=1, lib=None, base_prm=DEFAULT_PRM,
+        memory=False):
+    """Run @p base_prm with @p overrides (list of prm lines) appended; with
+    @p memory, each rank runs under /usr/bin/time and the summary gets
+    "peak_rss_kb" (one value per rank)."""
     directory = os.path.join(OUT, name)
     os.makedirs(directory, exist_ok=True)
     prm = os.path.join(directory, "run.prm")
-    with open(DEFAULT_PRM) as f:
+    with open(base_prm) as f:
         text = f.read()
     text += "\n# overrides\nset Output directory = %s\n" % directory
     text += "\n".join(overrides) + "\n"
     with open(prm, "w") as f:
         f.write(text)
-    command = ([tribodyn, prm] if ranks == 1 else
-               ["mpirun", "-np", str(ranks), tribodyn, prm])
+    env = dict(ENV)
+    if lib:
+        env["LD_LIBRARY_PATH"] = lib
+    rank_command = [tribodyn, prm]
+    if memory:
+        rank_command = ["/usr/bin/time", "-f", "peak_rss_kb %M", "-a", "-o",
+                        directory + "_memory.txt"] + rank_command
+        if os.path.exists(directory + "_memory.txt"):
+            os.remove(directory + "_memory.txt")
+    command = (rank_command if ranks == 1 else
+               ["mpirun", "-np", str(ranks)] + (["-x", "LD_LIBRARY_PATH"] if lib else [])
+               + rank_command)
     start = time.time()
-    log = subprocess.run(command, env=ENV, capture_output=True, text=True)
+    log = subprocess.run(command, env=env, capture_output=True, text=True)
     elapsed = time.time() - start
     if log.returncode != 0:
         sys.exit("run %s failed:\n%s\n%s" % (name, log.stdout, log.stderr))
     with open(os.path.join(directory, "summary.json")) as f:
         summary = json.load(f)
+    if memory:
+        with open(directory + "_memory.txt") as f:
+            summary["peak_rss_kb"] = [int(line.split()[1]) for line in f
+                                      if line.startswith("peak_rss_kb")]
     return summary, elapsed, log.stdout
 
 
@@ -82,6 +108,8 @@ def timer_sections(stdout):
 
 
 def scaling(args):
+    if args.old:
+        return scaling_alternating(args)
     print("| ranks | DoFs | wall time (s) | AMG setup (s) | CG solves (s) | CG iterations (KUBC; SUBC) |")
     print("|---|---|---|---|---|---|")
     for ranks in [1, 2]:
@@ -90,6 +118,88 @@ def scaling(args):
         print("| %d | %d | %.1f | %.1f | %.1f | %s; %s |" % (
             ranks, s["n_dofs"], s["wall_time_s"], t.get("AMG setup", float("nan")),
             t.get("CG solve", float("nan")), s["KUBC"]["cg_iterations"], s["SUBC"]["cg_iterations"]))
+
+
+def scaling_alternating(args):
+    """Old and new binaries alternating on the scaling problem."""
+    print("uptime before: " + open("/proc/loadavg").read().split()[0])
+    print("| ranks | binary | wall times (s) | mean (s) | CG iterations (KUBC; SUBC) |")
+    print("|---|---|---|---|---|")
+    for ranks in [1, 2]:
+        walls = {"old": [], "new": []}
+        iterations = {}
+        for _ in range(args.repeats):
+            for which, binary, lib in (("old", args.old, args.old_lib),
+                                       ("new", args.tribodyn, None)):
+                s, elapsed, _ = run(binary, "scaling_%s_%d" % (which, ranks),
+                                    cell(subdivisions=5), ranks, lib)
+                walls[which].append(elapsed)
+                iterations[which] = "%s; %s" % (s["KUBC"]["cg_iterations"],
+                                                s["SUBC"]["cg_iterations"])
+        for which in ("old", "new"):
+            w = walls[which]
+            print("| %d | %s | %s | %.1f | %s |" % (
+                ranks, which, ", ".join("%.1f" % x for x in w), sum(w) / len(w),
+                iterations[which]))
+        print("| %d | ratio old/new | | **%.2f** | |" % (
+            ranks, (sum(walls["old"]) / len(walls["old"]))
+            / (sum(walls["new"]) / len(walls["new"]))))
+    print("uptime after: " + open("/proc/loadavg").read().split()[0])
+
+
+def large_micrograph(path, size=2000, seed=4):
+    """A size x size three-phase micrograph: fibre sections (radius 6 px),
+    pores (radius 2-3 px) and matrix, grey levels 200 / 35 / 120 with noise
+    (the example micrograph's recipe, placed on a grid of jittered sites so
+    that it takes seconds for 4e6 pixels)."""
+    sys.path.insert(0, os.path.join(ROOT, "scripts"))
+    import importlib.machinery
+    import importlib.util
+    import random
+    loader = importlib.machinery.SourceFileLoader(
+        "make_synthetic_images", os.path.join(ROOT, "scripts", "make_synthetic_images"))
+    spec = importlib.util.spec_from_loader(loader.name, loader)
+    images = importlib.util.module_from_spec(spec)
+    loader.exec_module(images)
+    rng = random.Random(seed)
+    phase = [bytearray([1]) * size for _ in range(size)]
+    spacing = 20
+    for cy in range(spacing // 2, size, spacing):
+        for cx in range(spacing // 2, size, spacing):
+            kind = 2 if rng.random() < 0.6 else (0 if rng.random() < 0.3 else 1)
+            if kind == 1:
+                continue
+            r = 6.0 if kind == 2 else rng.uniform(2.0, 3.0)
+            x = cx + rng.uniform(-3, 3)
+            y = cy + rng.uniform(-3, 3)
+            for j in range(max(0, int(y - r)), min(size, int(y + r) + 1)):
+                for i in range(max(0, int(x - r)), min(size, int(x + r) + 1)):
+                    if math.hypot(i + 0.5 - x, j + 0.5 - y) < r:
+                        phase[j][i] = kind
+    levels = [35, 120, 200]
+    grey = [[max(0, min(255, levels[p] + int(rng.gauss(0, 8)))) for p in row]
+            for row in phase]
+    images.write(path, images.png_bytes(size, size, grey, pixels_per_metre=10 ** 6))
+
+
+def large(args):
+    path = os.path.join(OUT, "large.png")
+    os.makedirs(OUT, exist_ok=True)
+    if not os.path.exists(path):
+        large_micrograph(path)
+    micrograph_prm = os.path.join(ROOT, "prm", "homogenization", "micrograph.prm")
+    overrides = ["subsection Morphology", "  subsection Image",
+                 "    set File = " + path, "  end", "end"] + cell()
+    s, elapsed, stdout = run(args.tribodyn, "large", overrides, args.ranks,
+                             base_prm=micrograph_prm, memory=True)
+    rss = s["peak_rss_kb"]
+    print("| pixels | DoFs | ranks | wall time (s) | CG iterations (KUBC; SUBC) | peak RSS per rank (GB) | memory per DoF (B) | time per DoF (us) |")
+    print("|---|---|---|---|---|---|---|---|")
+    print("| 2000 x 2000 | %d | %d | %.1f | %s; %s | %s | %.0f | %.2f |" % (
+        s["n_dofs"], args.ranks, elapsed, s["KUBC"]["cg_iterations"],
+        s["SUBC"]["cg_iterations"], ", ".join("%.2f" % (r / 1e6) for r in rss),
+        sum(rss) * 1024.0 / s["n_dofs"], 1e6 * elapsed / s["n_dofs"]))
+    print(stdout[stdout.find("+---"):])
 
 
 def convergence(args):
@@ -138,8 +248,12 @@ def morphologies(args):
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("study", choices=["scaling", "convergence", "morphologies"])
+    parser.add_argument("study", choices=["scaling", "convergence", "morphologies", "large"])
+    parser.add_argument("--old", help="older tribodyn binary to alternate with (scaling)")
+    parser.add_argument("--old-lib", help="directory of the older binary's libtribodyn.so")
+    parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--tribodyn", default=os.path.join(ROOT, "build", "tribodyn"))
     parser.add_argument("--ranks", type=int, default=2)
     args = parser.parse_args()
-    {"scaling": scaling, "convergence": convergence, "morphologies": morphologies}[args.study](args)
+    {"scaling": scaling, "convergence": convergence, "morphologies": morphologies,
+     "large": large}[args.study](args)
