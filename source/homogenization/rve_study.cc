@@ -440,7 +440,9 @@ namespace tribodyn
 
 
     std::vector<double>
-    RveStudy::measure(const RveWindow &w, const MPI_Comm group) const
+    RveStudy::measure(const RveWindow     &w,
+                      const MPI_Comm       group,
+                      dealii::TimerOutput &timer) const
     {
       const Morphology   window   = make_window(w);
       const unsigned int n_phases = materials.names().size();
@@ -456,11 +458,7 @@ namespace tribodyn
 
       if (boundary_conditions().empty())
         return values;
-      dealii::TimerOutput timer(group,
-                                std::cout,
-                                dealii::TimerOutput::never,
-                                dealii::TimerOutput::wall_times);
-      const auto          phases = materials.phases();
+      const auto  phases = materials.phases();
       CellProblem cell(group, window, phases, cell_problem_parameters, timer);
       for (const BoundaryCondition bc : boundary_conditions())
         {
@@ -515,6 +513,13 @@ namespace tribodyn
             ++n_mine;
             pixels_mine += pixels(windows[i]);
           }
+      // The cell problems' timings, summed over the windows of each group;
+      // rank 0 prints its group's at the end.
+      auto timer = std::make_unique<dealii::TimerOutput>(
+        group,
+        pcout,
+        dealii::TimerOutput::summary,
+        dealii::TimerOutput::wall_times);
       std::vector<double> local(windows.size() * n_values, 0.);
       const auto          t0          = std::chrono::steady_clock::now();
       double              last_report = -1e300;
@@ -523,7 +528,7 @@ namespace tribodyn
           if (i % n_groups != color)
             continue;
           const RveWindow          &w      = windows[i];
-          const std::vector<double> values = measure(w, group);
+          const std::vector<double> values = measure(w, group, *timer);
           if (group_root)
             std::copy(values.begin(), values.end(), &local[i * n_values]);
           ++n_done;
@@ -560,7 +565,6 @@ namespace tribodyn
       std::vector<double> all(local.size());
       MPI_Allreduce(
         local.data(), all.data(), local.size(), MPI_DOUBLE, MPI_SUM, world);
-      MPI_Comm_free(&group);
 
       // Samples per (size, value); mean fractions over all windows for the
       // point variances.
@@ -616,6 +620,8 @@ namespace tribodyn
       if (rank == 0)
         write_results(samples, fits, n_groups, wall_time);
       MPI_Barrier(world);
+      timer.reset(); // collective over the group: before freeing it
+      MPI_Comm_free(&group);
     }
 
 

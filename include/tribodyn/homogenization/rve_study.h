@@ -3,6 +3,7 @@
 
 #include <array>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 #include <memory>
 #include <string>
 #include <tribodyn/core/morphology.h>
@@ -118,9 +119,12 @@ namespace tribodyn
       Morphology
       make_window(const RveWindow &w) const;
       /// The values of window @p w (fractions, then per BC the constants)
-      /// on the communicator @p group.
+      /// on the communicator @p group; the cell problems time themselves
+      /// in @p timer.
       std::vector<double>
-      measure(const RveWindow &w, const MPI_Comm group) const;
+      measure(const RveWindow     &w,
+              const MPI_Comm       group,
+              dealii::TimerOutput &timer) const;
       /// The boundary conditions solved (none without cell problems).
       const std::vector<BoundaryCondition> &
       boundary_conditions() const;
