@@ -523,12 +523,32 @@ namespace tribodyn
       std::vector<double> local(windows.size() * n_values, 0.);
       const auto          t0          = std::chrono::steady_clock::now();
       double              last_report = -1e300;
+      std::string         failure;
+      bool                input_error = false;
       for (unsigned int i = 0; i < windows.size(); ++i)
         {
-          if (i % n_groups != color)
+          if (i % n_groups != color || !failure.empty())
             continue;
-          const RveWindow          &w      = windows[i];
-          const std::vector<double> values = measure(w, group, *timer);
+          const RveWindow    &w = windows[i];
+          std::vector<double> values;
+          // A window that fails (CG without convergence, bad input) stops
+          // its group; the others finish their windows, then every rank
+          // throws together instead of waiting for the group forever.
+          try
+            {
+              values = measure(w, group, *timer);
+            }
+          catch (const InputError &e)
+            {
+              failure     = "Window " + std::to_string(i + 1) + ": " + e.what();
+              input_error = true;
+              continue;
+            }
+          catch (const std::exception &e)
+            {
+              failure = "Window " + std::to_string(i + 1) + ": " + e.what();
+              continue;
+            }
           if (group_root)
             std::copy(values.begin(), values.end(), &local[i * n_values]);
           ++n_done;
@@ -562,6 +582,15 @@ namespace tribodyn
               std::cout << line.str() << std::endl;
             }
         }
+      // Free the timer first when a window failed: its destructor talks
+      // to the group, which it must not do while an exception unwinds.
+      if (dealii::Utilities::MPI::max(failure.empty() ? 0u : 1u, world) > 0)
+        {
+          timer->disable_output();
+          timer.reset();
+        }
+      refuse_collectively(world, input_error, failure);
+      throw_collectively(world, !failure.empty(), failure);
       std::vector<double> all(local.size());
       MPI_Allreduce(
         local.data(), all.data(), local.size(), MPI_DOUBLE, MPI_SUM, world);
