@@ -496,6 +496,35 @@ namespace tribodyn
   }
 
 
+  Morphology
+  Morphology::window(const unsigned int i0,
+                     const unsigned int j0,
+                     const unsigned int window_nx,
+                     const unsigned int window_ny) const
+  {
+    if (window_nx == 0 || window_ny == 0 || i0 + window_nx > n_x
+        || j0 + window_ny > n_y)
+      throw std::logic_error("Morphology::window: the window leaves the map");
+    std::vector<unsigned int> w(static_cast<std::size_t>(window_nx)
+                                * window_ny);
+    for (unsigned int j = 0; j < window_ny; ++j)
+      for (unsigned int i = 0; i < window_nx; ++i)
+        w[static_cast<std::size_t>(j) * window_nx + i]
+          = ids[static_cast<std::size_t>(j0 + j) * n_x + i0 + i];
+    Morphology m(window_nx * pixel_width(),
+                 window_ny * pixel_height(),
+                 window_nx,
+                 window_ny,
+                 w,
+                 "window of " + std::to_string(window_nx) + " x "
+                   + std::to_string(window_ny) + " pixels at ("
+                   + std::to_string(i0) + ", " + std::to_string(j0) + ") of "
+                   + origin);
+    m.n_placed = m.count_connected_heterogeneities();
+    return m;
+  }
+
+
   unsigned int
   Morphology::n_pixels_x() const
   {

@@ -184,6 +184,20 @@ namespace tribodyn
     void
     write_grid_file(const std::string &file_name) const;
 
+    /**
+     * The window of @p window_nx by @p window_ny pixels whose lower-left
+     * pixel is (@p i0, @p j0), as a morphology of its own with the same
+     * pixel size (the windows of an RVE-size study). Heterogeneities cut by
+     * the window's edges are kept cut; n_heterogeneities() of the window
+     * counts its connected heterogeneity pixels. The window must lie in the
+     * rectangle (std::logic_error otherwise: callers check user input).
+     */
+    Morphology
+    window(const unsigned int i0,
+           const unsigned int j0,
+           const unsigned int window_nx,
+           const unsigned int window_ny) const;
+
   private:
     double                    rectangle_width;
     double                    rectangle_height;

@@ -1,0 +1,670 @@
+// The RVE-size study (Kanit et al. 2003): its parameters, the windows,
+// their cell problems spread over MPI rank groups, and the statistics.
+// Tables and plot: rve_output.cc; fits: rve_statistics.cc.
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+#include <iomanip>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/number_list.h>
+#include <tribodyn/core/progress.h>
+#include <tribodyn/core/selection.h>
+#include <tribodyn/homogenization/rve_study.h>
+
+namespace tribodyn
+{
+  namespace homogenization
+  {
+    using dealii::ParameterHandler;
+
+    namespace
+    {
+      using Source = RveStudyParameters::Source;
+      constexpr SelectionTable<Source, 2> source_choices{
+        {{"crops", Source::crops}, {"realisations", Source::realisations}}};
+
+      const std::string sizes_name = "RVE study/Window sizes";
+
+
+      /// "140x40" -> {140, 40}; "32" -> {32, 32}.
+      std::array<unsigned int, 2>
+      parse_window_size(const std::string &word)
+      {
+        const auto fail = [&]() {
+          throw InputError(
+            "Parameter '" + sizes_name + "': '" + word
+            + "' is not a window size. Give each size in pixels as "
+              "WIDTHxHEIGHT (e.g. 140x40) or as one number for a square, "
+              "the sizes separated by commas.");
+        };
+        const std::size_t           x = word.find_first_of("xX");
+        std::array<unsigned int, 2> size{{0, 0}};
+        const std::string           parts[2]
+          = {word.substr(0, x),
+             x == std::string::npos ? word : word.substr(x + 1)};
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            if (parts[d].empty()
+                || parts[d].find_first_not_of("0123456789") != std::string::npos
+                || parts[d].size() > 6)
+              fail();
+            size[d] = std::stoul(parts[d]);
+            if (size[d] == 0)
+              fail();
+          }
+        return size;
+      }
+
+
+      /// Uniform integer in [0, n] from a 32-bit generator (multiply-shift,
+      /// the same on every platform, unlike std::uniform_int_distribution).
+      unsigned int
+      uniform_up_to(std::mt19937 &rng, const unsigned int n)
+      {
+        return static_cast<unsigned int>(
+          (static_cast<std::uint64_t>(rng()) * (std::uint64_t(n) + 1)) >> 32);
+      }
+
+
+      bool
+      random_generator(const MorphologyParameters &m)
+      {
+        return m.generator == MorphologyParameters::Generator::random_vertical;
+      }
+    } // namespace
+
+
+    const std::vector<std::string> &
+    rve_constant_names()
+    {
+      static const std::vector<std::string> names
+        = {"E_L", "E_T", "G_LT", "nu_LT", "nu_TT"};
+      return names;
+    }
+
+
+    void
+    RveStudyParameters::declare_parameters(ParameterHandler &prm)
+    {
+      using dealii::Patterns::Anything;
+      using dealii::Patterns::Double;
+      using dealii::Patterns::Integer;
+      prm.enter_subsection("RVE study");
+      {
+        prm.declare_entry(
+          "Window sizes",
+          "70x20, 140x40, 280x80",
+          Anything(),
+          "Sizes of the windows in pixels of the morphology, WIDTHxHEIGHT "
+          "(along x and y) or one number for a square, separated by commas, "
+          "at least two, of increasing area. Keep the aspect ratio of the "
+          "cell you want to judge (the seed's cell is 280x80).");
+        prm.declare_entry(
+          "Windows per size",
+          "8",
+          Anything(),
+          "Number n of windows of each size: one number for all sizes, or "
+          "one per size (at least 3 each; the standard deviation of a size "
+          "is known to about 1/sqrt(2 (n - 1)) relative).");
+        prm.declare_entry(
+          "Source",
+          "crops",
+          selection_pattern(source_choices),
+          "'crops': windows cut at uniformly random positions from the "
+          "morphology of the subsection 'Morphology' (with 'random "
+          "vertical', a new realisation of it for every window, seed "
+          "'Morphology/Random seed' + window number, so that windows are "
+          "independent; with an image, a grid file or a laminate, the one "
+          "map). 'realisations': the generator ('random vertical') run at "
+          "each window's size, one seed per window (pixel size = "
+          "'Morphology/Width' / 'Pixels in x'); heterogeneities then never "
+          "cut the window's edges, as in the seed's cells.");
+        prm.declare_entry("Random seed",
+                          "1",
+                          Integer(0),
+                          "Seed of the random window positions ('crops').");
+        prm.declare_entry("Relative error",
+                          "0.01",
+                          Double(),
+                          "Relative error eps_rel of the mean for which the "
+                          "RVE size is reported, in (0, 1): the mean of n "
+                          "windows of that size is within eps_rel of the "
+                          "mean with ~95 % confidence (two standard errors).");
+        prm.declare_entry(
+          "Realisations",
+          "1, 6",
+          Anything(),
+          "Numbers n of realisations averaged, for which the RVE size "
+          "V(eps_rel, n) is reported (the seed averages six morphologies).");
+        prm.declare_entry(
+          "Ranks per window",
+          "1",
+          Integer(1),
+          "MPI ranks that solve one window together. The ranks form "
+          "n_ranks / (Ranks per window) groups; windows go round-robin to "
+          "the groups.");
+        prm.declare_entry(
+          "Solve cell problems",
+          "true",
+          dealii::Patterns::Bool(),
+          "false: measure only the phase fractions of the windows (no cell "
+          "problems; the morphology's own integral range, e.g. to choose the "
+          "window sizes before paying for cell problems).");
+        prm.declare_entry("Plot script",
+                          "auto",
+                          Anything(),
+                          "Python script drawing rve.png at the end: 'auto' "
+                          "looks for scripts/plot_rve next to the build "
+                          "directory (skipped when python3 or matplotlib is "
+                          "missing), 'none' draws nothing, or a path.");
+      }
+      prm.leave_subsection();
+    }
+
+
+    void
+    RveStudyParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("RVE study");
+      {
+        std::string text = prm.get("Window sizes");
+        std::replace(text.begin(), text.end(), ',', ' ');
+        std::istringstream in(text);
+        window_sizes.clear();
+        for (std::string word; in >> word;)
+          window_sizes.push_back(parse_window_size(word));
+
+        const std::vector<double> n
+          = parse_number_list(prm.get("Windows per size"),
+                              "RVE study/Windows per size");
+        windows_per_size.clear();
+        for (const double v : n)
+          {
+            check_parameter(v >= 3 && v == std::floor(v) && v < 1e6,
+                            "RVE study/Windows per size",
+                            "'" + format_number(v)
+                              + "' is not a whole number of at least 3 (a "
+                                "variance from fewer windows is too "
+                                "uncertain to fit).");
+            windows_per_size.push_back(static_cast<unsigned int>(v));
+          }
+
+        source         = get_selection(prm, "Source", source_choices);
+        random_seed    = prm.get_integer("Random seed");
+        relative_error = prm.get_double("Relative error");
+
+        realisations.clear();
+        for (const double v : parse_number_list(prm.get("Realisations"),
+                                                "RVE study/Realisations"))
+          {
+            check_parameter(v >= 1 && v == std::floor(v) && v < 1e9,
+                            "RVE study/Realisations",
+                            "'" + format_number(v)
+                              + "' is not a whole number of at least 1.");
+            realisations.push_back(static_cast<unsigned int>(v));
+          }
+        ranks_per_window    = prm.get_integer("Ranks per window");
+        solve_cell_problems = prm.get_bool("Solve cell problems");
+        plot_script         = prm.get("Plot script");
+      }
+      prm.leave_subsection();
+
+      check_parameter(window_sizes.size() >= 2,
+                      sizes_name,
+                      "give at least two window sizes (the variance law is "
+                      "fitted over the sizes), e.g. '70x20, 140x40, "
+                      "280x80'.");
+      for (unsigned int i = 1; i < window_sizes.size(); ++i)
+        check_parameter(1. * window_sizes[i][0] * window_sizes[i][1]
+                          > 1. * window_sizes[i - 1][0]
+                              * window_sizes[i - 1][1],
+                        sizes_name,
+                        "the sizes must have increasing areas, but "
+                          + std::to_string(window_sizes[i][0]) + "x"
+                          + std::to_string(window_sizes[i][1]) + " follows "
+                          + std::to_string(window_sizes[i - 1][0]) + "x"
+                          + std::to_string(window_sizes[i - 1][1])
+                          + ". List them from the "
+                            "smallest to the largest.");
+      check_parameter(!windows_per_size.empty()
+                        && (windows_per_size.size() == 1
+                            || windows_per_size.size() == window_sizes.size()),
+                      "RVE study/Windows per size",
+                      "give one number for all sizes or one per size ("
+                        + std::to_string(window_sizes.size())
+                        + " sizes are given in '" + sizes_name + "').");
+      if (windows_per_size.size() == 1)
+        windows_per_size.assign(window_sizes.size(), windows_per_size[0]);
+      check_parameter_range(
+        "RVE study/Relative error", relative_error, 0, 1, true, true);
+      check_parameter(!realisations.empty(),
+                      "RVE study/Realisations",
+                      "give at least one number of realisations, e.g. '1'.");
+    }
+
+
+    void
+    RveStudy::declare_parameters(ParameterHandler &prm)
+    {
+      MorphologyParameters::declare_parameters(prm);
+      MaterialsParameters::declare_parameters(prm);
+      CellProblemParameters::declare_parameters(prm);
+      RveStudyParameters::declare_parameters(prm);
+    }
+
+
+    RveStudy::RveStudy(ParameterHandler &prm, const RunContext &context)
+        : context(context)
+    {
+      morphology_parameters.parse_parameters(prm);
+      materials.parse_parameters(prm);
+      cell_problem_parameters.parse_parameters(prm);
+      parameters.parse_parameters(prm);
+
+      const bool random    = random_generator(morphology_parameters);
+      const auto size_text = [](const std::array<unsigned int, 2> &s) {
+        return std::to_string(s[0]) + "x" + std::to_string(s[1]);
+      };
+      if (parameters.source == Source::realisations)
+        {
+          check_parameter(random,
+                          "RVE study/Source",
+                          "'realisations' runs the morphology generator at "
+                          "each window size with a new seed, which needs a "
+                          "random generator ('Morphology/Generator = random "
+                          "vertical'). For an image, a grid file or a "
+                          "laminate use 'Source = crops'.");
+          pixel_width
+            = morphology_parameters.width / morphology_parameters.n_pixels_x;
+          pixel_height
+            = morphology_parameters.height / morphology_parameters.n_pixels_y;
+        }
+      else
+        {
+          // The map the windows are cut from (for a random generator, the
+          // first of the per-window realisations: same size).
+          const Morphology map = Morphology::create(morphology_parameters);
+          pixel_width          = map.pixel_width();
+          pixel_height         = map.pixel_height();
+          for (const auto &s : parameters.window_sizes)
+            check_parameter(
+              s[0] <= map.n_pixels_x() && s[1] <= map.n_pixels_y(),
+              sizes_name,
+              "the window " + size_text(s)
+                + " is larger than the morphology it is cut from ("
+                + std::to_string(map.n_pixels_x()) + "x"
+                + std::to_string(map.n_pixels_y())
+                + " pixels). Use smaller windows, or a larger map "
+                  "('Morphology/Pixels in x', 'Pixels in y' with 'Width', "
+                  "'Height' in proportion, or a larger image).");
+          if (!random)
+            fixed_map = std::make_unique<Morphology>(map);
+        }
+
+      // Every phase of the maps has a name and constants.
+      const unsigned int n_named = materials.names().size();
+      if (fixed_map)
+        check_parameter(fixed_map->n_phases() <= n_named,
+                        "Materials/Phases/Names",
+                        "the morphology has material ids up to "
+                          + std::to_string(fixed_map->n_phases() - 1)
+                          + " but only " + std::to_string(n_named)
+                          + " phases are named. Name every phase in "
+                            "'Materials/Phases'.");
+
+      plan_windows();
+
+      // A generator that cannot fill a window is refused now, not after
+      // an hour of cell problems: build the first window of each size.
+      if (parameters.source == Source::realisations)
+        for (const RveWindow &w : windows)
+          if (w.index == 0)
+            try
+              {
+                make_window(w);
+              }
+            catch (const InputError &e)
+              {
+                throw InputError(
+                  "Parameter '" + sizes_name + "': the generator cannot make "
+                  + "a window of "
+                  + size_text(parameters.window_sizes[w.size_index])
+                  + " pixels ('Source = realisations'): " + e.what()
+                  + " Use larger windows, or 'Source = crops'.");
+              }
+    }
+
+
+    void
+    RveStudy::plan_windows()
+    {
+      // Positions drawn in window order from one generator: the same list
+      // on every rank and for any number of ranks.
+      std::mt19937       rng(parameters.random_seed);
+      const unsigned int map_nx = morphology_parameters.n_pixels_x,
+                         map_ny = morphology_parameters.n_pixels_y;
+      windows.clear();
+      for (unsigned int s = 0; s < parameters.window_sizes.size(); ++s)
+        for (unsigned int k = 0; k < parameters.windows_per_size[s]; ++k)
+          {
+            RveWindow w;
+            w.size_index   = s;
+            w.index        = k;
+            w.global_index = windows.size();
+            w.morphology_seed
+              = morphology_parameters.random_seed
+                + (random_generator(morphology_parameters) ? w.global_index
+                                                           : 0);
+            if (parameters.source == Source::crops)
+              {
+                const auto        &size = parameters.window_sizes[s];
+                const unsigned int nx
+                  = fixed_map ? fixed_map->n_pixels_x() : map_nx;
+                const unsigned int ny
+                  = fixed_map ? fixed_map->n_pixels_y() : map_ny;
+                w.i0 = uniform_up_to(rng, nx - size[0]);
+                w.j0 = uniform_up_to(rng, ny - size[1]);
+              }
+            windows.push_back(w);
+          }
+    }
+
+
+    Morphology
+    RveStudy::make_window(const RveWindow &w) const
+    {
+      const auto &size = parameters.window_sizes[w.size_index];
+      if (fixed_map)
+        return fixed_map->window(w.i0, w.j0, size[0], size[1]);
+      MorphologyParameters p = morphology_parameters;
+      p.random_seed          = w.morphology_seed;
+      if (parameters.source == Source::crops)
+        return Morphology::create(p).window(w.i0, w.j0, size[0], size[1]);
+      p.n_pixels_x = size[0];
+      p.n_pixels_y = size[1];
+      p.width      = size[0] * pixel_width;
+      p.height     = size[1] * pixel_height;
+      return Morphology::create(p);
+    }
+
+
+    const std::vector<BoundaryCondition> &
+    RveStudy::boundary_conditions() const
+    {
+      static const std::vector<BoundaryCondition> none;
+      return parameters.solve_cell_problems
+               ? cell_problem_parameters.boundary_conditions
+               : none;
+    }
+
+
+    std::vector<std::pair<std::string, std::string>>
+    RveStudy::value_names() const
+    {
+      std::vector<std::pair<std::string, std::string>> names;
+      for (const std::string &phase : materials.names())
+        names.emplace_back("fraction_" + phase, "none");
+      for (const BoundaryCondition bc : boundary_conditions())
+        for (const std::string &c : rve_constant_names())
+          names.emplace_back(c, to_string(bc));
+      return names;
+    }
+
+
+    std::vector<double>
+    RveStudy::point_variances(const std::vector<double> &fractions) const
+    {
+      const auto          phases = materials.phases();
+      std::vector<double> E, G, nu, v;
+      for (const auto &p : phases)
+        {
+          E.push_back(p.youngs_modulus);
+          G.push_back(p.youngs_modulus / (2 * (1 + p.poisson_ratio)));
+          nu.push_back(p.poisson_ratio);
+        }
+      for (unsigned int k = 0; k < fractions.size(); ++k)
+        v.push_back(fractions[k] * (1 - fractions[k]));
+      for (unsigned int b = 0; b < boundary_conditions().size(); ++b)
+        for (const auto *values : {&E, &E, &G, &nu, &nu})
+          v.push_back(rve::point_variance(fractions, *values));
+      return v;
+    }
+
+
+    std::vector<double>
+    RveStudy::measure(const RveWindow     &w,
+                      const MPI_Comm       group,
+                      dealii::TimerOutput &timer) const
+    {
+      const Morphology   window   = make_window(w);
+      const unsigned int n_phases = materials.names().size();
+      check_parameter(window.n_phases() <= n_phases,
+                      "Materials/Phases/Names",
+                      "a window holds material id "
+                        + std::to_string(window.n_phases() - 1) + " but only "
+                        + std::to_string(n_phases) + " phases are named.");
+      std::vector<double> values(n_phases, 0.);
+      const auto          f = window.phase_fractions();
+      for (unsigned int k = 0; k < f.size() && k < n_phases; ++k)
+        values[k] = f[k];
+
+      if (boundary_conditions().empty())
+        return values;
+      const auto  phases = materials.phases();
+      CellProblem cell(group, window, phases, cell_problem_parameters, timer);
+      for (const BoundaryCondition bc : boundary_conditions())
+        {
+          const EngineeringConstants c = cell.solve(bc).properties.constants;
+          for (const double v : {c.E_L, c.E_T, c.G_LT, c.nu_LT, c.nu_TT})
+            values.push_back(v);
+        }
+      return values;
+    }
+
+
+    void
+    RveStudy::run()
+    {
+      const auto         start = std::chrono::steady_clock::now();
+      const MPI_Comm     world = context.mpi_communicator;
+      const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(world);
+      const unsigned int n_ranks
+        = dealii::Utilities::MPI::n_mpi_processes(world);
+      dealii::ConditionalOStream pcout(std::cout, rank == 0);
+      const unsigned int         n_groups
+        = std::max(1u, n_ranks / parameters.ranks_per_window);
+      const unsigned int color
+        = std::min(rank / parameters.ranks_per_window, n_groups - 1);
+      MPI_Comm group;
+      MPI_Comm_split(world, color, rank, &group);
+      const bool group_root
+        = dealii::Utilities::MPI::this_mpi_process(group) == 0;
+
+      const auto         names    = value_names();
+      const unsigned int n_values = names.size();
+      pcout << "RVE study: " << windows.size() << " windows of "
+            << parameters.window_sizes.size() << " sizes ("
+            << (parameters.source == Source::crops ? "crops" : "realisations")
+            << "), " << boundary_conditions().size()
+            << " boundary condition(s), on " << n_groups << " group(s) of ranks"
+            << std::endl;
+      context.claim_output();
+
+      // Windows round-robin over the groups; rank 0 (root of group 0)
+      // reports its group's progress, with an ETA from the pixels done
+      // (the cost of a window grows with its pixels, slightly faster).
+      const auto pixels = [&](const RveWindow &w) {
+        const auto &s = parameters.window_sizes[w.size_index];
+        return 1. * s[0] * s[1];
+      };
+      unsigned int n_mine = 0, n_done = 0;
+      double       pixels_mine = 0, pixels_done = 0;
+      for (unsigned int i = 0; i < windows.size(); ++i)
+        if (i % n_groups == color)
+          {
+            ++n_mine;
+            pixels_mine += pixels(windows[i]);
+          }
+      // The cell problems' timings, summed over the windows of each group;
+      // rank 0 prints its group's at the end.
+      auto timer = std::make_unique<dealii::TimerOutput>(
+        group,
+        pcout,
+        dealii::TimerOutput::summary,
+        dealii::TimerOutput::wall_times);
+      std::vector<double> local(windows.size() * n_values, 0.);
+      const auto          t0          = std::chrono::steady_clock::now();
+      double              last_report = -1e300;
+      std::string         failure;
+      bool                input_error = false;
+      for (unsigned int i = 0; i < windows.size(); ++i)
+        {
+          if (i % n_groups != color || !failure.empty())
+            continue;
+          const RveWindow    &w = windows[i];
+          std::vector<double> values;
+          // A window that fails (CG without convergence, bad input) stops
+          // its group; the others finish their windows, then every rank
+          // throws together instead of waiting for the group forever.
+          try
+            {
+              values = measure(w, group, *timer);
+            }
+          catch (const InputError &e)
+            {
+              failure     = "Window " + std::to_string(i + 1) + ": " + e.what();
+              input_error = true;
+              continue;
+            }
+          catch (const std::exception &e)
+            {
+              failure = "Window " + std::to_string(i + 1) + ": " + e.what();
+              continue;
+            }
+          if (group_root)
+            std::copy(values.begin(), values.end(), &local[i * n_values]);
+          ++n_done;
+          pixels_done += pixels(w);
+          const double elapsed = std::chrono::duration<double>(
+                                   std::chrono::steady_clock::now() - t0)
+                                   .count();
+          if (rank == 0
+              && (elapsed - last_report >= context.progress_interval
+                  || n_done == n_mine || n_done == 1))
+            {
+              last_report          = elapsed;
+              const auto        &s = parameters.window_sizes[w.size_index];
+              std::ostringstream line;
+              line << "Window " << i + 1 << "/" << windows.size() << " ("
+                   << s[0] << "x" << s[1] << " px, map seed "
+                   << w.morphology_seed << ")";
+              const unsigned int n_phases = materials.names().size();
+              line << "  fraction_" << materials.names().back() << " = "
+                   << std::fixed << std::setprecision(4)
+                   << values[n_phases - 1];
+              for (unsigned int b = 0; b < boundary_conditions().size(); ++b)
+                line << "  " << names[n_phases + 5 * b].second
+                     << " E_L = " << std::fixed << std::setprecision(3)
+                     << values[n_phases + 5 * b] / 1e9 << " GPa";
+              if (n_done < n_mine)
+                line << "  ETA "
+                     << format_duration(elapsed * (pixels_mine - pixels_done)
+                                        / pixels_done);
+              line << "  elapsed " << format_duration(elapsed);
+              std::cout << line.str() << std::endl;
+            }
+        }
+      // Free the timer first when a window failed: its destructor talks
+      // to the group, which it must not do while an exception unwinds.
+      if (dealii::Utilities::MPI::max(failure.empty() ? 0u : 1u, world) > 0)
+        {
+          timer->disable_output();
+          timer.reset();
+        }
+      refuse_collectively(world, input_error, failure);
+      throw_collectively(world, !failure.empty(), failure);
+      std::vector<double> all(local.size());
+      MPI_Allreduce(
+        local.data(), all.data(), local.size(), MPI_DOUBLE, MPI_SUM, world);
+
+      // Samples per (size, value); mean fractions over all windows for the
+      // point variances.
+      const unsigned int  n_sizes  = parameters.window_sizes.size();
+      const unsigned int  n_phases = materials.names().size();
+      std::vector<double> mean_fractions(n_phases, 0.);
+      for (unsigned int i = 0; i < windows.size(); ++i)
+        for (unsigned int k = 0; k < n_phases; ++k)
+          mean_fractions[k] += all[i * n_values + k] / windows.size();
+      const std::vector<double> D2 = point_variances(mean_fractions);
+
+      std::vector<RveSample> samples;
+      std::vector<RveFit>    fits;
+      std::vector<double>    areas;
+      for (const auto &s : parameters.window_sizes)
+        areas.push_back(s[0] * pixel_width * s[1] * pixel_height);
+      for (unsigned int v = 0; v < n_values; ++v)
+        {
+          std::vector<rve::SampleStatistics> stats;
+          for (unsigned int s = 0; s < n_sizes; ++s)
+            {
+              std::vector<double> x;
+              for (unsigned int i = 0; i < windows.size(); ++i)
+                if (windows[i].size_index == s)
+                  x.push_back(all[i * n_values + v]);
+              stats.push_back(rve::sample_statistics(x));
+            }
+          const double largest = stats.back().mean;
+          for (unsigned int s = 0; s < n_sizes; ++s)
+            {
+              RveSample r;
+              r.size_index         = s;
+              r.property           = names[v].first;
+              r.boundary_condition = names[v].second;
+              r.statistics         = stats[s];
+              r.bias = largest != 0 ? stats[s].mean / largest - 1 : 0;
+              samples.push_back(r);
+            }
+          RveFit f;
+          f.property           = names[v].first;
+          f.boundary_condition = names[v].second;
+          f.fit                = rve::fit_variance(areas, stats, D2[v]);
+          f.mean               = largest;
+          for (const unsigned int n : parameters.realisations)
+            f.rve_area.push_back(
+              rve::rve_area(f.fit, largest, parameters.relative_error, n));
+          fits.push_back(f);
+        }
+
+      const double wall_time = std::chrono::duration<double>(
+                                 std::chrono::steady_clock::now() - start)
+                                 .count();
+      if (rank == 0)
+        write_results(samples, fits, n_groups, wall_time);
+      MPI_Barrier(world);
+      timer.reset(); // collective over the group: before freeing it
+      MPI_Comm_free(&group);
+    }
+
+
+    namespace
+    {
+      const bool registered = register_problem(
+        {"rve",
+         "RVE-size study (Kanit et al. 2003): apparent constants of windows "
+         "of growing size, their mean and variance per boundary condition, "
+         "the fitted integral range and the RVE size for a relative error",
+         &RveStudy::declare_parameters,
+         [](ParameterHandler &prm, const RunContext &context) {
+           return std::unique_ptr<Problem>(new RveStudy(prm, context));
+         }});
+    } // namespace
+  }   // namespace homogenization
+} // namespace tribodyn
