@@ -1,9 +1,11 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 #include <sys/stat.h>
 #include <tribodyn/core/checkpoint.h>
@@ -83,6 +85,49 @@ namespace tribodyn
       throw InputError("The output directory '" + directory
                        + "' is not writable. Set 'Output directory' to a "
                          "writable path.");
+  }
+
+
+  void
+  run_plot_script(const std::string &script_in,
+                  const std::string &default_script,
+                  const std::string &parameter,
+                  const std::string &directory)
+  {
+    std::string script = script_in;
+    if (script == "none")
+      return;
+    const std::string python
+      = file_exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+    if (script == "auto")
+      {
+        char          buffer[4096];
+        const ssize_t n
+          = readlink("/proc/self/exe", buffer, sizeof(buffer) - 1);
+        const std::string executable(buffer, n > 0 ? n : 0);
+        script = executable.substr(0, executable.find_last_of('/'))
+                 + "/../scripts/" + default_script;
+        if (!file_exists(script))
+          {
+            std::cout << "No plots: scripts/" << default_script
+                      << " not found next to the executable (set '" << parameter
+                      << "')." << std::endl;
+            return;
+          }
+        if (std::system(
+              (python + " -c 'import matplotlib' >/dev/null 2>&1").c_str())
+            != 0)
+          {
+            std::cout << "No plots: python3 with matplotlib is not "
+                         "available (Debian: python3-matplotlib)."
+                      << std::endl;
+            return;
+          }
+      }
+    const std::string command
+      = python + " '" + script + "' '" + directory + "'";
+    if (std::system(command.c_str()) != 0)
+      std::cout << "The plot script failed: " << command << std::endl;
   }
 
 

@@ -12,7 +12,6 @@
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/version.h>
 #include <tribodyn/homogenization/rve_study.h>
-#include <unistd.h>
 
 namespace tribodyn
 {
@@ -63,61 +62,6 @@ namespace tribodyn
       }
 
 
-      /// Directory of the running executable ("" if unknown).
-      std::string
-      executable_directory()
-      {
-        char          buffer[4096];
-        const ssize_t n
-          = readlink("/proc/self/exe", buffer, sizeof(buffer) - 1);
-        if (n <= 0)
-          return "";
-        std::string path(buffer, n);
-        return path.substr(0, path.find_last_of('/'));
-      }
-
-
-      bool
-      readable(const std::string &path)
-      {
-        return access(path.c_str(), R_OK) == 0;
-      }
-
-
-      /// Run the plot script @p script ("auto", "none" or a path) on @p dir.
-      void
-      draw_plots(std::string script, const std::string &dir)
-      {
-        if (script == "none")
-          return;
-        // Debian's python3-matplotlib belongs to /usr/bin/python3 (another
-        // python3 first in PATH may not have it).
-        const std::string python
-          = readable("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-        if (script == "auto")
-          {
-            script = executable_directory() + "/../scripts/plot_rve";
-            if (!readable(script))
-              {
-                std::cout << "No plot: scripts/plot_rve not found next to the "
-                             "executable (set 'RVE study/Plot script')."
-                          << std::endl;
-                return;
-              }
-            if (std::system(
-                  (python + " -c 'import matplotlib' >/dev/null 2>&1").c_str())
-                != 0)
-              {
-                std::cout << "No plot: python3 with matplotlib is not "
-                             "available (Debian: python3-matplotlib)."
-                          << std::endl;
-                return;
-              }
-          }
-        const std::string command = python + " '" + script + "' '" + dir + "'";
-        if (std::system(command.c_str()) != 0)
-          std::cout << "The plot script failed: " << command << std::endl;
-      }
     } // namespace
 
 
@@ -405,7 +349,10 @@ namespace tribodyn
                 << "/ (rve.csv, rve.md, rve.png, summary.json) in "
                 << std::fixed << std::setprecision(1) << wall_time << " s"
                 << std::endl;
-      draw_plots(parameters.plot_script, dir);
+      run_plot_script(parameters.plot_script,
+                      "plot_rve",
+                      "RVE study/Plot script",
+                      dir);
     }
   } // namespace homogenization
 } // namespace tribodyn

@@ -14,7 +14,6 @@
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/version.h>
 #include <tribodyn/study/study_problem.h>
-#include <unistd.h>
 
 namespace tribodyn
 {
@@ -53,25 +52,6 @@ namespace tribodyn
       }
 
 
-      /// Directory of the running executable ("" if unknown).
-      std::string
-      executable_directory()
-      {
-        char          buffer[4096];
-        const ssize_t n
-          = readlink("/proc/self/exe", buffer, sizeof(buffer) - 1);
-        if (n <= 0)
-          return "";
-        std::string path(buffer, n);
-        return path.substr(0, path.find_last_of('/'));
-      }
-
-
-      bool
-      file_exists(const std::string &path)
-      {
-        return access(path.c_str(), R_OK) == 0;
-      }
     } // namespace
 
 
@@ -223,36 +203,10 @@ namespace tribodyn
                 << std::endl;
 
       // Plots.
-      std::string script = parameters.plot_script;
-      if (script == "none")
-        return;
-      // Debian's python3-matplotlib belongs to /usr/bin/python3 (another
-      // python3 first in PATH may not have it).
-      const std::string python
-        = file_exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-      if (script == "auto")
-        {
-          script = executable_directory() + "/../scripts/plot_study";
-          if (!file_exists(script))
-            {
-              std::cout << "No plots: scripts/plot_study not found next to "
-                           "the executable (set 'Study/Plot script')."
-                        << std::endl;
-              return;
-            }
-          if (std::system(
-                (python + " -c 'import matplotlib' >/dev/null 2>&1").c_str())
-              != 0)
-            {
-              std::cout << "No plots: python3 with matplotlib is not "
-                           "available (Debian: python3-matplotlib)."
-                        << std::endl;
-              return;
-            }
-        }
-      const std::string command = python + " '" + script + "' '" + dir + "'";
-      if (std::system(command.c_str()) != 0)
-        std::cout << "The plot script failed: " << command << std::endl;
+      run_plot_script(parameters.plot_script,
+                      "plot_study",
+                      "Study/Plot script",
+                      dir);
     }
   } // namespace study
 } // namespace tribodyn

@@ -26,6 +26,21 @@ namespace tribodyn
   bool
   file_exists(const std::string &path);
 
+  /**
+   * Draw the figures of a run: run the matplotlib script @p script on
+   * @p directory with /usr/bin/python3 (Debian's python3-matplotlib belongs
+   * to it; another python3 first in PATH may lack it). @p script is "none"
+   * (nothing), a path, or "auto": scripts/@p default_script next to the
+   * executable's directory. A missing script or matplotlib, or a failing
+   * script, is said on the screen (naming @p parameter, the prm entry that
+   * sets the script) and does not stop the run: the tables are written.
+   */
+  void
+  run_plot_script(const std::string &script,
+                  const std::string &default_script,
+                  const std::string &parameter,
+                  const std::string &directory);
+
   /// Join a directory and a file name.
   std::string
   join_path(const std::string &directory, const std::string &file);
