@@ -352,14 +352,18 @@ namespace tribodyn
       switch (bc)
         {
           case BoundaryCondition::periodic:
-            // Periodic w is defined up to a translation: pin the vertex of
-            // the coarsest mesh nearest to the centre (a vertex on every
-            // level of the multigrid hierarchy).
-            return {{Point<2>((n_coarse_cells[0] / 2) * morphology.width()
-                                / n_coarse_cells[0],
-                              (n_coarse_cells[1] / 2) * morphology.height()
-                                / n_coarse_cells[1]),
-                     {0, 1}}};
+            {
+              // Periodic w is defined up to a translation: pin the interior
+              // vertex nearest to the centre. (Periodic problems are solved
+              // with AMG: the vertex need not exist on coarser levels.)
+              const auto         h = element_size();
+              const unsigned int refinements
+                = n_pixel_levels + parameters.global_refinements;
+              return {
+                {Point<2>(((n_coarse_cells[0] << refinements) / 2) * h[0],
+                          ((n_coarse_cells[1] << refinements) / 2) * h[1]),
+                 {0, 1}}};
+            }
           case BoundaryCondition::subc:
             // Pure traction problem: remove the rigid motions by fixing the
             // bottom-left corner and the vertical displacement of the

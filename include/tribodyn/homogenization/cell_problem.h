@@ -147,7 +147,9 @@ namespace tribodyn
       void
       setup_dofs();
       /// The pinned vertices of @p bc (rigid motions of SUBC, the
-      /// translation of periodic): vertices of the coarsest mesh.
+      /// translation of periodic): for SUBC vertices of the coarsest mesh
+      /// (present on every multigrid level), for periodic the interior
+      /// vertex nearest to the centre.
       std::vector<std::pair<dealii::Point<2>, std::vector<unsigned int>>>
       pinned_vertices(const BoundaryCondition bc) const;
       /// DoFs of the coarsest mesh.
