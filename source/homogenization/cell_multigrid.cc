@@ -516,8 +516,8 @@ namespace tribodyn
               fine_operator.tabulate_element_matrices(constraints);
             }
 
-            // The constraints on the levels: periodicity (if the
-            // triangulation has it), the boundary, the pinned vertices.
+            // The constraints on the levels: the boundary, the pinned
+            // vertices (the triangulation has no periodic faces here).
             const unsigned int n_levels
               = dof_handler.get_triangulation().n_global_levels();
             mg_constrained_dofs.initialize(dof_handler);
@@ -544,10 +544,6 @@ namespace tribodyn
                 level_constraints.reinit(relevant);
                 level_constraints.add_lines(
                   mg_constrained_dofs.get_boundary_indices(level));
-                if (description.periodic)
-                  level_constraints.merge(
-                    mg_constrained_dofs.get_level_constraints(level),
-                    AffineConstraints<double>::left_object_wins);
                 level_constraints.close();
 
                 data.mg_level = level;

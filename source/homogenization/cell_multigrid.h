@@ -23,12 +23,11 @@ namespace tribodyn
     namespace internal
     {
       /// The constraints of a boundary condition, on every level: zero
-      /// fluctuation on the whole boundary (KUBC), periodicity (taken from
-      /// the triangulation), and pinned components of single vertices.
+      /// fluctuation on the whole boundary (KUBC) and pinned components of
+      /// single vertices (SUBC). (Periodic problems are solved with AMG.)
       struct LevelConstraintDescription
       {
         bool zero_boundary = false;
-        bool periodic      = false;
         struct Pin
         {
           dealii::Point<2>          point;

@@ -459,7 +459,6 @@ namespace tribodyn
     {
       internal::LevelConstraintDescription levels;
       levels.zero_boundary = bc == BoundaryCondition::kubc;
-      levels.periodic      = bc == BoundaryCondition::periodic;
       for (const auto &[point, components] : pinned_vertices(bc))
         levels.pins.push_back({point, components});
       const auto h     = element_size();
