@@ -152,7 +152,6 @@ def large_micrograph(path, size=2000, seed=4):
     pores (radius 2-3 px) and matrix, grey levels 200 / 35 / 120 with noise
     (the example micrograph's recipe, placed on a grid of jittered sites so
     that it takes seconds for 4e6 pixels)."""
-    sys.path.insert(0, os.path.join(ROOT, "scripts"))
     import importlib.machinery
     import importlib.util
     import random

@@ -237,7 +237,9 @@ namespace tribodyn
     {
       TimerOutput::Scope scope(timer, "mesh and dofs");
       dof_handler.distribute_dofs(fe);
-      if (parameters.preconditioner == CellPreconditioner::multigrid)
+      // Level DoFs only where multigrid will run on this mesh (not for the
+      // periodic problem's mesh, nor when AMG takes over).
+      if (uses_multigrid() && !mesh_is_periodic)
         dof_handler.distribute_mg_dofs();
       locally_owned_dofs = dof_handler.locally_owned_dofs();
       DoFTools::extract_locally_relevant_dofs(dof_handler,

@@ -19,6 +19,28 @@ namespace tribodyn_test
             IsotropicElasticMaterial{80e9, 0.2, 1770.}};
   }
 
+  /// Solve the boundary condition @p bc (the only one of @p parameters) on
+  /// @p morphology, silently; @p levels (if given) gets the number of
+  /// multigrid levels of the cell problem.
+  inline CellProblemResult
+  solve_cell(const Morphology                            &morphology,
+             const std::vector<IsotropicElasticMaterial> &phases,
+             const BoundaryCondition                      bc,
+             CellProblemParameters                        parameters,
+             unsigned int                                *levels = nullptr,
+             const MPI_Comm                               comm = MPI_COMM_WORLD)
+  {
+    parameters.boundary_conditions = {bc};
+    dealii::TimerOutput timer(comm,
+                              std::cout,
+                              dealii::TimerOutput::never,
+                              dealii::TimerOutput::wall_times);
+    CellProblem         problem(comm, morphology, phases, parameters, timer);
+    if (levels)
+      *levels = problem.n_multigrid_levels();
+    return problem.solve(bc);
+  }
+
   /// Solve one boundary condition on @p morphology, silently.
   inline CellProblemResult
   solve_cell(const Morphology                            &morphology,
@@ -29,15 +51,9 @@ namespace tribodyn_test
              const MPI_Comm                               comm = MPI_COMM_WORLD)
   {
     CellProblemParameters parameters;
-    parameters.boundary_conditions    = {bc};
     parameters.subdivisions_per_pixel = subdivisions;
     parameters.solver_tolerance       = tolerance;
-    dealii::TimerOutput timer(comm,
-                              std::cout,
-                              dealii::TimerOutput::never,
-                              dealii::TimerOutput::wall_times);
-    CellProblem         problem(comm, morphology, phases, parameters, timer);
-    return problem.solve(bc);
+    return solve_cell(morphology, phases, bc, parameters, nullptr, comm);
   }
 
   /// Largest |A_ij - B_ij| relative to the largest |B_ij|.

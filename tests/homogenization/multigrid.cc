@@ -32,18 +32,11 @@ namespace
              const unsigned int                           degree = 1)
   {
     CellProblemParameters parameters;
-    parameters.boundary_conditions    = {bc};
     parameters.subdivisions_per_pixel = subdivisions;
     parameters.solver_tolerance       = 1e-12;
     parameters.preconditioner         = preconditioner;
     parameters.fe_degree              = degree;
-    dealii::TimerOutput timer(MPI_COMM_WORLD,
-                              std::cout,
-                              dealii::TimerOutput::never,
-                              dealii::TimerOutput::wall_times);
-    CellProblem problem(MPI_COMM_WORLD, morphology, phases, parameters, timer);
-    levels = problem.n_multigrid_levels();
-    return problem.solve(bc);
+    return solve_cell(morphology, phases, bc, parameters, &levels);
   }
 
   std::string
