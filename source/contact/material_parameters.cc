@@ -169,41 +169,6 @@ namespace tribodyn
 
 
     VoigtStiffness
-    transversely_isotropic_plane_strain(const double          E_L,
-                                        const double          E_T,
-                                        const double          nu_LT,
-                                        const double          nu_TT,
-                                        const double          G_LT,
-                                        dealii::Tensor<1, 3> &c_z)
-    {
-      // Normal part of the 3D compliance, axes (x = L, y = T, z = T').
-      double S[3][3] = {{1. / E_L, -nu_LT / E_L, -nu_LT / E_L},
-                        {-nu_LT / E_L, 1. / E_T, -nu_TT / E_T},
-                        {-nu_LT / E_L, -nu_TT / E_T, 1. / E_T}};
-      // Plane strain: eps_zz = 0 gives sigma_zz = -(S31 s_xx + S32 s_yy)/S33,
-      // so the in-plane compliance is S_ij - S_i3 S_3j / S33.
-      const double a   = S[0][0] - S[0][2] * S[2][0] / S[2][2];
-      const double b   = S[0][1] - S[0][2] * S[2][1] / S[2][2];
-      const double d   = S[1][1] - S[1][2] * S[2][1] / S[2][2];
-      const double det = a * d - b * b;
-      if (!(det > 0) || !(a > 0))
-        throw InputError("The engineering constants (E_L, E_T, nu_LT, nu_TT, "
-                         "G_LT) do not give a positive definite plane-strain "
-                         "stiffness; check 'Material/Engineering "
-                         "constants'.");
-      VoigtStiffness C;
-      C[0][0] = d / det;
-      C[0][1] = C[1][0] = -b / det;
-      C[1][1]           = a / det;
-      C[2][2]           = G_LT;
-      for (unsigned int j = 0; j < 2; ++j)
-        c_z[j] = -(S[2][0] * C[0][j] + S[2][1] * C[1][j]) / S[2][2];
-      c_z[2] = 0;
-      return C;
-    }
-
-
-    VoigtStiffness
     read_homogenization_stiffness(const std::string    &file,
                                   const std::string    &key,
                                   dealii::Tensor<1, 3> &c_z)

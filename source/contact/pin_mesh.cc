@@ -21,6 +21,7 @@
 #include <sstream>
 #include <tribodyn/contact/contact_solver.h>
 #include <tribodyn/contact/spectrum.h>
+#include <tribodyn/core/elastic_phase.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/progress.h>
@@ -159,19 +160,17 @@ namespace tribodyn
       stiffness.clear();
       stiffness_z.clear();
       density.clear();
-      auto add_isotropic = [&](const IsotropicElasticMaterial &iso) {
-        stiffness.push_back(iso.plane_strain_voigt_stiffness());
-        Tensor<1, 3> cz;
-        cz[0] = cz[1] = iso.lambda();
-        stiffness_z.push_back(cz);
-        density.push_back(iso.density);
+      auto add_phase = [&](const ElasticPhase &phase) {
+        stiffness.push_back(phase.C);
+        stiffness_z.push_back(phase.c_z);
+        density.push_back(phase.density);
       };
       std::ostringstream text;
       text << std::setprecision(4);
       switch (m.type)
         {
           case Type::isotropic:
-            add_isotropic(m.isotropic);
+            add_phase(m.isotropic);
             text << "isotropic (E = " << m.isotropic.youngs_modulus / 1e9
                  << " GPa, nu = " << m.isotropic.poisson_ratio
                  << ", rho = " << m.isotropic.density << ")";
@@ -186,13 +185,13 @@ namespace tribodyn
             break;
           case Type::engineering_constants:
             {
-              Tensor<1, 3> cz;
-              stiffness.push_back(transversely_isotropic_plane_strain(
-                m.E_L, m.E_T, m.nu_LT, m.nu_TT, m.G_LT, cz));
+              add_phase(ElasticPhase(
+                TransverselyIsotropicConstants{
+                  m.E_L, m.E_T, m.nu_LT, m.nu_TT, m.G_LT, 0},
+                m.density,
+                "Material/Engineering constants"));
               check_stiffness(stiffness.back(),
                               "'Material/Engineering constants'");
-              stiffness_z.push_back(cz);
-              density.push_back(m.density);
               text << "transversely isotropic (E_L = " << m.E_L / 1e9
                    << " GPa, E_T = " << m.E_T / 1e9
                    << " GPa, G_LT = " << m.G_LT / 1e9 << " GPa)";
@@ -216,7 +215,7 @@ namespace tribodyn
           case Type::morphology:
             // in material-id order (matrix, heterogeneity)
             for (const IsotropicElasticMaterial &phase : m.composite.phases())
-              add_isotropic(phase);
+              add_phase(phase);
             text << "meso";
             break;
         }

@@ -1,4 +1,5 @@
-// Any number of named isotropic phases, pores included (issue #19 item 2).
+// Any number of named phases, isotropic or transversely isotropic, pores
+// included (issue #19 item 2).
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/utilities.h>
@@ -9,6 +10,12 @@
 
 namespace tribodyn
 {
+  namespace
+  {
+    const std::string axis_names[3] = {"x", "y", "z"};
+  }
+
+
   void
   PhaseMaterials::declare_parameters(dealii::ParameterHandler &prm)
   {
@@ -49,8 +56,137 @@ namespace tribodyn
                         "phases, nu = 0. In (0, 1e-2]; the apparent moduli "
                         "change by about this ratio (relative) when no pore "
                         "touches a boundary loaded by SUBC.");
+      prm.enter_subsection("Transversely isotropic");
+      {
+        prm.declare_entry(
+          "Phases",
+          "",
+          Anything(),
+          "Names (from 'Names') of the phases that are transversely "
+          "isotropic, comma-separated; empty: every phase is isotropic. For "
+          "these phases the entries of 'Young moduli' and 'Poisson ratios' "
+          "are E_T and nu_TT of their plane of isotropy, and the lists below "
+          "give, in the order of this list, the axis and the axial "
+          "constants.");
+        prm.declare_entry("Axes",
+                          "",
+                          Anything(),
+                          "Direction of the axis L of each phase of "
+                          "'Phases': x or y (in the plane of the problem) or "
+                          "z (normal to it: the fibres of a cross-section).");
+        prm.declare_entry("Axial Young moduli",
+                          "",
+                          Anything(),
+                          "E_L of each phase of 'Phases' (Pa).");
+        prm.declare_entry("Axial Poisson ratios",
+                          "",
+                          Anything(),
+                          "nu_LT of each phase of 'Phases': -eps_T / eps_L "
+                          "under a uniaxial stress along L.");
+        prm.declare_entry("Axial shear moduli",
+                          "",
+                          Anything(),
+                          "G_LT of each phase of 'Phases' (Pa): the shear "
+                          "modulus of planes that contain L.");
+      }
+      prm.leave_subsection();
     }
     prm.leave_subsection();
+  }
+
+
+  PhaseMaterials::TransverseLists
+  PhaseMaterials::read_transverse_lists(dealii::ParameterHandler &prm,
+                                        const std::string        &section)
+  {
+    const std::string s = section + "Transversely isotropic/";
+    prm.enter_subsection("Transversely isotropic");
+    TransverseLists l;
+    l.which = dealii::Utilities::split_string_list(prm.get("Phases"));
+    l.axes  = dealii::Utilities::split_string_list(prm.get("Axes"));
+    l.E_L   = parse_number_list(prm.get("Axial Young moduli"),
+                              s + "Axial Young moduli");
+    l.nu_LT = parse_number_list(prm.get("Axial Poisson ratios"),
+                                s + "Axial Poisson ratios");
+    l.G_LT  = parse_number_list(prm.get("Axial shear moduli"),
+                               s + "Axial shear moduli");
+    prm.leave_subsection();
+    return l;
+  }
+
+
+  void
+  PhaseMaterials::set_transversely_isotropic(const TransverseLists &l,
+                                             const std::string     &section)
+  {
+    const std::string s     = section + "Transversely isotropic/";
+    const auto       &which = l.which, &axes = l.axes;
+    const auto       &E_L = l.E_L, &nu_LT = l.nu_LT, &G_LT = l.G_LT;
+    axial.assign(names.size(), std::nullopt);
+    const auto check_size = [&](const std::size_t n, const std::string &name) {
+      check_parameter(n == which.size(),
+                      s + name,
+                      "give one entry per phase of '" + s
+                        + "Phases': " + std::to_string(n) + " for "
+                        + std::to_string(which.size()) + " phases.");
+    };
+    check_size(axes.size(), "Axes");
+    check_size(E_L.size(), "Axial Young moduli");
+    check_size(nu_LT.size(), "Axial Poisson ratios");
+    check_size(G_LT.size(), "Axial shear moduli");
+    for (unsigned int t = 0; t < which.size(); ++t)
+      {
+        const auto k = static_cast<unsigned int>(
+          std::find(names.begin(), names.end(), which[t]) - names.begin());
+        std::string known;
+        for (const auto &n : names)
+          known += (known.empty() ? "" : ", ") + n;
+        check_parameter(k < names.size(),
+                        s + "Phases",
+                        "'" + which[t] + "' is not a phase of '" + section
+                          + "Names' (" + known + ").");
+        check_parameter(!axial[k],
+                        s + "Phases",
+                        "'" + which[t] + "' is given twice.");
+        check_parameter(!pore[k],
+                        s + "Phases",
+                        "'" + which[t]
+                          + "' is a pore (Young modulus 0): a pore has no "
+                            "elastic constants.");
+        const auto axis
+          = std::find(std::begin(axis_names), std::end(axis_names), axes[t])
+            - std::begin(axis_names);
+        check_parameter(axis < 3,
+                        s + "Axes",
+                        "'" + axes[t] + "' (phase '" + which[t]
+                          + "') is not an axis: give x, y or z.");
+        TransverselyIsotropicConstants c;
+        c.E_L   = E_L[t];
+        c.E_T   = materials[k].youngs_modulus;
+        c.nu_LT = nu_LT[t];
+        c.nu_TT = materials[k].poisson_ratio;
+        c.G_LT  = G_LT[t];
+        c.axis  = static_cast<unsigned int>(axis);
+        check_parameter_range(s + "Axial Young moduli (" + which[t] + ")",
+                              c.E_L,
+                              0,
+                              max_youngs_modulus,
+                              true,
+                              false);
+        check_parameter_range(s + "Axial shear moduli (" + which[t] + ")",
+                              c.G_LT,
+                              0,
+                              max_youngs_modulus,
+                              true,
+                              false);
+        // the positive definiteness of the stiffness
+        ElasticPhase(c,
+                     materials[k].density,
+                     section + "Transversely isotropic (phase '" + which[t]
+                       + "', with its entries of '" + section
+                       + "Young moduli' and '" + section + "Poisson ratios')");
+        axial[k] = c;
+      }
   }
 
 
@@ -67,12 +203,19 @@ namespace tribodyn
       = parse_number_list(prm.get("Poisson ratios"), s + "Poisson ratios");
     const std::vector<double> rho
       = parse_number_list(prm.get("Densities"), s + "Densities");
-    pore_stiffness_ratio = prm.get_double("Pore stiffness ratio");
+    pore_stiffness_ratio             = prm.get_double("Pore stiffness ratio");
+    const TransverseLists transverse = read_transverse_lists(prm, s);
     prm.leave_subsection();
     materials.clear();
     pore.clear();
+    axial.clear();
     if (names.empty())
       {
+        check_parameter(transverse.which.empty(),
+                        s + "Transversely isotropic/Phases",
+                        "transversely isotropic phases need named phases: "
+                        "give '"
+                          + s + "Names' and their constants.");
         check_parameter(E.empty() && nu.empty() && rho.empty(),
                         s + "Names",
                         "the properties of phases are given but not their "
@@ -121,6 +264,19 @@ namespace tribodyn
                                 max_density,
                                 false,
                                 false);
+        else if (std::find(transverse.which.begin(),
+                           transverse.which.end(),
+                           names[k])
+                 != transverse.which.end())
+          {
+            // E_T and nu_TT: nu_TT may exceed 0.5 (the positive
+            // definiteness of the whole stiffness is checked below)
+            const std::string t = s + names[k] + ": ";
+            check_parameter_range(
+              t + "Young moduli", E[k], 0, max_youngs_modulus, true, false);
+            check_parameter_range(
+              t + "Densities", rho[k], 0, max_density, true, false);
+          }
         else
           check_isotropic_elastic_constants(s + names[k]
                                               + ": Young moduli, "
@@ -131,6 +287,7 @@ namespace tribodyn
         materials.push_back(m);
         pore.push_back(is_pore);
       }
+    set_transversely_isotropic(transverse, s);
     check_parameter(std::count(pore.begin(), pore.end(), false) >= 1,
                     s + "Young moduli",
                     "every phase is a pore (Young modulus 0): at least one "
@@ -152,20 +309,32 @@ namespace tribodyn
   }
 
 
-  std::vector<IsotropicElasticMaterial>
+  std::vector<ElasticPhase>
   PhaseMaterials::phases() const
   {
+    // (axial may be empty: every phase isotropic)
+    const auto transverse = [&](const unsigned int k) {
+      return k < axial.size() ? axial[k] : std::nullopt;
+    };
     double smallest = std::numeric_limits<double>::max();
     for (unsigned int k = 0; k < materials.size(); ++k)
       if (!pore[k])
-        smallest = std::min(smallest, materials[k].youngs_modulus);
-    std::vector<IsotropicElasticMaterial> p = materials;
-    for (unsigned int k = 0; k < p.size(); ++k)
+        smallest = std::min({smallest,
+                             materials[k].youngs_modulus,
+                             transverse(k) ? transverse(k)->E_L : smallest});
+    std::vector<ElasticPhase> p;
+    for (unsigned int k = 0; k < materials.size(); ++k)
       if (pore[k])
         {
-          p[k].youngs_modulus = pore_stiffness_ratio * smallest;
-          p[k].poisson_ratio  = 0;
+          IsotropicElasticMaterial ersatz = materials[k];
+          ersatz.youngs_modulus           = pore_stiffness_ratio * smallest;
+          ersatz.poisson_ratio            = 0;
+          p.emplace_back(ersatz);
         }
+      else if (transverse(k))
+        p.emplace_back(*transverse(k), materials[k].density, names[k]);
+      else
+        p.emplace_back(materials[k]);
     return p;
   }
 } // namespace tribodyn

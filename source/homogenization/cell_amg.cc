@@ -86,8 +86,7 @@ namespace tribodyn
             cell_matrix = 0;
             for (auto &r : cell_rhs)
               r = 0;
-            const VoigtMatrix C
-              = phases[cell->material_id()].plane_strain_voigt_stiffness();
+            const VoigtMatrix C = phases[cell->material_id()].C;
             // Load per unit macroscopic strain (C E) or stress (Sigma).
             std::array<VoigtVector, 3> load;
             for (unsigned int k = 0; k < 3; ++k)

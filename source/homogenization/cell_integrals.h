@@ -62,20 +62,20 @@ namespace tribodyn
 
 
       /// Integrate eps = E + eps(solution) (E = 0 for SUBC), sigma = C eps
-      /// and sigma_zz = lambda (eps_xx + eps_yy) over the cell @p fe_values
+      /// and sigma_zz = c_z . eps over the cell @p fe_values
       /// was reinitialized on. @p strains is scratch space.
       inline CellIntegrals
       integrate_cell(const FEValues<2>                   &fe_values,
                      const TrilinosWrappers::MPI::Vector &solution,
                      const VoigtVector                   &macro_strain,
-                     const IsotropicElasticMaterial      &phase,
+                     const ElasticPhase                  &phase,
                      std::vector<SymmetricTensor<2, 2>>  &strains)
       {
         const FEValuesExtractors::Vector displacement(0);
         fe_values[displacement].get_function_symmetric_gradients(solution,
                                                                  strains);
-        const VoigtMatrix C = phase.plane_strain_voigt_stiffness();
-        CellIntegrals     integrals;
+        const VoigtMatrix &C = phase.C;
+        CellIntegrals      integrals;
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
             const VoigtVector eps
@@ -85,7 +85,7 @@ namespace tribodyn
             const double JxW = fe_values.JxW(q);
             integrals.strain += eps * JxW;
             integrals.stress += (C * eps) * JxW;
-            integrals.stress_zz += phase.lambda() * (eps[0] + eps[1]) * JxW;
+            integrals.stress_zz += (phase.c_z * eps) * JxW;
             integrals.measure += JxW;
           }
         return integrals;
@@ -98,13 +98,13 @@ namespace tribodyn
       template <typename F>
       void
       for_each_owned_cell_integral(
-        const dealii::DoFHandler<2>                 &dof_handler,
-        const dealii::FiniteElement<2>              &fe,
-        const unsigned int                           degree,
-        const std::vector<IsotropicElasticMaterial> &phases,
-        const TrilinosWrappers::MPI::Vector         &solution,
-        const VoigtVector                           &macro_strain,
-        const F                                     &f)
+        const dealii::DoFHandler<2>         &dof_handler,
+        const dealii::FiniteElement<2>      &fe,
+        const unsigned int                   degree,
+        const std::vector<ElasticPhase>     &phases,
+        const TrilinosWrappers::MPI::Vector &solution,
+        const VoigtVector                   &macro_strain,
+        const F                             &f)
       {
         const dealii::QGauss<2> quadrature(degree + 1);
         FEValues<2>             fe_values(

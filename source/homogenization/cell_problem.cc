@@ -141,12 +141,11 @@ namespace tribodyn
     }
 
 
-    CellProblem::CellProblem(
-      const MPI_Comm                               comm,
-      const Morphology                            &morphology,
-      const std::vector<IsotropicElasticMaterial> &phases,
-      const CellProblemParameters                 &parameters,
-      TimerOutput                                 &timer)
+    CellProblem::CellProblem(const MPI_Comm                   comm,
+                             const Morphology                &morphology,
+                             const std::vector<ElasticPhase> &phases,
+                             const CellProblemParameters     &parameters,
+                             TimerOutput                     &timer)
         : mpi_communicator(comm)
         , morphology(morphology)
         , phases(phases)
@@ -470,7 +469,7 @@ namespace tribodyn
       // stiffness of the elements (each in one pixel) it covers.
       std::vector<VoigtMatrix> stiffness_of_phase;
       for (const auto &phase : phases)
-        stiffness_of_phase.push_back(phase.plane_strain_voigt_stiffness());
+        stiffness_of_phase.push_back(phase.C);
       const auto stiffness = [&](const Point<2> &lower, const Point<2> &upper) {
         const int   i0 = static_cast<int>(std::lround(lower[0] / h[0]));
         const int   i1 = static_cast<int>(std::lround(upper[0] / h[0]));

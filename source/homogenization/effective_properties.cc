@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <deal.II/base/symmetric_tensor.h>
 #include <limits>
 #include <stdexcept>
@@ -9,9 +10,6 @@ namespace tribodyn
   {
     namespace
     {
-      /// (1, 1, 0): picks eps_xx + eps_yy from a Voigt strain.
-      const VoigtVector trace_row({1., 1., 0.});
-
       /// The (n, n) block A and the (n, t) column b of a Voigt stiffness,
       /// for the index sets n = (n0, n1) and t.
       std::pair<dealii::Tensor<2, 2>, dealii::Tensor<1, 2>>
@@ -58,45 +56,40 @@ namespace tribodyn
 
 
     ApparentProperties
-    voigt_estimate(const std::vector<IsotropicElasticMaterial> &phases,
-                   const std::vector<double>                   &fractions)
+    voigt_estimate(const std::vector<ElasticPhase> &phases,
+                   const std::vector<double>       &fractions)
     {
       VoigtMatrix C;
       VoigtVector c_z;
       for (unsigned int k = 0; k < phases.size(); ++k)
         {
-          C += fractions[k] * phases[k].plane_strain_voigt_stiffness();
-          c_z += fractions[k] * phases[k].lambda() * trace_row;
+          C += fractions[k] * phases[k].C;
+          c_z += fractions[k] * phases[k].c_z;
         }
       return properties_from_stiffness(C, c_z);
     }
 
 
     ApparentProperties
-    reuss_estimate(const std::vector<IsotropicElasticMaterial> &phases,
-                   const std::vector<double>                   &fractions)
+    reuss_estimate(const std::vector<ElasticPhase> &phases,
+                   const std::vector<double>       &fractions)
     {
       VoigtMatrix S;
       for (unsigned int k = 0; k < phases.size(); ++k)
-        S += fractions[k]
-             * dealii::invert(phases[k].plane_strain_voigt_stiffness());
+        S += fractions[k] * dealii::invert(phases[k].C);
       const VoigtMatrix C = dealii::invert(S);
-      // Uniform stress sigma = C <eps>; sigma_zz^k = lambda_k tr(S_k sigma).
+      // Uniform stress sigma = C <eps>; sigma_zz^k = c_z^k . (S_k sigma).
       VoigtVector c_z;
       for (unsigned int k = 0; k < phases.size(); ++k)
-        {
-          const VoigtMatrix S_k
-            = dealii::invert(phases[k].plane_strain_voigt_stiffness());
-          c_z += fractions[k] * phases[k].lambda() * (trace_row * S_k * C);
-        }
+        c_z += fractions[k] * (phases[k].c_z * dealii::invert(phases[k].C) * C);
       return properties_from_stiffness(C, c_z);
     }
 
 
     ApparentProperties
-    laminate_exact(const std::vector<IsotropicElasticMaterial> &phases,
-                   const std::vector<double>                   &fractions,
-                   const unsigned int                           normal)
+    laminate_exact(const std::vector<ElasticPhase> &phases,
+                   const std::vector<double>       &fractions,
+                   const unsigned int               normal)
     {
       if (normal > 1)
         throw std::logic_error("laminate_exact: normal must be 0 or 1");
@@ -118,8 +111,7 @@ namespace tribodyn
           dealii::Tensor<1, 2> mean_A_inverse_b;
           for (unsigned int k = 0; k < phases.size(); ++k)
             {
-              const auto [A, b] = split_blocks(
-                phases[k].plane_strain_voigt_stiffness(), n0, n1, t);
+              const auto [A, b] = split_blocks(phases[k].C, n0, n1, t);
               const dealii::Tensor<2, 2> A_inverse = dealii::invert(A);
               mean_A_inverse += fractions[k] * A_inverse;
               mean_A_inverse_b += fractions[k] * (A_inverse * b);
@@ -132,7 +124,7 @@ namespace tribodyn
 
           for (unsigned int k = 0; k < phases.size(); ++k)
             {
-              const VoigtMatrix Ck = phases[k].plane_strain_voigt_stiffness();
+              const VoigtMatrix Ck = phases[k].C;
               const auto [A, b]    = split_blocks(Ck, n0, n1, t);
               const dealii::Tensor<1, 2> eps_n
                 = dealii::invert(A) * (traction - b * mean_strain[t]);
@@ -143,7 +135,7 @@ namespace tribodyn
               const VoigtVector sigma_k = Ck * eps_k;
               for (unsigned int i = 0; i < 3; ++i)
                 C_eff[i][j] += fractions[k] * sigma_k[i];
-              c_z[j] += fractions[k] * phases[k].lambda() * (trace_row * eps_k);
+              c_z[j] += fractions[k] * (phases[k].c_z * eps_k);
             }
         }
       return properties_from_stiffness(C_eff, c_z);
@@ -178,10 +170,22 @@ namespace tribodyn
     }
 
 
-    PlaneModuliBounds
-    hashin_shtrikman_bounds(const std::vector<IsotropicElasticMaterial> &phases,
-                            const std::vector<double> &fractions)
+    bool
+    all_isotropic(const std::vector<ElasticPhase> &phases)
     {
+      return std::all_of(phases.begin(),
+                         phases.end(),
+                         [](const ElasticPhase &p) { return !!p.isotropic; });
+    }
+
+
+    PlaneModuliBounds
+    hashin_shtrikman_bounds(const std::vector<ElasticPhase> &phases,
+                            const std::vector<double>       &fractions)
+    {
+      if (!all_isotropic(phases))
+        throw std::logic_error("hashin_shtrikman_bounds: a phase is not "
+                               "isotropic");
       // The comparison material of each bound: the stiffest (upper) or the
       // softest (lower) kappa and mu of the phases, taken separately.
       PlaneModuli largest{0, 0};
@@ -189,7 +193,7 @@ namespace tribodyn
                            std::numeric_limits<double>::max()};
       for (const auto &phase : phases)
         {
-          const PlaneModuli m = plane_moduli(phase);
+          const PlaneModuli m = plane_moduli(*phase.isotropic);
           largest.kappa       = std::max(largest.kappa, m.kappa);
           largest.mu          = std::max(largest.mu, m.mu);
           smallest.kappa      = std::min(smallest.kappa, m.kappa);
@@ -201,7 +205,7 @@ namespace tribodyn
         double sum_kappa = 0, sum_mu = 0;
         for (unsigned int k = 0; k < phases.size(); ++k)
           {
-            const PlaneModuli m = plane_moduli(phases[k]);
+            const PlaneModuli m = plane_moduli(*phases[k].isotropic);
             sum_kappa += fractions[k] / (m.kappa + reference.mu);
             sum_mu += fractions[k] / (m.mu + z);
           }

@@ -37,10 +37,13 @@ namespace tribodyn
     }
 
 
-    std::vector<IsotropicElasticMaterial>
+    std::vector<ElasticPhase>
     MaterialsParameters::phases() const
     {
-      return named.given() ? named.phases() : TwoPhaseMaterials::phases();
+      if (named.given())
+        return named.phases();
+      const auto two = TwoPhaseMaterials::phases();
+      return {two.begin(), two.end()};
     }
 
 
@@ -228,20 +231,34 @@ namespace tribodyn
     {
       const auto names = materials.names();
       const auto pores = materials.pores();
-      const auto given = materials.named.given() ? materials.named.materials
-                                                 : materials.phases();
+      const auto given = materials.named.given()
+                           ? materials.named.materials
+                           : materials.TwoPhaseMaterials::phases();
       const auto used  = materials.phases();
       JsonValue  list  = JsonValue::array();
       for (unsigned int k = 0; k < names.size(); ++k)
         {
-          JsonValue p                     = JsonValue::object();
-          p["name"]                       = names[k];
-          p["material_id"]                = k;
-          p["young_modulus"]              = given[k].youngs_modulus;
-          p["poisson_ratio"]              = given[k].poisson_ratio;
-          p["density"]                    = given[k].density;
-          p["pore"]                       = static_cast<bool>(pores[k]);
-          p["cell_problem_young_modulus"] = used[k].youngs_modulus;
+          JsonValue p        = JsonValue::object();
+          p["name"]          = names[k];
+          p["material_id"]   = k;
+          p["young_modulus"] = given[k].youngs_modulus;
+          p["poisson_ratio"] = given[k].poisson_ratio;
+          p["density"]       = given[k].density;
+          p["pore"]          = static_cast<bool>(pores[k]);
+          if (used[k].isotropic)
+            p["cell_problem_young_modulus"] = used[k].isotropic->youngs_modulus;
+          if (const auto &ti = used[k].transversely_isotropic)
+            {
+              // young_modulus and poisson_ratio above are E_T and nu_TT
+              JsonValue t                 = JsonValue::object();
+              t["axis"]                   = std::string(1, "xyz"[ti->axis]);
+              t["E_L"]                    = ti->E_L;
+              t["E_T"]                    = ti->E_T;
+              t["nu_LT"]                  = ti->nu_LT;
+              t["nu_TT"]                  = ti->nu_TT;
+              t["G_LT"]                   = ti->G_LT;
+              p["transversely_isotropic"] = t;
+            }
           p["fraction"] = k < fractions.size() ? fractions[k] : 0.;
           list.push_back(p);
         }
@@ -251,28 +268,40 @@ namespace tribodyn
 
     void
     HomogenizationProblem::report_isotropic_moduli(
-      const std::vector<CellProblemResult>        &results,
-      const std::vector<IsotropicElasticMaterial> &phases,
-      const std::vector<double>                   &fractions,
-      JsonValue                                   &summary,
-      std::ostream                                &table) const
+      const std::vector<CellProblemResult> &results,
+      const std::vector<ElasticPhase>      &phases,
+      const std::vector<double>            &fractions,
+      JsonValue                            &summary,
+      std::ostream                         &table) const
     {
-      const PlaneModuliBounds hs = hashin_shtrikman_bounds(phases, fractions);
-      const PlaneModuli       voigt
+      // The Hashin-Shtrikman bounds need isotropic phases; with a
+      // transversely isotropic one they are not computed (null in
+      // summary.json).
+      const bool              isotropic = all_isotropic(phases);
+      const PlaneModuliBounds hs
+        = isotropic ? hashin_shtrikman_bounds(phases, fractions)
+                    : PlaneModuliBounds{};
+      const PlaneModuli voigt
         = isotropic_projection(voigt_estimate(phases, fractions).C);
       const PlaneModuli reuss
         = isotropic_projection(reuss_estimate(phases, fractions).C);
-      JsonValue j                           = JsonValue::object();
-      j["kappa_lower"]                      = hs.lower.kappa;
-      j["kappa_upper"]                      = hs.upper.kappa;
-      j["mu_lower"]                         = hs.lower.mu;
-      j["mu_upper"]                         = hs.upper.mu;
+      JsonValue j; // null
+      if (isotropic)
+        {
+          j                = JsonValue::object();
+          j["kappa_lower"] = hs.lower.kappa;
+          j["kappa_upper"] = hs.upper.kappa;
+          j["mu_lower"]    = hs.lower.mu;
+          j["mu_upper"]    = hs.upper.mu;
+        }
       summary["bounds"]["hashin_shtrikman"] = j;
 
       table << "\nIn-plane isotropic moduli (GPa): 2D bulk kappa = (C11 + C22 "
                "+ 2 C12)/4, shear mu = ((C11 + C22 - 2 C12)/4 + C66)/2;\n"
-               "Hashin-Shtrikman bounds apply to an in-plane isotropic "
-               "microstructure (see anisotropy):\n"
+            << (isotropic ? "Hashin-Shtrikman bounds apply to an in-plane "
+                            "isotropic microstructure (see anisotropy):\n"
+                          : "no Hashin-Shtrikman bounds: a phase is "
+                            "transversely isotropic.\n")
             << std::left << std::setw(10) << "estimate" << std::right
             << std::setw(10) << "kappa" << std::setw(10) << "mu"
             << std::setw(12) << "anisotropy"
@@ -296,8 +325,11 @@ namespace tribodyn
           entry["mu"]         = m.mu;
           entry["anisotropy"] = a;
         }
-      row("HS upper", hs.upper, -1);
-      row("HS lower", hs.lower, -1);
+      if (isotropic)
+        {
+          row("HS upper", hs.upper, -1);
+          row("HS lower", hs.lower, -1);
+        }
       row("Voigt", voigt, -1);
       row("Reuss", reuss, -1);
     }
@@ -317,7 +349,7 @@ namespace tribodyn
 
       const Morphology morphology = Morphology::create(morphology_parameters);
       pcout << "Morphology: " << morphology.description() << std::endl;
-      const std::vector<IsotropicElasticMaterial> phases = materials.phases();
+      const std::vector<ElasticPhase> phases = materials.phases();
       check_phases(morphology);
 
       CellProblem cell_problem(

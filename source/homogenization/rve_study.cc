@@ -422,19 +422,25 @@ namespace tribodyn
     std::vector<double>
     RveStudy::point_variances(const std::vector<double> &fractions) const
     {
-      const auto          phases = materials.phases();
-      std::vector<double> E, G, nu, v;
-      for (const auto &p : phases)
+      // each constant of each phase, as the cell problems' constants are
+      // read (E_L, E_T, G_LT, nu_LT, nu_TT: E, E, G, nu, nu when isotropic)
+      std::array<std::vector<double>, 5> constant;
+      for (const auto &p : materials.phases())
         {
-          E.push_back(p.youngs_modulus);
-          G.push_back(p.youngs_modulus / (2 * (1 + p.poisson_ratio)));
-          nu.push_back(p.poisson_ratio);
+          const EngineeringConstants c
+            = properties_from_stiffness(p.C, p.c_z).constants;
+          constant[0].push_back(c.E_L);
+          constant[1].push_back(c.E_T);
+          constant[2].push_back(c.G_LT);
+          constant[3].push_back(c.nu_LT);
+          constant[4].push_back(c.nu_TT);
         }
+      std::vector<double> v;
       for (unsigned int k = 0; k < fractions.size(); ++k)
         v.push_back(fractions[k] * (1 - fractions[k]));
       for (unsigned int b = 0; b < boundary_conditions().size(); ++b)
-        for (const auto *values : {&E, &E, &G, &nu, &nu})
-          v.push_back(rve::point_variance(fractions, *values));
+        for (const auto &values : constant)
+          v.push_back(rve::point_variance(fractions, values));
       return v;
     }
 

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <tribodyn/core/elastic_phase.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/material.h>
 
@@ -22,8 +23,9 @@ main(int argc, char **argv)
   {
     const IsotropicElasticMaterial iso{30e9, 0.2, 1770};
     dealii::Tensor<1, 3>           cz;
-    const VoigtStiffness           C = transversely_isotropic_plane_strain(
-      30e9, 30e9, 0.2, 0.2, 30e9 / 2.4, cz);
+    const VoigtStiffness           C
+      = TransverselyIsotropicConstants{30e9, 30e9, 0.2, 0.2, 30e9 / 2.4, 0}
+          .plane_strain_voigt_stiffness(cz, "test");
     const auto reference = iso.plane_strain_voigt_stiffness();
     double     error     = 0;
     for (unsigned int i = 0; i < 3; ++i)

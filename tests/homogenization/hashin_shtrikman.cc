@@ -29,9 +29,10 @@ main(int argc, char **argv)
     const auto   phases = named_phases({{30e9, 0.2}, {80e9, 0.35}});
     const double f1 = 0.7, f2 = 0.3;
     const auto   k = [&](const unsigned int i) {
-      return phases[i].lambda() + phases[i].mu();
+      return phases[i].isotropic->lambda() + phases[i].isotropic->mu();
     };
-    const auto m = [&](const unsigned int i) { return phases[i].mu(); };
+    const auto m
+      = [&](const unsigned int i) { return phases[i].isotropic->mu(); };
     // Lower bounds: reference phase 0 (soft); upper: phase 1 (stiff).
     const double k_lower = k(0) + f2 / (1 / (k(1) - k(0)) + f1 / (k(0) + m(0)));
     const double k_upper = k(1) + f1 / (1 / (k(0) - k(1)) + f2 / (k(1) + m(1)));
@@ -79,11 +80,11 @@ main(int argc, char **argv)
           "Reuss <= HS- <= HS+ <= Voigt for mu");
     const PlaneModuliBounds one = hashin_shtrikman_bounds({phases[1]}, {1.});
     check_relative(one.lower.kappa,
-                   plane_moduli(phases[1]).kappa,
+                   plane_moduli(*phases[1].isotropic).kappa,
                    1e-12,
                    "one phase: kappa lower");
     check_relative(one.upper.mu,
-                   plane_moduli(phases[1]).mu,
+                   plane_moduli(*phases[1].isotropic).mu,
                    1e-12,
                    "one phase: mu upper");
   }

@@ -12,7 +12,7 @@ namespace tribodyn_test
   using namespace tribodyn;
   using namespace tribodyn::homogenization;
 
-  inline std::vector<IsotropicElasticMaterial>
+  inline std::vector<ElasticPhase>
   seed_phases()
   {
     return {IsotropicElasticMaterial{30e9, 0.2, 1770.},
@@ -23,12 +23,12 @@ namespace tribodyn_test
   /// @p morphology, silently; @p levels (if given) gets the number of
   /// multigrid levels of the cell problem.
   inline CellProblemResult
-  solve_cell(const Morphology                            &morphology,
-             const std::vector<IsotropicElasticMaterial> &phases,
-             const BoundaryCondition                      bc,
-             CellProblemParameters                        parameters,
-             unsigned int                                *levels = nullptr,
-             const MPI_Comm                               comm = MPI_COMM_WORLD)
+  solve_cell(const Morphology                &morphology,
+             const std::vector<ElasticPhase> &phases,
+             const BoundaryCondition          bc,
+             CellProblemParameters            parameters,
+             unsigned int                    *levels = nullptr,
+             const MPI_Comm                   comm   = MPI_COMM_WORLD)
   {
     parameters.boundary_conditions = {bc};
     dealii::TimerOutput timer(comm,
@@ -43,12 +43,12 @@ namespace tribodyn_test
 
   /// Solve one boundary condition on @p morphology, silently.
   inline CellProblemResult
-  solve_cell(const Morphology                            &morphology,
-             const std::vector<IsotropicElasticMaterial> &phases,
-             const BoundaryCondition                      bc,
-             const unsigned int                           subdivisions = 1,
-             const double                                 tolerance    = 1e-12,
-             const MPI_Comm                               comm = MPI_COMM_WORLD)
+  solve_cell(const Morphology                &morphology,
+             const std::vector<ElasticPhase> &phases,
+             const BoundaryCondition          bc,
+             const unsigned int               subdivisions = 1,
+             const double                     tolerance    = 1e-12,
+             const MPI_Comm                   comm         = MPI_COMM_WORLD)
   {
     CellProblemParameters parameters;
     parameters.subdivisions_per_pixel = subdivisions;

@@ -63,11 +63,10 @@ main(int argc, char **argv)
   tiff.image.file           = image_path("laminate3.tif");
   same_map(tiff, "laminate3.tif");
 
-  const std::vector<
-    std::pair<std::string, std::vector<IsotropicElasticMaterial>>>
-    cases = {{"three solids",
-              named_phases({{30e9, 0.2}, {80e9, 0.35}, {200e9, 0.3}})},
-             {"pore layer", named_phases({{0, 0}, {30e9, 0.2}, {80e9, 0.35}})}};
+  const std::vector<std::pair<std::string, std::vector<ElasticPhase>>> cases
+    = {{"three solids",
+        named_phases({{30e9, 0.2}, {80e9, 0.35}, {200e9, 0.3}})},
+       {"pore layer", named_phases({{0, 0}, {30e9, 0.2}, {80e9, 0.35}})}};
   for (const auto &[label, phases] : cases)
     {
       const ApparentProperties exact = laminate_exact(phases, f, 0);

@@ -43,7 +43,7 @@ namespace tribodyn_test
 
   /// Phases from (E, nu) pairs; E = 0 is a pore with the ersatz of
   /// @p pore_ratio.
-  inline std::vector<IsotropicElasticMaterial>
+  inline std::vector<ElasticPhase>
   named_phases(const std::vector<std::pair<double, double>> &constants,
                const double                                  pore_ratio = 1e-6)
   {

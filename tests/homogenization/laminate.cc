@@ -16,7 +16,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using namespace tribodyn_test;
 
-  const std::vector<IsotropicElasticMaterial> phases
+  const std::vector<ElasticPhase> phases
     = {IsotropicElasticMaterial{30e9, 0.2, 1770.},
        IsotropicElasticMaterial{80e9, 0.35, 1770.}};
 

@@ -23,13 +23,13 @@ namespace
   using namespace tribodyn_test;
 
   CellProblemResult
-  solve_with(const Morphology                            &morphology,
-             const std::vector<IsotropicElasticMaterial> &phases,
-             const BoundaryCondition                      bc,
-             const CellPreconditioner                     preconditioner,
-             const unsigned int                           subdivisions,
-             unsigned int                                &levels,
-             const unsigned int                           degree = 1)
+  solve_with(const Morphology                &morphology,
+             const std::vector<ElasticPhase> &phases,
+             const BoundaryCondition          bc,
+             const CellPreconditioner         preconditioner,
+             const unsigned int               subdivisions,
+             unsigned int                    &levels,
+             const unsigned int               degree = 1)
   {
     CellProblemParameters parameters;
     parameters.subdivisions_per_pixel = subdivisions;

@@ -15,8 +15,8 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using namespace tribodyn_test;
 
-  const std::vector<IsotropicElasticMaterial> phases = seed_phases();
-  MorphologyParameters                        p;
+  const std::vector<ElasticPhase> phases = seed_phases();
+  MorphologyParameters            p;
   p.generator       = MorphologyParameters::Generator::random_vertical;
   p.width           = 0.014;
   p.height          = 0.004;

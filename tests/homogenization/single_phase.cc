@@ -11,9 +11,9 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using namespace tribodyn_test;
 
-  const IsotropicElasticMaterial              material{30e9, 0.2, 1770.};
-  const std::vector<IsotropicElasticMaterial> phases = {material, material};
-  MorphologyParameters                        p;
+  const IsotropicElasticMaterial  material{30e9, 0.2, 1770.};
+  const std::vector<ElasticPhase> phases = {material, material};
+  MorphologyParameters            p;
   p.generator                 = MorphologyParameters::Generator::homogeneous;
   p.n_pixels_x                = 28;
   p.n_pixels_y                = 8;

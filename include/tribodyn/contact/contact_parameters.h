@@ -244,20 +244,6 @@ namespace tribodyn
     } // namespace internal
 
     /**
-     * Plane-strain stiffness (Voigt, engineering shear) of a transversely
-     * isotropic material with axis L = x and isotropy plane (y, z):
-     * the 3D compliance is built from E_L, E_T, nu_LT, nu_TT, G_LT and
-     * condensed with eps_zz = 0. @p c_z receives the row sigma_zz = c_z.eps.
-     */
-    VoigtStiffness
-    transversely_isotropic_plane_strain(const double          E_L,
-                                        const double          E_T,
-                                        const double          nu_LT,
-                                        const double          nu_TT,
-                                        const double          G_LT,
-                                        dealii::Tensor<1, 3> &c_z);
-
-    /**
      * Read the apparent stiffness C (and c_z when present) stored under
      * @p key (KUBC, SUBC or periodic) of a homogenization summary.json.
      * Throws InputError naming the file and key when it cannot.

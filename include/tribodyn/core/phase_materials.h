@@ -2,22 +2,41 @@
 #define tribodyn_core_phase_materials_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <optional>
 #include <string>
+#include <tribodyn/core/elastic_phase.h>
 #include <tribodyn/core/material.h>
 #include <vector>
 
 namespace tribodyn
 {
   /**
-   * Any number of named isotropic phases (issue #19 item 2): the
-   * subsection "Phases" of the current subsection, ASPECT-style lists with
-   * one entry per phase, phase k being material id k of the morphology:
+   * Any number of named phases, isotropic or transversely isotropic (issue #19
+   * item 2): the subsection "Phases" of the current subsection, ASPECT-style
+   * lists with one entry per phase, phase k being material id k of the
+   * morphology:
    *
    *   subsection Phases
    *     set Names            = pores, matrix, fibres
    *     set Young moduli     = 0, 30e9, 80e9
    *     set Poisson ratios   = 0, 0.2, 0.2
    *     set Densities        = 0, 1770, 1770
+   *   end
+   *
+   * A phase may be transversely isotropic: named in the subsection
+   * "Transversely isotropic", with its axis and its axial constants there,
+   * its entries in the lists above being those of its plane of isotropy
+   * (E_T, nu_TT):
+   *
+   *   subsection Phases
+   *     ...
+   *     subsection Transversely isotropic
+   *       set Phases               = fibres
+   *       set Axes                 = z
+   *       set Axial Young moduli   = 230e9
+   *       set Axial Poisson ratios = 0.2
+   *       set Axial shear moduli   = 27e9
+   *     end
    *   end
    *
    * A Young modulus of 0 makes the phase a pore. The cell problems stay
@@ -32,7 +51,10 @@ namespace tribodyn
     std::vector<std::string>              names;
     std::vector<IsotropicElasticMaterial> materials; ///< as given (E = 0: pore)
     std::vector<bool>                     pore;
-    double                                pore_stiffness_ratio = 1e-6;
+    /// The axial constants of each phase that is transversely isotropic
+    /// (E_T and nu_TT from 'materials').
+    std::vector<std::optional<TransverselyIsotropicConstants>> axial;
+    double pore_stiffness_ratio = 1e-6;
 
     /// Declare "Phases" in the current subsection.
     static void
@@ -50,8 +72,24 @@ namespace tribodyn
     size() const;
     /// The phases the cell problems use, indexed by material id: pores
     /// replaced by their ersatz material.
-    std::vector<IsotropicElasticMaterial>
+    std::vector<ElasticPhase>
     phases() const;
+
+  private:
+    /// The lists of the subsection "Transversely isotropic", as given.
+    struct TransverseLists
+    {
+      std::vector<std::string> which, axes;
+      std::vector<double>      E_L, nu_LT, G_LT;
+    };
+    /// Read them (in "Phases"); @p section is the path of "Phases/".
+    static TransverseLists
+    read_transverse_lists(dealii::ParameterHandler &prm,
+                          const std::string        &section);
+    /// Check them against the phases and fill 'axial'.
+    void
+    set_transversely_isotropic(const TransverseLists &lists,
+                               const std::string     &section);
   };
 } // namespace tribodyn
 

@@ -86,7 +86,8 @@ namespace tribodyn
 
     /**
      * The cell problem of a 2D composite in plane strain: linear
-     * elasticity with one isotropic phase per material id, three unit load
+     * elasticity with one phase per material id (isotropic or
+     * transversely isotropic), three unit load
      * cases per boundary condition. Strain-driven conditions (KUBC,
      * periodic) solve for the fluctuation w in u = E x + w; the stress-driven
      * one (SUBC) solves for u with the load written as the volume term
@@ -100,11 +101,11 @@ namespace tribodyn
     class CellProblem
     {
     public:
-      CellProblem(const MPI_Comm                               comm,
-                  const Morphology                            &morphology,
-                  const std::vector<IsotropicElasticMaterial> &phases,
-                  const CellProblemParameters                 &parameters,
-                  dealii::TimerOutput                         &timer);
+      CellProblem(const MPI_Comm                   comm,
+                  const Morphology                &morphology,
+                  const std::vector<ElasticPhase> &phases,
+                  const CellProblemParameters     &parameters,
+                  dealii::TimerOutput             &timer);
 
       /// Solve the three load cases of @p bc. When @p output_directory is
       /// not empty, write the fields of each load case there
@@ -191,12 +192,13 @@ namespace tribodyn
       static VoigtVector
       unit_load(const unsigned int load_case);
 
-      MPI_Comm                                     mpi_communicator;
-      const Morphology                            &morphology;
-      const std::vector<IsotropicElasticMaterial> &phases;
-      const CellProblemParameters                  parameters;
-      dealii::TimerOutput                         &timer;
-      dealii::ConditionalOStream                   pcout;
+      MPI_Comm          mpi_communicator;
+      const Morphology &morphology;
+      /// The phases by material id (a copy: callers may pass temporaries).
+      const std::vector<ElasticPhase> phases;
+      const CellProblemParameters     parameters;
+      dealii::TimerOutput            &timer;
+      dealii::ConditionalOStream      pcout;
 
       /// Coarse cells along x and y, and the refinements L from the coarse
       /// mesh to the elements of 'Subdivisions per pixel'.

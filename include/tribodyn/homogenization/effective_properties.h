@@ -2,6 +2,7 @@
 #define tribodyn_homogenization_effective_properties_h
 
 #include <deal.II/base/tensor.h>
+#include <tribodyn/core/elastic_phase.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/material.h>
 #include <vector>
@@ -60,13 +61,13 @@ namespace tribodyn
 
     /// Voigt estimate: uniform strain, C = sum_k f_k C_k.
     ApparentProperties
-    voigt_estimate(const std::vector<IsotropicElasticMaterial> &phases,
-                   const std::vector<double>                   &fractions);
+    voigt_estimate(const std::vector<ElasticPhase> &phases,
+                   const std::vector<double>       &fractions);
 
     /// Reuss estimate: uniform stress, S = sum_k f_k S_k.
     ApparentProperties
-    reuss_estimate(const std::vector<IsotropicElasticMaterial> &phases,
-                   const std::vector<double>                   &fractions);
+    reuss_estimate(const std::vector<ElasticPhase> &phases,
+                   const std::vector<double>       &fractions);
 
     /**
      * Exact effective properties of a laminate (layers through the whole
@@ -75,9 +76,9 @@ namespace tribodyn
      * eps_tt are uniform, the other components are piecewise constant.
      */
     ApparentProperties
-    laminate_exact(const std::vector<IsotropicElasticMaterial> &phases,
-                   const std::vector<double>                   &fractions,
-                   const unsigned int                           normal);
+    laminate_exact(const std::vector<ElasticPhase> &phases,
+                   const std::vector<double>       &fractions,
+                   const unsigned int               normal);
 
     /**
      * In-plane isotropic moduli of plane strain: the 2D bulk modulus kappa
@@ -130,8 +131,13 @@ namespace tribodyn
      * effective constants of an in-plane isotropic microstructure only.
      */
     PlaneModuliBounds
-    hashin_shtrikman_bounds(const std::vector<IsotropicElasticMaterial> &phases,
-                            const std::vector<double> &fractions);
+    hashin_shtrikman_bounds(const std::vector<ElasticPhase> &phases,
+                            const std::vector<double>       &fractions);
+
+    /// Whether every phase is isotropic (the Hashin-Shtrikman bounds
+    /// above need it).
+    bool
+    all_isotropic(const std::vector<ElasticPhase> &phases);
 
     /// Smallest eigenvalue of the symmetric part of @p A.
     double

@@ -31,7 +31,7 @@ namespace tribodyn
 
       /// The phases the cell problems use, indexed by material id (pores
       /// with their ersatz stiffness).
-      std::vector<IsotropicElasticMaterial>
+      std::vector<ElasticPhase>
       phases() const;
       /// Name of each phase ("matrix", "heterogeneity" for two).
       std::vector<std::string>
@@ -84,12 +84,11 @@ namespace tribodyn
       /// The isotropic projections (kappa, mu) of the apparent stiffnesses
       /// next to the Hashin-Shtrikman bounds: @p table and @p summary.
       void
-      report_isotropic_moduli(
-        const std::vector<CellProblemResult>        &results,
-        const std::vector<IsotropicElasticMaterial> &phases,
-        const std::vector<double>                   &fractions,
-        JsonValue                                   &summary,
-        std::ostream                                &table) const;
+      report_isotropic_moduli(const std::vector<CellProblemResult> &results,
+                              const std::vector<ElasticPhase>      &phases,
+                              const std::vector<double>            &fractions,
+                              JsonValue                            &summary,
+                              std::ostream &table) const;
 
       RunContext                     context;
       MorphologyParameters           morphology_parameters;
