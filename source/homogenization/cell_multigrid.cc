@@ -3,6 +3,7 @@
 #include "cell_multigrid.h"
 
 #include <array>
+#include <cstring>
 #include <deal.II/base/vectorization.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_q1.h>
@@ -36,8 +37,11 @@ namespace tribodyn
       namespace
       {
         using namespace dealii;
+        /// CG runs in double precision; the V-cycle (levels, smoother,
+        /// transfer) in LevelNumber, float by default: half the memory
+        /// traffic of the preconditioner, which only needs to be a good
+        /// approximation.
         using VectorType = LinearAlgebra::distributed::Vector<double>;
-        using Tensor2    = SymmetricTensor<2, 2, VectorizedArray<double>>;
 
 
         /**
@@ -46,15 +50,20 @@ namespace tribodyn
          * hierarchy (whichever MatrixFree object it is initialized with).
          * C is symmetric: its six distinct entries are stored per cell
          * batch (C00, C01, C02, C11, C12, C22 of the Voigt matrix acting on
-         * (eps_xx, eps_yy, gamma_xy)).
+         * (eps_xx, eps_yy, gamma_xy)). @p Number: double on the active
+         * mesh (CG's operator), float on the levels (the V-cycle).
          */
-        template <int degree>
+        template <int degree, typename Number>
         class ElasticityOperator
-            : public MatrixFreeOperators::Base<2, VectorType>
+            : public MatrixFreeOperators::
+                Base<2, LinearAlgebra::distributed::Vector<Number>>
         {
         public:
-          using FEEval    = FEEvaluation<2, degree, degree + 1, 2, double>;
-          using Stiffness = std::array<VectorizedArray<double>, 6>;
+          using VectorType = LinearAlgebra::distributed::Vector<Number>;
+          using Scalar     = VectorizedArray<Number>;
+          using Tensor2    = SymmetricTensor<2, 2, Scalar>;
+          using FEEval     = FEEvaluation<2, degree, degree + 1, 2, Number>;
+          using Stiffness  = std::array<Scalar, 6>;
 
           /// Evaluate @p stiffness on the box of every cell.
           void
@@ -84,10 +93,10 @@ namespace tribodyn
 
           /// sigma = C eps of a Voigt strain, as a symmetric tensor.
           static Tensor2
-          stress(const Stiffness               &c,
-                 const VectorizedArray<double> &exx,
-                 const VectorizedArray<double> &eyy,
-                 const VectorizedArray<double> &gxy)
+          stress(const Stiffness &c,
+                 const Scalar    &exx,
+                 const Scalar    &eyy,
+                 const Scalar    &gxy)
           {
             Tensor2 s;
             s[0][0] = c[0] * exx + c[1] * eyy + c[2] * gxy;
@@ -113,7 +122,7 @@ namespace tribodyn
               {
                 const Tensor2 e = phi.get_symmetric_gradient(q);
                 phi.submit_symmetric_gradient(
-                  stress(c, e[0][0], e[1][1], 2. * e[0][1]), q);
+                  stress(c, e[0][0], e[1][1], Number(2) * e[0][1]), q);
               }
             phi.integrate(EvaluationFlags::gradients);
           }
@@ -123,24 +132,23 @@ namespace tribodyn
            * level has the same rectangle, so its 8 x 8 element matrix
            * depends on the cell's stiffness only. The distinct stiffnesses
            * (the phases on the active mesh; the mixtures of coarse cells)
-           * get their element matrix once, computed by local_apply() on unit
-           * vectors (so in FEEvaluation's own DoF order); the cell loop then
-           * multiplies by it: 64 multiply-adds per cell instead of the
-           * general evaluate/integrate.
+           * get their element matrix once (bilinear_element_matrix(), in
+           * FEEvaluation's DoF order); the cell loop then multiplies by it:
+           * 64 multiply-adds per cell instead of the general
+           * evaluate/integrate. MatrixFree's mapping data are not needed
+           * (nor computed) for it.
            */
           void
           tabulate_element_matrices(
-            const AffineConstraints<double> &constraints)
+            const AffineConstraints<Number> &constraints)
           {
             if constexpr (degree == 1)
               {
                 const auto &mf = *this->get_matrix_free();
-                FEEval      phi(mf);
                 std::map<std::array<double, 6>, unsigned int> index_of;
                 matrix_of_cell.clear();
                 element_matrices.clear();
                 element_stiffness.clear();
-                phi.reinit(0);
                 {
                   const auto cell = mf.get_cell_iterator(0, 0);
                   cell_size       = {{cell->vertex(3)[0] - cell->vertex(0)[0],
@@ -153,32 +161,70 @@ namespace tribodyn
                        ++lane)
                     {
                       std::array<double, 6> key;
-                      Stiffness             c;
                       for (unsigned int k = 0; k < 6; ++k)
-                        {
-                          key[k] = coefficient[batch][k][lane];
-                          c[k]   = key[k];
-                        }
+                        key[k] = coefficient[batch][k][lane];
                       const auto [it, inserted]
                         = index_of.emplace(key, element_matrices.size());
                       if (inserted)
                         {
-                          std::array<double, 64> K;
-                          for (unsigned int j = 0; j < 8; ++j)
-                            {
-                              for (unsigned int i = 0; i < 8; ++i)
-                                phi.begin_dof_values()[i] = i == j ? 1. : 0.;
-                              local_apply(phi, c);
-                              for (unsigned int i = 0; i < 8; ++i)
-                                K[8 * i + j] = phi.begin_dof_values()[i][0];
-                            }
-                          element_matrices.push_back(K);
+                          const auto K = bilinear_element_matrix(key);
+                          std::array<Number, 64> k;
+                          for (unsigned int i = 0; i < 64; ++i)
+                            k[i] = Number(K[i]);
+                          element_matrices.push_back(k);
                           element_stiffness.push_back(key);
                         }
                       matrix_of_cell.push_back(it->second);
                     }
                 tabulate_cell_dofs(constraints);
               }
+          }
+
+          /**
+           * The 8 x 8 stiffness matrix (row-major) of a bilinear element of
+           * the size cell_size with the plane-strain stiffness @p c (C00,
+           * C01, C02, C11, C12, C22), by 2 x 2 Gauss quadrature as
+           * FEEvaluation integrates it, in FEEvaluation's DoF order 4
+           * component + vertex (vertices lexicographic): K = sum_q w_q B_q^T
+           * C B_q, B = [[dN/dx, 0], [0, dN/dy], [dN/dy, dN/dx]].
+           */
+          std::array<double, 64>
+          bilinear_element_matrix(const std::array<double, 6> &c) const
+          {
+            const double C[3][3]
+              = {{c[0], c[1], c[2]}, {c[1], c[3], c[4]}, {c[2], c[4], c[5]}};
+            const double hx = cell_size[0], hy = cell_size[1];
+            const double g[2]
+              = {0.5 - 0.5 / std::sqrt(3.), 0.5 + 0.5 / std::sqrt(3.)};
+            std::array<double, 64> K{};
+            for (const double xi : g)
+              for (const double eta : g)
+                {
+                  double B[3][8] = {};
+                  for (unsigned int v = 0; v < 4; ++v)
+                    {
+                      const unsigned int vx = v & 1, vy = v >> 1;
+                      const double       dx
+                        = (vx ? 1. : -1.) / hx * (vy ? eta : 1 - eta);
+                      const double dy
+                        = (vx ? xi : 1 - xi) * (vy ? 1. : -1.) / hy;
+                      B[0][v]     = dx;
+                      B[2][v]     = dy;
+                      B[1][4 + v] = dy;
+                      B[2][4 + v] = dx;
+                    }
+                  const double w = 0.25 * hx * hy;
+                  for (unsigned int i = 0; i < 8; ++i)
+                    for (unsigned int j = 0; j < 8; ++j)
+                      {
+                        double sum = 0;
+                        for (unsigned int a = 0; a < 3; ++a)
+                          for (unsigned int b = 0; b < 3; ++b)
+                            sum += B[a][i] * C[a][b] * B[b][j];
+                        K[8 * i + j] += w * sum;
+                      }
+                }
+            return K;
           }
 
           /**
@@ -190,7 +236,7 @@ namespace tribodyn
            * MatrixFree does.
            */
           void
-          tabulate_cell_dofs(const AffineConstraints<double> &constraints)
+          tabulate_cell_dofs(const AffineConstraints<Number> &constraints)
           {
             const auto        &mf          = *this->get_matrix_free();
             const auto        &partitioner = *mf.get_vector_partitioner();
@@ -240,8 +286,8 @@ namespace tribodyn
             for (unsigned int batch = 0; batch < mf.n_cell_batches(); ++batch)
               {
                 phi.reinit(batch);
-                const VectorizedArray<double> l0 = load[0], l1 = load[1],
-                                              l2 = load[2];
+                const Scalar l0 = Number(load[0]), l1 = Number(load[1]),
+                             l2 = Number(load[2]);
                 Tensor2 s;
                 if (strain_driven)
                   s = -stress(coefficient[batch], l0, l1, l2);
@@ -309,7 +355,7 @@ namespace tribodyn
                   {
                     double sum = 0;
                     for (unsigned int j = 0; j < 8; ++j)
-                      sum += element_matrices[m][8 * i + j] * u[j];
+                      sum += double(element_matrices[m][8 * i + j]) * u[j];
                     loads[m][i] = sign * sum;
                   }
               }
@@ -321,7 +367,7 @@ namespace tribodyn
                   {
                     scale += f[i] * f[i];
                     if (cell_dofs[cell][i] != numbers::invalid_unsigned_int)
-                      rhs.local_element(cell_dofs[cell][i]) += f[i];
+                      rhs.local_element(cell_dofs[cell][i]) += Number(f[i]);
                   }
               }
             rhs.compress(VectorOperation::add);
@@ -349,7 +395,8 @@ namespace tribodyn
                 diagonal.compress(VectorOperation::add);
                 this->set_constrained_entries_to_one(diagonal);
                 for (unsigned int i = 0; i < diagonal.locally_owned_size(); ++i)
-                  diagonal.local_element(i) = 1. / diagonal.local_element(i);
+                  diagonal.local_element(i)
+                    = Number(1) / diagonal.local_element(i);
                 return;
               }
             this->inverse_diagonal_entries
@@ -362,7 +409,7 @@ namespace tribodyn
                                               this);
             this->set_constrained_entries_to_one(diagonal);
             for (unsigned int i = 0; i < diagonal.locally_owned_size(); ++i)
-              diagonal.local_element(i) = 1. / diagonal.local_element(i);
+              diagonal.local_element(i) = Number(1) / diagonal.local_element(i);
           }
 
         private:
@@ -380,6 +427,10 @@ namespace tribodyn
 
           /// Degree 1: gather, multiply by the cell's element matrix,
           /// scatter; ghost values exchanged as MatrixFree's cell loop does.
+          /// The product y = sum_j x_j K(:, j) (K is symmetric: its rows are
+          /// its columns) is eight multiply-adds of 8-vectors, which the
+          /// compiler vectorizes; constrained DoFs read 0 and are not
+          /// written.
           void
           apply_add_bilinear(VectorType &dst, const VectorType &src) const
           {
@@ -388,21 +439,28 @@ namespace tribodyn
               src.update_ghost_values();
             dst.zero_out_ghost_values();
             const unsigned int invalid = numbers::invalid_unsigned_int;
+            const Number      *in      = src.begin();
+            Number            *out     = dst.begin();
+            // eight Numbers in one SIMD register (GCC's vector extension)
+            typedef Number Column
+              __attribute__((vector_size(8 * sizeof(Number))));
             for (std::size_t cell = 0; cell < cell_dofs.size(); ++cell)
               {
                 const auto &dofs = cell_dofs[cell];
-                double      x[8];
+                Number      x[8];
                 for (unsigned int i = 0; i < 8; ++i)
-                  x[i] = dofs[i] == invalid ? 0. : src.local_element(dofs[i]);
-                const double *K = element_matrices[matrix_of_cell[cell]].data();
+                  x[i] = dofs[i] == invalid ? Number(0) : in[dofs[i]];
+                const Number *K = element_matrices[matrix_of_cell[cell]].data();
+                Column        y = {};
+                for (unsigned int j = 0; j < 8; ++j)
+                  {
+                    Column column;
+                    std::memcpy(&column, K + 8 * j, sizeof(Column));
+                    y += column * x[j];
+                  }
                 for (unsigned int i = 0; i < 8; ++i)
                   if (dofs[i] != invalid)
-                    {
-                      double sum = 0;
-                      for (unsigned int j = 0; j < 8; ++j)
-                        sum += K[8 * i + j] * x[j];
-                      dst.local_element(dofs[i]) += sum;
-                    }
+                    out[dofs[i]] += y[i];
               }
             dst.compress(VectorOperation::add);
             if (!src_had_ghosts)
@@ -410,7 +468,7 @@ namespace tribodyn
           }
 
           void
-          cell_range(const MatrixFree<2, double>                 &data,
+          cell_range(const MatrixFree<2, Number>                 &data,
                      VectorType                                  &dst,
                      const VectorType                            &src,
                      const std::pair<unsigned int, unsigned int> &range) const
@@ -430,7 +488,7 @@ namespace tribodyn
           /// Degree 1: the distinct element matrices (row-major), and per
           /// locally owned cell (in the order of the cell batches and their
           /// lanes) its matrix and its DoFs.
-          std::vector<std::array<double, 64>>      element_matrices;
+          std::vector<std::array<Number, 64>>      element_matrices;
           std::vector<unsigned int>                matrix_of_cell;
           std::vector<std::array<unsigned int, 8>> cell_dofs;
           /// The six stiffness entries of each element matrix, and the
@@ -440,9 +498,16 @@ namespace tribodyn
         };
 
 
-        /// The coarsest level solved with a factorization of its matrix.
-        class DirectCoarseSolver : public MGCoarseGridBase<VectorType>
+        /// The coarsest level solved with a factorization of its matrix
+        /// (in double precision; float level vectors are converted).
+        template <typename LevelNumber>
+        class DirectCoarseSolver
+            : public MGCoarseGridBase<
+                LinearAlgebra::distributed::Vector<LevelNumber>>
         {
+          using LevelVectorType
+            = LinearAlgebra::distributed::Vector<LevelNumber>;
+
         public:
           explicit DirectCoarseSolver(
             const TrilinosWrappers::SparseMatrix &matrix)
@@ -454,15 +519,23 @@ namespace tribodyn
 
           void
           operator()(const unsigned int,
-                     VectorType       &dst,
-                     const VectorType &src) const override
+                     LevelVectorType       &dst,
+                     const LevelVectorType &src) const override
           {
-            solver.solve(dst, src);
+            if (b.size() != src.size())
+              {
+                b.reinit(src.get_partitioner());
+                x.reinit(src.get_partitioner());
+              }
+            b = src;
+            solver.solve(x, b);
+            dst = x;
           }
 
         private:
           SolverControl                          control;
           mutable TrilinosWrappers::SolverDirect solver;
+          mutable VectorType                     b, x;
         };
 
 
@@ -484,14 +557,19 @@ namespace tribodyn
         }
 
 
-        template <int degree>
+        template <int degree, typename LevelNumber>
         class MultigridSolver : public CellMultigridSolver
         {
         public:
-          using LevelOperator = ElasticityOperator<degree>;
-          using Smoother      = PreconditionChebyshev<LevelOperator,
-                                                 VectorType,
-                                                 DiagonalMatrix<VectorType>>;
+          using LevelVectorType
+            = LinearAlgebra::distributed::Vector<LevelNumber>;
+          using FineOperator  = ElasticityOperator<degree, double>;
+          using LevelOperator = ElasticityOperator<degree, LevelNumber>;
+          using Transfer      = MGTransferMatrixFree<2, LevelNumber>;
+          using Smoother
+            = PreconditionChebyshev<LevelOperator,
+                                    LevelVectorType,
+                                    DiagonalMatrix<LevelVectorType>>;
 
           MultigridSolver(const DoFHandler<2>              &dof_handler,
                           const AffineConstraints<double>  &constraints,
@@ -505,6 +583,15 @@ namespace tribodyn
             data.tasks_parallel_scheme
               = MatrixFree<2, double>::AdditionalData::none;
             data.mapping_update_flags = update_gradients | update_JxW_values;
+            typename MatrixFree<2, LevelNumber>::AdditionalData level_data;
+            level_data.tasks_parallel_scheme
+              = MatrixFree<2, LevelNumber>::AdditionalData::none;
+            level_data.mapping_update_flags = data.mapping_update_flags;
+            // the bilinear fast path needs no mapping data (its element
+            // matrices are computed directly); other degrees evaluate
+            // gradients on every cell
+            data.initialize_mapping       = degree > 1;
+            level_data.initialize_mapping = degree > 1;
             const QGauss<1> quadrature(degree + 1);
 
             // The active mesh.
@@ -534,22 +621,28 @@ namespace tribodyn
 
             level_operators.resize(0, n_levels - 1);
             AffineConstraints<double> coarse_constraints;
+            const auto                level_constraints_of
+              = [&](const unsigned int level, auto &constraints) {
+                  IndexSet relevant;
+                  DoFTools::extract_locally_relevant_level_dofs(dof_handler,
+                                                                level,
+                                                                relevant);
+                  constraints.reinit(relevant);
+                  constraints.add_lines(
+                    mg_constrained_dofs.get_boundary_indices(level));
+                  constraints.close();
+                };
             for (unsigned int level = 0; level < n_levels; ++level)
               {
-                IndexSet relevant;
-                DoFTools::extract_locally_relevant_level_dofs(dof_handler,
-                                                              level,
-                                                              relevant);
-                AffineConstraints<double> level_constraints;
-                level_constraints.reinit(relevant);
-                level_constraints.add_lines(
-                  mg_constrained_dofs.get_boundary_indices(level));
-                level_constraints.close();
-
-                data.mg_level = level;
-                auto mf       = std::make_shared<MatrixFree<2, double>>();
-                mf->reinit(
-                  mapping, dof_handler, level_constraints, quadrature, data);
+                AffineConstraints<LevelNumber> level_constraints;
+                level_constraints_of(level, level_constraints);
+                level_data.mg_level = level;
+                auto mf = std::make_shared<MatrixFree<2, LevelNumber>>();
+                mf->reinit(mapping,
+                           dof_handler,
+                           level_constraints,
+                           quadrature,
+                           level_data);
                 level_operators[level].initialize(mf,
                                                   mg_constrained_dofs,
                                                   level);
@@ -557,12 +650,9 @@ namespace tribodyn
                 level_operators[level].tabulate_element_matrices(
                   level_constraints);
                 level_operators[level].compute_diagonal();
-                if (level == 0)
-                  coarse_constraints.copy_from(level_constraints);
               }
 
-            transfer = std::make_unique<MGTransferMatrixFree<2, double>>(
-              mg_constrained_dofs);
+            transfer = std::make_unique<Transfer>(mg_constrained_dofs);
             transfer->build(dof_handler);
 
             // Chebyshev smoothing of degree 3 (fewest operator applications
@@ -581,8 +671,18 @@ namespace tribodyn
               }
             smoother.initialize(level_operators, smoother_data);
 
-            // The coarsest level's matrix, factorized once.
+            // The coarsest level's matrix, in double precision (its own
+            // operator on level 0), factorized once.
             {
+              level_constraints_of(0, coarse_constraints);
+              data.mg_level           = 0;
+              data.initialize_mapping = true; // compute_matrix integrates
+              auto mf = std::make_shared<MatrixFree<2, double>>();
+              mf->reinit(
+                mapping, dof_handler, coarse_constraints, quadrature, data);
+              FineOperator coarse_operator;
+              coarse_operator.initialize(mf, mg_constrained_dofs, 0);
+              coarse_operator.set_stiffness(stiffness);
               const MPI_Comm comm  = dof_handler.get_communicator();
               const IndexSet owned = dof_handler.locally_owned_mg_dofs(0);
               IndexSet       relevant;
@@ -599,22 +699,22 @@ namespace tribodyn
                                                          comm,
                                                          relevant);
               coarse_matrix.reinit(owned, owned, dsp, comm);
-              MatrixFreeTools::compute_matrix(
-                *level_operators[0].get_matrix_free(),
-                coarse_constraints,
-                coarse_matrix,
-                &LevelOperator::local_apply,
-                &level_operators[0]);
-              coarse = std::make_unique<DirectCoarseSolver>(coarse_matrix);
+              MatrixFreeTools::compute_matrix(*mf,
+                                              coarse_constraints,
+                                              coarse_matrix,
+                                              &FineOperator::local_apply,
+                                              &coarse_operator);
+              coarse = std::make_unique<DirectCoarseSolver<LevelNumber>>(
+                coarse_matrix);
             }
 
             mg_matrix
-              = std::make_unique<mg::Matrix<VectorType>>(level_operators);
-            multigrid = std::make_unique<Multigrid<VectorType>>(
+              = std::make_unique<mg::Matrix<LevelVectorType>>(level_operators);
+            multigrid = std::make_unique<Multigrid<LevelVectorType>>(
               *mg_matrix, *coarse, *transfer, smoother, smoother);
-            preconditioner = std::make_unique<
-              PreconditionMG<2, VectorType, MGTransferMatrixFree<2, double>>>(
-              dof_handler, *multigrid, *transfer);
+            preconditioner
+              = std::make_unique<PreconditionMG<2, LevelVectorType, Transfer>>(
+                dof_handler, *multigrid, *transfer);
           }
 
           double
@@ -638,20 +738,20 @@ namespace tribodyn
           }
 
         private:
-          const DoFHandler<2>                             &dof_handler;
-          const MappingQ1<2>                               mapping;
-          LevelOperator                                    fine_operator;
-          VectorType                                       rhs;
-          MGConstrainedDoFs                                mg_constrained_dofs;
-          MGLevelObject<LevelOperator>                     level_operators;
-          std::unique_ptr<MGTransferMatrixFree<2, double>> transfer;
-          MGSmootherPrecondition<LevelOperator, Smoother, VectorType> smoother;
-          TrilinosWrappers::SparseMatrix          coarse_matrix;
-          std::unique_ptr<DirectCoarseSolver>     coarse;
-          std::unique_ptr<mg::Matrix<VectorType>> mg_matrix;
-          std::unique_ptr<Multigrid<VectorType>>  multigrid;
-          std::unique_ptr<
-            PreconditionMG<2, VectorType, MGTransferMatrixFree<2, double>>>
+          const DoFHandler<2>         &dof_handler;
+          const MappingQ1<2>           mapping;
+          FineOperator                 fine_operator;
+          VectorType                   rhs;
+          MGConstrainedDoFs            mg_constrained_dofs;
+          MGLevelObject<LevelOperator> level_operators;
+          std::unique_ptr<Transfer>    transfer;
+          MGSmootherPrecondition<LevelOperator, Smoother, LevelVectorType>
+                                                           smoother;
+          TrilinosWrappers::SparseMatrix                   coarse_matrix;
+          std::unique_ptr<DirectCoarseSolver<LevelNumber>> coarse;
+          std::unique_ptr<mg::Matrix<LevelVectorType>>     mg_matrix;
+          std::unique_ptr<Multigrid<LevelVectorType>>      multigrid;
+          std::unique_ptr<PreconditionMG<2, LevelVectorType, Transfer>>
             preconditioner;
         };
       } // namespace
@@ -660,27 +760,34 @@ namespace tribodyn
       std::unique_ptr<CellMultigridSolver>
       make_cell_multigrid_solver(
         const unsigned int                       fe_degree,
+        const bool                               single_precision,
         const dealii::DoFHandler<2>             &dof_handler,
         const dealii::AffineConstraints<double> &constraints,
         const LevelConstraintDescription        &level_constraints,
         const StiffnessOverBox                  &stiffness,
         dealii::TimerOutput                     &timer)
       {
-        switch (fe_degree)
-          {
-            case 1:
-              return std::make_unique<MultigridSolver<1>>(
-                dof_handler, constraints, level_constraints, stiffness, timer);
-            case 2:
-              return std::make_unique<MultigridSolver<2>>(
-                dof_handler, constraints, level_constraints, stiffness, timer);
-            case 3:
-              return std::make_unique<MultigridSolver<3>>(
-                dof_handler, constraints, level_constraints, stiffness, timer);
-            default:
-              return std::make_unique<MultigridSolver<4>>(
-                dof_handler, constraints, level_constraints, stiffness, timer);
-          }
+        const auto make
+          = [&](auto degree,
+                auto number) -> std::unique_ptr<CellMultigridSolver> {
+          return std::make_unique<
+            MultigridSolver<decltype(degree)::value, decltype(number)>>(
+            dof_handler, constraints, level_constraints, stiffness, timer);
+        };
+        const auto with_degree = [&](auto number) {
+          switch (fe_degree)
+            {
+              case 1:
+                return make(std::integral_constant<int, 1>(), number);
+              case 2:
+                return make(std::integral_constant<int, 2>(), number);
+              case 3:
+                return make(std::integral_constant<int, 3>(), number);
+              default:
+                return make(std::integral_constant<int, 4>(), number);
+            }
+        };
+        return single_precision ? with_degree(float()) : with_degree(double());
       }
     } // namespace internal
   }   // namespace homogenization

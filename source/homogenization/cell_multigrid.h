@@ -81,10 +81,12 @@ namespace tribodyn
       /// The solver for elements of degree @p fe_degree (1 to 4) on
       /// @p dof_handler (multigrid DoFs distributed), with the active
       /// level's @p constraints and the description of the same
-      /// constraints on the levels.
+      /// constraints on the levels; the V-cycle in single precision when
+      /// @p single_precision (CG in double either way).
       std::unique_ptr<CellMultigridSolver>
       make_cell_multigrid_solver(
         const unsigned int                       fe_degree,
+        const bool                               single_precision,
         const dealii::DoFHandler<2>             &dof_handler,
         const dealii::AffineConstraints<double> &constraints,
         const LevelConstraintDescription        &level_constraints,

@@ -44,6 +44,14 @@ namespace tribodyn
       amg        ///< Trilinos ML algebraic multigrid on the assembled matrix
     };
 
+    /// Floating-point precision of the multigrid V-cycle (CG itself is
+    /// always in double precision).
+    enum class MultigridPrecision
+    {
+      single, ///< levels, smoother and transfer in float: half the traffic
+      double_ ///< everything in double
+    };
+
     /// Parameters of the subsection "Cell problem".
     struct CellProblemParameters
     {
@@ -57,9 +65,10 @@ namespace tribodyn
       unsigned int fe_degree = 1;
       /// Tolerance of CG: residual relative to the norm of the unassembled
       /// element loads.
-      double             solver_tolerance = 1e-10;
-      unsigned int       max_iterations   = 2000;
-      CellPreconditioner preconditioner   = CellPreconditioner::multigrid;
+      double             solver_tolerance    = 1e-10;
+      unsigned int       max_iterations      = 2000;
+      CellPreconditioner preconditioner      = CellPreconditioner::multigrid;
+      MultigridPrecision multigrid_precision = MultigridPrecision::single;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
