@@ -11,6 +11,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <tribodyn/homogenization/cell_problem.h>
 #include <vector>
@@ -64,12 +65,13 @@ namespace tribodyn
       /// Integrate eps = E + eps(solution) (E = 0 for SUBC), sigma = C eps
       /// and sigma_zz = c_z . eps over the cell @p fe_values
       /// was reinitialized on. @p strains is scratch space.
+      template <typename VectorType>
       inline CellIntegrals
-      integrate_cell(const FEValues<2>                   &fe_values,
-                     const TrilinosWrappers::MPI::Vector &solution,
-                     const VoigtVector                   &macro_strain,
-                     const ElasticPhase                  &phase,
-                     std::vector<SymmetricTensor<2, 2>>  &strains)
+      integrate_cell(const FEValues<2>                  &fe_values,
+                     const VectorType                   &solution,
+                     const VoigtVector                  &macro_strain,
+                     const ElasticPhase                 &phase,
+                     std::vector<SymmetricTensor<2, 2>> &strains)
       {
         const FEValuesExtractors::Vector displacement(0);
         fe_values[displacement].get_function_symmetric_gradients(solution,
@@ -92,19 +94,21 @@ namespace tribodyn
       }
 
 
-      /// Call @p f(cell, integrals) for every locally owned cell of
-      /// @p dof_handler with the integrals of integrate_cell() (Gauss
-      /// quadrature of degree + 1 points per direction).
-      template <typename F>
+      /// Call @p f(cell, k, integrals) for every locally owned cell of
+      /// @p dof_handler and every field k of @p solutions (with its
+      /// macroscopic strain @p macro_strains[k]) with the integrals of
+      /// integrate_cell() (Gauss quadrature of degree + 1 points per
+      /// direction): one pass over the cells for all fields.
+      template <typename VectorType, typename F>
       void
       for_each_owned_cell_integral(
-        const dealii::DoFHandler<2>         &dof_handler,
-        const dealii::FiniteElement<2>      &fe,
-        const unsigned int                   degree,
-        const std::vector<ElasticPhase>     &phases,
-        const TrilinosWrappers::MPI::Vector &solution,
-        const VoigtVector                   &macro_strain,
-        const F                             &f)
+        const dealii::DoFHandler<2>           &dof_handler,
+        const dealii::FiniteElement<2>        &fe,
+        const unsigned int                     degree,
+        const std::vector<ElasticPhase>       &phases,
+        const std::vector<const VectorType *> &solutions,
+        const std::vector<VoigtVector>        &macro_strains,
+        const F                               &f)
       {
         const dealii::QGauss<2> quadrature(degree + 1);
         FEValues<2>             fe_values(
@@ -114,12 +118,14 @@ namespace tribodyn
           if (cell->is_locally_owned())
             {
               fe_values.reinit(cell);
-              f(cell,
-                integrate_cell(fe_values,
-                               solution,
-                               macro_strain,
-                               phases[cell->material_id()],
-                               strains));
+              for (unsigned int k = 0; k < solutions.size(); ++k)
+                f(cell,
+                  k,
+                  integrate_cell(fe_values,
+                                 *solutions[k],
+                                 macro_strains[k],
+                                 phases[cell->material_id()],
+                                 strains));
             }
       }
     } // namespace internal

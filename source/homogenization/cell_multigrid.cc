@@ -146,7 +146,7 @@ namespace tribodyn
               {
                 const auto &mf = *this->get_matrix_free();
                 std::map<std::array<double, 6>, unsigned int> index_of;
-                matrix_of_cell.clear();
+                std::vector<unsigned int>                     matrix_of_cell;
                 element_matrices.clear();
                 element_stiffness.clear();
                 {
@@ -176,7 +176,9 @@ namespace tribodyn
                         }
                       matrix_of_cell.push_back(it->second);
                     }
-                tabulate_cell_dofs(constraints);
+                AssertThrow(element_matrices.size() < (1u << 24),
+                            ExcMessage("too many distinct cell stiffnesses"));
+                tabulate_cell_dofs(constraints, matrix_of_cell);
               }
           }
 
@@ -228,20 +230,23 @@ namespace tribodyn
           }
 
           /**
-           * Degree 1: the vector-local indices of the 8 DoFs of every cell in
-           * FEEvaluation's order (component-major, vertices in lexicographic
-           * order; FESystem numbers them vertex by vertex, 2 v + c), with
-           * constrained DoFs (all homogeneous here: boundary and pins)
-           * marked invalid: they are read as zero and not written, as
-           * MatrixFree does.
+           * Degree 1: the DoFs of every cell (CellIndices) in FEEvaluation's
+           * order 4 c + v (component-major, vertices in lexicographic order;
+           * FESystem numbers them vertex by vertex, 2 v + c, so that the two
+           * components of a vertex are consecutive, also as vector-local
+           * indices: both owned or both ghosts of the same rank), with its
+           * element matrix @p matrix_of_cell. Constrained DoFs (all
+           * homogeneous here: boundary and pins) are read as zero and not
+           * written, as MatrixFree does.
            */
           void
-          tabulate_cell_dofs(const AffineConstraints<Number> &constraints)
+          tabulate_cell_dofs(const AffineConstraints<Number> &constraints,
+                             const std::vector<unsigned int> &matrix_of_cell)
           {
             const auto        &mf          = *this->get_matrix_free();
             const auto        &partitioner = *mf.get_vector_partitioner();
             const unsigned int level       = mf.get_mg_level();
-            cell_dofs.clear();
+            cells.clear();
             std::vector<types::global_dof_index> dofs(8);
             for (unsigned int batch = 0; batch < mf.n_cell_batches(); ++batch)
               for (unsigned int lane = 0;
@@ -253,21 +258,32 @@ namespace tribodyn
                     cell->get_dof_indices(dofs);
                   else
                     cell->get_mg_dof_indices(dofs);
-                  auto &local = cell_dofs.emplace_back();
-                  for (unsigned int c = 0; c < 2; ++c)
-                    for (unsigned int v = 0; v < 4; ++v)
-                      {
-                        const auto dof = dofs[2 * v + c];
-                        AssertThrow(
-                          !constraints.is_constrained(dof)
-                            || constraints.is_identity_constrained(dof)
-                            || (constraints.get_constraint_entries(dof)->empty()
-                                && constraints.get_inhomogeneity(dof) == 0),
-                          ExcInternalError());
-                        local[4 * c + v] = constraints.is_constrained(dof)
-                                             ? numbers::invalid_unsigned_int
-                                             : partitioner.global_to_local(dof);
-                      }
+                  CellIndices cell_indices;
+                  cell_indices.matrix      = matrix_of_cell[cells.size()];
+                  cell_indices.constrained = 0;
+                  for (unsigned int v = 0; v < 4; ++v)
+                    {
+                      const unsigned int x
+                        = partitioner.global_to_local(dofs[2 * v]);
+                      AssertThrow(partitioner.global_to_local(dofs[2 * v + 1])
+                                    == x + 1,
+                                  ExcInternalError());
+                      cell_indices.vertex[v] = x;
+                      for (unsigned int c = 0; c < 2; ++c)
+                        {
+                          const auto dof = dofs[2 * v + c];
+                          AssertThrow(
+                            !constraints.is_constrained(dof)
+                              || constraints.is_identity_constrained(dof)
+                              || (constraints.get_constraint_entries(dof)
+                                    ->empty()
+                                  && constraints.get_inhomogeneity(dof) == 0),
+                            ExcInternalError());
+                          if (constraints.is_constrained(dof))
+                            cell_indices.constrained |= 1u << (4 * c + v);
+                        }
+                    }
+                  cells.push_back(cell_indices);
                 }
           }
 
@@ -360,14 +376,14 @@ namespace tribodyn
                   }
               }
             double scale = 0;
-            for (std::size_t cell = 0; cell < cell_dofs.size(); ++cell)
+            for (const CellIndices &cell : cells)
               {
-                const auto &f = loads[matrix_of_cell[cell]];
+                const auto &f = loads[cell.matrix];
                 for (unsigned int i = 0; i < 8; ++i)
                   {
                     scale += f[i] * f[i];
-                    if (cell_dofs[cell][i] != numbers::invalid_unsigned_int)
-                      rhs.local_element(cell_dofs[cell][i]) += Number(f[i]);
+                    if (!cell.is_constrained(i))
+                      rhs.local_element(cell.dof(i)) += Number(f[i]);
                   }
               }
             rhs.compress(VectorOperation::add);
@@ -387,11 +403,11 @@ namespace tribodyn
                 VectorType &diagonal
                   = this->inverse_diagonal_entries->get_vector();
                 this->initialize_dof_vector(diagonal);
-                for (std::size_t cell = 0; cell < cell_dofs.size(); ++cell)
+                for (const CellIndices &cell : cells)
                   for (unsigned int i = 0; i < 8; ++i)
-                    if (cell_dofs[cell][i] != numbers::invalid_unsigned_int)
-                      diagonal.local_element(cell_dofs[cell][i])
-                        += element_matrices[matrix_of_cell[cell]][9 * i];
+                    if (!cell.is_constrained(i))
+                      diagonal.local_element(cell.dof(i))
+                        += element_matrices[cell.matrix][9 * i];
                 diagonal.compress(VectorOperation::add);
                 this->set_constrained_entries_to_one(diagonal);
                 for (unsigned int i = 0; i < diagonal.locally_owned_size(); ++i)
@@ -438,19 +454,24 @@ namespace tribodyn
             if (!src_had_ghosts)
               src.update_ghost_values();
             dst.zero_out_ghost_values();
-            const unsigned int invalid = numbers::invalid_unsigned_int;
-            const Number      *in      = src.begin();
-            Number            *out     = dst.begin();
+            const Number *in  = src.begin();
+            Number       *out = dst.begin();
             // eight Numbers in one SIMD register (GCC's vector extension)
             typedef Number Column
               __attribute__((vector_size(8 * sizeof(Number))));
-            for (std::size_t cell = 0; cell < cell_dofs.size(); ++cell)
+            for (const CellIndices &cell : cells)
               {
-                const auto &dofs = cell_dofs[cell];
-                Number      x[8];
-                for (unsigned int i = 0; i < 8; ++i)
-                  x[i] = dofs[i] == invalid ? Number(0) : in[dofs[i]];
-                const Number *K = element_matrices[matrix_of_cell[cell]].data();
+                Number x[8];
+                if (cell.constrained == 0) // all but the boundary's cells
+                  for (unsigned int v = 0; v < 4; ++v)
+                    {
+                      x[v]     = in[cell.vertex[v]];
+                      x[4 + v] = in[cell.vertex[v] + 1];
+                    }
+                else
+                  for (unsigned int i = 0; i < 8; ++i)
+                    x[i] = cell.is_constrained(i) ? Number(0) : in[cell.dof(i)];
+                const Number *K = element_matrices[cell.matrix].data();
                 Column        y = {};
                 for (unsigned int j = 0; j < 8; ++j)
                   {
@@ -458,9 +479,16 @@ namespace tribodyn
                     std::memcpy(&column, K + 8 * j, sizeof(Column));
                     y += column * x[j];
                   }
-                for (unsigned int i = 0; i < 8; ++i)
-                  if (dofs[i] != invalid)
-                    out[dofs[i]] += y[i];
+                if (cell.constrained == 0)
+                  for (unsigned int v = 0; v < 4; ++v)
+                    {
+                      out[cell.vertex[v]] += y[v];
+                      out[cell.vertex[v] + 1] += y[4 + v];
+                    }
+                else
+                  for (unsigned int i = 0; i < 8; ++i)
+                    if (!cell.is_constrained(i))
+                      out[cell.dof(i)] += y[i];
               }
             dst.compress(VectorOperation::add);
             if (!src_had_ghosts)
@@ -488,9 +516,31 @@ namespace tribodyn
           /// Degree 1: the distinct element matrices (row-major), and per
           /// locally owned cell (in the order of the cell batches and their
           /// lanes) its matrix and its DoFs.
-          std::vector<std::array<Number, 64>>      element_matrices;
-          std::vector<unsigned int>                matrix_of_cell;
-          std::vector<std::array<unsigned int, 8>> cell_dofs;
+          std::vector<std::array<Number, 64>> element_matrices;
+          /// Degree 1: a locally owned cell's DoFs and element matrix.
+          struct CellIndices
+          {
+            /// vector-local index of component 0 at each vertex (component
+            /// 1 is the next one)
+            std::array<unsigned int, 4> vertex;
+            /// index of its element matrix
+            unsigned int matrix : 24;
+            /// bit 4 c + v: DoF (c, v) constrained
+            unsigned int constrained : 8;
+
+            bool
+            is_constrained(const unsigned int i) const
+            {
+              return (constrained >> i) & 1u;
+            }
+            /// vector-local index of DoF i = 4 c + v
+            unsigned int
+            dof(const unsigned int i) const
+            {
+              return vertex[i % 4] + i / 4;
+            }
+          };
+          std::vector<CellIndices> cells;
           /// The six stiffness entries of each element matrix, and the
           /// cells' size along x and y.
           std::vector<std::array<double, 6>> element_stiffness;
@@ -732,9 +782,10 @@ namespace tribodyn
             fine_operator.initialize_dof_vector(x);
             SolverCG<VectorType> cg(control);
             cg.solve(fine_operator, x, rhs, *preconditioner);
-            for (const auto i : x.locally_owned_elements())
-              solution(i) = x(i);
-            solution.compress(VectorOperation::insert);
+            // both vectors hold the locally owned DoFs in the same order
+            double *values = solution.trilinos_vector()[0];
+            for (unsigned int k = 0; k < x.locally_owned_size(); ++k)
+              values[k] = x.local_element(k);
           }
 
         private:

@@ -56,9 +56,9 @@ namespace tribodyn
         fe,
         parameters.fe_degree,
         phases,
-        solution,
-        macro_strain,
-        [&](const auto &cell, const CellIntegrals &integrals) {
+        std::vector<const TrilinosWrappers::MPI::Vector *>{&solution},
+        {macro_strain},
+        [&](const auto &cell, unsigned int, const CellIntegrals &integrals) {
           const VoigtVector mean_eps   = integrals.strain / integrals.measure;
           const VoigtVector mean_sigma = integrals.stress / integrals.measure;
           const double      mean_szz = integrals.stress_zz / integrals.measure;

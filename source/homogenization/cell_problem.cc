@@ -579,20 +579,41 @@ namespace tribodyn
       else
         solve_with_amg(bc, solutions, result);
 
-      for (unsigned int load_case = 0; load_case < 3; ++load_case)
-        {
-          constraints.distribute(solutions[load_case]);
-          TrilinosWrappers::MPI::Vector ghosted(locally_owned_dofs,
-                                                locally_relevant_dofs,
-                                                mpi_communicator);
-          ghosted = solutions[load_case];
-          const unsigned int iterations
-            = result.load_cases[load_case].cg_iterations;
-          result.load_cases[load_case] = postprocess(bc, load_case, ghosted);
-          result.load_cases[load_case].cg_iterations = iterations;
-          if (!output_directory.empty())
-            write_fields(bc, load_case, ghosted, output_directory);
-        }
+      {
+        TimerOutput::Scope scope(timer, "averages and fields");
+        // the fields with their ghosts, as deal.II vectors (local access)
+        std::array<LinearAlgebra::distributed::Vector<double>, 3> fields;
+        for (unsigned int load_case = 0; load_case < 3; ++load_case)
+          {
+            auto &field = fields[load_case];
+            field.reinit(locally_owned_dofs,
+                         locally_relevant_dofs,
+                         mpi_communicator);
+            // both hold the locally owned DoFs in the same order
+            const double *values = solutions[load_case].trilinos_vector()[0];
+            for (unsigned int k = 0; k < field.locally_owned_size(); ++k)
+              field.local_element(k) = values[k];
+            constraints.distribute(field);
+            field.update_ghost_values();
+          }
+        const auto averages = postprocess(bc, fields);
+        for (unsigned int load_case = 0; load_case < 3; ++load_case)
+          {
+            const unsigned int iterations
+              = result.load_cases[load_case].cg_iterations;
+            result.load_cases[load_case]               = averages[load_case];
+            result.load_cases[load_case].cg_iterations = iterations;
+            if (!output_directory.empty())
+              {
+                constraints.distribute(solutions[load_case]);
+                TrilinosWrappers::MPI::Vector ghosted(locally_owned_dofs,
+                                                      locally_relevant_dofs,
+                                                      mpi_communicator);
+                ghosted = solutions[load_case];
+                write_fields(bc, load_case, ghosted, output_directory);
+              }
+          }
+      }
 
       // Apparent properties: columns of C (strain-driven) or of S (SUBC).
       VoigtMatrix M;
@@ -618,42 +639,54 @@ namespace tribodyn
     }
 
 
-    LoadCaseResult
+    std::array<LoadCaseResult, 3>
     CellProblem::postprocess(
-      const BoundaryCondition              bc,
-      const unsigned int                   load_case,
-      const TrilinosWrappers::MPI::Vector &solution) const
+      const BoundaryCondition bc,
+      const std::array<LinearAlgebra::distributed::Vector<double>, 3>
+        &solutions) const
     {
-      const bool        strain_driven = bc != BoundaryCondition::subc;
-      const VoigtVector macro_strain
-        = strain_driven ? unit_load(load_case) : VoigtVector();
+      const bool               strain_driven = bc != BoundaryCondition::subc;
+      std::vector<VoigtVector> macro_strains;
+      std::vector<const LinearAlgebra::distributed::Vector<double> *> fields;
+      for (unsigned int load_case = 0; load_case < 3; ++load_case)
+        {
+          macro_strains.push_back(strain_driven ? unit_load(load_case)
+                                                : VoigtVector());
+          fields.push_back(&solutions[load_case]);
+        }
 
-      // Sums: stress (3), strain (3), sigma_zz (1).
-      std::vector<double> sums(7, 0.);
+      // Sums per load case: stress (3), strain (3), sigma_zz (1).
+      std::vector<double> sums(21, 0.);
       for_each_owned_cell_integral(dof_handler,
                                    fe,
                                    parameters.fe_degree,
                                    phases,
-                                   solution,
-                                   macro_strain,
+                                   fields,
+                                   macro_strains,
                                    [&](const auto &,
+                                       const unsigned int   load_case,
                                        const CellIntegrals &integrals) {
+                                     double *s = &sums[7 * load_case];
                                      for (unsigned int i = 0; i < 3; ++i)
                                        {
-                                         sums[i] += integrals.stress[i];
-                                         sums[3 + i] += integrals.strain[i];
+                                         s[i] += integrals.stress[i];
+                                         s[3 + i] += integrals.strain[i];
                                        }
-                                     sums[6] += integrals.stress_zz;
+                                     s[6] += integrals.stress_zz;
                                    });
       Utilities::MPI::sum(sums, mpi_communicator, sums);
-      const double   area = morphology.width() * morphology.height();
-      LoadCaseResult r;
-      for (unsigned int i = 0; i < 3; ++i)
+      const double area = morphology.width() * morphology.height();
+      std::array<LoadCaseResult, 3> r;
+      for (unsigned int load_case = 0; load_case < 3; ++load_case)
         {
-          r.mean_stress[i] = sums[i] / area;
-          r.mean_strain[i] = sums[3 + i] / area;
+          const double *s = &sums[7 * load_case];
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              r[load_case].mean_stress[i] = s[i] / area;
+              r[load_case].mean_strain[i] = s[3 + i] / area;
+            }
+          r[load_case].mean_stress_zz = s[6] / area;
         }
-      r.mean_stress_zz = sums[6] / area;
       return r;
     }
 

@@ -10,6 +10,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -187,10 +188,13 @@ namespace tribodyn
       assemble(const BoundaryCondition bc);
       void
       setup_preconditioner();
-      LoadCaseResult
-      postprocess(const BoundaryCondition                      bc,
-                  const unsigned int                           load_case,
-                  const dealii::TrilinosWrappers::MPI::Vector &solution) const;
+      /// Volume averages of the three load cases, in one pass over the
+      /// cells.
+      std::array<LoadCaseResult, 3>
+      postprocess(
+        const BoundaryCondition bc,
+        const std::array<dealii::LinearAlgebra::distributed::Vector<double>, 3>
+          &solutions) const;
       void
       write_fields(const BoundaryCondition                      bc,
                    const unsigned int                           load_case,
