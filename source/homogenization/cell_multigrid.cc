@@ -179,6 +179,14 @@ namespace tribodyn
                 AssertThrow(element_matrices.size() < (1u << 24),
                             ExcMessage("too many distinct cell stiffnesses"));
                 tabulate_cell_dofs(constraints, matrix_of_cell);
+                // the locally owned constrained DoFs: identity rows
+                const auto &partitioner = *mf.get_vector_partitioner();
+                constrained_owned.clear();
+                for (unsigned int k = 0; k < partitioner.locally_owned_size();
+                     ++k)
+                  if (constraints.is_constrained(
+                        partitioner.local_to_global(k)))
+                    constrained_owned.push_back(k);
               }
           }
 
@@ -409,7 +417,8 @@ namespace tribodyn
                       diagonal.local_element(cell.dof(i))
                         += element_matrices[cell.matrix][9 * i];
                 diagonal.compress(VectorOperation::add);
-                this->set_constrained_entries_to_one(diagonal);
+                for (const unsigned int k : constrained_owned)
+                  diagonal.local_element(k) = 1;
                 for (unsigned int i = 0; i < diagonal.locally_owned_size(); ++i)
                   diagonal.local_element(i)
                     = Number(1) / diagonal.local_element(i);
@@ -490,6 +499,10 @@ namespace tribodyn
                     if (!cell.is_constrained(i))
                       out[cell.dof(i)] += y[i];
               }
+            // constrained rows: the identity (the MatrixFree objects hold
+            // no constraints, see MultigridCache)
+            for (const unsigned int k : constrained_owned)
+              out[k] += in[k];
             dst.compress(VectorOperation::add);
             if (!src_had_ghosts)
               src.zero_out_ghost_values();
@@ -541,6 +554,9 @@ namespace tribodyn
             }
           };
           std::vector<CellIndices> cells;
+          /// Degree 1: vector-local indices of the locally owned
+          /// constrained DoFs.
+          std::vector<unsigned int> constrained_owned;
           /// The six stiffness entries of each element matrix, and the
           /// cells' size along x and y.
           std::vector<std::array<double, 6>> element_stiffness;
@@ -607,6 +623,15 @@ namespace tribodyn
         }
 
 
+        /// The shared matrix-free objects of the bilinear fast path.
+        template <typename LevelNumber>
+        struct BilinearMatrixFree : MultigridCache
+        {
+          std::shared_ptr<const MatrixFree<2, double>>                   fine;
+          std::vector<std::shared_ptr<const MatrixFree<2, LevelNumber>>> levels;
+        };
+
+
         template <int degree, typename LevelNumber>
         class MultigridSolver : public CellMultigridSolver
         {
@@ -625,6 +650,7 @@ namespace tribodyn
                           const AffineConstraints<double>  &constraints,
                           const LevelConstraintDescription &description,
                           const StiffnessOverBox           &stiffness,
+                          std::shared_ptr<MultigridCache>  &cache,
                           TimerOutput                      &timer)
               : dof_handler(dof_handler)
           {
@@ -643,11 +669,43 @@ namespace tribodyn
             data.initialize_mapping       = degree > 1;
             level_data.initialize_mapping = degree > 1;
             const QGauss<1> quadrature(degree + 1);
+            // Bilinear elements: the operator applies the constraints
+            // itself, so the matrix-free objects hold none and are shared by
+            // the boundary conditions (built by the first one).
+            std::shared_ptr<BilinearMatrixFree<LevelNumber>> shared;
+            bool                                             reuse = false;
+            if constexpr (degree == 1)
+              {
+                shared
+                  = std::dynamic_pointer_cast<BilinearMatrixFree<LevelNumber>>(
+                    cache);
+                reuse = shared != nullptr;
+                if (!reuse)
+                  cache = shared
+                    = std::make_shared<BilinearMatrixFree<LevelNumber>>();
+              }
+            AffineConstraints<double> no_constraints;
+            no_constraints.close();
+            AffineConstraints<LevelNumber> no_level_constraints;
+            no_level_constraints.close();
 
             // The active mesh.
             {
-              auto mf = std::make_shared<MatrixFree<2, double>>();
-              mf->reinit(mapping, dof_handler, constraints, quadrature, data);
+              std::shared_ptr<const MatrixFree<2, double>> mf;
+              if (reuse)
+                mf = shared->fine;
+              else
+                {
+                  auto new_mf = std::make_shared<MatrixFree<2, double>>();
+                  new_mf->reinit(mapping,
+                                 dof_handler,
+                                 degree == 1 ? no_constraints : constraints,
+                                 quadrature,
+                                 data);
+                  mf = new_mf;
+                  if (shared)
+                    shared->fine = mf;
+                }
               fine_operator.initialize(mf);
               fine_operator.set_stiffness(stiffness);
               fine_operator.tabulate_element_matrices(constraints);
@@ -687,12 +745,23 @@ namespace tribodyn
                 AffineConstraints<LevelNumber> level_constraints;
                 level_constraints_of(level, level_constraints);
                 level_data.mg_level = level;
-                auto mf = std::make_shared<MatrixFree<2, LevelNumber>>();
-                mf->reinit(mapping,
-                           dof_handler,
-                           level_constraints,
-                           quadrature,
-                           level_data);
+                std::shared_ptr<const MatrixFree<2, LevelNumber>> mf;
+                if (reuse)
+                  mf = shared->levels[level];
+                else
+                  {
+                    auto new_mf
+                      = std::make_shared<MatrixFree<2, LevelNumber>>();
+                    new_mf->reinit(mapping,
+                                   dof_handler,
+                                   degree == 1 ? no_level_constraints
+                                               : level_constraints,
+                                   quadrature,
+                                   level_data);
+                    mf = new_mf;
+                    if (shared)
+                      shared->levels.push_back(mf);
+                  }
                 level_operators[level].initialize(mf,
                                                   mg_constrained_dofs,
                                                   level);
@@ -706,16 +775,18 @@ namespace tribodyn
             transfer->build(dof_handler);
 
             // Chebyshev smoothing of degree 3 (fewest operator applications
-            // per solve of degrees 2-6 on the 1.1e6-DoF bench) over
-            // [lambda_max / 15, 1.1 lambda_max] of
-            // the Jacobi-preconditioned level operator.
+            // per solve of degrees 2-6 on the 1.1e6-DoF bench; with the
+            // single-precision V-cycle degrees 2-4 take the same time) over
+            // [lambda_max / 15, 1.1 lambda_max] of the Jacobi-preconditioned
+            // level operator, lambda_max estimated by 10 CG iterations (15
+            // give the same iteration counts and take 0.15 s more there).
             MGLevelObject<typename Smoother::AdditionalData> smoother_data(
               0, n_levels - 1);
             for (unsigned int level = 0; level < n_levels; ++level)
               {
                 smoother_data[level].smoothing_range     = 15.;
                 smoother_data[level].degree              = 3;
-                smoother_data[level].eig_cg_n_iterations = 15;
+                smoother_data[level].eig_cg_n_iterations = 10;
                 smoother_data[level].preconditioner
                   = level_operators[level].get_matrix_diagonal_inverse();
               }
@@ -812,6 +883,7 @@ namespace tribodyn
       make_cell_multigrid_solver(
         const unsigned int                       fe_degree,
         const bool                               single_precision,
+        std::shared_ptr<MultigridCache>         &cache,
         const dealii::DoFHandler<2>             &dof_handler,
         const dealii::AffineConstraints<double> &constraints,
         const LevelConstraintDescription        &level_constraints,
@@ -823,7 +895,12 @@ namespace tribodyn
                 auto number) -> std::unique_ptr<CellMultigridSolver> {
           return std::make_unique<
             MultigridSolver<decltype(degree)::value, decltype(number)>>(
-            dof_handler, constraints, level_constraints, stiffness, timer);
+            dof_handler,
+            constraints,
+            level_constraints,
+            stiffness,
+            cache,
+            timer);
         };
         const auto with_degree = [&](auto number) {
           switch (fe_degree)

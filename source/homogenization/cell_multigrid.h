@@ -78,15 +78,26 @@ namespace tribodyn
           = 0;
       };
 
+      /// What the boundary conditions of one mesh can share: the matrix-free
+      /// objects of the bilinear fast path (active mesh and levels), which
+      /// hold no constraints (the operator applies them). Opaque; reset it
+      /// when the mesh or its DoFs change.
+      struct MultigridCache
+      {
+        virtual ~MultigridCache() = default;
+      };
+
       /// The solver for elements of degree @p fe_degree (1 to 4) on
       /// @p dof_handler (multigrid DoFs distributed), with the active
       /// level's @p constraints and the description of the same
       /// constraints on the levels; the V-cycle in single precision when
-      /// @p single_precision (CG in double either way).
+      /// @p single_precision (CG in double either way). @p cache is filled
+      /// by the first call and reused by the next ones on the same DoFs.
       std::unique_ptr<CellMultigridSolver>
       make_cell_multigrid_solver(
         const unsigned int                       fe_degree,
         const bool                               single_precision,
+        std::shared_ptr<MultigridCache>         &cache,
         const dealii::DoFHandler<2>             &dof_handler,
         const dealii::AffineConstraints<double> &constraints,
         const LevelConstraintDescription        &level_constraints,

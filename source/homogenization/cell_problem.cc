@@ -252,6 +252,7 @@ namespace tribodyn
     CellProblem::setup_dofs()
     {
       TimerOutput::Scope scope(timer, "mesh and dofs");
+      multigrid_cache.reset(); // its objects refer to the old DoFs
       dof_handler.distribute_dofs(fe);
       // Level DoFs only where multigrid will run on this mesh (not for the
       // periodic problem's mesh, nor when AMG takes over).
@@ -504,6 +505,7 @@ namespace tribodyn
         = internal::make_cell_multigrid_solver(parameters.fe_degree,
                                                parameters.multigrid_precision
                                                  == MultigridPrecision::single,
+                                               multigrid_cache,
                                                dof_handler,
                                                constraints,
                                                levels,

@@ -26,6 +26,11 @@ namespace tribodyn
 {
   namespace homogenization
   {
+    namespace internal
+    {
+      struct MultigridCache; // source/homogenization/cell_multigrid.h
+    }
+
     /// The boundary conditions of a cell problem.
     enum class BoundaryCondition
     {
@@ -236,6 +241,9 @@ namespace tribodyn
       dealii::TrilinosWrappers::PreconditionAMG preconditioner;
       /// Near-null space of the AMG; must outlive the preconditioner setup.
       std::unique_ptr<Epetra_MultiVector> rigid_body_modes;
+      /// What the multigrid solvers of the boundary conditions share;
+      /// reset with the DoFs.
+      std::shared_ptr<internal::MultigridCache> multigrid_cache;
     };
   } // namespace homogenization
 } // namespace tribodyn
