@@ -12,10 +12,13 @@
 #include <deal.II/particles/particle_handler.h>
 #include <functional>
 #include <memory>
+#include <tribodyn/mca/bond_laws.h>
 #include <tribodyn/mca/decomposition.h>
+#include <tribodyn/mca/moment_laws.h>
 #include <tribodyn/mca/packing.h>
 #include <tribodyn/mca/pair_fields.h>
 #include <tribodyn/mca/parameters.h>
+#include <tribodyn/mca/series_springs.h>
 #include <tribodyn/mca/system_figures.h>
 #include <tribodyn/mca/vector_algebra.h>
 #include <vector>
@@ -62,8 +65,10 @@ namespace tribodyn
      * pair kernel (strain increments -> mean-stress increments -> pair
      * stresses -> plastic correction -> contact constraints -> forces and
      * torques), boundary conditions, half kick. The pair kernel is
-     * compiled for each combination of {rotations, plasticity, bond
-     * switching} so that scenes pay only for what they use.
+     * compiled for each combination of the pair law's policies
+     * (rotations, plasticity, pair geometry, friction law, moment law,
+     * bond criteria; include/tribodyn/mca/pair_law.h) so that scenes pay
+     * only for what they use.
      */
     class AutomatonSystem
     {
@@ -308,10 +313,10 @@ namespace tribodyn
       std::pair<double, double>
       rotation_stiffnesses(const unsigned int mi, const unsigned int mj) const
       {
-        if (rotation_springs.empty())
-          return {0., 0.};
-        const auto &k = rotation_springs[mi * n_materials + mj];
-        return {k.twist, k.bend};
+        std::pair<double, double> k{0., 0.};
+        moment_laws.with_selected(
+          [&](const auto &law) { k = law.stiffnesses(mi * n_materials + mj); });
+        return k;
       }
       /// Number of bonded pairs of each local automaton (owned: complete).
       std::vector<unsigned int>
@@ -489,23 +494,35 @@ namespace tribodyn
       update_ghost_kinematics();
       void
       evaluate_pairs(const double step);
+      /// The pair kernel for one combination of the pair-law policies
+      /// (include/tribodyn/mca/pair_law.h), chosen in evaluate_pairs().
+      /// Compiled as a function of its own (no inlining into the
+      /// dispatch, no interprocedural clones: `noipa`), as when each
+      /// kernel had a single caller: its rounding (which products fuse
+      /// into FMAs) then does not depend on the combination that calls it.
       template <bool rotations,
                 bool plastic,
                 bool bonds,
                 class Pairs,
-                class FrictionLaw>
-      void
-      pair_kernel(const double step, const Pairs &geometry, FrictionLaw &law);
-      template <bool plastic>
-      void
-      bond_switching();
+                class FrictionLaw,
+                class MomentLaw>
+      [[gnu::noipa]] void
+      pair_kernel(const double step,
+                  const Pairs &geometry,
+                  FrictionLaw &law,
+                  MomentLaw   &moment);
+      /// Bond breaking and formation under the chosen criteria
+      /// (source/mca/bond_switching.h), at the end of the pair kernel.
+      template <bool plastic, class Breaking, class Formation>
+      [[gnu::noipa]] void
+      bond_switching(const Breaking &breaking, const Formation &formation);
       /// mu of unbonded pair @p p in this step under @p law.
       template <class Law>
       double
       friction_coefficient(const Law &law, const unsigned int p) const;
       /// Elastic energy sum |K|^2 / 2k of the relative-rotation moments
-      /// K_ij (updated in the pair kernel, pair_moment_law.h) of the pairs
-      /// counted by this rank.
+      /// K_ij (the moment law's, moment_laws.h) of the pairs counted by
+      /// this rank.
       double
       pair_moment_energy() const;
       /// Pair vector x_j - x_i (with the cached periodic image shift).
@@ -745,25 +762,11 @@ namespace tribodyn
         MaterialParameters m;
       };
       std::vector<MaterialConstants> mc;
-      /// Normal stiffnesses k = 2G / r0 of the two halves of a pair of
-      /// materials (i, j), and 1 / (k_i + k_j), by mat_i * n_materials +
-      /// mat_j.
-      struct SeriesSprings
-      {
-        double ki, kj, inv_sum;
-      };
+      /// The normal springs of each pair of materials (series_springs.h),
+      /// by mat_i * n_materials + mat_j.
       std::vector<SeriesSprings> springs;
-      /// Twisting and bending stiffnesses of the relative-rotation moment
-      /// by material pair as springs (empty unless moment_scene).
-      struct RotationSprings
-      {
-        double twist, bend;
-      };
-      std::vector<RotationSprings> rotation_springs;
-      unsigned int                 n_materials = 0;
-      bool plastic_scene = false, bond_scene = false, rotations = true;
-      /// Relative-rotation moments on (rotations and a stiffness > 0).
-      bool   moment_scene = false;
+      unsigned int               n_materials = 0;
+      bool   plastic_scene = false, bond_scene = false, rotations = true;
       double d = 0, r0 = 0, S = 0, V = 0, range = 0;
       /// Geometry/Size bands given: automata of several sizes.
       bool graded = false;
@@ -844,9 +847,6 @@ namespace tribodyn
       /// i <-> j) and two factors hold both: 40 instead of 48 bytes.
       VectorArray         tau;
       std::vector<double> tau_scale_i, tau_scale_j;
-      /// Relative-rotation moment K_ij on i (-K_ij on j): odd under
-      /// i <-> j. Allocated only when moment_scene (else empty).
-      VectorArray pair_moment;
       /// Graded scenes: contact area S_ij and half rest length of each pair
       /// (empty otherwise: S and r0).
       std::vector<double> pair_area, pair_half_rest;
@@ -870,6 +870,12 @@ namespace tribodyn
       /// The friction laws of unbonded pairs (the chosen one holds its
       /// pair state, registered in pair_fields).
       FrictionLaws friction_laws;
+      /// The relative-rotation moment K_ij (the chosen law holds the
+      /// moment of each pair, registered in pair_fields) and the bond
+      /// breaking and formation criteria (pair_law.h).
+      MomentLaws        moment_laws;
+      BondBreakingLaws  breaking_laws;
+      BondFormationLaws formation_laws;
       /// Pair states received over a rebuild: records of
       /// pair_fields.width() doubles in id order (kept_states), and their
       /// keys (smaller id << 32 | larger id) with the record index, sorted.
