@@ -37,6 +37,9 @@ namespace tribodyn
                   * (1 + parameters.interaction.skin),
                 communicator)
         , friction_laws(parameters.interaction.friction)
+        , moment_laws(parameters.interaction.moment)
+        , breaking_laws(parameters.interaction.bond_breaking)
+        , formation_laws(parameters.interaction.bond_formation)
     {
       const auto &g = prm.geometry;
       d             = g.automaton_size;
@@ -69,20 +72,18 @@ namespace tribodyn
             const double ki = a.two_G / r0, kj = b.two_G / r0;
             springs.push_back({ki, kj, 1. / (ki + kj)});
           }
-      // Relative-rotation moment (doc/theory/mca.md §3): the contact face
-      // of area S as a circle, I = S^2 / (4 pi) about a diameter, J = 2 I
-      // polar; the stiffness per unit area of the two halves in series,
-      // k = k_i k_j / (k_i + k_j), is that of the normal and shear springs.
-      const double lambda = prm.interaction.relative_rotation_stiffness;
-      moment_scene        = prm.interaction.relative_rotation_on();
-      if (moment_scene)
-        for (const auto &k : springs)
-          {
-            const double k_area = k.ki * k.kj * k.inv_sum;
-            const double I      = S * S / (4 * M_PI);
-            rotation_springs.push_back(
-              {lambda * k_area * 2 * I, lambda * k_area * I});
-          }
+      // The relative-rotation moment's springs (doc/theory/mca.md §3),
+      // from the normal ones; a moment law that follows the relative
+      // rotation needs rotations (parsing refuses it without).
+      moment_laws.with_selected([&](auto &law) {
+        if (law.needs_rotations && !rotations)
+          throw InputError(
+            "Parameter 'Interaction/Relative rotation stiffness' > 0 needs "
+            "'Interaction/Rotations = true' (the moment follows the "
+            "relative rotation of the automata): switch rotations on, or "
+            "set the stiffness to 0.");
+        law.set_up(springs, S);
+      });
       register_pair_fields();
     }
 
@@ -122,13 +123,8 @@ namespace tribodyn
                        nullptr,
                        {},
                        {}});
-      pair_fields.add({"moment",
-                       Relabel::odd,
-                       0,
-                       c(pair_moment),
-                       nullptr,
-                       [this] { return moment_scene; },
-                       {}});
+      // the moment law's state (the moment K_ij), if it has one
+      moment_laws.register_pair_fields(pair_fields);
       // graded scenes: the geometry of each pair (even: it has no sides)
       pair_fields.add({"area",
                        Relabel::even,
@@ -302,8 +298,7 @@ namespace tribodyn
             if (prm.interaction.plasticity && prm.materials[m].is_plastic())
               plastic_scene = true;
           }
-      bond_scene
-        = prm.interaction.bond_breaking || prm.interaction.bond_formation;
+      bond_scene = prm.interaction.bond_switching_on();
       // current yield stresses: plastic scenes only (otherwise the initial
       // ones of the materials)
       if (plastic_scene)
@@ -441,7 +436,7 @@ namespace tribodyn
                             + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
           elastic += volume[k] * (sm * sm / (2 * m.K) + ss / (4 * m.G));
         }
-      if (moment_scene)
+      if (moment_laws.active())
         elastic += pair_moment_energy();
       unsigned long long nb = 0, nu = 0;
       for (unsigned int p = 0; p < pi.size(); ++p)
@@ -566,7 +561,8 @@ namespace tribodyn
               = 0.5 * (tau_scale_i[p] + tau_scale_j[p]) * tau.component[c][p];
           pv.heat     = heat.empty() ? 0. : heat[p];
           pv.distance = pair_distance(p);
-          pv.moment   = moment_scene ? pair_moment[p] : Vec3{{0, 0, 0}};
+          moment_laws.with_selected(
+            [&](const auto &law) { pv.moment = law.moment(p); });
           out.push_back(pv);
         }
       return out;

@@ -51,17 +51,6 @@ namespace tribodyn
           {dn[0][b] * inv_r[b], dn[1][b] * inv_r[b], dn[2][b] * inv_r[b]}};
       }
     };
-
-    /// 3 J2, the square of the von Mises stress: the bond criterion
-    /// compares it with the squared strength (no square root per pair).
-    inline double
-    von_mises_squared(const Sym3 &s)
-    {
-      const double m = (s[0] + s[1] + s[2]) / 3;
-      const double a = s[0] - m, b = s[1] - m, c = s[2] - m;
-      return 1.5 * (a * a + b * b + c * c)
-             + 3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-    }
   } // namespace mca
 } // namespace tribodyn
 

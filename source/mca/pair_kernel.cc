@@ -1,16 +1,20 @@
 // The pair law of the automata (seed eqs. 1-3, design §6): strain
 // increments of the pairs, many-body mean-stress increments, pair stresses
 // with the plastic correction, contact constraints of unbonded pairs (the
-// friction law, include/tribodyn/mca/friction_law.h), forces and torques;
-// then bond breaking and formation (bond_switching.cc).
+// friction law, include/tribodyn/mca/friction_law.h), the relative-rotation
+// moment (moment_laws.h), forces and torques; then bond breaking and
+// formation (bond_switching.h, under the criteria of bond_laws.h). The
+// kernel is compiled per combination of these policies, chosen once in
+// evaluate_pairs() (include/tribodyn/mca/pair_law.h).
 
+#include "bond_switching.h"
 #include "pair_blocks.h"
 #include "pair_geometry.h"
-#include "pair_moment_law.h"
 
 #include <algorithm>
 #include <cmath>
 #include <tribodyn/mca/automaton_system.h>
+#include <tribodyn/mca/pair_law.h>
 #include <tribodyn/mca/plasticity.h>
 #include <type_traits>
 
@@ -93,48 +97,70 @@ namespace tribodyn
       // Neighbourhoods that changed at the last step (contacts, bonds).
       if (any_changed)
         update_neighbourhood_weights(false);
-      // The kernel for the scene's combination of features, pair geometry
-      // and friction law, chosen once here: no per-pair flags in its loops.
-      const auto dispatch = [&](const auto &geometry, auto &law) {
-        using G        = std::decay_t<decltype(geometry)>;
-        using L        = std::decay_t<decltype(law)>;
-        const bool rot = rotations;
-        if (rot && plastic_scene && bond_scene)
-          pair_kernel<true, true, true, G, L>(step_dt, geometry, law);
-        else if (rot && plastic_scene)
-          pair_kernel<true, true, false, G, L>(step_dt, geometry, law);
-        else if (rot && bond_scene)
-          pair_kernel<true, false, true, G, L>(step_dt, geometry, law);
-        else if (rot)
-          pair_kernel<true, false, false, G, L>(step_dt, geometry, law);
-        else if (plastic_scene && bond_scene)
-          pair_kernel<false, true, true, G, L>(step_dt, geometry, law);
-        else if (plastic_scene)
-          pair_kernel<false, true, false, G, L>(step_dt, geometry, law);
-        else if (bond_scene)
-          pair_kernel<false, false, true, G, L>(step_dt, geometry, law);
-        else
-          pair_kernel<false, false, false, G, L>(step_dt, geometry, law);
-      };
-      friction_laws.with_selected([&](auto &law) {
+      // The kernel for the scene's combination of the pair law's policies
+      // (pair_law.h), chosen once here: no per-pair flags in its loops.
+      // Adding a law to a family adds its kernels here through the
+      // family's list; nothing to change in this function.
+      const auto geometry = choice_of([&](const auto &f) {
         if (graded)
-          dispatch(GradedPairs{pair_area.data(),
-                               pair_half_rest.data(),
-                               r0,
-                               &face_offset,
-                               1. / S},
-                   law);
+          {
+            const GradedPairs g{pair_area.data(),
+                                pair_half_rest.data(),
+                                r0,
+                                &face_offset,
+                                1. / S};
+            f(g);
+          }
         else
-          dispatch(UniformPairs{S, r0, 1. / r0, d}, law);
+          {
+            const UniformPairs u{S, r0, 1. / r0, d};
+            f(u);
+          }
       });
+      with_chosen(
+        [&](auto        rot,
+            auto        plastic,
+            const auto &pairs,
+            auto       &friction,
+            auto       &moment,
+            const auto &breaking,
+            const auto &formation) {
+          using Moment         = std::decay_t<decltype(moment)>;
+          using Breaking       = std::decay_t<decltype(breaking)>;
+          using Formation      = std::decay_t<decltype(formation)>;
+          constexpr bool bonds = Breaking::active || Formation::active;
+          // (a moment law that needs rotations is refused without them
+          // at set-up: no kernel for that combination)
+          if constexpr (decltype(rot)::value || !Moment::needs_rotations)
+            {
+              pair_kernel<decltype(rot)::value,
+                          decltype(plastic)::value,
+                          bonds>(step_dt, pairs, friction, moment);
+              if constexpr (bonds)
+                bond_switching<decltype(plastic)::value>(breaking, formation);
+            }
+        },
+        CompileTimeSwitch{rotations},
+        CompileTimeSwitch{plastic_scene},
+        geometry,
+        friction_laws,
+        moment_laws,
+        breaking_laws,
+        formation_laws);
     }
 
 
-    template <bool rot, bool plastic, bool bonds, class Pairs, class Law>
+    template <bool rot,
+              bool plastic,
+              bool bonds,
+              class Pairs,
+              class Law,
+              class Moment>
     void
     AutomatonSystem::pair_kernel(const double step_dt,
                                  const Pairs &geometry,
-                                 Law         &law)
+                                 Law         &law,
+                                 Moment      &moment)
     {
       const unsigned int n_pairs = pi.size();
       if constexpr (Law::stateful)
@@ -163,7 +189,8 @@ namespace tribodyn
       alignas(64) double     b_dnew[3][block], b_du[3][block];
       alignas(64) double     b_r[block], b_ro[block], b_inv_r[block],
         b_inv_ro[block], b_inv_nm[block], b_dr[block], b_t[3][block],
-        b_wi[3][block], b_wj[3][block], b_dsm_i[block], b_dsm_j[block];
+        b_wi[3][block], b_wj[3][block], b_dsm_i[block], b_dsm_j[block],
+        b_n[3][block], b_nold[3][block];
       for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
         {
           const unsigned int nb = std::min(block, n_pairs - p0);
@@ -230,6 +257,18 @@ namespace tribodyn
               b_t[1][b] = py * s;
               b_t[2][b] = pz * s;
             }
+          // Kernels with rotations: the normals n and n_old of the step
+          // (the moment law turns with them), each rounded on its own, and
+          // the mid-step normal from them. (The kernels without rotations
+          // contract one product into the sum instead: both as before the
+          // moment laws became policies, bit for bit.)
+          if constexpr (rot)
+            for (unsigned int b = 0; b < nb; ++b)
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  b_n[c][b]    = b_dnew[c][b] * b_inv_r[b];
+                  b_nold[c][b] = (b_dnew[c][b] - b_du[c][b]) * b_inv_ro[b];
+                }
           for (unsigned int b = 0; b < nb; ++b)
             {
               const unsigned int p = p0 + b, i = pi[p], j = pj[p];
@@ -237,10 +276,18 @@ namespace tribodyn
               Vec3               n, nm, du;
               for (unsigned int c = 0; c < 3; ++c)
                 {
-                  n[c]  = b_dnew[c][b] * b_inv_r[b];
                   du[c] = b_du[c][b];
-                  nm[c] = (n[c] + (b_dnew[c][b] - du[c]) * b_inv_ro[b])
-                          * b_inv_nm[b];
+                  if constexpr (rot)
+                    {
+                      n[c]  = b_n[c][b];
+                      nm[c] = (n[c] + b_nold[c][b]) * b_inv_nm[b];
+                    }
+                  else
+                    {
+                      n[c]  = b_dnew[c][b] * b_inv_r[b];
+                      nm[c] = (n[c] + (b_dnew[c][b] - du[c]) * b_inv_ro[b])
+                              * b_inv_nm[b];
+                    }
                 }
               double               dr_p = b_dr[b], r_prev = ro;
               const SeriesSprings &k = springs[mat[i] * n_materials + mat[j]];
@@ -262,9 +309,8 @@ namespace tribodyn
                       tau.set(p, {{0, 0, 0}});
                       tau_scale_i[p] = tau_scale_j[p] = 1;
                       q_i[p]                          = r / 2;
-                      if constexpr (rot)
-                        if (moment_scene)
-                          pair_moment.set(p, {{0, 0, 0}});
+                      if constexpr (Moment::active)
+                        moment.separate(p);
                       continue;
                     }
                   if (!in_contact[p])
@@ -280,33 +326,28 @@ namespace tribodyn
                 }
               const double qi = q_i[p], qj = r_prev - qi;
 
-              // Relative-rotation moment K_ij (pair_moment_law.h): its trial
+              // Relative-rotation moment K_ij (moment_laws.h): its trial
               // update from this step's kinematics, gathered above; pass C
               // limits it and adds its torques.
-              if constexpr (rot)
-                if (moment_scene)
-                  {
-                    Vec3 n_old, wi, wj;
-                    for (unsigned int c = 0; c < 3; ++c)
-                      {
-                        n_old[c] = (b_dnew[c][b] - b_du[c][b]) * b_inv_ro[b];
-                        wi[c]    = b_wi[c][b];
-                        wj[c]    = b_wj[c][b];
-                      }
-                    const RotationSprings &ks
-                      = rotation_springs[mat[i] * n_materials + mat[j]];
-                    const double f = geometry.moment_scale(p);
-                    pair_moment.set(p,
-                                    pair_moment_law::trial(pair_moment[p],
-                                                           n_old,
-                                                           n,
-                                                           nm,
-                                                           wi,
-                                                           wj,
-                                                           step_dt,
-                                                           f * ks.twist,
-                                                           f * ks.bend));
-                  }
+              if constexpr (Moment::active)
+                {
+                  Vec3 n_old, wi, wj;
+                  for (unsigned int c = 0; c < 3; ++c)
+                    {
+                      n_old[c] = b_nold[c][b];
+                      wi[c]    = b_wi[c][b];
+                      wj[c]    = b_wj[c][b];
+                    }
+                  moment.trial(p,
+                               mat[i] * n_materials + mat[j],
+                               n_old,
+                               n,
+                               nm,
+                               wi,
+                               wj,
+                               step_dt,
+                               geometry.moment_scale(p));
+                }
 
               // Tangential: relative displacement of the contact points.
               if constexpr (rot)
@@ -610,47 +651,41 @@ namespace tribodyn
               // Relative-rotation moment K_ij: an unbonded contact's limit
               // from its final normal stress (the slip work is friction
               // work, counted by side i's owner), and its torques.
-              if constexpr (rot)
-                if (moment_scene)
-                  {
-                    Vec3 K = pair_moment[p];
-                    if (!bonded[p])
-                      {
-                        const RotationSprings &ks
-                          = rotation_springs[mat[i] * n_materials + mat[j]];
-                        const double f = geometry.moment_scale(p);
-                        // (the face of a pair of other size: its own radius)
-                        double radius = face_radius;
-                        if constexpr (Pairs::offsets)
-                          radius = std::sqrt(geometry.area(p) / M_PI);
-                        const double slip_work
-                          = pair_moment_law::limit_unbonded(
-                            K,
-                            n,
-                            -Sp * sn,
-                            friction_coefficient(law, p),
-                            radius,
-                            f * ks.twist,
-                            f * ks.bend);
-                        if (owned(i))
-                          friction_work += slip_work;
-                        pair_moment.set(p, K);
-                      }
-                    if (owned(i))
-                      for (unsigned int c = 0; c < 3; ++c)
-                        torque[i][c] += K[c];
-                    if (owned(j))
-                      for (unsigned int c = 0; c < 3; ++c)
-                        torque[j][c] -= K[c];
-                  }
+              if constexpr (Moment::active)
+                {
+                  Vec3 K;
+                  if (bonded[p])
+                    K = moment.moment(p);
+                  else
+                    {
+                      // (the face of a pair of other size: its own radius)
+                      double radius = face_radius;
+                      if constexpr (Pairs::offsets)
+                        radius = std::sqrt(geometry.area(p) / M_PI);
+                      const double slip_work
+                        = moment.limit_unbonded(p,
+                                                mat[i] * n_materials + mat[j],
+                                                n,
+                                                -Sp * sn,
+                                                friction_coefficient(law, p),
+                                                radius,
+                                                geometry.moment_scale(p),
+                                                K);
+                      if (owned(i))
+                        friction_work += slip_work;
+                    }
+                  if (owned(i))
+                    for (unsigned int c = 0; c < 3; ++c)
+                      torque[i][c] += K[c];
+                  if (owned(j))
+                    for (unsigned int c = 0; c < 3; ++c)
+                      torque[j][c] -= K[c];
+                }
               // the final stress tensors, for the bond criteria
               if constexpr (bonds)
                 add_pair_stress(p, n, r, trial, false);
             }
         }
-
-      if constexpr (bonds)
-        bond_switching<plastic>();
     }
 
 

@@ -60,38 +60,11 @@ namespace tribodyn
                           "adapted to MCA) for materials whose Hardening "
                           "is not 'elastic'. Skipped when every material "
                           "is elastic.");
-        prm.declare_entry("Bond breaking",
-                          "false",
-                          Bool(),
-                          "Bonded pairs break when the von Mises stress of "
-                          "the pair reaches the Bond breaking stress.");
-        prm.declare_entry("Bond formation",
-                          "false",
-                          Bool(),
-                          "Unbonded pairs in compression at the yield "
-                          "stress whose plastic heat reaches the fraction "
-                          "below of the bond energy become bonded.");
+        // the pair-law policies' own entries (pair_law.h)
         FrictionLaws::Parameters::declare_parameters(prm);
-        prm.declare_entry(
-          "Relative rotation stiffness",
-          "0",
-          Double(),
-          "Factor of the stiffnesses of the moment K_ij of the relative "
-          "rotation of the two automata of a pair (seed eq. 1): an "
-          "incremental elastic moment, twisting stiffness factor * k * J "
-          "and bending stiffness factor * k * I, with k the pair's series "
-          "stiffness per unit area and I = S^2/(4 pi), J = 2 I the second "
-          "moments of a circular contact face of area S "
-          "(doc/theory/mca.md). Unbonded pairs in contact carry it up to "
-          "the no-tension (bending) and Coulomb (twisting) limits. 0: no "
-          "K_ij (as before); 1: the parallel-bond value. Needs Rotations; "
-          "in [0, 2 sqrt(2) pi = 8.89] (above, the explicit step limit "
-          "would not cover the springs).");
-        prm.declare_entry("Bond formation heat fraction",
-                          "0.5",
-                          Double(),
-                          "Plastic heat of a pair needed to bond, as a "
-                          "fraction of its bond energy (seed: 1/2), >= 0.");
+        MomentLaws::Parameters::declare_parameters(prm);
+        BondBreakingLaws::Parameters::declare_parameters(prm);
+        BondFormationLaws::Parameters::declare_parameters(prm);
         prm.declare_entry("Skin",
                           "0.2",
                           Double(),
@@ -121,15 +94,12 @@ namespace tribodyn
     {
       prm.enter_subsection("Interaction");
       {
-        rotations      = prm.get_bool("Rotations");
-        plasticity     = prm.get_bool("Plasticity");
-        bond_breaking  = prm.get_bool("Bond breaking");
-        bond_formation = prm.get_bool("Bond formation");
+        rotations  = prm.get_bool("Rotations");
+        plasticity = prm.get_bool("Plasticity");
         friction.parse_parameters(prm);
-        relative_rotation_stiffness
-          = prm.get_double("Relative rotation stiffness");
-        bond_formation_heat_fraction
-          = prm.get_double("Bond formation heat fraction");
+        moment.parse_parameters(prm);
+        bond_breaking.parse_parameters(prm);
+        bond_formation.parse_parameters(prm);
         skin = prm.get_double("Skin");
         elastic_regions.clear();
         for (const std::string &entry : split(prm.get("Elastic regions"), ';'))
@@ -145,33 +115,6 @@ namespace tribodyn
             r.b     = read_point(t, 3, "Interaction/Elastic regions", entry);
             elastic_regions.push_back(r);
           }
-        // Above pi d^2 / S = 2 sqrt(2) pi the moments' springs make the
-        // rotation of an automaton whose neighbours turn the other way
-        // stiffer than its shear springs make a rotation with them (the
-        // stiffest rotational mode without K_ij), and the step limit of
-        // Time/Courant factor no longer covers them (doc/theory/mca.md §3).
-        check_parameter_range(
-          "Interaction/Relative rotation stiffness",
-          relative_rotation_stiffness,
-          0,
-          2 * std::sqrt(2.) * M_PI,
-          false,
-          false,
-          "Above 2 sqrt(2) pi the relative-rotation springs are stiffer than "
-          "the shear springs' rotational stiffness and the explicit time "
-          "step would not cover them; 1 is the parallel-bond value.");
-        if (relative_rotation_stiffness > 0 && !rotations)
-          throw InputError(
-            "Parameter 'Interaction/Relative rotation stiffness' > 0 needs "
-            "'Interaction/Rotations = true' (the moment follows the "
-            "relative rotation of the automata): switch rotations on, or "
-            "set the stiffness to 0.");
-        check_parameter_range("Interaction/Bond formation heat fraction",
-                              bond_formation_heat_fraction,
-                              0,
-                              inf,
-                              false,
-                              true);
         check_parameter_range("Interaction/Skin", skin, 0, 1, true, false);
       }
       prm.leave_subsection();

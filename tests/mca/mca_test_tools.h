@@ -28,14 +28,14 @@ namespace tribodyn_test
     g.domain_upper   = Point3(n * a, n * a, n * a);
     g.periodic       = {{periodic_xy, periodic_xy, false}};
     Body b;
-    b.lower                      = g.domain_lower;
-    b.upper                      = g.domain_upper;
-    b.material                   = material;
-    g.bodies                     = {b};
-    p.interaction.rotations      = true;
-    p.interaction.plasticity     = false;
-    p.interaction.bond_breaking  = false;
-    p.interaction.bond_formation = false;
+    b.lower                                                    = g.domain_lower;
+    b.upper                                                    = g.domain_upper;
+    b.material                                                 = material;
+    g.bodies                                                   = {b};
+    p.interaction.rotations                                    = true;
+    p.interaction.plasticity                                   = false;
+    p.interaction.bond_breaking.get<VonMisesBondBreaking>().on = false;
+    p.interaction.bond_formation.get<PlasticHeatBondFormation>().on = false;
     return p;
   }
 

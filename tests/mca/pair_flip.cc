@@ -31,7 +31,7 @@ main(int argc, char **argv)
   p.geometry.periodic                        = {{true, true, false}};
   p.geometry.bodies[0].lower                 = Point3(0, 0, 0);
   p.geometry.bodies[0].upper                 = Point3(a, a, a / 2);
-  p.interaction.relative_rotation_stiffness  = 1;
+  p.interaction.moment.get<ElasticMoment>().stiffness = 1;
   AutomatonSystem system(p, MPI_COMM_WORLD);
   system.setup();
   check(system.n_global_automata() == 2,

@@ -44,9 +44,9 @@ main(int argc, char **argv)
   p.geometry.interface_height                = 2 * a;
   p.geometry.roughness_amplitude             = 0;
   p.interaction.plasticity                   = true;
-  p.interaction.bond_formation               = true;
-  p.interaction.friction.get<AmontonsCoulomb>().mu = 1.0;
-  const auto     &m                                = p.materials[0];
+  p.interaction.bond_formation.get<PlasticHeatBondFormation>().on = true;
+  p.interaction.friction.get<AmontonsCoulomb>().mu                = 1.0;
+  const auto     &m = p.materials[0];
   AutomatonSystem system(p, MPI_COMM_WORLD);
   system.setup();
   const unsigned int                    n = system.n_owned_automata();

@@ -40,7 +40,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const double                             d = 1e-3;
   Parameters                               p = two_automata_parameters(d);
-  p.interaction.bond_breaking                = true;
+  p.interaction.bond_breaking.get<VonMisesBondBreaking>().on = true;
   auto &law = p.interaction.friction.get<Dieterich>();
   p.interaction.friction.select<Dieterich>();
   check(p.interaction.friction.is<Dieterich>(), "Dieterich chosen");

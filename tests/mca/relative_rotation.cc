@@ -64,7 +64,7 @@ namespace
         p.geometry.bodies[0].upper = Point3(2 * a, 2 * a, a / 2);
         p.geometry.size_bands      = {{-4 * a, 6 * a, 1}};
         p.geometry.fine_free_faces = false;
-        p.interaction.relative_rotation_stiffness = lambda;
+        p.interaction.moment.get<ElasticMoment>().stiffness = lambda;
         return p;
       }
     p.geometry.domain_lower    = Point3(-2 * a, -2 * a, -2 * a);
@@ -78,8 +78,8 @@ namespace
         b1.lower                   = Point3(a / 2, a / 2, 0);
         p.geometry.bodies.push_back(b1);
       }
-    p.interaction.relative_rotation_stiffness        = lambda;
-    p.interaction.friction.get<AmontonsCoulomb>().mu = 0.3;
+    p.interaction.moment.get<ElasticMoment>().stiffness = lambda;
+    p.interaction.friction.get<AmontonsCoulomb>().mu    = 0.3;
     return p;
   }
 

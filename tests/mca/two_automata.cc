@@ -25,13 +25,13 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const double                             d       = 1e-3;
-  Parameters                               p       = two_automata_parameters(d);
-  p.interaction.plasticity                         = true;
-  p.interaction.bond_breaking                      = true;
-  p.interaction.bond_formation                     = true;
-  p.interaction.friction.get<AmontonsCoulomb>().mu = 0.3;
-  const auto     &m                                = p.materials[0];
+  const double                             d = 1e-3;
+  Parameters                               p = two_automata_parameters(d);
+  p.interaction.plasticity                   = true;
+  p.interaction.bond_breaking.get<VonMisesBondBreaking>().on      = true;
+  p.interaction.bond_formation.get<PlasticHeatBondFormation>().on = true;
+  p.interaction.friction.get<AmontonsCoulomb>().mu                = 0.3;
+  const auto     &m = p.materials[0];
   AutomatonSystem system(p, MPI_COMM_WORLD);
   system.setup();
   check(system.n_global_automata() == 2,

@@ -12,10 +12,15 @@
 #include <deal.II/particles/particle_handler.h>
 #include <functional>
 #include <memory>
+#include <tribodyn/mca/automaton_arrays.h>
+#include <tribodyn/mca/bond_laws.h>
 #include <tribodyn/mca/decomposition.h>
+#include <tribodyn/mca/moment_laws.h>
 #include <tribodyn/mca/packing.h>
+#include <tribodyn/mca/pair_arrays.h>
 #include <tribodyn/mca/pair_fields.h>
 #include <tribodyn/mca/parameters.h>
+#include <tribodyn/mca/series_springs.h>
 #include <tribodyn/mca/system_figures.h>
 #include <tribodyn/mca/vector_algebra.h>
 #include <vector>
@@ -48,10 +53,12 @@ namespace tribodyn
      * Between two pair-list rebuilds (when an automaton moved more than
      * skin/2) the state lives in flat arrays indexed by a local automaton
      * index: owned automata first (along the space-filling curve of their
-     * cells), then ghosts. At a rebuild, automata that entered a cell of
-     * another rank migrate through deal.II's ParticleHandler
-     * (sort_particles_into_subdomains_and_cells), and the states of their
-     * pairs follow them point to point.
+     * cells), then ghosts (the base AutomatonArrays, automaton_arrays.h),
+     * and in flat arrays indexed by pair (the base PairArrays,
+     * pair_arrays.h, with the table of the persistent pair fields). At a
+     * rebuild, automata that entered a cell of another rank migrate through
+     * deal.II's ParticleHandler (sort_particles_into_subdomains_and_cells), and
+     * the states of their pairs follow them point to point.
      *
      * Results do not depend on the partition: the pairs are ordered by a
      * global key (cell along the curve, then rank in the cell), so every
@@ -62,10 +69,12 @@ namespace tribodyn
      * pair kernel (strain increments -> mean-stress increments -> pair
      * stresses -> plastic correction -> contact constraints -> forces and
      * torques), boundary conditions, half kick. The pair kernel is
-     * compiled for each combination of {rotations, plasticity, bond
-     * switching} so that scenes pay only for what they use.
+     * compiled for each combination of the pair law's policies
+     * (rotations, plasticity, pair geometry, friction law, moment law,
+     * bond criteria; include/tribodyn/mca/pair_law.h) so that scenes pay
+     * only for what they use.
      */
-    class AutomatonSystem
+    class AutomatonSystem : private AutomatonArrays, private PairArrays
     {
     public:
       AutomatonSystem(const Parameters &parameters, const MPI_Comm comm);
@@ -170,16 +179,8 @@ namespace tribodyn
       {
         return n_global;
       }
-      unsigned int
-      n_owned_automata() const
-      {
-        return n_owned;
-      }
-      unsigned int
-      n_ghost_automata() const
-      {
-        return n_local - n_owned;
-      }
+      using AutomatonArrays::n_ghost_automata;
+      using AutomatonArrays::n_owned_automata;
       unsigned long long
       n_global_pairs() const;
       unsigned int
@@ -229,23 +230,18 @@ namespace tribodyn
                       const double       slab_hi = 0) const;
 
       // ---- access for analyses and tests (owned automata: index < n_owned)
-      const std::vector<Point3> &
-      positions() const
-      {
-        return x;
-      }
-      /// Displacement accumulated since the start (unaffected by periodic
-      /// wrapping).
-      const std::vector<Vec3> &
-      displacements() const
-      {
-        return u;
-      }
-      const std::vector<std::uint32_t> &
-      ids() const
-      {
-        return id;
-      }
+      // (read access to the automata's arrays: automaton_arrays.h)
+      using AutomatonArrays::angular_velocities;
+      using AutomatonArrays::displacements;
+      using AutomatonArrays::forces;
+      using AutomatonArrays::ids;
+      using AutomatonArrays::materials;
+      using AutomatonArrays::plastic_strains;
+      using AutomatonArrays::positions;
+      using AutomatonArrays::size_levels;
+      using AutomatonArrays::torques;
+      using AutomatonArrays::velocities;
+      using AutomatonArrays::volumes;
       /// Stress tensors of the owned automata (seed eq. 4, with the fabric
       /// correction), computed now from the pair stresses: not stored, so
       /// that an elastic scene keeps no tensor per automaton.
@@ -254,64 +250,15 @@ namespace tribodyn
       /// The same for owned automaton @p k.
       Sym3
       automaton_stress(const unsigned int k) const;
-      const std::vector<Vec3> &
-      velocities() const
-      {
-        return v;
-      }
-      const std::vector<double> &
-      plastic_strains() const
-      {
-        return eps_p;
-      }
-      const std::vector<unsigned char> &
-      materials() const
-      {
-        return mat;
-      }
-      const std::vector<Vec3> &
-      angular_velocities() const
-      {
-        return w;
-      }
-      /// Pair forces on the local automata at the last evaluation (owned:
-      /// complete; tests).
-      const std::vector<Vec3> &
-      forces() const
-      {
-        return f;
-      }
-      /// Size level L (size 2^L d) of each local automaton, and the volume
-      /// of each owned one (Voronoi cell near a change of size).
-      std::vector<unsigned int>
-      size_levels() const
-      {
-        std::vector<unsigned int> out(size_level.size());
-        for (unsigned int k = 0; k < out.size(); ++k)
-          out[k] = size_level[k] & ~transitional_flag;
-        return out;
-      }
-      const std::vector<double> &
-      volumes() const
-      {
-        return volume;
-      }
-      /// Pair torques on the local automata at the last evaluation (owned:
-      /// complete).
-      const std::vector<Vec3> &
-      torques() const
-      {
-        return torque;
-      }
       /// Twisting and bending stiffnesses (N m / rad) of the relative-
       /// rotation moment of a pair of materials @p mi, @p mj (0 when off).
       std::pair<double, double>
       rotation_stiffnesses(const unsigned int mi, const unsigned int mj) const
       {
-        if (rotation_springs.empty())
-          return {0., 0.};
-        const auto &k = rotation_springs[mi * n_materials + mj];
-        return {k.twist, k.bend};
+        std::pair<double, double> k{0., 0.};
+        moment_laws.with_selected(
+          [&](const auto &law) { k = law.stiffnesses(mi * n_materials + mj); });
+        return k;
       }
       /// Number of bonded pairs of each local automaton (owned: complete).
       std::vector<unsigned int>
@@ -368,18 +315,7 @@ namespace tribodyn
       }
 
       // ---- pair access (tests)
-      struct PairView
-      {
-        std::uint64_t id_i, id_j;
-        bool          bonded;
-        double        sigma; ///< mean of the two sides
-        Vec3          tau;
-        double        heat;
-        double        distance;
-        /// Relative-rotation moment K_ij on i (-K_ij on j); zero when
-        /// Interaction/Relative rotation stiffness is 0.
-        Vec3 moment;
-      };
+      using PairView = mca::PairView;
       std::vector<PairView>
       pair_views() const;
 
@@ -489,23 +425,35 @@ namespace tribodyn
       update_ghost_kinematics();
       void
       evaluate_pairs(const double step);
+      /// The pair kernel for one combination of the pair-law policies
+      /// (include/tribodyn/mca/pair_law.h), chosen in evaluate_pairs().
+      /// Compiled as a function of its own (no inlining into the
+      /// dispatch, no interprocedural clones: `noipa`), as when each
+      /// kernel had a single caller: its rounding (which products fuse
+      /// into FMAs) then does not depend on the combination that calls it.
       template <bool rotations,
                 bool plastic,
                 bool bonds,
                 class Pairs,
-                class FrictionLaw>
-      void
-      pair_kernel(const double step, const Pairs &geometry, FrictionLaw &law);
-      template <bool plastic>
-      void
-      bond_switching();
+                class FrictionLaw,
+                class MomentLaw>
+      [[gnu::noipa]] void
+      pair_kernel(const double step,
+                  const Pairs &geometry,
+                  FrictionLaw &law,
+                  MomentLaw   &moment);
+      /// Bond breaking and formation under the chosen criteria
+      /// (source/mca/bond_switching.h), at the end of the pair kernel.
+      template <bool plastic, class Breaking, class Formation>
+      [[gnu::noipa]] void
+      bond_switching(const Breaking &breaking, const Formation &formation);
       /// mu of unbonded pair @p p in this step under @p law.
       template <class Law>
       double
       friction_coefficient(const Law &law, const unsigned int p) const;
       /// Elastic energy sum |K|^2 / 2k of the relative-rotation moments
-      /// K_ij (updated in the pair kernel, pair_moment_law.h) of the pairs
-      /// counted by this rank.
+      /// K_ij (the moment law's, moment_laws.h) of the pairs counted by
+      /// this rank.
       double
       pair_moment_energy() const;
       /// Pair vector x_j - x_i (with the cached periodic image shift).
@@ -536,41 +484,6 @@ namespace tribodyn
         const double inv = 1. / r;
         return {{dn[0] * inv, dn[1] * inv, dn[2] * inv}};
       }
-      /// Bit of body[k] marking an automaton of an elastic region.
-      static constexpr unsigned char elastic_flag = 0x80;
-      /// Body index of local automaton @p k.
-      unsigned int
-      body_index(const unsigned int k) const
-      {
-        return body[k] & ~elastic_flag;
-      }
-      /// Does local automaton @p k belong to an elastic region?
-      bool
-      elastic(const unsigned int k) const
-      {
-        return (body[k] & elastic_flag) != 0;
-      }
-      /// Shear stress of side @p side (0: i, 1: j) of pair @p p.
-      Vec3
-      side_shear(const unsigned int p, const unsigned int side) const
-      {
-        const double a = side == 0 ? tau_scale_i[p] : tau_scale_j[p];
-        return {{a * tau.component[0][p],
-                 a * tau.component[1][p],
-                 a * tau.component[2][p]}};
-      }
-      /// Call @p f(p, side) for each pair p of owned automaton @p k (side 0:
-      /// k is the pair's i, 1: its j), as i first, in pair order.
-      template <typename F>
-      void
-      for_each_pair_of(const unsigned int k, const F &f) const
-      {
-        const unsigned int first = i_pairs_first[k];
-        for (unsigned int p = first; p < first + i_pairs_count[k]; ++p)
-          f(p, 0u);
-        for (unsigned int a = j_pairs_first[k]; a < j_pairs_first[k + 1]; ++a)
-          f(j_pairs[a], 1u);
-      }
       // --- restart on another number of ranks (redistribution.cc)
       /// The arrays of a saved state (checkpoint.cc), checked against this
       /// run (with @p same_ranks, also the number of ranks); the ghost
@@ -597,12 +510,6 @@ namespace tribodyn
         std::vector<Vec3>  group_reaction;
       };
       Absorbed absorbed;
-      /// Is local automaton @p k owned by this rank?
-      bool
-      owned(const unsigned int k) const
-      {
-        return k < n_owned;
-      }
 
       // --- neighbourhood weights (neighbourhood_weights.cc)
       /// Least-squares weights beta of the volumetric strain and inverse
@@ -646,18 +553,11 @@ namespace tribodyn
       group_value(const BoundaryGroup &g, const double t) const;
 
       // --- automata of several sizes (graded_geometry.cc)
-      /// Bit of size_level[k] marking an automaton near a change of size.
-      static constexpr unsigned char transitional_flag = 0x80;
       /// Size 2^L d of local automaton @p k.
       double
       automaton_size(const unsigned int k) const
       {
         return d * (1u << (size_level[k] & ~transitional_flag));
-      }
-      bool
-      transitional(const unsigned int k) const
-      {
-        return (size_level[k] & transitional_flag) != 0;
       }
       double
       mass_of(const unsigned int k) const
@@ -678,27 +578,10 @@ namespace tribodyn
       }
       /// Pair-list ranges [near a change of size][size level] of @p
       /// prm's scene: d (1 + skin) 2^L, times transition_face_factor() near
-      /// a change of size.
-      using RangeTable = std::array<std::array<double, 8>, 2>;
+      /// a change of size (RangeTable, pair_list_range():
+      /// automaton_arrays.h).
       static RangeTable
       pair_list_ranges(const Parameters &prm);
-      /// Pair-list range of two automata (or of an automaton and the
-      /// summary of a cell, cell_level_summary()) of size-level bytes @p a
-      /// and @p b: that of the larger size, near a change of size if
-      /// either is.
-      static double
-      pair_list_range(const RangeTable   &ranges,
-                      const unsigned char a,
-                      const unsigned char b)
-      {
-        const unsigned int level
-          = std::max(a & ~transitional_flag, b & ~transitional_flag);
-        return ranges[((a | b) & transitional_flag) != 0][level];
-      }
-      /// A ghost is sent when its squared distance to a cell of the
-      /// receiving rank is below this factor times its squared reach: the
-      /// margin covers the round-off of the cells' boxes.
-      static constexpr double ghost_reach_margin = 1 + 1e-12;
       /// Squared pair-list range of automata @p a and @p b.
       double
       pair_range2(const unsigned int a, const unsigned int b) const
@@ -745,25 +628,11 @@ namespace tribodyn
         MaterialParameters m;
       };
       std::vector<MaterialConstants> mc;
-      /// Normal stiffnesses k = 2G / r0 of the two halves of a pair of
-      /// materials (i, j), and 1 / (k_i + k_j), by mat_i * n_materials +
-      /// mat_j.
-      struct SeriesSprings
-      {
-        double ki, kj, inv_sum;
-      };
+      /// The normal springs of each pair of materials (series_springs.h),
+      /// by mat_i * n_materials + mat_j.
       std::vector<SeriesSprings> springs;
-      /// Twisting and bending stiffnesses of the relative-rotation moment
-      /// by material pair as springs (empty unless moment_scene).
-      struct RotationSprings
-      {
-        double twist, bend;
-      };
-      std::vector<RotationSprings> rotation_springs;
-      unsigned int                 n_materials = 0;
-      bool plastic_scene = false, bond_scene = false, rotations = true;
-      /// Relative-rotation moments on (rotations and a stiffness > 0).
-      bool   moment_scene = false;
+      unsigned int               n_materials = 0;
+      bool   plastic_scene = false, bond_scene = false, rotations = true;
       double d = 0, r0 = 0, S = 0, V = 0, range = 0;
       /// Geometry/Size bands given: automata of several sizes.
       bool graded = false;
@@ -785,107 +654,17 @@ namespace tribodyn
       std::vector<std::uint64_t>      rebalance_history;
       std::vector<unsigned long long> group_size;
 
-      // --- automata (local: owned first, then ghosts)
-      unsigned int               n_owned = 0, n_local = 0;
-      std::vector<std::uint32_t> id;
-      /// Global order key: curve index of the cell << 16 | rank of the id
-      /// within the cell (lives during a rebuild only).
-      std::vector<std::uint64_t> order;
-      std::vector<unsigned int>  cell_of; ///< local cell (at the rebuild)
-      std::vector<Point3>        x;
-      /// Positions at the last rebuild, for the skin test only (single
-      /// precision: a test against skin d / 2).
-      std::vector<std::array<float, 3>> x_at_rebuild;
-      /// v: velocity (the drift of a step is dt v); f: pair forces, then
-      /// (apply_boundary_forces) the total force of the kicks.
-      std::vector<Vec3> v, w, f, torque, u;
-      /// material index; body index, with elastic_flag for the automata
-      /// of elastic regions
-      std::vector<unsigned char> mat, body;
-      /// size level L (size 2^L d), with transitional_flag
-      std::vector<unsigned char> size_level;
-      /// Volume of each owned automaton (d^3/sqrt 2 in a uniform packing;
-      /// its Voronoi cell's near a change of size).
-      std::vector<double>        volume;
-      std::vector<std::uint32_t> groups;
-      std::vector<double>        eps_p, sigma_y;
-      /// Pair-force reaction of each boundary group on this rank (sum of
-      /// f over the group's owned automata before the loads are added).
-      std::vector<Vec3> group_reaction;
-      /// Per-step exchange buffers (stride given by their use).
-      std::vector<double> plast;       ///< sigma_m trial, M, heat share
-      std::vector<double> bond_buffer; ///< stress tensor (6), yield stress
-      /// sum_qs: plastic-heat shares; dsm: the volumetric strain increment,
-      /// then the mean-stress increment of each automaton.
-      std::vector<double> sum_qs, dsm;
-      /// Rate-dependent friction laws: mu of each pair in this step, and
-      /// the shear stress of each side at the start of the step (the
-      /// friction work of a limit that moves, pair_kernel.cc).
-      std::vector<double> pair_mu, shear_at_start;
-      /// Stress tensors T (eq. 4) of the owned automata: the plastic
-      /// trial in pass B, the final one in pass C of bond scenes.
-      std::vector<Mat3> trial;
-      /// Inverse fabric tensors (plastic and bond scenes, which need the
-      /// stress every step; otherwise computed when a stress is asked).
-      std::vector<Sym3> fabric_inverse;
-      /// Owned automata whose contacts or bonds changed (weights stale).
-      std::vector<unsigned char> changed;
-      bool                       any_changed = true;
-
-      // --- pairs (flat arrays indexed by pair; i has the smaller key)
-      std::vector<std::uint32_t> pi, pj;
-      std::vector<unsigned char> pshift; ///< image shift code of x_j
-      std::vector<unsigned char> bonded, in_contact;
-      std::vector<double>        q_i, sig_i, sig_j, heat;
-      /// Shear stresses: tau_i = tau_scale_i tau, tau_j = tau_scale_j tau.
-      /// The two sides' shear stresses are always parallel (the series
-      /// springs set them equal; the plastic correction and the Coulomb
-      /// limit of each side only scale them), so one vector (odd under
-      /// i <-> j) and two factors hold both: 40 instead of 48 bytes.
-      VectorArray         tau;
-      std::vector<double> tau_scale_i, tau_scale_j;
-      /// Relative-rotation moment K_ij on i (-K_ij on j): odd under
-      /// i <-> j. Allocated only when moment_scene (else empty).
-      VectorArray pair_moment;
-      /// Graded scenes: contact area S_ij and half rest length of each pair
-      /// (empty otherwise: S and r0).
-      std::vector<double> pair_area, pair_half_rest;
-      /// Graded scenes: offset e_ij of the pair's Voronoi face centroid
-      /// from the line of centres, where its forces act (zero on a
-      /// dodecahedron; doc/theory/mca.md §9).
-      VectorArray         face_offset;
-      std::vector<double> beta_i, beta_j;
-      /// Pairs of each owned automaton k. As i: the pairs are ordered by
-      /// the key of i, so k's form one block, i_pairs_first[k] ...
-      /// + i_pairs_count[k]; as j: j_pairs[j_pairs_first[k] ...
-      /// j_pairs_first[k + 1]] (CSR). 32 instead of 52 bytes a list of both.
-      std::vector<unsigned int>  i_pairs_first, j_pairs_first, j_pairs;
-      std::vector<std::uint16_t> i_pairs_count;
-
-      /// The persistent pair fields above with their relabelling rules
-      /// (register_pair_fields(): the one list of what a pair carries).
-      PairFieldTable pair_fields;
       void
       register_pair_fields();
       /// The friction laws of unbonded pairs (the chosen one holds its
       /// pair state, registered in pair_fields).
       FrictionLaws friction_laws;
-      /// Pair states received over a rebuild: records of
-      /// pair_fields.width() doubles in id order (kept_states), and their
-      /// keys (smaller id << 32 | larger id) with the record index, sorted.
-      std::vector<double>                                  kept_states;
-      std::vector<std::pair<std::uint64_t, std::uint32_t>> kept_keys;
-      /// This rank's old pairs by their ids (12 bytes each: this list is
-      /// part of the memory peak of a rebuild).
-      struct OldPair
-      {
-        std::uint32_t lo, hi; ///< smaller and larger id
-        std::uint32_t index;  ///< into the old pair arrays
-      };
-      std::vector<OldPair> old_pairs;
-      /// Per old pair: 1 = its i had the larger id.
-      std::vector<unsigned char> old_flags;
-
+      /// The relative-rotation moment K_ij (the chosen law holds the
+      /// moment of each pair, registered in pair_fields) and the bond
+      /// breaking and formation criteria (pair_law.h).
+      MomentLaws         moment_laws;
+      BondBreakingLaws   breaking_laws;
+      BondFormationLaws  formation_laws;
       double             plastic_work = 0, friction_work = 0;
       unsigned long long dropped_bonds = 0;
 

@@ -7,7 +7,9 @@
 #include <deal.II/base/point.h>
 #include <memory>
 #include <string>
+#include <tribodyn/mca/bond_laws.h>
 #include <tribodyn/mca/friction_laws.h>
+#include <tribodyn/mca/moment_laws.h>
 #include <vector>
 
 namespace tribodyn
@@ -285,26 +287,28 @@ namespace tribodyn
     /// Subsection "Interaction": what the pair law includes.
     struct InteractionParameters
     {
-      bool rotations      = true;
-      bool plasticity     = true;
-      bool bond_breaking  = false;
-      bool bond_formation = false;
-      /// The friction law of unbonded pairs and each law's constants.
-      FrictionLaws::Parameters friction;
-      /// Factor lambda of the stiffnesses of the relative-rotation moment
-      /// K_ij of seed eq. (1) (doc/theory/mca.md §3): twisting lambda k J,
-      /// bending lambda k I of the pair's contact face. 0: no K_ij.
-      double relative_rotation_stiffness = 0;
-      /// The moments K_ij are on: a stiffness factor > 0 (parsing refuses
+      bool rotations  = true;
+      bool plasticity = true;
+      /// The pair-law policies' choices and constants (pair_law.h): the
+      /// friction law of unbonded pairs, the relative-rotation moment
+      /// K_ij of seed eq. (1), bond breaking and bond formation.
+      FrictionLaws::Parameters      friction;
+      MomentLaws::Parameters        moment;
+      BondBreakingLaws::Parameters  bond_breaking;
+      BondFormationLaws::Parameters bond_formation;
+      /// The moments K_ij are on (a moment law is chosen; parsing refuses
       /// one without Rotations).
       bool
       relative_rotation_on() const
       {
-        return rotations && relative_rotation_stiffness > 0;
+        return rotations && moment.active();
       }
-      /// Fraction of the bond-breaking energy the plastic heat of an
-      /// unbonded pair must reach to bond (seed: one half).
-      double bond_formation_heat_fraction = 0.5;
+      /// Bonds break or form in this scene.
+      bool
+      bond_switching_on() const
+      {
+        return bond_breaking.active() || bond_formation.active();
+      }
       /// Pair-list skin as a fraction of the automaton size.
       double skin = 0.2;
       /// Boxes whose automata are declared elastic (no plastic return, no

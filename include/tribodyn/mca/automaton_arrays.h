@@ -1,0 +1,198 @@
+// The automata of a rank as flat arrays (design §6; doc/theory/mca.md §1):
+// a base of AutomatonSystem that holds its per-automaton state, indexed by
+// a local automaton index, and the per-step buffers of the pair kernel
+// per automaton. Between two pair-list rebuilds the owned automata come
+// first (along the space-filling curve of their cells), then the ghosts.
+#ifndef tribodyn_mca_automaton_arrays_h
+#define tribodyn_mca_automaton_arrays_h
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <tribodyn/mca/parameters.h>
+#include <tribodyn/mca/vector_algebra.h>
+#include <vector>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    /**
+     * Per-automaton arrays of AutomatonSystem (owned first, then ghosts),
+     * with the flags packed into them.
+     */
+    struct AutomatonArrays
+    {
+      unsigned int               n_owned = 0, n_local = 0;
+      std::vector<std::uint32_t> id;
+      /// Global order key: curve index of the cell << 16 | rank of the id
+      /// within the cell (lives during a rebuild only).
+      std::vector<std::uint64_t> order;
+      std::vector<unsigned int>  cell_of; ///< local cell (at the rebuild)
+      std::vector<Point3>        x;
+      /// Positions at the last rebuild, for the skin test only (single
+      /// precision: a test against skin d / 2).
+      std::vector<std::array<float, 3>> x_at_rebuild;
+      /// v: velocity (the drift of a step is dt v); f: pair forces, then
+      /// (apply_boundary_forces) the total force of the kicks.
+      std::vector<Vec3> v, w, f, torque, u;
+      /// material index; body index, with elastic_flag for the automata
+      /// of elastic regions
+      std::vector<unsigned char> mat, body;
+      /// size level L (size 2^L d), with transitional_flag
+      std::vector<unsigned char> size_level;
+      /// Volume of each owned automaton (d^3/sqrt 2 in a uniform packing;
+      /// its Voronoi cell's near a change of size).
+      std::vector<double>        volume;
+      std::vector<std::uint32_t> groups;
+      std::vector<double>        eps_p, sigma_y;
+      /// Pair-force reaction of each boundary group on this rank (sum of
+      /// f over the group's owned automata before the loads are added).
+      std::vector<Vec3> group_reaction;
+      /// Per-step exchange buffers (stride given by their use).
+      std::vector<double> plast;       ///< sigma_m trial, M, heat share
+      std::vector<double> bond_buffer; ///< stress tensor (6), yield stress
+      /// sum_qs: plastic-heat shares; dsm: the volumetric strain increment,
+      /// then the mean-stress increment of each automaton.
+      std::vector<double> sum_qs, dsm;
+      /// Stress tensors T (eq. 4) of the owned automata: the plastic
+      /// trial in pass B, the final one in pass C of bond scenes.
+      std::vector<Mat3> trial;
+      /// Inverse fabric tensors (plastic and bond scenes, which need the
+      /// stress every step; otherwise computed when a stress is asked).
+      std::vector<Sym3> fabric_inverse;
+      /// Owned automata whose contacts or bonds changed (weights stale).
+      std::vector<unsigned char> changed;
+      bool                       any_changed = true;
+
+      /// Is local automaton @p k owned by this rank?
+      bool
+      owned(const unsigned int k) const
+      {
+        return k < n_owned;
+      }
+      /// Bit of body[k] marking an automaton of an elastic region.
+      static constexpr unsigned char elastic_flag = 0x80;
+      /// Body index of local automaton @p k.
+      unsigned int
+      body_index(const unsigned int k) const
+      {
+        return body[k] & ~elastic_flag;
+      }
+      /// Does local automaton @p k belong to an elastic region?
+      bool
+      elastic(const unsigned int k) const
+      {
+        return (body[k] & elastic_flag) != 0;
+      }
+      /// Bit of size_level[k] marking an automaton near a change of size.
+      static constexpr unsigned char transitional_flag = 0x80;
+      /// Is local automaton @p k near a change of size?
+      bool
+      transitional(const unsigned int k) const
+      {
+        return (size_level[k] & transitional_flag) != 0;
+      }
+      /// Pair-list ranges [near a change of size][size level].
+      using RangeTable = std::array<std::array<double, 8>, 2>;
+      /// Pair-list range of two automata (or of an automaton and the
+      /// summary of a cell, cell_level_summary()) of size-level bytes @p a
+      /// and @p b: that of the larger size, near a change of size if
+      /// either is.
+      static double
+      pair_list_range(const RangeTable   &ranges,
+                      const unsigned char a,
+                      const unsigned char b)
+      {
+        const unsigned int level
+          = std::max(a & ~transitional_flag, b & ~transitional_flag);
+        return ranges[((a | b) & transitional_flag) != 0][level];
+      }
+      /// A ghost is sent when its squared distance to a cell of the
+      /// receiving rank is below this factor times its squared reach: the
+      /// margin covers the round-off of the cells' boxes.
+      static constexpr double ghost_reach_margin = 1 + 1e-12;
+
+      // ---- read access (public in AutomatonSystem; owned automata:
+      // index < n_owned)
+      unsigned int
+      n_owned_automata() const
+      {
+        return n_owned;
+      }
+      unsigned int
+      n_ghost_automata() const
+      {
+        return n_local - n_owned;
+      }
+      const std::vector<Point3> &
+      positions() const
+      {
+        return x;
+      }
+      /// Displacement accumulated since the start (unaffected by periodic
+      /// wrapping).
+      const std::vector<Vec3> &
+      displacements() const
+      {
+        return u;
+      }
+      const std::vector<std::uint32_t> &
+      ids() const
+      {
+        return id;
+      }
+      const std::vector<Vec3> &
+      velocities() const
+      {
+        return v;
+      }
+      const std::vector<double> &
+      plastic_strains() const
+      {
+        return eps_p;
+      }
+      const std::vector<unsigned char> &
+      materials() const
+      {
+        return mat;
+      }
+      const std::vector<Vec3> &
+      angular_velocities() const
+      {
+        return w;
+      }
+      /// Pair forces on the local automata at the last evaluation (owned:
+      /// complete; tests).
+      const std::vector<Vec3> &
+      forces() const
+      {
+        return f;
+      }
+      /// Size level L (size 2^L d) of each local automaton, and the volume
+      /// of each owned one (Voronoi cell near a change of size).
+      std::vector<unsigned int>
+      size_levels() const
+      {
+        std::vector<unsigned int> out(size_level.size());
+        for (unsigned int k = 0; k < out.size(); ++k)
+          out[k] = size_level[k] & ~transitional_flag;
+        return out;
+      }
+      const std::vector<double> &
+      volumes() const
+      {
+        return volume;
+      }
+      /// Pair torques on the local automata at the last evaluation (owned:
+      /// complete).
+      const std::vector<Vec3> &
+      torques() const
+      {
+        return torque;
+      }
+    };
+  } // namespace mca
+} // namespace tribodyn
+
+#endif

@@ -1,0 +1,113 @@
+// The pairs of a rank as flat arrays (design §6; doc/theory/mca.md §1, §3):
+// a base of AutomatonSystem that holds the pair list (i has the smaller
+// global key), the state of each pair, the table of its persistent fields
+// (pair_fields.h: what a pair carries over rebuilds, migration and
+// checkpoints) and the records that carry them over a rebuild.
+#ifndef tribodyn_mca_pair_arrays_h
+#define tribodyn_mca_pair_arrays_h
+
+#include <cstdint>
+#include <tribodyn/mca/pair_fields.h>
+#include <tribodyn/mca/vector_algebra.h>
+#include <utility>
+#include <vector>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    /// One pair as seen by tests (AutomatonSystem::pair_views()).
+    struct PairView
+    {
+      std::uint64_t id_i, id_j;
+      bool          bonded;
+      double        sigma; ///< mean of the two sides
+      Vec3          tau;
+      double        heat;
+      double        distance;
+      /// Relative-rotation moment K_ij on i (-K_ij on j); zero when
+      /// Interaction/Relative rotation stiffness is 0.
+      Vec3 moment;
+    };
+
+    /**
+     * Per-pair arrays of AutomatonSystem, indexed by pair.
+     */
+    struct PairArrays
+    {
+      std::vector<std::uint32_t> pi, pj;
+      std::vector<unsigned char> pshift; ///< image shift code of x_j
+      std::vector<unsigned char> bonded, in_contact;
+      std::vector<double>        q_i, sig_i, sig_j, heat;
+      /// Shear stresses: tau_i = tau_scale_i tau, tau_j = tau_scale_j tau.
+      /// The two sides' shear stresses are always parallel (the series
+      /// springs set them equal; the plastic correction and the Coulomb
+      /// limit of each side only scale them), so one vector (odd under
+      /// i <-> j) and two factors hold both: 40 instead of 48 bytes.
+      VectorArray         tau;
+      std::vector<double> tau_scale_i, tau_scale_j;
+      /// Graded scenes: contact area S_ij and half rest length of each pair
+      /// (empty otherwise: S and r0).
+      std::vector<double> pair_area, pair_half_rest;
+      /// Graded scenes: offset e_ij of the pair's Voronoi face centroid
+      /// from the line of centres, where its forces act (zero on a
+      /// dodecahedron; doc/theory/mca.md §9).
+      VectorArray         face_offset;
+      std::vector<double> beta_i, beta_j;
+      /// Pairs of each owned automaton k. As i: the pairs are ordered by
+      /// the key of i, so k's form one block, i_pairs_first[k] ...
+      /// + i_pairs_count[k]; as j: j_pairs[j_pairs_first[k] ...
+      /// j_pairs_first[k + 1]] (CSR). 32 instead of 52 bytes a list of both.
+      std::vector<unsigned int>  i_pairs_first, j_pairs_first, j_pairs;
+      std::vector<std::uint16_t> i_pairs_count;
+
+      /// Rate-dependent friction laws: mu of each pair in this step, and
+      /// the shear stress of each side at the start of the step (the
+      /// friction work of a limit that moves, pair_kernel.cc).
+      std::vector<double> pair_mu, shear_at_start;
+
+      /// The persistent pair fields above with their relabelling rules
+      /// (register_pair_fields(): the one list of what a pair carries).
+      PairFieldTable pair_fields;
+      /// Pair states received over a rebuild: records of
+      /// pair_fields.width() doubles in id order (kept_states), and their
+      /// keys (smaller id << 32 | larger id) with the record index, sorted.
+      std::vector<double>                                  kept_states;
+      std::vector<std::pair<std::uint64_t, std::uint32_t>> kept_keys;
+      /// This rank's old pairs by their ids (12 bytes each: this list is
+      /// part of the memory peak of a rebuild).
+      struct OldPair
+      {
+        std::uint32_t lo, hi; ///< smaller and larger id
+        std::uint32_t index;  ///< into the old pair arrays
+      };
+      std::vector<OldPair> old_pairs;
+      /// Per old pair: 1 = its i had the larger id.
+      std::vector<unsigned char> old_flags;
+
+      /// Shear stress of side @p side (0: i, 1: j) of pair @p p.
+      Vec3
+      side_shear(const unsigned int p, const unsigned int side) const
+      {
+        const double a = side == 0 ? tau_scale_i[p] : tau_scale_j[p];
+        return {{a * tau.component[0][p],
+                 a * tau.component[1][p],
+                 a * tau.component[2][p]}};
+      }
+      /// Call @p f(p, side) for each pair p of owned automaton @p k (side 0:
+      /// k is the pair's i, 1: its j), as i first, in pair order.
+      template <typename F>
+      void
+      for_each_pair_of(const unsigned int k, const F &f) const
+      {
+        const unsigned int first = i_pairs_first[k];
+        for (unsigned int p = first; p < first + i_pairs_count[k]; ++p)
+          f(p, 0u);
+        for (unsigned int a = j_pairs_first[k]; a < j_pairs_first[k + 1]; ++a)
+          f(j_pairs[a], 1u);
+      }
+    };
+  } // namespace mca
+} // namespace tribodyn
+
+#endif

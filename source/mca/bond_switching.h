@@ -1,0 +1,115 @@
+// Bond switching of the automata (seed 000 Sec. 2.1; doc/theory/mca.md
+// Sec. 5) under the chosen criteria (include/tribodyn/mca/bond_laws.h):
+// bonded pairs break (von Mises: at the bond breaking stress), unbonded
+// contacts bond (plastic heat: in compression at the yield stress once
+// their plastic heat reaches a fraction of the bond energy). Called at the
+// end of the pair kernel of bond scenes, in its translation unit
+// (pair_kernel.cc, which chooses the criteria); acts from the next step.
+#ifndef tribodyn_mca_bond_switching_h
+#define tribodyn_mca_bond_switching_h
+
+#include "pair_blocks.h"
+
+#include <algorithm>
+#include <tribodyn/mca/automaton_system.h>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    template <bool plastic, class Breaking, class Formation>
+    void
+    AutomatonSystem::bond_switching([[maybe_unused]] const Breaking  &breaking,
+                                    [[maybe_unused]] const Formation &formation)
+    {
+      // Bond switching (takes effect at the next step), from the automata's
+      // stress tensors (eq. 4) exchanged with the neighbours.
+      // member buffer: no allocation per step
+      std::vector<double> &ex = bond_buffer;
+      ex.assign(static_cast<std::size_t>(n_local) * 7, 0.);
+      for (unsigned int k = 0; k < n_owned; ++k)
+        {
+          ex[7 * k + 6] = plastic_scene ? sigma_y[k] : mc[mat[k]].yield0;
+          // an automaton of an elastic region with only elastic partners
+          // takes part in no bond check: its stress is not needed
+          bool needed = !elastic(k);
+          if (!needed)
+            for_each_pair_of(
+              k, [&](const unsigned int p, const unsigned int side) {
+                needed = needed || !elastic(side ? pi[p] : pj[p]);
+              });
+          if (!needed)
+            continue;
+          const Sym3 s = fabric_corrected(k, trial[k]);
+          for (unsigned int c = 0; c < 6; ++c)
+            ex[7 * k + c] = s[c];
+        }
+      if (neighbours.active())
+        neighbours.update(ex.data(), 7);
+      const unsigned int n_pairs = pi.size();
+      NormalBlock        nblock;
+      auto               pair_vector_of
+        = [this](const unsigned int p) { return pair_vector(p); };
+      for (unsigned int p0 = 0; p0 < n_pairs; p0 += NormalBlock::size)
+        {
+          const unsigned int nb = std::min(NormalBlock::size, n_pairs - p0);
+          nblock.fill(p0, nb, pair_vector_of);
+          for (unsigned int b = 0; b < nb; ++b)
+            {
+              const unsigned int p = p0 + b, i = pi[p], j = pj[p];
+              if (elastic(i) && elastic(j))
+                continue; // no bond switching inside elastic regions
+              const double r  = nblock.r[b];
+              const Vec3   n  = nblock.normal(b);
+              const double sn = 0.5 * (sig_i[p] + sig_j[p]);
+              const double am = 0.5 * (tau_scale_i[p] + tau_scale_j[p]);
+              if (bonded[p])
+                {
+                  if constexpr (Breaking::active)
+                    if (breaking.breaks(&ex[7 * i],
+                                        &ex[7 * j],
+                                        n,
+                                        sn,
+                                        am,
+                                        tau[p],
+                                        mc[mat[i]].sigma_b,
+                                        mc[mat[j]].sigma_b))
+                      {
+                        bonded[p] = 0;
+                        in_contact[p]
+                          = r < (graded ? 2 * pair_half_rest[p] : d);
+                        // a new contact for the friction law
+                        friction_laws.with_selected(
+                          [p](auto &law) { law.start_contact(p); });
+                        if (!heat.empty())
+                          heat[p] = 0;
+                        changed[i] = changed[j] = 1;
+                        any_changed             = true;
+                      }
+                }
+              else if (in_contact[p])
+                {
+                  if constexpr (Formation::active)
+                    if (formation.forms(sn,
+                                        ex[7 * i + 6],
+                                        ex[7 * j + 6],
+                                        heat.empty() ? 0. : heat[p],
+                                        mc[mat[i]].w_b,
+                                        mc[mat[j]].w_b,
+                                        area_of(p),
+                                        r))
+                      {
+                        bonded[p] = 1;
+                        if (!heat.empty())
+                          heat[p] = 0;
+                        changed[i] = changed[j] = 1;
+                        any_changed             = true;
+                      }
+                }
+            }
+        }
+    }
+  } // namespace mca
+} // namespace tribodyn
+
+#endif
