@@ -19,6 +19,45 @@ namespace tribodyn_test
             IsotropicElasticMaterial{80e9, 0.2, 1770.}};
   }
 
+  /// A map of the seed's generator with pixels of 0.1 mm: @p nx x @p ny
+  /// pixels, heterogeneities of height @p min_height to @p max_height (m).
+  inline Morphology
+  seed_generator_map(const unsigned int nx,
+                     const unsigned int ny,
+                     const double       min_height,
+                     const double       max_height,
+                     const double       fraction = 0.1,
+                     const unsigned int seed     = 1)
+  {
+    MorphologyParameters p;
+    p.n_pixels_x           = nx;
+    p.n_pixels_y           = ny;
+    p.width                = nx * 1e-4;
+    p.height               = ny * 1e-4;
+    p.inclusion_min_height = min_height;
+    p.inclusion_max_height = max_height;
+    p.volume_fraction      = fraction;
+    p.random_seed          = seed;
+    return Morphology::create(p);
+  }
+
+  /// A laminate of 40 x 20 pixels over 20 x 10 mm, two periods, 30 % of
+  /// heterogeneity, layers normal to @p normal.
+  inline Morphology
+  laminate_map(const MorphologyParameters::LaminateNormal normal)
+  {
+    MorphologyParameters p;
+    p.generator          = MorphologyParameters::Generator::laminate;
+    p.laminate_normal    = normal;
+    p.n_pixels_x         = 40;
+    p.n_pixels_y         = 20;
+    p.width              = 0.02;
+    p.height             = 0.01;
+    p.volume_fraction    = 0.3;
+    p.n_laminate_periods = 2;
+    return Morphology::create(p);
+  }
+
   /// Solve the boundary condition @p bc (the only one of @p parameters) on
   /// @p morphology, silently; @p levels (if given) gets the number of
   /// multigrid levels of the cell problem.

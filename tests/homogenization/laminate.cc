@@ -23,16 +23,7 @@ main(int argc, char **argv)
   for (const auto normal : {MorphologyParameters::LaminateNormal::x,
                             MorphologyParameters::LaminateNormal::y})
     {
-      MorphologyParameters p;
-      p.generator                   = MorphologyParameters::Generator::laminate;
-      p.laminate_normal             = normal;
-      p.n_pixels_x                  = 40;
-      p.n_pixels_y                  = 20;
-      p.width                       = 0.02;
-      p.height                      = 0.01;
-      p.volume_fraction             = 0.3;
-      p.n_laminate_periods          = 2;
-      const Morphology   morphology = Morphology::create(p);
+      const Morphology   morphology = laminate_map(normal);
       const double       f          = morphology.heterogeneity_fraction();
       const unsigned int axis
         = normal == MorphologyParameters::LaminateNormal::x ? 0 : 1;

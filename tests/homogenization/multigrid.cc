@@ -64,14 +64,7 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  MorphologyParameters p;
-  p.n_pixels_x                = 56;
-  p.n_pixels_y                = 16;
-  p.width                     = 5.6e-3;
-  p.height                    = 1.6e-3;
-  p.inclusion_min_height      = 0.3e-3;
-  p.inclusion_max_height      = 0.9e-3;
-  const Morphology random     = Morphology::create(p);
+  const Morphology random     = seed_generator_map(56, 16, 0.3e-3, 0.9e-3);
   const Morphology micrograph = Morphology::create(
     image_parameters(repository_path("prm/homogenization/micrograph.png"), 3));
   const auto pores = named_phases({{0, 0}, {30e9, 0.35}, {230e9, 0.2}}, 1e-6);

@@ -70,21 +70,6 @@ namespace
     return {C, c_z};
   }
 
-  /// A laminate of @p n_x x @p n_y pixels, layers normal to @p normal.
-  Morphology
-  laminate(const MorphologyParameters::LaminateNormal normal)
-  {
-    MorphologyParameters p;
-    p.generator          = MorphologyParameters::Generator::laminate;
-    p.laminate_normal    = normal;
-    p.n_pixels_x         = 40;
-    p.n_pixels_y         = 20;
-    p.width              = 0.02;
-    p.height             = 0.01;
-    p.volume_fraction    = 0.3;
-    p.n_laminate_periods = 2;
-    return Morphology::create(p);
-  }
 } // namespace
 
 
@@ -131,15 +116,8 @@ main(int argc, char **argv)
 
   // (b)
   {
-    MorphologyParameters p; // the seed's generator, 0.1 mm pixels
-    p.n_pixels_x                = 28;
-    p.n_pixels_y                = 8;
-    p.width                     = 2.8e-3;
-    p.height                    = 0.8e-3;
-    p.inclusion_min_height      = 0.3e-3;
-    p.inclusion_max_height      = 0.6e-3;
-    p.random_seed               = 3;
-    const Morphology morphology = Morphology::create(p);
+    const Morphology morphology
+      = seed_generator_map(28, 8, 0.3e-3, 0.6e-3, 0.1, 3);
     for (const unsigned int axis : {0u, 2u})
       {
         fibre.axis = axis;
@@ -175,7 +153,7 @@ main(int argc, char **argv)
         fibre.axis = axis;
         const std::vector<ElasticPhase> phases
           = {epoxy, ElasticPhase(fibre, 1800., "test")};
-        const Morphology   morphology = laminate(normal);
+        const Morphology   morphology = laminate_map(normal);
         const double       f          = morphology.heterogeneity_fraction();
         const unsigned int n
           = normal == MorphologyParameters::LaminateNormal::x ? 0 : 1;
@@ -198,16 +176,8 @@ main(int argc, char **argv)
 
   // (d)
   {
-    MorphologyParameters p; // the seed's generator, 0.1 mm pixels
-    p.n_pixels_x                = 56;
-    p.n_pixels_y                = 16;
-    p.width                     = 5.6e-3;
-    p.height                    = 1.6e-3;
-    p.inclusion_min_height      = 0.3e-3;
-    p.inclusion_max_height      = 0.9e-3;
-    p.volume_fraction           = 0.3;
-    p.random_seed               = 5;
-    const Morphology morphology = Morphology::create(p);
+    const Morphology morphology
+      = seed_generator_map(56, 16, 0.3e-3, 0.9e-3, 0.3, 5);
     for (const unsigned int axis : {0u, 2u})
       {
         fibre.axis = axis;

@@ -103,21 +103,12 @@ namespace tribodyn
       void
       register_pair_fields(PairFieldTable &table_of_fields)
       {
-        register_each(table_of_fields, std::index_sequence_for<Laws...>());
+        register_law_pair_fields(table_of_fields, laws, selected);
       }
 
     private:
       unsigned int        selected;
       std::tuple<Laws...> laws;
-
-      template <std::size_t... I>
-      void
-      register_each(PairFieldTable &t, std::index_sequence<I...>)
-      {
-        (std::get<I>(laws).register_pair_fields(
-           t, [this] { return selected == I; }),
-         ...);
-      }
     };
   } // namespace mca
 } // namespace tribodyn

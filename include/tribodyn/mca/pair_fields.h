@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace tribodyn
@@ -140,6 +142,36 @@ namespace tribodyn
     private:
       std::vector<PairField> fields;
     };
+
+    namespace internal
+    {
+      template <class Tuple, std::size_t... I>
+      void
+      register_law_pair_fields(PairFieldTable     &table,
+                               Tuple              &laws,
+                               const unsigned int &selected,
+                               std::index_sequence<I...>)
+      {
+        (std::get<I>(laws).register_pair_fields(
+           table, [&selected] { return selected == I; }),
+         ...);
+      }
+    } // namespace internal
+
+    /// Register the persistent pair fields of every law of a list (the
+    /// tuple @p laws), each in use only while it is the @p selected one:
+    /// the checkpoint layout is the same for every choice.
+    template <class... Laws>
+    void
+    register_law_pair_fields(PairFieldTable      &table,
+                             std::tuple<Laws...> &laws,
+                             const unsigned int  &selected)
+    {
+      internal::register_law_pair_fields(table,
+                                         laws,
+                                         selected,
+                                         std::index_sequence_for<Laws...>());
+    }
   } // namespace mca
 } // namespace tribodyn
 

@@ -167,21 +167,12 @@ namespace tribodyn
       void
       register_pair_fields(PairFieldTable &table)
       {
-        register_each(table, std::index_sequence_for<Laws...>());
+        register_law_pair_fields(table, laws, selected);
       }
 
     private:
       unsigned int        selected;
       std::tuple<Laws...> laws;
-
-      template <std::size_t... I>
-      void
-      register_each(PairFieldTable &t, std::index_sequence<I...>)
-      {
-        (std::get<I>(laws).register_pair_fields(
-           t, [this] { return selected == I; }),
-         ...);
-      }
     };
   } // namespace mca
 } // namespace tribodyn
