@@ -32,7 +32,7 @@
 #include <string>
 #include <tribodyn/core/law_selection.h>
 #include <tribodyn/core/selection.h>
-#include <tribodyn/mca/pair_fields.h>
+#include <tribodyn/mca/chosen_law_list.h>
 #include <tuple>
 #include <utility>
 
@@ -47,7 +47,7 @@ namespace tribodyn
      * the chosen one allocates pair state).
      */
     template <class... Laws>
-    class FrictionLawList
+    class FrictionLawList : public ChosenLawList<Laws...>
     {
     public:
       using Selection                     = LawSelection<Laws...>;
@@ -84,31 +84,9 @@ namespace tribodyn
       };
 
       explicit FrictionLawList(const Parameters &p)
-          : selected(p.selected)
-          , laws(Laws(std::get<typename Laws::Parameters>(p.laws))...)
+          : ChosenLawList<Laws...>(p.selected, p.laws)
       {
       }
-
-      /// Call @p f with the chosen law.
-      template <class F>
-      void
-      with_selected(const F &f)
-      {
-        Selection::with_selected(selected, laws, f);
-      }
-
-      /// Register the chosen law's persistent pair fields (every law
-      /// registers its own, in use only when chosen, so that the
-      /// checkpoint layout is the same for every choice).
-      void
-      register_pair_fields(PairFieldTable &table_of_fields)
-      {
-        register_law_pair_fields(table_of_fields, laws, selected);
-      }
-
-    private:
-      unsigned int        selected;
-      std::tuple<Laws...> laws;
     };
   } // namespace mca
 } // namespace tribodyn

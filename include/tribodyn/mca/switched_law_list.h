@@ -22,7 +22,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <tribodyn/core/law_selection.h>
-#include <tribodyn/mca/pair_fields.h>
+#include <tribodyn/mca/chosen_law_list.h>
 #include <tuple>
 #include <utility>
 
@@ -42,7 +42,7 @@ namespace tribodyn
     };
 
     template <class... Laws>
-    class SwitchedLawList
+    class SwitchedLawList : public ChosenLawList<Laws...>
     {
     public:
       using Selection = LawSelection<Laws...>;
@@ -121,58 +121,9 @@ namespace tribodyn
       };
 
       explicit SwitchedLawList(const Parameters &p)
-          : selected(p.selected())
-          , laws(Laws(std::get<typename Laws::Parameters>(p.laws))...)
+          : ChosenLawList<Laws...>(p.selected(), p.laws)
       {
       }
-
-      /// Call @p f with the chosen law.
-      template <class F>
-      void
-      with_selected(const F &f)
-      {
-        Selection::with_selected(selected, laws, f);
-      }
-      template <class F>
-      void
-      with_selected(const F &f) const
-      {
-        Selection::with_selected(selected, laws, f);
-      }
-
-      /// The law @p Law of the list (chosen or not).
-      template <class Law>
-      Law &
-      get()
-      {
-        return std::get<Selection::template index_of<Law>()>(laws);
-      }
-      template <class Law>
-      const Law &
-      get() const
-      {
-        return std::get<Selection::template index_of<Law>()>(laws);
-      }
-
-      /// Does the chosen law act (is it not its family's "none" law)?
-      bool
-      active() const
-      {
-        const bool on[] = {Laws::active...};
-        return on[selected];
-      }
-
-      /// Register every law's persistent pair fields, in use only for the
-      /// chosen one (the checkpoint layout is the same for every choice).
-      void
-      register_pair_fields(PairFieldTable &table)
-      {
-        register_law_pair_fields(table, laws, selected);
-      }
-
-    private:
-      unsigned int        selected;
-      std::tuple<Laws...> laws;
     };
   } // namespace mca
 } // namespace tribodyn
