@@ -115,6 +115,10 @@ namespace tribodyn
                        nullptr,
                        [this] { return bond_scene || !heat.empty(); },
                        {}});
+      // the many-body part of each side's normal stress (its offset from
+      // D mu of the side's automaton, which a rebuild folds into it)
+      pair_fields.add(
+        {"many_body", Relabel::sides, 0, {&mb_i, &mb_j}, nullptr, {}, {}});
       pair_fields.add({"tau", Relabel::odd, 0, c(tau), nullptr, {}, {}});
       pair_fields.add({"tau_scale",
                        Relabel::sides,
@@ -423,19 +427,10 @@ namespace tribodyn
     AutomatonSystem::energies() const
     {
       SystemEnergies e;
-      double         kinetic = 0, elastic = 0;
+      double         kinetic = 0, elastic = pair_elastic_energy();
       for (unsigned int k = 0; k < n_owned; ++k)
-        {
-          const auto &m = mc[mat[k]];
-          kinetic += 0.5 * mass_of(k) * dot(v[k], v[k])
-                     + 0.5 * inertia_of(k) * dot(w[k], w[k]);
-          const Sym3   s  = automaton_stress(k);
-          const double sm = (s[0] + s[1] + s[2]) / 3;
-          const double a = s[0] - sm, b = s[1] - sm, c = s[2] - sm;
-          const double ss = a * a + b * b + c * c
-                            + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-          elastic += volume[k] * (sm * sm / (2 * m.K) + ss / (4 * m.G));
-        }
+        kinetic += 0.5 * mass_of(k) * dot(v[k], v[k])
+                   + 0.5 * inertia_of(k) * dot(w[k], w[k]);
       if (moment_laws.active())
         elastic += pair_moment_energy();
       unsigned long long nb = 0, nu = 0;
@@ -449,19 +444,14 @@ namespace tribodyn
             else if (in_contact[p])
               ++nu;
           }
-      double sums[7] = {kinetic,
-                        elastic,
-                        plastic_work,
-                        friction_work,
-                        load_work,
-                        damped_work,
-                        pair_work};
-      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 7),
+      // the energies of this rank, then its works (one list: Work)
+      std::array<double, 2 + n_works> sums{};
+      sums[0] = kinetic;
+      sums[1] = elastic;
+      std::copy(work.begin(), work.end(), sums.begin() + 2);
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums),
                                   comm,
-                                  dealii::ArrayView<double>(sums, 7));
-      e.load_work                  = sums[4];
-      e.damped_work                = sums[5];
-      e.pair_work                  = sums[6];
+                                  dealii::ArrayView<double>(sums));
       unsigned long long counts[2] = {nb, nu};
       dealii::Utilities::MPI::sum(
         dealii::ArrayView<const unsigned long long>(counts, 2),
@@ -469,8 +459,14 @@ namespace tribodyn
         dealii::ArrayView<unsigned long long>(counts, 2));
       e.kinetic             = sums[0];
       e.elastic             = sums[1];
-      e.plastic_work        = sums[2];
-      e.friction_work       = sums[3];
+      const double *ws      = sums.data() + 2;
+      e.plastic_work        = ws[plastic_work];
+      e.friction_work       = ws[friction_work];
+      e.switching_work      = ws[switching_work];
+      e.many_body_work      = ws[many_body_work];
+      e.load_work           = ws[load_work];
+      e.damped_work         = ws[damped_work];
+      e.pair_work           = ws[pair_work];
       e.n_bonded            = counts[0];
       e.n_unbonded_contacts = counts[1];
       return e;
@@ -505,8 +501,8 @@ namespace tribodyn
         add(*vec);
       add(mat), add(body), add(size_level), add(volume), add(groups),
         add(eps_p), add(sigma_y);
-      add(plast), add(bond_buffer), add(sum_qs), add(dsm), add(pair_mu),
-        add(shear_at_start);
+      add(plast), add(bond_buffer), add(dsm), add(pair_mu), add(pair_dr);
+      add(mb_mu), add(mb_state);
       add(trial), add(fabric_inverse), add(changed);
       add(pi), add(pj), add(pshift);
       bytes += pair_fields.memory_consumption();

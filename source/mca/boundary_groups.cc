@@ -59,7 +59,7 @@ namespace tribodyn
         values[gi] = group_value(grp[gi], t);
       // The kinetic energy a constraint adds or removes is work of the
       // loads (the loading machine), recorded for the energy balance.
-      double work = 0;
+      double kick_work = 0;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           if (groups[k] == 0)
@@ -83,9 +83,9 @@ namespace tribodyn
                       }
               }
           if (set)
-            work += 0.5 * mass_of(k) * (dot(v[k], v[k]) - before);
+            kick_work += 0.5 * mass_of(k) * (dot(v[k], v[k]) - before);
         }
-      load_work += work;
+      work[load_work] += kick_work;
     }
 
 
@@ -212,9 +212,9 @@ namespace tribodyn
                     }
                 }
             }
-          pair_work
+          work[pair_work]
             += 0.25 * dt * (wp[0] + wp[1] + wp[2] + wp[3] + wp[4] + wp[5]);
-          load_work += 0.25 * dt * excess;
+          work[load_work] += 0.25 * dt * excess;
           return;
         }
       const bool stale
@@ -273,9 +273,9 @@ namespace tribodyn
                 }
             }
         }
-      pair_work += wp;
-      load_work += wl;
-      damped_work += wd;
+      work[pair_work] += wp;
+      work[load_work] += wl;
+      work[damped_work] += wd;
     }
 
 

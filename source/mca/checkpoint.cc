@@ -16,7 +16,7 @@
 // the list (a persistent pair field: register it, nothing else); the ctest
 // mca_restart_* tests compare a resumed run with an uninterrupted one and
 // fail if something is missed. Per-step scratch buffers (plast,
-// bond_buffer, sum_qs, dsm, trial) and the rebuild's transient lists
+// bond_buffer, dsm, pair_dr, trial) and the rebuild's transient lists
 // (kept_states, kept_keys, old_pairs, old_flags) are rebuilt before use and
 // are not saved; the material constants (mc, springs) come from the
 // parameters.
@@ -40,7 +40,9 @@ namespace tribodyn
       // the partition; 5: the friction law's pair state (Dieterich's theta);
       // 6: the run's state that follows is the postprocessors' (in list
       // order, source/mca/mca_problem.cc)
-      constexpr unsigned int state_version = 6;
+      // 7: the pair-level energy (many-body offsets of the sides, mu,
+      // kappa, gamma, G of the automata, switching and many-body work)
+      constexpr unsigned int state_version = 7;
 
       // Scalars and vectors of trivially copyable types as raw bytes (fast
       // and exact); anything else through Boost's own serialization.
@@ -94,18 +96,17 @@ namespace tribodyn
 #define MCA_CHECKPOINT_STATE(apply)                                           \
   /* counters and accumulators */                                             \
   apply(n_owned) apply(n_local) apply(current_time) apply(n_steps_done)       \
-  apply(rebuild_count) apply(plastic_work) apply(friction_work)               \
+  apply(rebuild_count) apply(work)                                            \
   apply(dropped_bonds) apply(any_changed)                                     \
   /* the partition: weights of each rebalance (replayed on resume) */         \
   apply(rebalance_count) apply(partition_imbalance) apply(rebalance_history)  \
   /* staged loading and energy bookkeeping */                                 \
-  apply(first_contact_time) apply(load_work) apply(damped_work)               \
-  apply(pair_work) apply(f_damp_rebuild)                                      \
+  apply(first_contact_time) apply(f_damp_rebuild)                            \
   /* automata: owned first, then ghosts */                                    \
   apply(id) apply(order) apply(cell_of) apply(x) apply(x_at_rebuild)          \
   apply(v) apply(w) apply(f) apply(torque) apply(u)                           \
   apply(mat) apply(body) apply(size_level) apply(volume) apply(groups)       \
-  apply(eps_p) apply(sigma_y)                                                \
+  apply(eps_p) apply(sigma_y) apply(mb_mu) apply(mb_state)                   \
   apply(group_reaction) apply(fabric_inverse) apply(changed) apply(f_damp)   \
   /* pairs: the list (the persistent fields follow, from pair_fields) */     \
   apply(pi) apply(pj) apply(pshift)

@@ -71,6 +71,7 @@ namespace tribodyn
           else
             std::vector<Sym3>().swap(fabric_inverse);
           index_pairs_of_automata();
+          mb_state.assign(n_owned, {{0, 0, 0}});
         }
       using Matrix6 = Eigen::Matrix<double, 6, 6>;
       using Vector6 = Eigen::Matrix<double, 6, 1>;
@@ -142,6 +143,14 @@ namespace tribodyn
                              });
           if (!fabric_inverse.empty())
             fabric_inverse[k] = inverse_fabric(k);
+          // kappa, gamma and G of the new weights: the jump of kappa G^2
+          // is booked as switching work (doc/theory/mca.md §8.4; that of
+          // all the automata, by rebuild())
+          const auto  &st     = mb_state[k];
+          const double before = st[0] * st[2] * st[2];
+          update_many_body_state(k);
+          if (!all)
+            work[switching_work] += before - st[0] * st[2] * st[2];
           changed[k] = 0;
         }
       any_changed = false;

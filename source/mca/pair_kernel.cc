@@ -9,6 +9,8 @@
 
 #include "bond_switching.h"
 #include "pair_blocks.h"
+#include "pair_energy.h"
+#include "pair_events.h"
 #include "pair_geometry.h"
 
 #include <algorithm>
@@ -164,15 +166,15 @@ namespace tribodyn
     {
       const unsigned int n_pairs = pi.size();
       if constexpr (Law::stateful)
-        {
-          pair_mu.resize(n_pairs);
-          shear_at_start.resize(2 * static_cast<std::size_t>(n_pairs));
-        }
+        pair_mu.resize(n_pairs);
+      pair_dr.resize(2 * static_cast<std::size_t>(n_pairs));
       // radius of the circular contact face of area S (moment limits)
       const double face_radius = std::sqrt(S / M_PI);
-      if constexpr (plastic)
-        sum_qs.assign(n_local, 0);
-      dsm.assign(n_local, 0);
+      dsm.assign(2 * static_cast<std::size_t>(n_local), 0);
+      // The many-body work of this step (doc/theory/mca.md §8.4): the
+      // work of the many-body parts of the side stresses over the step,
+      // minus the change of the automata's kappa G^2.
+      double mb_work = 0;
       // Contact and bond changes of this step mark both automata.
       auto mark = [&](const unsigned int p) {
         changed[pi[p]] = 1;
@@ -215,7 +217,7 @@ namespace tribodyn
                     b_wi[c][b] = w[i][c];
                     b_wj[c][b] = w[j][c];
                   }
-              __builtin_prefetch(&dsm[j], 1);
+              __builtin_prefetch(&dsm[2 * j], 1);
             }
           for (unsigned int b = 0; b < nb; ++b)
             {
@@ -301,7 +303,27 @@ namespace tribodyn
                   const double touch = geometry.contact_distance(p);
                   if (r >= touch)
                     {
-                      // separated: no interaction
+                      // separated: no interaction; the energy of a contact
+                      // that opens (or of a bond broken beyond the contact
+                      // distance at the last step) is released
+                      if (in_contact[p] || sig_i[p] != 0 || sig_j[p] != 0
+                          || b_t[0][b] != 0 || b_t[1][b] != 0 || b_t[2][b] != 0)
+                        {
+                          release_opening(p, ki, kj, b_dr[b]);
+                          if constexpr (Moment::active)
+                            if (owned(i))
+                              {
+                                Vec3 n_new;
+                                for (unsigned int c = 0; c < 3; ++c)
+                                  n_new[c] = b_dnew[c][b] * b_inv_r[b];
+                                work[switching_work]
+                                  += moment.energy(p,
+                                                   mat[i] * n_materials
+                                                     + mat[j],
+                                                   n_new,
+                                                   geometry.moment_scale(p));
+                              }
+                        }
                       if (in_contact[p])
                         mark(p);
                       in_contact[p] = 0;
@@ -319,6 +341,13 @@ namespace tribodyn
                       in_contact[p] = 1;
                       mark(p);
                       law.start_contact(p);
+                      // many-body parts from zero (a pair that holds no
+                      // stress)
+                      if (sig_i[p] == 0 && sig_j[p] == 0)
+                        {
+                          mb_i[p] = -mc[mat[i]].D * mb_mu[i];
+                          mb_j[p] = -mc[mat[j]].D * mb_mu[j];
+                        }
                       q_i[p] = touch / 2;
                       r_prev = touch;
                       dr_p   = r - touch;
@@ -384,23 +413,37 @@ namespace tribodyn
                 if (!bonded[p])
                   pair_mu[p]
                     = law.advance(p, std::sqrt(dot(du, du)) / step_dt, step_dt);
-              const Vec3 t{{b_t[0][b], b_t[1][b], b_t[2][b]}};
-              if constexpr (Law::stateful)
-                {
-                  const double t_norm       = std::sqrt(dot(t, t));
-                  shear_at_start[2 * p]     = std::abs(tau_scale_i[p]) * t_norm;
-                  shear_at_start[2 * p + 1] = std::abs(tau_scale_j[p]) * t_norm;
-                }
+              const Vec3   t{{b_t[0][b], b_t[1][b], b_t[2][b]}};
+              const double Sp = geometry.area(p);
               {
                 // series springs of the two halves: one shear stress
                 // (kj tau_i + ki tau_j + ki kj du) / (ki + kj)
                 const double inv = inv_sum;
-                const double mix = kj * tau_scale_i[p] + ki * tau_scale_j[p];
+                const double ai = tau_scale_i[p], aj = tau_scale_j[p];
+                const double mix = kj * ai + ki * aj;
                 Vec3         tn;
                 for (unsigned int c = 0; c < 3; ++c)
                   tn[c] = (mix * t[c] + ki * kj * du[c]) * inv;
                 tau.set(p, tn);
                 tau_scale_i[p] = tau_scale_j[p] = 1;
+                // sides of other shear stresses (a limit or a return at
+                // the last step) made equal: the energy lost, half on each
+                // side, is plastic work of a bond, friction work of a
+                // contact
+                if (ai != aj)
+                  {
+                    const double lost = 0.5
+                                        * pair_energy::shear_mixing(
+                                          Sp, ki, kj, ai, aj, dot(t, t));
+                    const Work kind = bonded[p] ? plastic_work : friction_work;
+                    work[kind] += (owned(i) + owned(j)) * lost;
+                  }
+                // this step's increments, for the releases of pass C
+                if (plastic || !bonded[p] || mat[i] != mat[j])
+                  {
+                    pair_dr[2 * p]     = dr_p;
+                    pair_dr[2 * p + 1] = dot(tn, du);
+                  }
               }
               // Normal split: equal elastic increments 2G de from both sides
               // (series springs), applied now; the many-body parts D dsm of the
@@ -410,19 +453,21 @@ namespace tribodyn
               q_i[p]           = qi + dqi;
               sig_i[p] += ki * dqi;
               sig_j[p] += kj * (dr_p - dqi);
-              const double qin = qi + dqi, qjn = r - qin;
+              // (and the many-body work of the sides' parts m = D mu + c:
+              // that of their offsets c here, S c dq; that of D mu from the
+              // sums S dq of each automaton)
+              const double dqj = dr_p - dqi;
               if (owned(i))
                 {
-                  if constexpr (plastic)
-                    sum_qs[i] += qin * geometry.area(p);
-                  dsm[i] += beta_i[p] * dqi * geometry.inv_half_rest(p);
+                  dsm[2 * i] += beta_i[p] * dqi * geometry.inv_half_rest(p);
+                  dsm[2 * i + 1] += Sp * dqi;
+                  mb_work += Sp * dqi * mb_i[p];
                 }
               if (owned(j))
                 {
-                  if constexpr (plastic)
-                    sum_qs[j] += qjn * geometry.area(p);
-                  dsm[j]
-                    += beta_j[p] * (dr_p - dqi) * geometry.inv_half_rest(p);
+                  dsm[2 * j] += beta_j[p] * dqj * geometry.inv_half_rest(p);
+                  dsm[2 * j + 1] += Sp * dqj;
+                  mb_work += Sp * dqj * mb_j[p];
                 }
             }
         }
@@ -432,9 +477,24 @@ namespace tribodyn
       // squares) to its pairs' normal strains: dtheta = sum_j beta_ij
       // deps_ij (beta = 1/4 in a complete FCC neighbourhood).
       for (unsigned int k = 0; k < n_owned; ++k)
-        dsm[k] *= mc[mat[k]].K;
+        dsm[2 * k] *= mc[mat[k]].K;
       if (neighbours.active())
-        neighbours.update(dsm.data(), 1);
+        neighbours.update(dsm.data(), 2);
+      // The many-body work of D mu at mid-step (mu and half of this
+      // step's increment), minus the change of kappa G^2 (G moves by D dsm
+      // gamma); then mu of every local automaton.
+      for (unsigned int k = 0; k < n_owned; ++k)
+        {
+          const double D  = mc[mat[k]].D;
+          const double dm = D * dsm[2 * k];
+          auto        &st = mb_state[k];
+          const double dG = dm * st[1];
+          mb_work += (D * mb_mu[k] + 0.5 * dm) * dsm[2 * k + 1]
+                     - st[0] * dG * (2 * st[2] + dG);
+          st[2] += dG;
+        }
+      for (unsigned int k = 0; k < n_local; ++k)
+        mb_mu[k] += dsm[2 * k];
 
       for (unsigned int k = 0; k < n_owned; ++k)
         {
@@ -444,8 +504,8 @@ namespace tribodyn
       // Many-body part of the elastic update of the side stresses.
       auto elastic_update = [&](const unsigned int p) {
         const unsigned int i = pi[p], j = pj[p];
-        sig_i[p] += mc[mat[i]].D * dsm[i];
-        sig_j[p] += mc[mat[j]].D * dsm[j];
+        sig_i[p] += mc[mat[i]].D * dsm[2 * i];
+        sig_j[p] += mc[mat[j]].D * dsm[2 * j];
       };
 
       NormalBlock nblock;
@@ -472,37 +532,33 @@ namespace tribodyn
                     p, nblock.normal(b), nblock.r[b], trial, true);
                 }
             }
-          plast.assign(static_cast<std::size_t>(n_local) * 3, 0.);
+          // (the plastic work is what the sides release, pass C)
+          plast.assign(static_cast<std::size_t>(n_local) * 2, 0.);
           for (unsigned int k = 0; k < n_owned; ++k)
             {
               if (elastic(k))
                 {
-                  plast[3 * k + 1] = 1; // M = 1: no plastic correction
+                  plast[2 * k + 1] = 1; // M = 1: no plastic correction
                   continue;
                 }
               const auto  &m  = mc[mat[k]];
               const Sym3   s  = fabric_corrected(k, trial[k]);
               const double sm = (s[0] + s[1] + s[2]) / 3;
               const double q  = von_mises(s);
-              double       M = 1, share = 0;
+              double       M  = 1;
               if (m.m.is_plastic() && q > sigma_y[k])
                 {
                   const double de = plastic_increment(m.m, m.G, eps_p[k], q);
                   const double sy_new = m.m.yield_stress_at(eps_p[k] + de);
                   M                   = sy_new / q;
-                  const double work
-                    = volume[k] * 0.5 * (sigma_y[k] + sy_new) * de;
                   eps_p[k] += de;
                   sigma_y[k] = sy_new;
-                  plastic_work += work;
-                  share = sum_qs[k] > 0 ? work / sum_qs[k] : 0;
                 }
-              plast[3 * k]     = sm;
-              plast[3 * k + 1] = M;
-              plast[3 * k + 2] = share;
+              plast[2 * k]     = sm;
+              plast[2 * k + 1] = M;
             }
           if (neighbours.active())
-            neighbours.update(plast.data(), 3);
+            neighbours.update(plast.data(), 2);
         }
 
       // Pass C: plastic correction, contact constraints, forces, torques;
@@ -521,8 +577,8 @@ namespace tribodyn
               const unsigned int i = pi[p0 + b], j = pj[p0 + b];
               if constexpr (!plastic)
                 {
-                  b_dsm_i[b] = mc[mat[i]].D * dsm[i];
-                  b_dsm_j[b] = mc[mat[j]].D * dsm[j];
+                  b_dsm_i[b] = mc[mat[i]].D * dsm[2 * i];
+                  b_dsm_j[b] = mc[mat[j]].D * dsm[2 * j];
                 }
               __builtin_prefetch(&f[j], 1);
               if constexpr (rot)
@@ -540,74 +596,14 @@ namespace tribodyn
               const double       Sp = geometry.area(p);
               const Vec3         t  = tau[p];
               double             ai = tau_scale_i[p], aj = tau_scale_j[p];
-              if constexpr (plastic)
-                {
-                  const double smi = plast[3 * i], Mi = plast[3 * i + 1];
-                  const double smj = plast[3 * j], Mj = plast[3 * j + 1];
-                  if (Mi < 1)
-                    {
-                      sig_i[p] = smi + Mi * (sig_i[p] - smi);
-                      ai *= Mi;
-                    }
-                  if (Mj < 1)
-                    {
-                      sig_j[p] = smj + Mj * (sig_j[p] - smj);
-                      aj *= Mj;
-                    }
-                  // Plastic heat for bond formation: only heat generated while
-                  // the pair is unbonded counts (seed §2.1).
-                  if (!heat.empty() && !bonded[p])
-                    heat[p] += qi * Sp * plast[3 * i + 2]
-                               + qj * Sp * plast[3 * j + 2];
-                }
-              else
+              if constexpr (!plastic)
                 {
                   // many-body part of the elastic update (gathered above)
                   sig_i[p] += b_dsm_i[b];
                   sig_j[p] += b_dsm_j[b];
                 }
-              if (!bonded[p])
-                {
-                  // no tension; the friction law's limit on each side
-                  const double mu = friction_coefficient(law, p);
-                  sig_i[p]        = std::min(sig_i[p], 0.);
-                  sig_j[p]        = std::min(sig_j[p], 0.);
-                  const SeriesSprings &k
-                    = springs[mat[i] * n_materials + mat[j]];
-                  const double scale = geometry.stiffness_scale(p);
-                  const double ki = k.ki * scale, kj = k.kj * scale;
-                  const double t_norm = std::sqrt(dot(t, t));
-                  for (const int side : {0, 1})
-                    {
-                      double      &a = side == 0 ? ai : aj;
-                      const double limit
-                        = -mu * (side == 0 ? sig_i[p] : sig_j[p]);
-                      const double tn = std::abs(a) * t_norm;
-                      if (tn > limit)
-                        {
-                          const double s = tn > 0 ? limit / tn : 0;
-                          // work of the slip (tn - limit) / k_series of this
-                          // side's half of the pair force, counted by the
-                          // owner of that side, at the mean of the side's
-                          // stress at the start of the step (t0) and at its
-                          // end (the limit): the pair force does work over
-                          // the step at the mean of the two (velocity
-                          // Verlet), so the elastic energy and the slip
-                          // balance also where the limit changes from step
-                          // to step (rate-dependent laws: mu moves with the
-                          // slip rate). Amontons-Coulomb: at the limit (t0
-                          // = limit to first order).
-                          double work = limit * (tn - limit);
-                          if constexpr (Law::stateful)
-                            work = 0.5 * (shear_at_start[2 * p + side] + limit)
-                                   * (tn - limit);
-                          if (owned(side == 0 ? i : j))
-                            friction_work
-                              += 0.5 * Sp * work * (ki + kj) / (ki * kj);
-                          a *= s;
-                        }
-                    }
-                }
+              // the events of the step (pair_events.h)
+              pair_events<plastic>(p, geometry, law, t, ai, aj, mb_work);
               if (plastic || !bonded[p])
                 {
                   tau_scale_i[p] = ai;
@@ -672,7 +668,7 @@ namespace tribodyn
                                                 geometry.moment_scale(p),
                                                 K);
                       if (owned(i))
-                        friction_work += slip_work;
+                        work[friction_work] += slip_work;
                     }
                   if (owned(i))
                     for (unsigned int c = 0; c < 3; ++c)
@@ -686,6 +682,7 @@ namespace tribodyn
                 add_pair_stress(p, n, r, trial, false);
             }
         }
+      work[many_body_work] += mb_work;
     }
 
 

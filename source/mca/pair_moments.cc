@@ -15,13 +15,15 @@ namespace tribodyn
     double
     AutomatonSystem::pair_moment_energy() const
     {
-      // |K . n|^2 / 2 k_twist + |K x n|^2 / 2 k_bend of the interacting
-      // pairs, each counted once (by the owner of i, as in energies())
+      // |K . n|^2 / 2 k_twist + |K x n|^2 / 2 k_bend of the pairs, each
+      // counted once (by the owner of i, as in energies()); a pair out of
+      // contact holds no moment (but for a bond broken beyond the contact
+      // distance at the last step: the next step releases it)
       double energy = 0;
       moment_laws.with_selected([&](const auto &law) {
         if constexpr (std::decay_t<decltype(law)>::active)
           for (unsigned int p = 0; p < pi.size(); ++p)
-            if (owned(pi[p]) && (bonded[p] || in_contact[p]))
+            if (owned(pi[p]))
               {
                 double     r;
                 const Vec3 n = unit_normal(p, r);

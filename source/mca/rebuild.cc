@@ -50,6 +50,12 @@ namespace tribodyn
       // a displacement agreed before this rebuild is measured from the
       // previous one
       agreed_displacement2 = -1;
+      // the many-body energy before the rebuild; the many-body stresses
+      // of the sides move with the pairs as their offsets
+      // (doc/theory/mca.md §8.4)
+      const double mb_energy_before = initial ? 0. : many_body_energy();
+      if (!initial)
+        fold_many_body_stress();
       if (!initial)
         {
           // the partition weighted anew when the work drifted apart
@@ -70,7 +76,10 @@ namespace tribodyn
       std::vector<std::uint64_t>().swap(order);
       restore_pair_states(initial);
       changed.assign(n_local, 1);
+      mb_mu.assign(n_local, 0);
       update_neighbourhood_weights(true);
+      // (the weights anew: the change of the many-body energy is booked)
+      work[switching_work] += mb_energy_before - many_body_energy();
       ++rebuild_count;
     }
 

@@ -68,11 +68,11 @@ namespace tribodyn
     void
     AutomatonSystem::absorb_current_arrays()
     {
+      // the sides' many-body stresses travel as their offsets (mu = 0)
+      fold_many_body_stress();
       // This writer's partial sums (the reports sum them over the ranks).
-      const double works[5]
-        = {plastic_work, friction_work, load_work, damped_work, pair_work};
-      for (unsigned int i = 0; i < 5; ++i)
-        absorbed.work[i] += works[i];
+      for (unsigned int i = 0; i < n_works; ++i)
+        absorbed.work[i] += work[i];
       absorbed.dropped += dropped_bonds;
       absorbed.group_reaction.resize(group_reaction.size(), Vec3{{0, 0, 0}});
       for (unsigned int g = 0; g < group_reaction.size(); ++g)
@@ -211,11 +211,7 @@ namespace tribodyn
       rebalance_count    = static_cast<unsigned int>(counters[3]);
       first_contact_time = counters[4];
       rebalance_history.clear();
-      plastic_work   = absorbed.work[0];
-      friction_work  = absorbed.work[1];
-      load_work      = absorbed.work[2];
-      damped_work    = absorbed.work[3];
-      pair_work      = absorbed.work[4];
+      work           = absorbed.work;
       dropped_bonds  = absorbed.dropped;
       group_reaction = absorbed.group_reaction;
       group_reaction.resize(prm.boundary.groups.size(), Vec3{{0, 0, 0}});
@@ -322,6 +318,11 @@ namespace tribodyn
               (side == 0 ? beta_i : beta_j)[p] = it->second;
           }
       any_changed = true;
+      // kappa, gamma, G of the checkpoint's weights and stresses
+      mb_mu.assign(n_local, 0);
+      mb_state.assign(n_owned, {{0, 0, 0}});
+      for (unsigned int k = 0; k < n_owned; ++k)
+        update_many_body_state(k);
       // the damping forces of the last step stay valid when they were
       // (else recomputed at the next half kick, as after any rebuild)
       f_damp_rebuild = rebuild_count;

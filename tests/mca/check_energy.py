@@ -5,22 +5,22 @@ unstressed):
 1. bookkeeping of the integrator (exact by construction of the half kicks,
    so round-off only, 1e-9 of the load work): kinetic energy = work of the
    pair forces and torques + work of the loads - damped energy;
-2. balance: kinetic + elastic + plastic work + friction work + damped energy
-   = work of the loads (applied forces and prescribed velocities), within
-   TOLERANCE of the load work. This holds only as well as the elastic energy
-   of the automata, sum V (sigma_m^2 / 2K + s:s / 4G) from their stress
-   tensors, equals the energy stored in the pairs, and the time integration
-   conserves energy. Measured on this elastic scene: -2.35 %, -2.8 %,
-   -3.0 % at Courant factors 0.1, 0.2, 0.4 (since the load work of
-   kinematically held components is booked at their prescribed velocity,
-   2026-11-22; -2.7, -2.6, -1.7 % before), so mostly not a
-   time-discretization error but the difference between the homogenized
-   elastic energy and the energy the pairs store and release at the rough
-   surface's contacts, edges and corners (the same balance closes to
-   0.04 % on a flat interface, tests/mca/check_flat_friction.py).
-   Tolerance 5 %: the measured residual with a margin for other roughness
-   seeds; a missing or double-counted term (friction work 32 %, damped
-   energy 55 % of the load work here) fails it;
+2. balance: kinetic + elastic + plastic + friction + switching + many-body
+   work + damped energy = work of the loads (applied forces and prescribed
+   velocities; doc/theory/mca.md §8.4), within TOLERANCE of the load work.
+   The elastic energy is held pair side by pair side, and every event that
+   changes it other than the springs' work is booked, so what remains is
+   the error of the time integration. Measured (2026-11-27):
+   tests/mca/friction_energy.prm -0.0014 %, with K_ij -0.0012 % (before the
+   pair-level bookkeeping -2.35 to -3 %: the homogenized energy missed what
+   the contacts hold). Tolerance 0.1 %: a missing or double-counted term
+   (friction work 33 %, damped energy 55 %, switching work 0.08-0.3 %,
+   many-body work 0.05-0.4 % of the load work here) fails it; scenes with
+   bond breaking (parameter Bond breaking on) have tolerance 0.5 %: their
+   plastic returns and releases are exact only to the step's first order
+   (measured -0.06 / -0.10 / -0.13 % at Courant 0.1 / 0.2 / 0.4 on
+   mca_friction_energy_switching's scene, where the switching work is 6.9 %
+   and the many-body work -11 % of the load work);
 3. the run also wrote friction.csv, layer.csv and the layer keys.
 """
 import csv
@@ -28,11 +28,11 @@ import json
 import os
 import sys
 
-from check_tools import finish, output_directory, report
-
-TOLERANCE = 0.05
+from check_tools import (energy_stored, energy_terms, finish,
+                         output_directory, parameter, report)
 
 out = output_directory(sys.argv[1])
+TOLERANCE = 0.005 if parameter(out, "Bond breaking") == "true" else 0.001
 with open(os.path.join(out, "summary.json")) as f:
     s = json.load(f)
 W = s["load_work"]
@@ -43,19 +43,11 @@ identity = s["kinetic_energy"] - (s["pair_work"] + W - s["damped_work"])
 report(abs(identity) <= 1e-9 * abs(W),
        "kinetic = pair work + load work - damped: residual %.3g of the load "
        "work (tolerance 1e-9)" % (identity / W))
-stored = (s["kinetic_energy"] + s["elastic_energy"] + s["plastic_work"]
-          + s["friction_work"] + s["damped_work"])
-relative = (stored - W) / W
-print("      kinetic %.4g, elastic %.4g, plastic %.4g, friction %.4g, damped "
-      "%.4g J; load work %.4g J" % (s["kinetic_energy"], s["elastic_energy"],
-                                   s["plastic_work"], s["friction_work"],
-                                   s["damped_work"], W))
-if TOLERANCE is not None:
-    report(abs(relative) <= TOLERANCE,
-           "energy balance: residual %.3g of the load work (tolerance %g)"
-           % (relative, TOLERANCE))
-else:
-    print("INFO  energy balance: residual %.4g of the load work" % relative)
+relative = (energy_stored(s) - W) / W
+print("      " + energy_terms(s))
+report(abs(relative) <= TOLERANCE,
+       "energy balance: residual %.3g of the load work (tolerance %g)"
+       % (relative, TOLERANCE))
 for name in ("friction.csv", "layer.csv"):
     report(os.path.exists(os.path.join(out, name)), name + " written")
 for key in ("mu_steady", "mu_steady_stderr", "steady_start_time",

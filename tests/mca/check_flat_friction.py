@@ -55,12 +55,15 @@ law at mu0 (mu_macro 0.3847) misses the slowest and fastest by 0.019 and
 0.028.
 
 4. Energy balance of the run (doc/theory/mca.md Sec. 8.4): kinetic + elastic
-   + friction work + damped energy = work of the loads within
-   ENERGY_TOLERANCE of the load work, and the integrator's bookkeeping
-   kinetic = pair + load - damped work to 1e-9. Measured: 0.09 % (mu = 0,
-   where the damped energy is 96 % of the load work) and 0.04 % (mu = 0.3,
-   friction work 89 %, damped 11 %). ENERGY_TOLERANCE = 1 %: ten times the
-   measured residual; a dropped term fails it, and so does the bookkeeping
+   + friction + switching + many-body work + damped energy = work of the
+   loads within ENERGY_TOLERANCE of the load work, and the integrator's
+   bookkeeping kinetic = pair + load - damped work to 1e-9. Measured
+   (2026-11-27, pair-level energy): -0.001 % (mu = 0.3), -0.029 % (Dieterich
+   at +-1 m/s, where mu follows the automata's vibrations from step to step;
+   +2.3 % before the friction work was taken from the energy the Coulomb
+   limit releases). ENERGY_TOLERANCE = 0.3 %: ten times the largest
+   measured residual; a dropped term fails it (many-body work 3 %, switching
+   work 0.03 % of the load work at +-1 m/s), and so does the bookkeeping
    error fixed on 2026-11-22 (the kick's dt^2 f^2 / 8m on kinematically
    held components counted as pair instead of load work: 65 % of the load
    work at mu = 0, 18 % at mu = 0.3).
@@ -71,11 +74,12 @@ import math
 import os
 import sys
 
-from check_tools import finish, output_directory, parameter, report
+from check_tools import (energy_stored, energy_terms, finish,
+                         output_directory, parameter, report)
 
 TOLERANCE = 0.01
 RISE_TOLERANCE = 0.02
-ENERGY_TOLERANCE = 0.01
+ENERGY_TOLERANCE = 0.003
 START = 0.25  # relative sliding (in periods) at which the averaging starts
 
 out = output_directory(sys.argv[1])
@@ -180,25 +184,11 @@ identity = summary["kinetic_energy"] - (summary["pair_work"] + W
 report(W > 0 and abs(identity) <= 1e-9 * W,
        "kinetic = pair + load - damped work: residual %.3g of the load work "
        "(tolerance 1e-9)" % (identity / W))
-stored = (summary["kinetic_energy"] + summary["elastic_energy"]
-          + summary["plastic_work"] + summary["friction_work"]
-          + summary["damped_work"])
-energy_check = report
-if law == "Dieterich":
-    # open (issue #17 item 7): with the direct effect mu follows the
-    # automata's vibrations from step to step, and the friction work booked
-    # at the mean of a side's stress at the start and the end of a step
-    # closes the balance at +-2 and +-4 m/s (0.04 %, 0.02 %) but not at +-1
-    # m/s (+2.3 %): reported, not checked
-    def energy_check(ok, text):
-        print("INFO  " + text + " (not checked for a rate-dependent law: "
-              "issue #17 item 7)")
-energy_check(abs(stored - W) <= ENERGY_TOLERANCE * W,
-       "energy balance: kinetic %.3g + elastic %.3g + friction %.3g + damped "
-       "%.3g J = load work %.3g J, residual %.3g of it (tolerance %g)"
-       % (summary["kinetic_energy"], summary["elastic_energy"],
-          summary["friction_work"], summary["damped_work"], W,
-          (stored - W) / W, ENERGY_TOLERANCE))
+stored = energy_stored(summary)
+print("      " + energy_terms(summary))
+report(abs(stored - W) <= ENERGY_TOLERANCE * W,
+       "energy balance: residual %.3g of the load work (tolerance %g)"
+       % ((stored - W) / W, ENERGY_TOLERANCE))
 # the ratio of the mean forces (the dissipation per sliding distance over
 # the load) includes the viscous drag of the damped layers (for information)
 drag = (-sum(s["top_fy"][k] for k in window)

@@ -33,6 +33,26 @@ def report_relative(graded, uniform, checks, indent=""):
             report(False, f"{indent}{key} in both summaries")
 
 
+# The terms of the energy balance in summary.json (doc/theory/mca.md §8.4):
+# what the scene holds, dissipated or booked since the start; their sum is
+# the work of the loads (the scenes start at rest and unstressed).
+ENERGY_TERMS = ("kinetic_energy", "elastic_energy", "plastic_work",
+                "friction_work", "switching_work", "many_body_work",
+                "damped_work")
+
+
+def energy_stored(summary):
+    """The sum of ENERGY_TERMS in SUMMARY."""
+    return sum(summary[k] for k in ENERGY_TERMS)
+
+
+def energy_terms(summary):
+    """The ENERGY_TERMS of SUMMARY as fractions of its load work (text)."""
+    W = summary["load_work"]
+    return ", ".join("%s %+.4f" % (k.replace("_energy", "").replace("_work", ""),
+                                   summary[k] / W) for k in ENERGY_TERMS)
+
+
 def finish():
     sys.exit(1 if _failed else 0)
 

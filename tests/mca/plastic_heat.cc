@@ -12,19 +12,29 @@
 // 0.44 on their 45-degree planes) without slipping, so the plastic flow is
 // the plastic flow of the material.
 //
-// Checks (tolerances):
-// - the plastic work of each automaton, V (sigma_y,old + sigma_y,new)/2
-//   d eps_p from its plastic strain and linear hardening, sums to the
-//   system's plastic work (1e-9 relative, round-off of the sums);
-// - the heat of every unbonded pair equals the heat predicted step by step
-//   from the automata's plastic work, shared in proportion to q S over the
-//   pairs that interact (bonded or in contact; q = r/2 for identical
-//   materials): dQ_ij = dW_i r_ij / sum_k r_ik + dW_j r_ij / sum_k r_jk
-//   (1e-9 relative);
-// - every interface pair bonds at the first increment after which its
-//   predicted heat reaches half of the bond energy E_b = w_b S r (and the
-//   pair is compressed beyond the current yield stress), not one increment
-//   earlier or later; and none bonds before yield.
+// Checks (tolerances; doc/theory/mca.md Sec. 8.4). The plastic work is
+// what the pair sides release at their plastic returns, the deviatoric
+// part (1 - M^2) S ((sigma - sigma_m)^2 + |tau|^2) / 2k of their springs'
+// energy; it is compared with independent, first-order models of it:
+// - against the J2 dissipation of the automata, sum V (sigma_y,old +
+//   sigma_y,new)/2 d eps_p from their plastic strains and linear
+//   hardening: measured +8.8 % (2026-11-27); half of this block's automata
+//   are at its held faces or at the interface, whose contact springs the
+//   homogenized stress does not see. Tolerance 15 %: a plastic work not
+//   booked, or booked twice, fails;
+// - the heat of every unbonded pair against its share of the two
+//   automata's J2 dissipation in proportion to q S over the pairs that
+//   interact (bonded or in contact; q = r/2 for identical materials):
+//   dQ_ij = dW_i r_ij / sum_k r_ik + dW_j r_ij / sum_k r_jk (the rule of
+//   the code until 2026-11-27). The pair's own release depends on its own
+//   deviatoric stress, which the share ignores: measured largest
+//   difference 35 % of the largest heat. Tolerance 50 %: a heat not
+//   accumulated (difference 100 %) fails;
+// - every interface pair bonds once its heat reaches half of the bond
+//   energy E_b = w_b S r (and the pair is compressed beyond the current
+//   yield stress): none bonds while its predicted heat is below
+//   (1 - 50 %) E_b / 2 or stays unbonded beyond (1 + 50 %) E_b / 2; and
+//   none bonds before yield.
 
 #include "mca_test_tools.h"
 
@@ -55,6 +65,7 @@ main(int argc, char **argv)
     local[system.ids()[k]] = k;
 
   const double V = d * d * d / std::sqrt(2.), S = d * d / (2 * std::sqrt(2.));
+  const double work_tolerance = 0.15, heat_tolerance = 0.5;
   std::map<std::pair<std::uint64_t, std::uint64_t>, double> predicted;
   std::map<std::pair<std::uint64_t, std::uint64_t>, int>    bonded_at;
   std::vector<double>                                       eps_old(n, 0.);
@@ -105,18 +116,20 @@ main(int argc, char **argv)
           if (pv.distance < d)
             predicted[key] += dW[i] * pv.distance / sum_r[i]
                               + dW[j] * pv.distance / sum_r[j];
-          const double Eb  = m.bond_energy_density * S * pv.distance;
-          const bool   due = predicted[key] >= 0.5 * Eb && pv.sigma <= 0;
+          // (due within the heat's tolerance: the prediction is first
+          // order, see above)
+          const double Eb = m.bond_energy_density * S * pv.distance;
           if (pv.bonded)
             {
               bonded_at[key] = step;
               ++bonds_formed;
-              if (!due)
+              if (predicted[key] < (1 - heat_tolerance) * 0.5 * Eb)
                 ++bonds_early;
             }
           else
             {
-              if (due && -pv.sigma >= m.yield_stress_at(eps[i]))
+              if (predicted[key] >= (1 + heat_tolerance) * 0.5 * Eb
+                  && pv.sigma <= 0 && -pv.sigma >= m.yield_stress_at(eps[i]))
                 ++bonds_late;
               scale = std::max(scale, predicted[key]);
               worst_heat
@@ -127,14 +140,16 @@ main(int argc, char **argv)
   check(first_yield > 0,
         "the blocks yield (first at increment " + std::to_string(first_yield)
           + ")");
-  check_relative(sum_work,
-                 system.energies().plastic_work,
-                 1e-9,
-                 "plastic work of the automata = the system's plastic work");
+  check_relative(system.energies().plastic_work,
+                 sum_work,
+                 work_tolerance,
+                 "plastic work released by the pair sides against the J2 "
+                 "dissipation of the automata");
   check_relative(worst_heat,
                  0,
-                 1e-9,
-                 "heat of unbonded pairs = shares of the plastic work",
+                 heat_tolerance,
+                 "heat of unbonded pairs against the shares of the automata's "
+                 "J2 dissipation",
                  scale);
   check(bonds_formed > 0 && bonds_early == 0 && bonds_late == 0,
         std::to_string(bonds_formed) + " interface pairs bonded, "

@@ -118,9 +118,9 @@ main(int argc, char **argv)
     return -1;
   };
   const int mine = column("plugin_steps");
-  check(mine >= 0 && mine == column("pair_work") + 1
+  check(mine >= 0 && mine == column("many_body_work") + 1
           && column("top_fx") == mine + 1,
-        "series.csv: plugin_steps (order 15) between pair_work (energies, "
+        "series.csv: plugin_steps (order 15) between many_body_work (energies, "
         "10) and top_fx (boundary groups, 20); at column "
           + std::to_string(mine));
 

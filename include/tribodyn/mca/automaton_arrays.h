@@ -52,9 +52,16 @@ namespace tribodyn
       /// Per-step exchange buffers (stride given by their use).
       std::vector<double> plast;       ///< sigma_m trial, M, heat share
       std::vector<double> bond_buffer; ///< stress tensor (6), yield stress
-      /// sum_qs: plastic-heat shares; dsm: the volumetric strain increment,
-      /// then the mean-stress increment of each automaton.
-      std::vector<double> sum_qs, dsm;
+      /// Per automaton k, dsm[2k]: the volumetric strain increment, then
+      /// the mean-stress increment; dsm[2k + 1]: sum of S dq over its
+      /// sides (the work of its many-body part, doc/theory/mca.md §8.4).
+      std::vector<double> dsm;
+      /// Many-body energy (doc/theory/mca.md §8.4): mean-stress increments
+      /// of each local automaton since the last rebuild (mu_a; a side's
+      /// many-body stress is D mu_a + its offset, PairArrays::mb_i), and
+      /// kappa, gamma = sum g, G = sum g m of each owned one.
+      std::vector<double>                mb_mu;
+      std::vector<std::array<double, 3>> mb_state;
       /// Stress tensors T (eq. 4) of the owned automata: the plastic
       /// trial in pass B, the final one in pass C of bond scenes.
       std::vector<Mat3> trial;

@@ -65,14 +65,9 @@ namespace tribodyn
      * automaton sums its pair forces in the same order on any number of
      * ranks.
      *
-     * A time step (velocity Verlet) is: half kick, drift, ghost update,
-     * pair kernel (strain increments -> mean-stress increments -> pair
-     * stresses -> plastic correction -> contact constraints -> forces and
-     * torques), boundary conditions, half kick. The pair kernel is
-     * compiled for each combination of the pair law's policies
-     * (rotations, plasticity, pair geometry, friction law, moment law,
-     * bond criteria; include/tribodyn/mca/pair_law.h) so that scenes pay
-     * only for what they use.
+     * A time step (velocity Verlet): half kick, drift, ghost update, pair
+     * kernel (compiled per combination of the pair law's policies,
+     * include/tribodyn/mca/pair_law.h), boundary conditions, half kick.
      */
     class AutomatonSystem : private AutomatonArrays, private PairArrays
     {
@@ -442,6 +437,18 @@ namespace tribodyn
                   const Pairs &geometry,
                   FrictionLaw &law,
                   MomentLaw   &moment);
+      /// The events of pair @p p at the end of its step (plastic
+      /// returns, no tension, friction limits) and the energy they release
+      /// (source/mca/pair_events.h).
+      template <bool plastic, class Pairs, class FrictionLaw>
+      void
+      pair_events(const unsigned int p,
+                  const Pairs       &geometry,
+                  const FrictionLaw &law,
+                  const Vec3        &t,
+                  double            &alpha_i,
+                  double            &alpha_j,
+                  double            &many_body_work);
       /// Bond breaking and formation under the chosen criteria
       /// (source/mca/bond_switching.h), at the end of the pair kernel.
       template <bool plastic, class Breaking, class Formation>
@@ -451,6 +458,25 @@ namespace tribodyn
       template <class Law>
       double
       friction_coefficient(const Law &law, const unsigned int p) const;
+      // --- the energy of the pairs (pair_energy.cc, doc/theory/mca.md
+      // §8.4): that of the owned sides and automata; kappa, gamma, G of
+      // owned automaton k; sum of kappa G^2; the many-body stresses into
+      // the sides' offsets (before automata migrate); the energy released
+      // by unbonded pair p that opens (side stiffnesses ki, kj, normal
+      // increment dr; switching work)
+      double
+      pair_elastic_energy() const;
+      void
+      update_many_body_state(const unsigned int k);
+      double
+      many_body_energy() const;
+      void
+      fold_many_body_stress();
+      void
+      release_opening(const unsigned int p,
+                      const double       ki,
+                      const double       kj,
+                      const double       dr);
       /// Elastic energy sum |K|^2 / 2k of the relative-rotation moments
       /// K_ij (the moment law's, moment_laws.h) of the pairs counted by
       /// this rank.
@@ -503,11 +529,10 @@ namespace tribodyn
       index_pairs_of_automata();
       struct Absorbed
       {
-        std::vector<double> automata, pairs;
-        /// plastic, friction, load, damped and pair work
-        double             work[5] = {0, 0, 0, 0, 0};
-        unsigned long long dropped = 0;
-        std::vector<Vec3>  group_reaction;
+        std::vector<double>         automata, pairs;
+        std::array<double, n_works> work{};
+        unsigned long long          dropped = 0;
+        std::vector<Vec3>           group_reaction;
       };
       Absorbed absorbed;
 
@@ -665,7 +690,6 @@ namespace tribodyn
       MomentLaws         moment_laws;
       BondBreakingLaws   breaking_laws;
       BondFormationLaws  formation_laws;
-      double             plastic_work = 0, friction_work = 0;
       unsigned long long dropped_bonds = 0;
 
       // --- staged loading, contacting parts, energy bookkeeping
@@ -687,7 +711,8 @@ namespace tribodyn
       bool               damping_on         = false;
       double             first_contact_time = -1;
       unsigned long long n_part_automata = 0, n_part_inclusions = 0;
-      double             load_work = 0, damped_work = 0, pair_work = 0;
+      /// The works since the start, by Work (system_figures.h).
+      std::array<double, n_works> work{};
       /// Damping part of f of each owned automaton (for damped_work), valid
       /// while f_damp_rebuild == rebuild_count; empty without damping.
       std::vector<Vec3> f_damp;

@@ -39,6 +39,12 @@ namespace tribodyn
       std::vector<unsigned char> pshift; ///< image shift code of x_j
       std::vector<unsigned char> bonded, in_contact;
       std::vector<double>        q_i, sig_i, sig_j, heat;
+      /// Many-body part m of each side's normal stress, as its offset from
+      /// D mu of the side's automaton (doc/theory/mca.md §8.4).
+      std::vector<double> mb_i, mb_j;
+      /// This step's normal increment dr and t . du of the pairs that may
+      /// release energy in pass C (2 per pair; pair_kernel.cc).
+      std::vector<double> pair_dr;
       /// Shear stresses: tau_i = tau_scale_i tau, tau_j = tau_scale_j tau.
       /// The two sides' shear stresses are always parallel (the series
       /// springs set them equal; the plastic correction and the Coulomb
@@ -61,10 +67,8 @@ namespace tribodyn
       std::vector<unsigned int>  i_pairs_first, j_pairs_first, j_pairs;
       std::vector<std::uint16_t> i_pairs_count;
 
-      /// Rate-dependent friction laws: mu of each pair in this step, and
-      /// the shear stress of each side at the start of the step (the
-      /// friction work of a limit that moves, pair_kernel.cc).
-      std::vector<double> pair_mu, shear_at_start;
+      /// Rate-dependent friction laws: mu of each pair in this step.
+      std::vector<double> pair_mu;
 
       /// The persistent pair fields above with their relabelling rules
       /// (register_pair_fields(): the one list of what a pair carries).

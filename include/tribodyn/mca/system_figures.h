@@ -8,13 +8,43 @@ namespace tribodyn
 {
   namespace mca
   {
+    /**
+     * The works an AutomatonSystem accumulates from the start, by index in
+     * its one array of them (AutomatonSystem::work): what the checkpoints,
+     * the restarts on another number of ranks and energies() carry, each
+     * written once.
+     */
+    enum Work : unsigned int
+    {
+      /// plastic returns of the side stresses (doc/theory/mca.md §8.4)
+      plastic_work,
+      /// Coulomb limits of unbonded contacts and their moments
+      friction_work,
+      /// contacts that open or lose their tension, bonds broken beyond
+      /// the contact distance, re-weighted neighbourhoods
+      switching_work,
+      /// the non-conservative work of the many-body law (§8.4)
+      many_body_work,
+      /// boundary groups (loads), damping, and the pair forces and
+      /// torques on the automata
+      load_work,
+      damped_work,
+      pair_work,
+      n_works
+    };
+
     /// Global figures of the current state (summed over ranks).
     struct SystemEnergies
     {
-      double             kinetic             = 0;
-      double             elastic             = 0;
-      double             plastic_work        = 0;
-      double             friction_work       = 0;
+      double kinetic       = 0;
+      double elastic       = 0;
+      double plastic_work  = 0;
+      double friction_work = 0;
+      /// Released where the state of a pair switches (contacts opening or
+      /// losing their tension, bonds broken beyond contact, re-weighted
+      /// neighbourhoods), and the non-conservative work of the many-body
+      /// law (doc/theory/mca.md §8.4), both since the start.
+      double             switching_work = 0, many_body_work = 0;
       unsigned long long n_bonded            = 0;
       unsigned long long n_unbonded_contacts = 0;
       /// Work of the boundary groups (applied forces and prescribed

@@ -2,7 +2,8 @@
 // works of the loads, the damping and the pairs (the first columns of
 // series.csv), and at the end the energy balance since the start (the scene
 // starts at rest and unstressed): kinetic + elastic + plastic + friction +
-// damped = work of the loads, in summary.json and on the screen.
+// switching + many-body + damped = work of the loads, in summary.json and
+// on the screen (doc/theory/mca.md §8.4).
 #include <tribodyn/mca/postprocessor.h>
 
 namespace tribodyn
@@ -31,7 +32,9 @@ namespace tribodyn
                   "n_unbonded_contacts",
                   "load_work",
                   "damped_work",
-                  "pair_work"};
+                  "pair_work",
+                  "switching_work",
+                  "many_body_work"};
         }
 
         void
@@ -48,7 +51,9 @@ namespace tribodyn
                       double(e.n_unbonded_contacts),
                       e.load_work,
                       e.damped_work,
-                      e.pair_work});
+                      e.pair_work,
+                      e.switching_work,
+                      e.many_body_work});
         }
 
         void
@@ -64,10 +69,13 @@ namespace tribodyn
           // the pairs' side of the balance: their work on the automata
           // against what they stored or dissipated
           const double stored = e.kinetic + e.elastic + e.plastic_work
-                                + e.friction_work + e.damped_work;
+                                + e.friction_work + e.switching_work
+                                + e.many_body_work + e.damped_work;
           summary["load_work"]               = e.load_work;
           summary["damped_work"]             = e.damped_work;
           summary["pair_work"]               = e.pair_work;
+          summary["switching_work"]          = e.switching_work;
+          summary["many_body_work"]          = e.many_body_work;
           summary["energy_balance_residual"] = stored - e.load_work;
           summary["energy_balance_relative"]
             = e.load_work != 0 ? (stored - e.load_work) / std::abs(e.load_work)
@@ -75,8 +83,10 @@ namespace tribodyn
           figures << "Energy: load work " << e.load_work << " J = kinetic "
                   << e.kinetic << " + elastic " << e.elastic << " + plastic "
                   << e.plastic_work << " + friction " << e.friction_work
-                  << " + damped " << e.damped_work << " J + residual "
-                  << e.load_work - stored << " J" << std::endl;
+                  << " + switching " << e.switching_work << " + many-body "
+                  << e.many_body_work << " + damped " << e.damped_work
+                  << " J + residual " << e.load_work - stored << " J"
+                  << std::endl;
         }
 
       private:

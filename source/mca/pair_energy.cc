@@ -1,0 +1,160 @@
+// The elastic energy of the automata at the level of their pair sides
+// (doc/theory/mca.md §8.4): each side holds S ((sigma - m)^2 + |tau|^2) /
+// 2k, with m its many-body part, and each automaton kappa G^2, G = sum g m
+// over its weighted sides (Hooke's V lambda theta^2 / 2 in the bulk). The
+// pair kernel books what changes this energy other than the springs'
+// work: plastic returns, limits, opening contacts (pair_energy.h), the
+// non-conservative work of the many-body law, and the jumps when weights
+// change (here).
+
+#include "pair_energy.h"
+
+#include <cmath>
+#include <tribodyn/mca/automaton_system.h>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    namespace
+    {
+      /// The state of an automaton in AutomatonArrays::mb_state.
+      enum ManyBodyState : unsigned int
+      {
+        kappa,
+        gamma,
+        sum_gm
+      };
+    } // namespace
+
+
+    double
+    AutomatonSystem::pair_elastic_energy() const
+    {
+      double energy = 0;
+      for (unsigned int p = 0; p < pi.size(); ++p)
+        {
+          const unsigned int i = pi[p], j = pj[p];
+          if (!owned(i) && !owned(j))
+            continue;
+          const double t2 = dot(tau[p], tau[p]);
+          // (a pair out of contact holds nothing, but for a bond broken
+          // beyond the contact distance at the last step: the next step
+          // releases it)
+          if (!bonded[p] && !in_contact[p] && sig_i[p] == 0 && sig_j[p] == 0
+              && t2 == 0)
+            continue;
+          const SeriesSprings &k     = springs[mat[i] * n_materials + mat[j]];
+          const double         scale = graded ? r0 / pair_half_rest[p] : 1.;
+          const double         Sp    = area_of(p);
+          if (owned(i))
+            energy += pair_energy::side(Sp,
+                                        k.ki * scale,
+                                        sig_i[p],
+                                        mc[mat[i]].D * mb_mu[i] + mb_i[p],
+                                        tau_scale_i[p] * tau_scale_i[p] * t2);
+          if (owned(j))
+            energy += pair_energy::side(Sp,
+                                        k.kj * scale,
+                                        sig_j[p],
+                                        mc[mat[j]].D * mb_mu[j] + mb_j[p],
+                                        tau_scale_j[p] * tau_scale_j[p] * t2);
+        }
+      return energy + many_body_energy();
+    }
+
+
+    double
+    AutomatonSystem::many_body_energy() const
+    {
+      double energy = 0;
+      for (unsigned int k = 0; k < n_owned; ++k)
+        energy
+          += mb_state[k][kappa] * mb_state[k][sum_gm] * mb_state[k][sum_gm];
+      return energy;
+    }
+
+
+    void
+    AutomatonSystem::update_many_body_state(const unsigned int k)
+    {
+      // g = beta / h over the weighted sides (the many-body increment of k
+      // is K sum g dq), their area, and G = sum g m
+      const double D = mc[mat[k]].D, Dmu = D * mb_mu[k];
+      double       g_sum = 0, g_abs = 0, area = 0, G = 0;
+      for_each_pair_of(k, [&](const unsigned int p, const unsigned int side) {
+        const double beta = side ? beta_j[p] : beta_i[p];
+        if (beta == 0)
+          return;
+        const double g = beta / (graded ? pair_half_rest[p] : r0);
+        g_sum += g;
+        g_abs += std::abs(g);
+        area += area_of(p);
+        G += g * (Dmu + (side ? mb_j[p] : mb_i[p]));
+      });
+      // kappa: the many-body law conserves kappa G^2 where S / g is the
+      // same on every side (complete neighbourhoods, equal shares); held
+      // only where the weights are mostly positive (else its work is all
+      // many-body work)
+      const double K = mc[mat[k]].K;
+      auto        &s = mb_state[k];
+      s[kappa]       = D > 0 && g_sum > 0.25 * g_abs
+                         ? area / (2 * K * D * g_sum * g_sum * g_sum)
+                         : 0.;
+      s[gamma]       = g_sum;
+      s[sum_gm]      = G;
+    }
+
+
+    void
+    AutomatonSystem::fold_many_body_stress()
+    {
+      for (unsigned int p = 0; p < pi.size(); ++p)
+        {
+          mb_i[p] += mc[mat[pi[p]]].D * mb_mu[pi[p]];
+          mb_j[p] += mc[mat[pj[p]]].D * mb_mu[pj[p]];
+        }
+      std::fill(mb_mu.begin(), mb_mu.end(), 0.);
+    }
+
+
+    void
+    AutomatonSystem::release_opening(const unsigned int p,
+                                     const double       ki,
+                                     const double       kj,
+                                     const double       dr)
+    {
+      // The energy of each side, and the work its stress did over the
+      // step's first half (the pair force is zero at the step's end: the
+      // trapezoid of velocity Verlet has only its start); a weighted side
+      // leaves G and gamma of its automaton.
+      const double Sp = area_of(p), t2 = dot(tau[p], tau[p]);
+      for (const unsigned int side : {0u, 1u})
+        {
+          const unsigned int a = side ? pj[p] : pi[p];
+          if (!owned(a))
+            continue;
+          const double sigma = side ? sig_j[p] : sig_i[p];
+          const double alpha = side ? tau_scale_j[p] : tau_scale_i[p];
+          const double m = mc[mat[a]].D * mb_mu[a] + (side ? mb_j[p] : mb_i[p]);
+          work[switching_work] += pair_energy::side(Sp,
+                                                    side ? kj : ki,
+                                                    sigma,
+                                                    m,
+                                                    alpha * alpha * t2)
+                                  + 0.25 * Sp * sigma * dr;
+          const double beta = side ? beta_j[p] : beta_i[p];
+          if (beta != 0)
+            {
+              auto        &s = mb_state[a];
+              const double g = beta / (graded ? pair_half_rest[p] : r0);
+              const double G = s[sum_gm] - g * m;
+              work[switching_work]
+                += s[kappa] * (s[sum_gm] * s[sum_gm] - G * G);
+              s[sum_gm] = G;
+              s[gamma] -= g;
+            }
+        }
+    }
+  } // namespace mca
+} // namespace tribodyn

@@ -1,0 +1,78 @@
+// The energy of a pair's sides and what its events release (doc/theory/
+// mca.md §8.4): the formulas the pair kernel (pair_kernel.cc) and the
+// energy sums (pair_energy.cc) share.
+#ifndef tribodyn_mca_pair_energy_h
+#define tribodyn_mca_pair_energy_h
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    namespace pair_energy
+    {
+      /// Energy S ((sigma - m)^2 + alpha^2 |t|^2) / 2k of a pair side of
+      /// area @p S and spring stiffness @p k: normal stress @p sigma with
+      /// many-body part @p m, shear stress alpha t (@p a2t2 = alpha^2 |t|^2).
+      inline double
+      side(const double S,
+           const double k,
+           const double sigma,
+           const double m,
+           const double a2t2)
+      {
+        const double e = sigma - m;
+        return S * (e * e + a2t2) / (2 * k);
+      }
+
+      /**
+       * Work released by a side whose normal stress @p sigma becomes
+       * @p sigma_new and whose shear factor @p alpha becomes @p alpha_new
+       * at the end of a step (plastic return, Coulomb limit, no tension):
+       * the drop of its energy (many-body part @p m unchanged, |t|^2 =
+       * @p t2), minus the work the removed stress did not do over the
+       * step's second half (velocity Verlet: the pair force works at the
+       * mean of its values at the two ends of the step; the side carries
+       * half of it over the pair's normal increment @p dr and tangential
+       * one, t . du = @p tdu).
+       */
+      inline double
+      release(const double S,
+              const double k,
+              const double m,
+              const double sigma,
+              const double sigma_new,
+              const double alpha,
+              const double alpha_new,
+              const double t2,
+              const double dr,
+              const double tdu)
+      {
+        const double e = sigma - m, e_new = sigma_new - m;
+        return S
+                 * (e * e - e_new * e_new
+                    + (alpha * alpha - alpha_new * alpha_new) * t2)
+                 / (2 * k)
+               - 0.25 * S
+                   * ((sigma - sigma_new) * dr + (alpha - alpha_new) * tdu);
+      }
+
+      /// Energy lost when the series springs of a pair (stiffnesses @p ki,
+      /// @p kj, area @p S) set its two sides' shear stresses alpha_i t,
+      /// alpha_j t equal again (|t|^2 = @p t2): S t2 (alpha_i - alpha_j)^2
+      /// / 2 (ki + kj).
+      inline double
+      shear_mixing(const double S,
+                   const double ki,
+                   const double kj,
+                   const double alpha_i,
+                   const double alpha_j,
+                   const double t2)
+      {
+        const double da = alpha_i - alpha_j;
+        return S * t2 * da * da / (2 * (ki + kj));
+      }
+    } // namespace pair_energy
+  }   // namespace mca
+} // namespace tribodyn
+
+#endif
