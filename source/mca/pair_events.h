@@ -79,47 +79,50 @@ namespace tribodyn
           // many-body part m differing from the automaton's mean
           // stress, is many-body work: doc/theory/mca.md §8.4)
           double pair_heat = 0;
-          auto   plastic_return
-            = [&](const unsigned int s, double &sigma, double &alpha) {
-                const double sm  = plast[2 * (s ? j : i)],
-                             M   = plast[2 * (s ? j : i) + 1];
-                const double dev = sigma - sm, s_new = sm + M * dev;
-                const double w = released(s, sigma, s_new, alpha, alpha * M);
-                const double heat_s
-                  = w - (1 - M) * Sp * (sm - m_of(s)) * dev / k_of(s);
-                pair_heat += heat_s;
-                // a bond's many-body part anew at D sigma_m, its
-                // value in an elastic bulk (a contact's stays: it
-                // goes with the contact's pressure, when the contact
-                // loses it or opens): the energy this moves between
-                // the side and kappa G^2 of its automaton is
-                // many-body work too
-                const unsigned int a     = s ? j : i;
-                const double       m_old = m_of(s);
-                const double m_new   = bonded[p] ? mc[mat[a]].D * sm : m_old;
-                (s ? mb_j : mb_i)[p] = m_new - mc[mat[a]].D * mb_mu[a];
-                if (owned(a))
-                  {
-                    const double k_s   = k_of(s);
-                    const double e_old = s_new - m_old, e_new = s_new - m_new;
-                    double       moved
-                      = Sp * (e_old * e_old - e_new * e_new) / (2 * k_s);
-                    const double beta = (s ? beta_j : beta_i)[p];
-                    if (beta != 0)
-                      {
-                        auto        &st = mb_state[a];
-                        const double G  = st[2]
-                                         + beta * geometry.inv_half_rest(p)
-                                             * (m_new - m_old);
-                        moved += st[0] * (st[2] * st[2] - G * G);
-                        st[2] = G;
-                      }
-                    work[plastic_work] += heat_s;
-                    mb_work += w - heat_s + moved;
-                  }
-                sigma = s_new;
-                alpha *= M;
-              };
+          auto   plastic_return =
+            [&](const unsigned int s, double &sigma, double &alpha) {
+              const double sm  = plast[2 * (s ? j : i)],
+                           M   = plast[2 * (s ? j : i) + 1];
+              const double dev = sigma - sm, s_new = sm + M * dev;
+              const double w = released(s, sigma, s_new, alpha, alpha * M);
+              const double heat_s
+                = w - (1 - M) * Sp * (sm - m_of(s)) * dev / k_of(s);
+              pair_heat += heat_s;
+              const unsigned int a = s ? j : i;
+              if (owned(a))
+                {
+                  work[plastic_work] += heat_s;
+                  mb_work += w - heat_s;
+                }
+              // a bond's many-body part anew at D sigma_m, its value in
+              // an elastic bulk (a contact's stays: it goes with the
+              // contact's pressure, when the contact loses it or
+              // opens): the energy this moves between the side and
+              // kappa G^2 of its automaton is many-body work too
+              if (bonded[p])
+                {
+                  const double m_old = m_of(s), m_new = mc[mat[a]].D * sm;
+                  (s ? mb_j : mb_i)[p] = m_new - mc[mat[a]].D * mb_mu[a];
+                  if (owned(a))
+                    {
+                      const double e_old = s_new - m_old, e_new = s_new - m_new;
+                      mb_work
+                        += Sp * (e_old * e_old - e_new * e_new) / (2 * k_of(s));
+                      const double beta = (s ? beta_j : beta_i)[p];
+                      if (beta != 0)
+                        {
+                          auto        &st = mb_state[a];
+                          const double G  = st[2]
+                                           + beta * geometry.inv_half_rest(p)
+                                               * (m_new - m_old);
+                          mb_work += st[0] * (st[2] * st[2] - G * G);
+                          st[2] = G;
+                        }
+                    }
+                }
+              sigma = s_new;
+              alpha *= M;
+            };
           if (Mi < 1)
             plastic_return(0, sig_i[p], ai);
           if (Mj < 1)

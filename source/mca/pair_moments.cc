@@ -12,6 +12,17 @@ namespace tribodyn
 {
   namespace mca
   {
+    std::pair<double, double>
+    AutomatonSystem::rotation_stiffnesses(const unsigned int mi,
+                                          const unsigned int mj) const
+    {
+      std::pair<double, double> k{0., 0.};
+      moment_laws.with_selected(
+        [&](const auto &law) { k = law.stiffnesses(mi * n_materials + mj); });
+      return k;
+    }
+
+
     double
     AutomatonSystem::pair_moment_energy() const
     {

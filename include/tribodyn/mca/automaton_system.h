@@ -248,13 +248,7 @@ namespace tribodyn
       /// Twisting and bending stiffnesses (N m / rad) of the relative-
       /// rotation moment of a pair of materials @p mi, @p mj (0 when off).
       std::pair<double, double>
-      rotation_stiffnesses(const unsigned int mi, const unsigned int mj) const
-      {
-        std::pair<double, double> k{0., 0.};
-        moment_laws.with_selected(
-          [&](const auto &law) { k = law.stiffnesses(mi * n_materials + mj); });
-        return k;
-      }
+      rotation_stiffnesses(const unsigned int mi, const unsigned int mj) const;
       /// Number of bonded pairs of each local automaton (owned: complete).
       std::vector<unsigned int>
       bonded_neighbour_counts() const;
@@ -482,7 +476,10 @@ namespace tribodyn
       /// this rank.
       double
       pair_moment_energy() const;
-      /// Pair vector x_j - x_i (with the cached periodic image shift).
+      /// Pair vector x_j - x_i (with the cached periodic image shift);
+      /// its length (the same bits as at the last evaluation of the pairs:
+      /// positions change only in the drift); the unit normal n_ij (@p r:
+      /// the distance).
       Vec3
       pair_vector(const unsigned int p) const
       {
@@ -492,16 +489,12 @@ namespace tribodyn
                  (x[j][1] - x[i][1]) + s[1],
                  (x[j][2] - x[i][2]) + s[2]}};
       }
-
-      /// Distance |x_j - x_i| of pair @p p (the same bits as at the last
-      /// evaluation of the pairs: positions change only in the drift).
       double
       pair_distance(const unsigned int p) const
       {
         const Vec3 dn = pair_vector(p);
         return std::sqrt(dot(dn, dn));
       }
-      /// Unit normal n_ij of pair @p p; @p r receives the distance.
       Vec3
       unit_normal(const unsigned int p, double &r) const
       {
