@@ -146,13 +146,10 @@ namespace tribodyn
           const double beta = side ? beta_j[p] : beta_i[p];
           if (beta != 0)
             {
-              auto        &s = mb_state[a];
               const double g = beta / (graded ? pair_half_rest[p] : r0);
-              const double G = s[sum_gm] - g * m;
               work[switching_work]
-                += s[kappa] * (s[sum_gm] * s[sum_gm] - G * G);
-              s[sum_gm] = G;
-              s[gamma] -= g;
+                += pair_energy::shift_sum(mb_state[a], -g * m);
+              mb_state[a][gamma] -= g;
             }
         }
     }

@@ -4,6 +4,8 @@
 #ifndef tribodyn_mca_pair_energy_h
 #define tribodyn_mca_pair_energy_h
 
+#include <array>
+
 namespace tribodyn
 {
   namespace mca
@@ -54,6 +56,17 @@ namespace tribodyn
                  / (2 * k)
                - 0.25 * S
                    * ((sigma - sigma_new) * dr + (alpha - alpha_new) * tdu);
+      }
+
+      /// Move G of an automaton's many-body state @p state (kappa, gamma,
+      /// G: AutomatonArrays::mb_state) by @p dG; returns the drop of its
+      /// energy kappa G^2.
+      inline double
+      shift_sum(std::array<double, 3> &state, const double dG)
+      {
+        const double G = state[2], G_new = G + dG;
+        state[2] = G_new;
+        return state[0] * (G * G - G_new * G_new);
       }
 
       /// Energy lost when the series springs of a pair (stiffnesses @p ki,

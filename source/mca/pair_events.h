@@ -111,12 +111,9 @@ namespace tribodyn
                       const double beta = (s ? beta_j : beta_i)[p];
                       if (beta != 0)
                         {
-                          auto        &st = mb_state[a];
-                          const double G  = st[2]
-                                           + beta * geometry.inv_half_rest(p)
-                                               * (m_new - m_old);
-                          mb_work += st[0] * (st[2] * st[2] - G * G);
-                          st[2] = G;
+                          mb_work += pair_energy::shift_sum(
+                            mb_state[a],
+                            beta * geometry.inv_half_rest(p) * (m_new - m_old));
                         }
                     }
                 }
@@ -154,11 +151,8 @@ namespace tribodyn
                       const double beta = (side ? beta_j : beta_i)[p];
                       if (beta != 0)
                         {
-                          auto        &st = mb_state[a];
-                          const double G
-                            = st[2] - beta * geometry.inv_half_rest(p) * m;
-                          w += st[0] * (st[2] * st[2] - G * G);
-                          st[2] = G;
+                          w += pair_energy::shift_sum(
+                            mb_state[a], -beta * geometry.inv_half_rest(p) * m);
                         }
                       work[switching_work] += w;
                     }

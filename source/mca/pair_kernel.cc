@@ -487,11 +487,8 @@ namespace tribodyn
         {
           const double D  = mc[mat[k]].D;
           const double dm = D * dsm[2 * k];
-          auto        &st = mb_state[k];
-          const double dG = dm * st[1];
           mb_work += (D * mb_mu[k] + 0.5 * dm) * dsm[2 * k + 1]
-                     - st[0] * dG * (2 * st[2] + dG);
-          st[2] += dG;
+                     + pair_energy::shift_sum(mb_state[k], dm * mb_state[k][1]);
         }
       for (unsigned int k = 0; k < n_local; ++k)
         mb_mu[k] += dsm[2 * k];
