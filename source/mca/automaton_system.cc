@@ -70,7 +70,7 @@ namespace tribodyn
         for (const auto &b : mc)
           {
             const double ki = a.two_G / r0, kj = b.two_G / r0;
-            springs.push_back({ki, kj, 1. / (ki + kj)});
+            springs.push_back({ki, kj, 1. / (ki + kj), 1. / ki, 1. / kj});
           }
       // The relative-rotation moment's springs (doc/theory/mca.md §3),
       // from the normal ones; a moment law that follows the relative
@@ -501,7 +501,8 @@ namespace tribodyn
         add(*vec);
       add(mat), add(body), add(size_level), add(volume), add(groups),
         add(eps_p), add(sigma_y);
-      add(plast), add(bond_buffer), add(dsm), add(pair_mu), add(pair_dr);
+      add(plast), add(bond_buffer), add(dsm), add(side_dq), add(pair_mu),
+        add(pair_dr);
       add(mb_mu), add(mb_state);
       add(trial), add(fabric_inverse), add(changed);
       add(pi), add(pj), add(pshift);

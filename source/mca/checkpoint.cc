@@ -16,7 +16,7 @@
 // the list (a persistent pair field: register it, nothing else); the ctest
 // mca_restart_* tests compare a resumed run with an uninterrupted one and
 // fail if something is missed. Per-step scratch buffers (plast,
-// bond_buffer, dsm, pair_dr, trial) and the rebuild's transient lists
+// bond_buffer, dsm, side_dq, pair_dr, trial) and the rebuild's transient lists
 // (kept_states, kept_keys, old_pairs, old_flags) are rebuilt before use and
 // are not saved; the material constants (mc, springs) come from the
 // parameters.

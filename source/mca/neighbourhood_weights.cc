@@ -71,7 +71,7 @@ namespace tribodyn
           else
             std::vector<Sym3>().swap(fabric_inverse);
           index_pairs_of_automata();
-          mb_state.assign(n_owned, {{0, 0, 0}});
+          mb_state.assign(n_owned, {});
         }
       using Matrix6 = Eigen::Matrix<double, 6, 6>;
       using Vector6 = Eigen::Matrix<double, 6, 1>;
@@ -147,10 +147,10 @@ namespace tribodyn
           // is booked as switching work (doc/theory/mca.md §8.4; that of
           // all the automata, by rebuild())
           const auto  &st     = mb_state[k];
-          const double before = st[0] * st[2] * st[2];
+          const double before = st.kappa * st.G * st.G;
           update_many_body_state(k);
           if (!all)
-            work[switching_work] += before - st[0] * st[2] * st[2];
+            work[switching_work] += before - st.kappa * st.G * st.G;
           changed[k] = 0;
         }
       any_changed = false;

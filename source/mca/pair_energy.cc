@@ -16,18 +16,6 @@ namespace tribodyn
 {
   namespace mca
   {
-    namespace
-    {
-      /// The state of an automaton in AutomatonArrays::mb_state.
-      enum ManyBodyState : unsigned int
-      {
-        kappa,
-        gamma,
-        sum_gm
-      };
-    } // namespace
-
-
     double
     AutomatonSystem::pair_elastic_energy() const
     {
@@ -69,8 +57,7 @@ namespace tribodyn
     {
       double energy = 0;
       for (unsigned int k = 0; k < n_owned; ++k)
-        energy
-          += mb_state[k][kappa] * mb_state[k][sum_gm] * mb_state[k][sum_gm];
+        energy += mb_state[k].kappa * mb_state[k].G * mb_state[k].G;
       return energy;
     }
 
@@ -98,11 +85,11 @@ namespace tribodyn
       // many-body work)
       const double K = mc[mat[k]].K;
       auto        &s = mb_state[k];
-      s[kappa]       = D > 0 && g_sum > 0.25 * g_abs
+      s.kappa        = D > 0 && g_sum > 0.25 * g_abs
                          ? area / (2 * K * D * g_sum * g_sum * g_sum)
                          : 0.;
-      s[gamma]       = g_sum;
-      s[sum_gm]      = G;
+      s.gamma        = g_sum;
+      s.G            = G;
     }
 
 
@@ -149,7 +136,7 @@ namespace tribodyn
               const double g = beta / (graded ? pair_half_rest[p] : r0);
               work[switching_work]
                 += pair_energy::shift_sum(mb_state[a], -g * m);
-              mb_state[a][gamma] -= g;
+              mb_state[a].gamma -= g;
             }
         }
     }

@@ -4,7 +4,7 @@
 #ifndef tribodyn_mca_pair_energy_h
 #define tribodyn_mca_pair_energy_h
 
-#include <array>
+#include <tribodyn/mca/automaton_arrays.h>
 
 namespace tribodyn
 {
@@ -29,17 +29,17 @@ namespace tribodyn
       /**
        * Work released by a side whose normal stress @p sigma becomes
        * @p sigma_new and whose shear factor @p alpha becomes @p alpha_new
-       * at the end of a step (plastic return, Coulomb limit, no tension):
-       * the drop of its energy (many-body part @p m unchanged, |t|^2 =
-       * @p t2), minus the work the removed stress did not do over the
-       * step's second half (velocity Verlet: the pair force works at the
-       * mean of its values at the two ends of the step; the side carries
-       * half of it over the pair's normal increment @p dr and tangential
-       * one, t . du = @p tdu).
+       * at the end of a step (Coulomb limit, no tension): the drop of its
+       * energy (spring compliance @p inv_k = 1/k, many-body part @p m
+       * unchanged, |t|^2 = @p t2), minus the work the removed stress did
+       * not do over the step's second half (velocity Verlet: the pair force
+       * works at the mean of its values at the two ends of the step; the
+       * side carries half of it over the pair's normal increment @p dr and
+       * tangential one, t . du = @p tdu).
        */
       inline double
       release(const double S,
-              const double k,
+              const double inv_k,
               const double m,
               const double sigma,
               const double sigma_new,
@@ -50,39 +50,36 @@ namespace tribodyn
               const double tdu)
       {
         const double e = sigma - m, e_new = sigma_new - m;
-        return S
+        return 0.5 * S * inv_k
                  * (e * e - e_new * e_new
                     + (alpha * alpha - alpha_new * alpha_new) * t2)
-                 / (2 * k)
                - 0.25 * S
                    * ((sigma - sigma_new) * dr + (alpha - alpha_new) * tdu);
       }
 
-      /// Move G of an automaton's many-body state @p state (kappa, gamma,
-      /// G: AutomatonArrays::mb_state) by @p dG; returns the drop of its
-      /// energy kappa G^2.
+      /// Move G of an automaton's many-body state @p state by @p dG;
+      /// returns the drop of its energy kappa G^2.
       inline double
-      shift_sum(std::array<double, 3> &state, const double dG)
+      shift_sum(ManyBodyState &state, const double dG)
       {
-        const double G = state[2], G_new = G + dG;
-        state[2] = G_new;
-        return state[0] * (G * G - G_new * G_new);
+        const double G = state.G, G_new = G + dG;
+        state.G = G_new;
+        return state.kappa * (G * G - G_new * G_new);
       }
 
-      /// Energy lost when the series springs of a pair (stiffnesses @p ki,
-      /// @p kj, area @p S) set its two sides' shear stresses alpha_i t,
-      /// alpha_j t equal again (|t|^2 = @p t2): S t2 (alpha_i - alpha_j)^2
-      /// / 2 (ki + kj).
+      /// Energy lost when the series springs of a pair (area @p S,
+      /// @p inv_sum = 1 / (k_i + k_j)) set its two sides' shear stresses
+      /// alpha_i t, alpha_j t equal again (|t|^2 = @p t2): S t2 (alpha_i -
+      /// alpha_j)^2 / 2 (k_i + k_j).
       inline double
       shear_mixing(const double S,
-                   const double ki,
-                   const double kj,
+                   const double inv_sum,
                    const double alpha_i,
                    const double alpha_j,
                    const double t2)
       {
         const double da = alpha_i - alpha_j;
-        return S * t2 * da * da / (2 * (ki + kj));
+        return 0.5 * S * t2 * da * da * inv_sum;
       }
     } // namespace pair_energy
   }   // namespace mca

@@ -24,33 +24,34 @@ namespace tribodyn
                                  const Vec3        &t,
                                  double            &ai,
                                  double            &aj,
-                                 double            &mb_work)
+                                 WorkSums          &dw)
     {
       const unsigned int i = pi[p], j = pj[p];
       const double       Sp = geometry.area(p);
-      // The events of the step (plastic returns, no tension,
-      // friction limits): each side releases energy
-      // (pair_energy::release, doc/theory/mca.md §8.4), booked by
-      // the side's owner; the plastic heat of an unbonded pair is
-      // that of its two sides.
-      // (the sides' spring stiffnesses: read where an event needs
-      // them)
-      const auto k_of = [&](const unsigned int s) {
-        const SeriesSprings &k = springs[mat[i] * n_materials + mat[j]];
-        return (s ? k.kj : k.ki) * geometry.stiffness_scale(p);
+      // The events of the step (plastic returns, no tension, friction
+      // limits): each side releases energy (doc/theory/mca.md §8.4),
+      // booked in dw by the side's owner; the plastic heat of an unbonded
+      // pair is that of its two sides.
+      const SeriesSprings &k = springs[mat[i] * n_materials + mat[j]];
+      // (half the area over the side's spring stiffness: the energy of a
+      // side is c ((sigma - m)^2 + alpha^2 |t|^2))
+      const auto c_of = [&](const unsigned int s) {
+        return 0.5 * Sp * (s ? k.inv_kj : k.inv_ki)
+               * geometry.inv_stiffness_scale(p);
       };
-      // many-body part of side s, and its release of one event
-      auto m_of = [&](const unsigned int s) {
+      // many-body part of side s
+      const auto m_of = [&](const unsigned int s) {
         return s ? mc[mat[j]].D * mb_mu[j] + mb_j[p]
                  : mc[mat[i]].D * mb_mu[i] + mb_i[p];
       };
-      auto released = [&](const unsigned int s,
-                          const double       sigma,
-                          const double       sigma_new,
-                          const double       alpha,
-                          const double       alpha_new) {
+      const auto released = [&](const unsigned int s,
+                                const double       sigma,
+                                const double       sigma_new,
+                                const double       alpha,
+                                const double       alpha_new) {
         return pair_energy::release(Sp,
-                                    k_of(s),
+                                    (s ? k.inv_kj : k.inv_ki)
+                                      * geometry.inv_stiffness_scale(p),
                                     m_of(s),
                                     sigma,
                                     sigma_new,
@@ -64,66 +65,65 @@ namespace tribodyn
       // difference (sigma_i - sigma_j)(dq_j - dq_i) / 2 at mid-step
       if (mat[i] != mat[j] && (owned(i) || owned(j)))
         {
-          const double ki = k_of(0), kj = k_of(1);
           const double dmid
             = sig_i[p] - sig_j[p]
-              - 0.5 * (mc[mat[i]].D * dsm[2 * i] - mc[mat[j]].D * dsm[2 * j]);
-          mb_work += (owned(i) + owned(j)) * 0.25 * Sp * dmid * pair_dr[2 * p]
-                     * (ki - kj) / (ki + kj);
+              - 0.5 * (mc[mat[i]].D * dsm[i] - mc[mat[j]].D * dsm[j]);
+          dw[many_body_work] += (owned(i) + owned(j)) * 0.25 * Sp * dmid
+                                * pair_dr[2 * p] * (k.ki - k.kj) * k.inv_sum;
         }
       if constexpr (plastic)
         {
-          const double Mi = plast[2 * i + 1], Mj = plast[2 * j + 1];
-          // (the plastic work of a side: the deviatoric energy its
-          // return releases; the rest of the release, from its
-          // many-body part m differing from the automaton's mean
-          // stress, is many-body work: doc/theory/mca.md §8.4)
+          // Radial returns of the sides: sigma - sigma_m and alpha scale by
+          // M. Of the energy a side releases, the plastic work is the
+          // deviatoric part, c (1 - M^2)((sigma - sigma_m)^2 + alpha^2
+          // |t|^2) less the unworked second half-step; the rest, 2 c (1 -
+          // M)(sigma - sigma_m)(sigma_m - m) from its many-body part m
+          // differing from the automaton's mean stress, is many-body work
+          // (doc/theory/mca.md §8.4).
           double pair_heat = 0;
-          auto   plastic_return =
-            [&](const unsigned int s, double &sigma, double &alpha) {
-              const double sm  = plast[2 * (s ? j : i)],
-                           M   = plast[2 * (s ? j : i) + 1];
-              const double dev = sigma - sm, s_new = sm + M * dev;
-              const double w = released(s, sigma, s_new, alpha, alpha * M);
-              const double heat_s
-                = w - (1 - M) * Sp * (sm - m_of(s)) * dev / k_of(s);
-              pair_heat += heat_s;
+          for (const unsigned int s : {0u, 1u})
+            {
               const unsigned int a = s ? j : i;
+              const double       M = plast[2 * a + 1];
+              if (!(M < 1))
+                continue;
+              double      &sigma = s ? sig_j[p] : sig_i[p];
+              double      &alpha = s ? aj : ai;
+              const double sm = plast[2 * a], dev = sigma - sm;
+              const double s_new = sm + M * dev, c = c_of(s), m = m_of(s);
+              const double heat_s
+                = c * (1 - M * M) * (dev * dev + alpha * alpha * dot(t, t))
+                  - 0.25 * Sp * (1 - M)
+                      * (dev * pair_dr[2 * p] + alpha * pair_dr[2 * p + 1]);
+              pair_heat += heat_s;
               if (owned(a))
                 {
-                  work[plastic_work] += heat_s;
-                  mb_work += w - heat_s;
+                  dw[plastic_work] += heat_s;
+                  dw[many_body_work] += 2 * c * (1 - M) * dev * (sm - m);
                 }
-              // a bond's many-body part anew at D sigma_m, its value in
-              // an elastic bulk (a contact's stays: it goes with the
-              // contact's pressure, when the contact loses it or
-              // opens): the energy this moves between the side and
-              // kappa G^2 of its automaton is many-body work too
+              // a bond's many-body part anew at D sigma_m, its value in an
+              // elastic bulk (a contact's stays: it goes with the
+              // contact's pressure, when the contact loses it or opens):
+              // the energy this moves between the side and kappa G^2 of its
+              // automaton is many-body work too
               if (bonded[p])
                 {
-                  const double m_old = m_of(s), m_new = mc[mat[a]].D * sm;
-                  (s ? mb_j : mb_i)[p] = m_new - mc[mat[a]].D * mb_mu[a];
+                  const double D = mc[mat[a]].D, m_new = D * sm;
+                  (s ? mb_j : mb_i)[p] = m_new - D * mb_mu[a];
                   if (owned(a))
                     {
-                      const double e_old = s_new - m_old, e_new = s_new - m_new;
-                      mb_work
-                        += Sp * (e_old * e_old - e_new * e_new) / (2 * k_of(s));
+                      dw[many_body_work]
+                        += c * (m_new - m) * (2 * s_new - m - m_new);
                       const double beta = (s ? beta_j : beta_i)[p];
                       if (beta != 0)
-                        {
-                          mb_work += pair_energy::shift_sum(
-                            mb_state[a],
-                            beta * geometry.inv_half_rest(p) * (m_new - m_old));
-                        }
+                        dw[many_body_work] += pair_energy::shift_sum(
+                          mb_state[a],
+                          beta * geometry.inv_half_rest(p) * (m_new - m));
                     }
                 }
               sigma = s_new;
               alpha *= M;
-            };
-          if (Mi < 1)
-            plastic_return(0, sig_i[p], ai);
-          if (Mj < 1)
-            plastic_return(1, sig_j[p], aj);
+            }
           // Plastic heat for bond formation: only heat generated while
           // the pair is unbonded counts (seed §2.1).
           if (!heat.empty() && !bonded[p])
@@ -147,14 +147,14 @@ namespace tribodyn
                     {
                       const double alpha = side ? aj : ai;
                       double       w = released(side, sigma, 0, alpha, alpha)
-                                 + Sp * m * m / (2 * k_of(side));
+                                 + c_of(side) * m * m;
                       const double beta = (side ? beta_j : beta_i)[p];
                       if (beta != 0)
                         {
                           w += pair_energy::shift_sum(
                             mb_state[a], -beta * geometry.inv_half_rest(p) * m);
                         }
-                      work[switching_work] += w;
+                      dw[switching_work] += w;
                     }
                   (side ? mb_j : mb_i)[p] = -mc[mat[a]].D * mb_mu[a];
                   sigma                   = 0;
@@ -171,8 +171,7 @@ namespace tribodyn
                 {
                   const double s = tn > 0 ? limit / tn : 0;
                   if (owned(side == 0 ? i : j))
-                    work[friction_work]
-                      += released(side, sigma, sigma, a, a * s);
+                    dw[friction_work] += released(side, sigma, sigma, a, a * s);
                   a *= s;
                 }
             }

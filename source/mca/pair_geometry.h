@@ -58,6 +58,11 @@ namespace tribodyn
       {
         return 1.;
       }
+      static constexpr double
+      inv_stiffness_scale(const unsigned int)
+      {
+        return 1.;
+      }
     };
 
     /**
@@ -115,6 +120,11 @@ namespace tribodyn
       stiffness_scale(const unsigned int p) const
       {
         return r0 / q0[p];
+      }
+      double
+      inv_stiffness_scale(const unsigned int p) const
+      {
+        return q0[p] / r0;
       }
       /// k I and k J scale as (2G / q0) S^2: the pair's face and halves.
       double

@@ -170,11 +170,13 @@ namespace tribodyn
       pair_dr.resize(2 * static_cast<std::size_t>(n_pairs));
       // radius of the circular contact face of area S (moment limits)
       const double face_radius = std::sqrt(S / M_PI);
-      dsm.assign(2 * static_cast<std::size_t>(n_local), 0);
-      // The many-body work of this step (doc/theory/mca.md §8.4): the
-      // work of the many-body parts of the side stresses over the step,
-      // minus the change of the automata's kappa G^2.
-      double mb_work = 0;
+      dsm.assign(n_local, 0);
+      side_dq.assign(n_owned, 0);
+      // The works of this step's events (added to work at its end), among
+      // them the many-body work (doc/theory/mca.md §8.4): that of the
+      // many-body parts of the side stresses over the step, minus the
+      // change of the automata's kappa G^2.
+      WorkSums dw{};
       // Contact and bond changes of this step mark both automata.
       auto mark = [&](const unsigned int p) {
         changed[pi[p]] = 1;
@@ -217,7 +219,7 @@ namespace tribodyn
                     b_wi[c][b] = w[i][c];
                     b_wj[c][b] = w[j][c];
                   }
-              __builtin_prefetch(&dsm[2 * j], 1);
+              __builtin_prefetch(&dsm[j], 1);
             }
           for (unsigned int b = 0; b < nb; ++b)
             {
@@ -316,7 +318,7 @@ namespace tribodyn
                                 Vec3 n_new;
                                 for (unsigned int c = 0; c < 3; ++c)
                                   n_new[c] = b_dnew[c][b] * b_inv_r[b];
-                                work[switching_work]
+                                dw[switching_work]
                                   += moment.energy(p,
                                                    mat[i] * n_materials
                                                      + mat[j],
@@ -432,11 +434,14 @@ namespace tribodyn
                 // contact
                 if (ai != aj)
                   {
-                    const double lost = 0.5
-                                        * pair_energy::shear_mixing(
-                                          Sp, ki, kj, ai, aj, dot(t, t));
-                    const Work kind = bonded[p] ? plastic_work : friction_work;
-                    work[kind] += (owned(i) + owned(j)) * lost;
+                    const double lost
+                      = 0.5
+                        * pair_energy::shear_mixing(Sp, inv, ai, aj, dot(t, t));
+                    // (constant indices keep dw in registers)
+                    if (bonded[p])
+                      dw[plastic_work] += (owned(i) + owned(j)) * lost;
+                    else
+                      dw[friction_work] += (owned(i) + owned(j)) * lost;
                   }
                 // this step's increments, for the releases of pass C
                 if (plastic || !bonded[p] || mat[i] != mat[j])
@@ -459,15 +464,15 @@ namespace tribodyn
               const double dqj = dr_p - dqi;
               if (owned(i))
                 {
-                  dsm[2 * i] += beta_i[p] * dqi * geometry.inv_half_rest(p);
-                  dsm[2 * i + 1] += Sp * dqi;
-                  mb_work += Sp * dqi * mb_i[p];
+                  dsm[i] += beta_i[p] * dqi * geometry.inv_half_rest(p);
+                  side_dq[i] += Sp * dqi;
+                  dw[many_body_work] += Sp * dqi * mb_i[p];
                 }
               if (owned(j))
                 {
-                  dsm[2 * j] += beta_j[p] * dqj * geometry.inv_half_rest(p);
-                  dsm[2 * j + 1] += Sp * dqj;
-                  mb_work += Sp * dqj * mb_j[p];
+                  dsm[j] += beta_j[p] * dqj * geometry.inv_half_rest(p);
+                  side_dq[j] += Sp * dqj;
+                  dw[many_body_work] += Sp * dqj * mb_j[p];
                 }
             }
         }
@@ -477,21 +482,22 @@ namespace tribodyn
       // squares) to its pairs' normal strains: dtheta = sum_j beta_ij
       // deps_ij (beta = 1/4 in a complete FCC neighbourhood).
       for (unsigned int k = 0; k < n_owned; ++k)
-        dsm[2 * k] *= mc[mat[k]].K;
+        dsm[k] *= mc[mat[k]].K;
       if (neighbours.active())
-        neighbours.update(dsm.data(), 2);
+        neighbours.update(dsm.data(), 1);
       // The many-body work of D mu at mid-step (mu and half of this
       // step's increment), minus the change of kappa G^2 (G moves by D dsm
       // gamma); then mu of every local automaton.
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           const double D  = mc[mat[k]].D;
-          const double dm = D * dsm[2 * k];
-          mb_work += (D * mb_mu[k] + 0.5 * dm) * dsm[2 * k + 1]
-                     + pair_energy::shift_sum(mb_state[k], dm * mb_state[k][1]);
+          const double dm = D * dsm[k];
+          dw[many_body_work]
+            += (D * mb_mu[k] + 0.5 * dm) * side_dq[k]
+               + pair_energy::shift_sum(mb_state[k], dm * mb_state[k].gamma);
         }
       for (unsigned int k = 0; k < n_local; ++k)
-        mb_mu[k] += dsm[2 * k];
+        mb_mu[k] += dsm[k];
 
       for (unsigned int k = 0; k < n_owned; ++k)
         {
@@ -501,8 +507,8 @@ namespace tribodyn
       // Many-body part of the elastic update of the side stresses.
       auto elastic_update = [&](const unsigned int p) {
         const unsigned int i = pi[p], j = pj[p];
-        sig_i[p] += mc[mat[i]].D * dsm[2 * i];
-        sig_j[p] += mc[mat[j]].D * dsm[2 * j];
+        sig_i[p] += mc[mat[i]].D * dsm[i];
+        sig_j[p] += mc[mat[j]].D * dsm[j];
       };
 
       NormalBlock nblock;
@@ -574,8 +580,8 @@ namespace tribodyn
               const unsigned int i = pi[p0 + b], j = pj[p0 + b];
               if constexpr (!plastic)
                 {
-                  b_dsm_i[b] = mc[mat[i]].D * dsm[2 * i];
-                  b_dsm_j[b] = mc[mat[j]].D * dsm[2 * j];
+                  b_dsm_i[b] = mc[mat[i]].D * dsm[i];
+                  b_dsm_j[b] = mc[mat[j]].D * dsm[j];
                 }
               __builtin_prefetch(&f[j], 1);
               if constexpr (rot)
@@ -600,7 +606,7 @@ namespace tribodyn
                   sig_j[p] += b_dsm_j[b];
                 }
               // the events of the step (pair_events.h)
-              pair_events<plastic>(p, geometry, law, t, ai, aj, mb_work);
+              pair_events<plastic>(p, geometry, law, t, ai, aj, dw);
               if (plastic || !bonded[p])
                 {
                   tau_scale_i[p] = ai;
@@ -665,7 +671,7 @@ namespace tribodyn
                                                 geometry.moment_scale(p),
                                                 K);
                       if (owned(i))
-                        work[friction_work] += slip_work;
+                        dw[friction_work] += slip_work;
                     }
                   if (owned(i))
                     for (unsigned int c = 0; c < 3; ++c)
@@ -679,7 +685,8 @@ namespace tribodyn
                 add_pair_stress(p, n, r, trial, false);
             }
         }
-      work[many_body_work] += mb_work;
+      for (unsigned int k = 0; k < n_works; ++k)
+        work[k] += dw[k];
     }
 
 

@@ -21,6 +21,14 @@ namespace tribodyn
      * Per-automaton arrays of AutomatonSystem (owned first, then ghosts),
      * with the flags packed into them.
      */
+    /// The many-body energy of an automaton, kappa G^2 (doc/theory/mca.md
+    /// §8.4): G = sum g m over its weighted sides (g = beta / h, m a side's
+    /// many-body part), gamma = sum g.
+    struct ManyBodyState
+    {
+      double kappa = 0, gamma = 0, G = 0;
+    };
+
     struct AutomatonArrays
     {
       unsigned int               n_owned = 0, n_local = 0;
@@ -50,18 +58,21 @@ namespace tribodyn
       /// f over the group's owned automata before the loads are added).
       std::vector<Vec3> group_reaction;
       /// Per-step exchange buffers (stride given by their use).
-      std::vector<double> plast;       ///< sigma_m trial, M, heat share
+      std::vector<double> plast;       ///< sigma_m trial, M
       std::vector<double> bond_buffer; ///< stress tensor (6), yield stress
-      /// Per automaton k, dsm[2k]: the volumetric strain increment, then
-      /// the mean-stress increment; dsm[2k + 1]: sum of S dq over its
-      /// sides (the work of its many-body part, doc/theory/mca.md §8.4).
+      /// Per automaton: the volumetric strain increment, then the
+      /// mean-stress increment (exchanged with the ghosts).
       std::vector<double> dsm;
+      /// Per owned automaton: the sum of S dq over its sides in a step
+      /// (the work of its many-body part, doc/theory/mca.md §8.4; its own,
+      /// not exchanged).
+      std::vector<double> side_dq;
       /// Many-body energy (doc/theory/mca.md §8.4): mean-stress increments
       /// of each local automaton since the last rebuild (mu_a; a side's
       /// many-body stress is D mu_a + its offset, PairArrays::mb_i), and
-      /// kappa, gamma = sum g, G = sum g m of each owned one.
-      std::vector<double>                mb_mu;
-      std::vector<std::array<double, 3>> mb_state;
+      /// the many-body state of each owned one.
+      std::vector<double>        mb_mu;
+      std::vector<ManyBodyState> mb_state;
       /// Stress tensors T (eq. 4) of the owned automata: the plastic
       /// trial in pass B, the final one in pass C of bond scenes.
       std::vector<Mat3> trial;

@@ -432,8 +432,8 @@ namespace tribodyn
                   FrictionLaw &law,
                   MomentLaw   &moment);
       /// The events of pair @p p at the end of its step (plastic
-      /// returns, no tension, friction limits) and the energy they release
-      /// (source/mca/pair_events.h).
+      /// returns, no tension, friction limits) and the energy they release,
+      /// added to @p works (source/mca/pair_events.h).
       template <bool plastic, class Pairs, class FrictionLaw>
       void
       pair_events(const unsigned int p,
@@ -442,7 +442,7 @@ namespace tribodyn
                   const Vec3        &t,
                   double            &alpha_i,
                   double            &alpha_j,
-                  double            &many_body_work);
+                  WorkSums          &works);
       /// Bond breaking and formation under the chosen criteria
       /// (source/mca/bond_switching.h), at the end of the pair kernel.
       template <bool plastic, class Breaking, class Formation>
@@ -522,10 +522,10 @@ namespace tribodyn
       index_pairs_of_automata();
       struct Absorbed
       {
-        std::vector<double>         automata, pairs;
-        std::array<double, n_works> work{};
-        unsigned long long          dropped = 0;
-        std::vector<Vec3>           group_reaction;
+        std::vector<double> automata, pairs;
+        WorkSums            work{};
+        unsigned long long  dropped = 0;
+        std::vector<Vec3>   group_reaction;
       };
       Absorbed absorbed;
 
@@ -705,7 +705,7 @@ namespace tribodyn
       double             first_contact_time = -1;
       unsigned long long n_part_automata = 0, n_part_inclusions = 0;
       /// The works since the start, by Work (system_figures.h).
-      std::array<double, n_works> work{};
+      WorkSums work{};
       /// Damping part of f of each owned automaton (for damped_work), valid
       /// while f_damp_rebuild == rebuild_count; empty without damping.
       std::vector<Vec3> f_damp;

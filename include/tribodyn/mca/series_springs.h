@@ -9,11 +9,12 @@ namespace tribodyn
   namespace mca
   {
     /// Normal stiffnesses k = 2G / r0 of the two halves of a pair of
-    /// materials (i, j), and 1 / (k_i + k_j); tables of them are indexed
-    /// by mat_i * n_materials + mat_j.
+    /// materials (i, j), 1 / (k_i + k_j) and the halves' compliances 1 / k
+    /// (the energy of a side, doc/theory/mca.md §8.4); tables of them are
+    /// indexed by mat_i * n_materials + mat_j.
     struct SeriesSprings
     {
-      double ki, kj, inv_sum;
+      double ki, kj, inv_sum, inv_ki, inv_kj;
     };
   } // namespace mca
 } // namespace tribodyn

@@ -32,6 +32,8 @@ namespace tribodyn
       pair_work,
       n_works
     };
+    /// One value per Work.
+    using WorkSums = std::array<double, n_works>;
 
     /// Global figures of the current state (summed over ranks).
     struct SystemEnergies
