@@ -32,21 +32,16 @@ namespace tribodyn
           if (!bonded[p] && !in_contact[p] && sig_i[p] == 0 && sig_j[p] == 0
               && t2 == 0)
             continue;
-          const SeriesSprings &k     = springs[mat[i] * n_materials + mat[j]];
-          const double         scale = graded ? r0 / pair_half_rest[p] : 1.;
-          const double         Sp    = area_of(p);
-          if (owned(i))
-            energy += pair_energy::side(Sp,
-                                        k.ki * scale,
-                                        sig_i[p],
-                                        mc[mat[i]].D * mb_mu[i] + mb_i[p],
-                                        tau_scale_i[p] * tau_scale_i[p] * t2);
-          if (owned(j))
-            energy += pair_energy::side(Sp,
-                                        k.kj * scale,
-                                        sig_j[p],
-                                        mc[mat[j]].D * mb_mu[j] + mb_j[p],
-                                        tau_scale_j[p] * tau_scale_j[p] * t2);
+          for (const unsigned int s : {0u, 1u})
+            if (owned(s ? j : i))
+              {
+                const double alpha = (s ? tau_scale_j : tau_scale_i)[p];
+                energy += pair_energy::side(area_of(p),
+                                            side_compliance(p, s),
+                                            (s ? sig_j : sig_i)[p],
+                                            side_many_body(p, s),
+                                            alpha * alpha * t2);
+              }
         }
       return energy + many_body_energy();
     }
@@ -67,18 +62,17 @@ namespace tribodyn
     {
       // g = beta / h over the weighted sides (the many-body increment of k
       // is K sum g dq), their area, and G = sum g m
-      const double D = mc[mat[k]].D, Dmu = D * mb_mu[k];
-      double       g_sum = 0, g_abs = 0, area = 0, G = 0;
+      double g_sum = 0, g_abs = 0, area = 0, G = 0;
       for_each_pair_of(k, [&](const unsigned int p, const unsigned int side) {
-        const double beta = side ? beta_j[p] : beta_i[p];
-        if (beta == 0)
+        const double g = side_weight(p, side);
+        if (g == 0)
           return;
-        const double g = beta / (graded ? pair_half_rest[p] : r0);
         g_sum += g;
         g_abs += std::abs(g);
         area += area_of(p);
-        G += g * (Dmu + (side ? mb_j[p] : mb_i[p]));
+        G += g * side_many_body(p, side);
       });
+      const double D = mc[mat[k]].D;
       // kappa: the many-body law conserves kappa G^2 where S / g is the
       // same on every side (complete neighbourhoods, equal shares); held
       // only where the weights are mostly positive (else its work is all
@@ -106,10 +100,7 @@ namespace tribodyn
 
 
     void
-    AutomatonSystem::release_opening(const unsigned int p,
-                                     const double       ki,
-                                     const double       kj,
-                                     const double       dr)
+    AutomatonSystem::release_opening(const unsigned int p, const double dr)
     {
       // The energy of each side, and the work its stress did over the
       // step's first half (the pair force is zero at the step's end: the
@@ -123,17 +114,16 @@ namespace tribodyn
             continue;
           const double sigma = side ? sig_j[p] : sig_i[p];
           const double alpha = side ? tau_scale_j[p] : tau_scale_i[p];
-          const double m = mc[mat[a]].D * mb_mu[a] + (side ? mb_j[p] : mb_i[p]);
+          const double m     = side_many_body(p, side);
           work[switching_work] += pair_energy::side(Sp,
-                                                    side ? kj : ki,
+                                                    side_compliance(p, side),
                                                     sigma,
                                                     m,
                                                     alpha * alpha * t2)
                                   + 0.25 * Sp * sigma * dr;
-          const double beta = side ? beta_j[p] : beta_i[p];
-          if (beta != 0)
+          const double g = side_weight(p, side);
+          if (g != 0)
             {
-              const double g = beta / (graded ? pair_half_rest[p] : r0);
               work[switching_work]
                 += pair_energy::shift_sum(mb_state[a], -g * m);
               mb_state[a].gamma -= g;

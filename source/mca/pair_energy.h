@@ -4,7 +4,7 @@
 #ifndef tribodyn_mca_pair_energy_h
 #define tribodyn_mca_pair_energy_h
 
-#include <tribodyn/mca/automaton_arrays.h>
+#include <tribodyn/mca/automaton_system.h>
 
 namespace tribodyn
 {
@@ -13,17 +13,18 @@ namespace tribodyn
     namespace pair_energy
     {
       /// Energy S ((sigma - m)^2 + alpha^2 |t|^2) / 2k of a pair side of
-      /// area @p S and spring stiffness @p k: normal stress @p sigma with
-      /// many-body part @p m, shear stress alpha t (@p a2t2 = alpha^2 |t|^2).
+      /// area @p S and spring compliance @p inv_k = 1/k: normal stress @p
+      /// sigma with many-body part @p m, shear stress alpha t (@p a2t2 =
+      /// alpha^2 |t|^2).
       inline double
       side(const double S,
-           const double k,
+           const double inv_k,
            const double sigma,
            const double m,
            const double a2t2)
       {
         const double e = sigma - m;
-        return S * (e * e + a2t2) / (2 * k);
+        return 0.5 * S * inv_k * (e * e + a2t2);
       }
 
       /**
@@ -82,7 +83,33 @@ namespace tribodyn
         return 0.5 * S * t2 * da * da * inv_sum;
       }
     } // namespace pair_energy
-  }   // namespace mca
+
+
+    inline double
+    AutomatonSystem::side_many_body(const unsigned int p,
+                                    const unsigned int s) const
+    {
+      const unsigned int a = s ? pj[p] : pi[p];
+      return mc[mat[a]].D * mb_mu[a] + (s ? mb_j : mb_i)[p];
+    }
+
+
+    inline double
+    AutomatonSystem::side_compliance(const unsigned int p,
+                                     const unsigned int s) const
+    {
+      const SeriesSprings &k = springs[mat[pi[p]] * n_materials + mat[pj[p]]];
+      return (s ? k.inv_kj : k.inv_ki) * (graded ? pair_half_rest[p] / r0 : 1.);
+    }
+
+
+    inline double
+    AutomatonSystem::side_weight(const unsigned int p,
+                                 const unsigned int s) const
+    {
+      return (s ? beta_j : beta_i)[p] / (graded ? pair_half_rest[p] : r0);
+    }
+  } // namespace mca
 } // namespace tribodyn
 
 #endif

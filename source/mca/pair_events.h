@@ -39,11 +39,6 @@ namespace tribodyn
         return 0.5 * Sp * (s ? k.inv_kj : k.inv_ki)
                * geometry.inv_stiffness_scale(p);
       };
-      // many-body part of side s
-      const auto m_of = [&](const unsigned int s) {
-        return s ? mc[mat[j]].D * mb_mu[j] + mb_j[p]
-                 : mc[mat[i]].D * mb_mu[i] + mb_i[p];
-      };
       const auto released = [&](const unsigned int s,
                                 const double       sigma,
                                 const double       sigma_new,
@@ -52,7 +47,7 @@ namespace tribodyn
         return pair_energy::release(Sp,
                                     (s ? k.inv_kj : k.inv_ki)
                                       * geometry.inv_stiffness_scale(p),
-                                    m_of(s),
+                                    side_many_body(p, s),
                                     sigma,
                                     sigma_new,
                                     alpha,
@@ -90,7 +85,8 @@ namespace tribodyn
               double      &sigma = s ? sig_j[p] : sig_i[p];
               double      &alpha = s ? aj : ai;
               const double sm = plast[2 * a], dev = sigma - sm;
-              const double s_new = sm + M * dev, c = c_of(s), m = m_of(s);
+              const double s_new = sm + M * dev, c = c_of(s),
+                           m = side_many_body(p, s);
               const double heat_s
                 = c * (1 - M * M) * (dev * dev + alpha * alpha * dot(t, t))
                   - 0.25 * Sp * (1 - M)
@@ -142,7 +138,7 @@ namespace tribodyn
                   // with it (the side as when it touched): its
                   // energy, and that of m in kappa G^2
                   const unsigned int a = side ? j : i;
-                  const double       m = m_of(side);
+                  const double       m = side_many_body(p, side);
                   if (owned(a))
                     {
                       const double alpha = side ? aj : ai;

@@ -311,7 +311,7 @@ namespace tribodyn
                       if (in_contact[p] || sig_i[p] != 0 || sig_j[p] != 0
                           || b_t[0][b] != 0 || b_t[1][b] != 0 || b_t[2][b] != 0)
                         {
-                          release_opening(p, ki, kj, b_dr[b]);
+                          release_opening(p, b_dr[b]);
                           if constexpr (Moment::active)
                             if (owned(i))
                               {

@@ -456,8 +456,10 @@ namespace tribodyn
       // §8.4): that of the owned sides and automata; kappa, gamma, G of
       // owned automaton k; sum of kappa G^2; the many-body stresses into
       // the sides' offsets (before automata migrate); the energy released
-      // by unbonded pair p that opens (side stiffnesses ki, kj, normal
-      // increment dr; switching work)
+      // by unbonded pair p that opens (normal increment dr; switching
+      // work); of side s (0: i, 1: j) of pair p, its many-body part D mu_a
+      // + c_s, its spring's compliance 1/k and its weight g = beta / h
+      // (pair_energy.h)
       double
       pair_elastic_energy() const;
       void
@@ -467,10 +469,13 @@ namespace tribodyn
       void
       fold_many_body_stress();
       void
-      release_opening(const unsigned int p,
-                      const double       ki,
-                      const double       kj,
-                      const double       dr);
+      release_opening(const unsigned int p, const double dr);
+      double
+      side_many_body(const unsigned int p, const unsigned int s) const;
+      double
+      side_compliance(const unsigned int p, const unsigned int s) const;
+      double
+      side_weight(const unsigned int p, const unsigned int s) const;
       /// Elastic energy sum |K|^2 / 2k of the relative-rotation moments
       /// K_ij (the moment law's, moment_laws.h) of the pairs counted by
       /// this rank.
