@@ -33,20 +33,20 @@ namespace tribodyn
       // booked in dw by the side's owner; the plastic heat of an unbonded
       // pair is that of its two sides.
       const SeriesSprings &k = springs[mat[i] * n_materials + mat[j]];
-      // (half the area over the side's spring stiffness: the energy of a
-      // side is c ((sigma - m)^2 + alpha^2 |t|^2))
-      const auto c_of = [&](const unsigned int s) {
-        return 0.5 * Sp * (s ? k.inv_kj : k.inv_ki)
-               * geometry.inv_stiffness_scale(p);
+      // the compliance 1/k of side s, and c = S/2k: the energy of a side is
+      // c ((sigma - m)^2 + alpha^2 |t|^2)
+      const auto inv_k_of = [&](const unsigned int s) {
+        return (s ? k.inv_kj : k.inv_ki) * geometry.inv_stiffness_scale(p);
       };
+      const auto c_of
+        = [&](const unsigned int s) { return 0.5 * Sp * inv_k_of(s); };
       const auto released = [&](const unsigned int s,
                                 const double       sigma,
                                 const double       sigma_new,
                                 const double       alpha,
                                 const double       alpha_new) {
         return pair_energy::release(Sp,
-                                    (s ? k.inv_kj : k.inv_ki)
-                                      * geometry.inv_stiffness_scale(p),
+                                    inv_k_of(s),
                                     side_many_body(p, s),
                                     sigma,
                                     sigma_new,

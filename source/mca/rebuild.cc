@@ -55,9 +55,8 @@ namespace tribodyn
       // (doc/theory/mca.md §8.4)
       const double mb_energy_before = initial ? 0. : many_body_energy();
       if (!initial)
-        fold_many_body_stress();
-      if (!initial)
         {
+          fold_many_body_stress();
           // the partition weighted anew when the work drifted apart
           // (rebalance.cc): the migration then carries every pair state
           const bool rebalance = rebalance_due();
