@@ -503,7 +503,7 @@ namespace tribodyn
         add(eps_p), add(sigma_y);
       add(plast), add(bond_buffer), add(dsm), add(side_dq), add(pair_mu),
         add(pair_dr);
-      add(mb_mu), add(mb_state);
+      add(mb_mu), add(mb_state), add(mb_shape);
       add(trial), add(fabric_inverse), add(changed);
       add(pi), add(pj), add(pshift);
       bytes += pair_fields.memory_consumption();

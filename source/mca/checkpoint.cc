@@ -41,8 +41,9 @@ namespace tribodyn
       // 6: the run's state that follows is the postprocessors' (in list
       // order, source/mca/mca_problem.cc)
       // 7: the pair-level energy (many-body offsets of the sides, mu,
-      // kappa, gamma, G of the automata, switching and many-body work)
-      constexpr unsigned int state_version = 7;
+      // kappa, gamma, G of the automata, switching and many-body work);
+      // 8: which automata are many-body uniform
+      constexpr unsigned int state_version = 8;
 
       // Scalars and vectors of trivially copyable types as raw bytes (fast
       // and exact); anything else through Boost's own serialization.
@@ -107,6 +108,7 @@ namespace tribodyn
   apply(v) apply(w) apply(f) apply(torque) apply(u)                           \
   apply(mat) apply(body) apply(size_level) apply(volume) apply(groups)       \
   apply(eps_p) apply(sigma_y) apply(mb_mu) apply(mb_state)                   \
+  apply(mb_shape)                                                           \
   apply(group_reaction) apply(fabric_inverse) apply(changed) apply(f_damp)   \
   /* pairs: the list (the persistent fields follow, from pair_fields) */     \
   apply(pi) apply(pj) apply(pshift)

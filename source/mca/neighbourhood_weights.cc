@@ -72,6 +72,7 @@ namespace tribodyn
             std::vector<Sym3>().swap(fabric_inverse);
           index_pairs_of_automata();
           mb_state.assign(n_owned, {});
+          mb_shape.assign(n_owned, ManyBodyShape::general);
         }
       using Matrix6 = Eigen::Matrix<double, 6, 6>;
       using Vector6 = Eigen::Matrix<double, 6, 1>;

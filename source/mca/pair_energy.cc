@@ -61,16 +61,29 @@ namespace tribodyn
     AutomatonSystem::update_many_body_state(const unsigned int k)
     {
       // g = beta / h over the weighted sides (the many-body increment of k
-      // is K sum g dq), their area, and G = sum g m
-      double g_sum = 0, g_abs = 0, area = 0, G = 0;
+      // is K sum g dq), their area, and G = sum g m; whether S / g and m
+      // are the same on all of them (to 1e-12)
+      double       g_sum = 0, g_abs = 0, area = 0, G = 0;
+      double       ratio_0 = 0, m_0 = 0;
+      unsigned int n_weighted = 0;
+      bool         uniform    = true;
       for_each_pair_of(k, [&](const unsigned int p, const unsigned int side) {
         const double g = side_weight(p, side);
         if (g == 0)
           return;
+        const double m = side_many_body(p, side), ratio = area_of(p) / g;
+        if (n_weighted++ == 0)
+          {
+            ratio_0 = ratio;
+            m_0     = m;
+          }
+        else if (std::abs(ratio - ratio_0) > 1e-12 * std::abs(ratio_0)
+                 || std::abs(m - m_0) > 1e-12 * std::abs(m_0))
+          uniform = false;
         g_sum += g;
         g_abs += std::abs(g);
         area += area_of(p);
-        G += g * side_many_body(p, side);
+        G += g * m;
       });
       const double D = mc[mat[k]].D;
       // kappa: the many-body law conserves kappa G^2 where S / g is the
@@ -84,6 +97,55 @@ namespace tribodyn
                          : 0.;
       s.gamma        = g_sum;
       s.G            = G;
+      // Uniform: S = lambda g and m = D mu + c on every weighted side. A
+      // step then moves kappa G^2 = lambda (D mu + c)^2 / 2 K D by exactly
+      // the work of these sides, sum S dq (D mu + D dmu / 2 + c) with dmu
+      // = K sum g dq: their many-body work is zero, and the kernel skips
+      // their sums (doc/theory/mca.md §8.4).
+      uniform     = uniform && n_weighted > 0 && s.kappa > 0;
+      mb_shape[k] = uniform ? ManyBodyShape::uniform : ManyBodyShape::general;
+      s.lambda    = uniform ? area / g_sum : 0.;
+    }
+
+
+    double
+    AutomatonSystem::many_body_step()
+    {
+      double work_mb = 0;
+      // Pair kernel, after pass A (dsm: the mean-stress increments).
+      // The many-body work of D mu at mid-step (mu and half of this
+      // step's increment) over the summed sides, minus the change of kappa
+      // G^2 (G moves by D dsm gamma) but where the automaton is uniform
+      // (the change is the work of its weighted sides, not summed); then
+      // mu of every local automaton.
+      for (unsigned int k = 0; k < n_owned; ++k)
+        {
+          const double D  = mc[mat[k]].D;
+          const double dm = D * dsm[k];
+          auto        &st = mb_state[k];
+          double       sq = side_dq[k];
+          if (mb_shape[k] == ManyBodyShape::opened)
+            {
+              // a weighted side opened in pass A (release_opening()): the
+              // sums of the others, skipped, from dsm (S = lambda g on
+              // each; their common m is G / gamma), and the automaton on
+              // the sums from now on
+              const double s_w = st.lambda * dsm[k] / mc[mat[k]].K;
+              sq += s_w;
+              if (st.gamma != 0)
+                work_mb += (st.G / st.gamma - D * mb_mu[k]) * s_w;
+              mb_shape[k] = ManyBodyShape::general;
+              st.lambda   = 0;
+            }
+          work_mb += (D * mb_mu[k] + 0.5 * dm) * sq;
+          if (mb_shape[k] == ManyBodyShape::uniform)
+            st.G += dm * st.gamma;
+          else
+            work_mb += pair_energy::shift_sum(st, dm * st.gamma);
+        }
+      for (unsigned int k = 0; k < n_local; ++k)
+        mb_mu[k] += dsm[k];
+      return work_mb;
     }
 
 
@@ -127,6 +189,10 @@ namespace tribodyn
               work[switching_work]
                 += pair_energy::shift_sum(mb_state[a], -g * m);
               mb_state[a].gamma -= g;
+              // (in pass A: its other sides have been or will be
+              // skipped, the kernel sums them after the pass)
+              if (mb_shape[a] == ManyBodyShape::uniform)
+                mb_shape[a] = ManyBodyShape::opened;
             }
         }
     }

@@ -2,7 +2,11 @@
 // pair_kernel.cc): plastic returns of its sides, no tension and the
 // friction law's limit of an unbonded pair; each side releases energy
 // (pair_energy.h, doc/theory/mca.md §8.4), booked by the side's owner. In
-// the kernel's translation unit, inlined into its pass C.
+// the kernel's translation unit; pass C of a plastic kernel calls it for
+// every pair, inlined (its pairs have many events), that of an elastic
+// kernel out of line and only for the pairs that can have events
+// (unbonded, or of two materials: an elastic bulk has none, and the hot
+// loop keeps its registers).
 #ifndef tribodyn_mca_pair_events_h
 #define tribodyn_mca_pair_events_h
 
@@ -112,9 +116,12 @@ namespace tribodyn
                         += c * (m_new - m) * (2 * s_new - m - m_new);
                       const double beta = (s ? beta_j : beta_i)[p];
                       if (beta != 0)
-                        dw[many_body_work] += pair_energy::shift_sum(
-                          mb_state[a],
-                          beta * geometry.inv_half_rest(p) * (m_new - m));
+                        {
+                          dw[many_body_work] += pair_energy::shift_sum(
+                            mb_state[a],
+                            beta * geometry.inv_half_rest(p) * (m_new - m));
+                          mb_state[a].lambda = 0;
+                        }
                     }
                 }
               sigma = s_new;
@@ -149,6 +156,7 @@ namespace tribodyn
                         {
                           w += pair_energy::shift_sum(
                             mb_state[a], -beta * geometry.inv_half_rest(p) * m);
+                          mb_state[a].lambda = 0;
                         }
                       dw[switching_work] += w;
                     }

@@ -344,7 +344,11 @@ namespace tribodyn
                       mark(p);
                       law.start_contact(p);
                       // many-body parts from zero (a pair that holds no
-                      // stress)
+                      // stress); its sides are not weighted yet (the
+                      // weights follow at the next step), so no uniform
+                      // automaton changes
+                      Assert(beta_i[p] == 0 && beta_j[p] == 0,
+                             dealii::ExcInternalError());
                       if (sig_i[p] == 0 && sig_j[p] == 0)
                         {
                           mb_i[p] = -mc[mat[i]].D * mb_mu[i];
@@ -460,19 +464,28 @@ namespace tribodyn
               sig_j[p] += kj * (dr_p - dqi);
               // (and the many-body work of the sides' parts m = D mu + c:
               // that of their offsets c here, S c dq; that of D mu from the
-              // sums S dq of each automaton)
+              // sums S dq of each automaton; none of the weighted sides of
+              // a uniform automaton, update_many_body_state())
               const double dqj = dr_p - dqi;
               if (owned(i))
                 {
-                  dsm[i] += beta_i[p] * dqi * geometry.inv_half_rest(p);
-                  side_dq[i] += Sp * dqi;
-                  dw[many_body_work] += Sp * dqi * mb_i[p];
+                  const double beta = beta_i[p];
+                  dsm[i] += beta * dqi * geometry.inv_half_rest(p);
+                  if (beta == 0 || mb_shape[i] == ManyBodyShape::general)
+                    {
+                      side_dq[i] += Sp * dqi;
+                      dw[many_body_work] += Sp * dqi * mb_i[p];
+                    }
                 }
               if (owned(j))
                 {
-                  dsm[j] += beta_j[p] * dqj * geometry.inv_half_rest(p);
-                  side_dq[j] += Sp * dqj;
-                  dw[many_body_work] += Sp * dqj * mb_j[p];
+                  const double beta = beta_j[p];
+                  dsm[j] += beta * dqj * geometry.inv_half_rest(p);
+                  if (beta == 0 || mb_shape[j] == ManyBodyShape::general)
+                    {
+                      side_dq[j] += Sp * dqj;
+                      dw[many_body_work] += Sp * dqj * mb_j[p];
+                    }
                 }
             }
         }
@@ -485,19 +498,9 @@ namespace tribodyn
         dsm[k] *= mc[mat[k]].K;
       if (neighbours.active())
         neighbours.update(dsm.data(), 1);
-      // The many-body work of D mu at mid-step (mu and half of this
-      // step's increment), minus the change of kappa G^2 (G moves by D dsm
-      // gamma); then mu of every local automaton.
-      for (unsigned int k = 0; k < n_owned; ++k)
-        {
-          const double D  = mc[mat[k]].D;
-          const double dm = D * dsm[k];
-          dw[many_body_work]
-            += (D * mb_mu[k] + 0.5 * dm) * side_dq[k]
-               + pair_energy::shift_sum(mb_state[k], dm * mb_state[k].gamma);
-        }
-      for (unsigned int k = 0; k < n_local; ++k)
-        mb_mu[k] += dsm[k];
+      // the many-body work of the step, mu of every automaton
+      // (pair_energy.cc)
+      dw[many_body_work] += many_body_step();
 
       for (unsigned int k = 0; k < n_owned; ++k)
         {
@@ -511,6 +514,16 @@ namespace tribodyn
         sig_j[p] += mc[mat[j]].D * dsm[j];
       };
 
+      // (an elastic kernel's events in a call of their own: an elastic
+      // bulk has none, and its hot loop keeps its registers)
+      bool       events_out_of_line_called = false;
+      const auto events_out_of_line
+        = [&](const unsigned int p, const Vec3 &t, double &ai, double &aj)
+          __attribute__((noinline))
+      {
+        events_out_of_line_called = true;
+        pair_events<plastic>(p, geometry, law, t, ai, aj, dw);
+      };
       NormalBlock nblock;
       auto        pair_vector_of
         = [this](const unsigned int p) { return pair_vector(p); };
@@ -605,8 +618,13 @@ namespace tribodyn
                   sig_i[p] += b_dsm_i[b];
                   sig_j[p] += b_dsm_j[b];
                 }
-              // the events of the step (pair_events.h)
-              pair_events<plastic>(p, geometry, law, t, ai, aj, dw);
+              // The events of the step (pair_events.h); an elastic kernel
+              // calls them for the pairs that can have some (an elastic
+              // bulk has none: bonded pairs of one material).
+              if constexpr (plastic)
+                pair_events<plastic>(p, geometry, law, t, ai, aj, dw);
+              else if (!bonded[p] || mat[i] != mat[j])
+                events_out_of_line(p, t, ai, aj);
               if (plastic || !bonded[p])
                 {
                   tau_scale_i[p] = ai;
@@ -687,6 +705,11 @@ namespace tribodyn
         }
       for (unsigned int k = 0; k < n_works; ++k)
         work[k] += dw[k];
+      // the uniform automata whose shape an event ended (lambda = 0)
+      if (plastic || events_out_of_line_called)
+        for (unsigned int k = 0; k < n_owned; ++k)
+          if (mb_state[k].lambda == 0)
+            mb_shape[k] = ManyBodyShape::general;
     }
 
 

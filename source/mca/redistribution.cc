@@ -321,6 +321,7 @@ namespace tribodyn
       // kappa, gamma, G of the checkpoint's weights and stresses
       mb_mu.assign(n_local, 0);
       mb_state.assign(n_owned, {});
+      mb_shape.assign(n_owned, ManyBodyShape::general);
       for (unsigned int k = 0; k < n_owned; ++k)
         update_many_body_state(k);
       // the damping forces of the last step stay valid when they were

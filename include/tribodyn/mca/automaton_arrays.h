@@ -23,10 +23,21 @@ namespace tribodyn
      */
     /// The many-body energy of an automaton, kappa G^2 (doc/theory/mca.md
     /// §8.4): G = sum g m over its weighted sides (g = beta / h, m a side's
-    /// many-body part), gamma = sum g.
+    /// many-body part), gamma = sum g; lambda = S / g of its sides where
+    /// that and m are the same on all (a uniform automaton), else 0.
     struct ManyBodyState
     {
-      double kappa = 0, gamma = 0, G = 0;
+      double kappa = 0, gamma = 0, G = 0, lambda = 0;
+    };
+
+    /// Whether S / g and the many-body part m are the same on all weighted
+    /// sides of an automaton (uniform; opened: it was at the start of the
+    /// step, and a side opened in pass A).
+    enum class ManyBodyShape : std::uint8_t
+    {
+      general,
+      uniform,
+      opened
     };
 
     struct AutomatonArrays
@@ -73,6 +84,15 @@ namespace tribodyn
       /// the many-body state of each owned one.
       std::vector<double>        mb_mu;
       std::vector<ManyBodyState> mb_state;
+      /// Per owned automaton: its ManyBodyShape. The many-body work of
+      /// the weighted sides of a uniform automaton over a step is the
+      /// change of kappa G^2 exactly (no per-side sums: doc/theory/mca.md
+      /// §8.4); set by update_many_body_state(). The events that move one
+      /// side's m or g end it: an opening in pass A marks it opened (the
+      /// end of the pass completes it), those of pass C set lambda = 0
+      /// (a store in the struct they update anyway; a store to this array
+      /// there costs 5 % of a plastic kernel), seen at the kernel's end.
+      std::vector<ManyBodyShape> mb_shape;
       /// Stress tensors T (eq. 4) of the owned automata: the plastic
       /// trial in pass B, the final one in pass C of bond scenes.
       std::vector<Mat3> trial;

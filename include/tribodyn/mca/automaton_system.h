@@ -464,6 +464,10 @@ namespace tribodyn
       pair_elastic_energy() const;
       void
       update_many_body_state(const unsigned int k);
+      /// The pair kernel's many-body work of a step from the automata's
+      /// sums (after pass A); mu of the automata anew.
+      double
+      many_body_step();
       double
       many_body_energy() const;
       void
