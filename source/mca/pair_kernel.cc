@@ -331,8 +331,9 @@ namespace tribodyn
                       in_contact[p] = 0;
                       sig_i[p] = sig_j[p] = 0;
                       tau.set(p, {{0, 0, 0}});
-                      tau_scale_i[p] = tau_scale_j[p] = 1;
-                      q_i[p]                          = r / 2;
+                      if (tau_scale_i[p] != 1 || tau_scale_j[p] != 1)
+                        tau_scale_i[p] = tau_scale_j[p] = 1;
+                      q_i[p] = r / 2;
                       if constexpr (Moment::active)
                         moment.separate(p);
                       continue;
@@ -431,12 +432,15 @@ namespace tribodyn
                 for (unsigned int c = 0; c < 3; ++c)
                   tn[c] = (mix * t[c] + ki * kj * du[c]) * inv;
                 tau.set(p, tn);
-                tau_scale_i[p] = tau_scale_j[p] = 1;
+                // (both factors 1 after pass A: passes B and C assume it;
+                // a line of factors already 1 is not written again)
+                if (ai != 1 || aj != 1)
+                  tau_scale_i[p] = tau_scale_j[p] = 1;
                 // sides of other shear stresses (a limit or a return at
                 // the last step) made equal: the energy lost, half on each
                 // side, is plastic work of a bond, friction work of a
                 // contact
-                if (ai != aj)
+                if (ai != aj) [[unlikely]]
                   {
                     const double lost
                       = 0.5
@@ -448,7 +452,7 @@ namespace tribodyn
                       dw[friction_work] += (owned(i) + owned(j)) * lost;
                   }
                 // this step's increments, for the releases of pass C
-                if (plastic || !bonded[p] || mat[i] != mat[j])
+                if (plastic || !bonded[p] || mat[i] != mat[j]) [[unlikely]]
                   {
                     pair_dr[2 * p]     = dr_p;
                     pair_dr[2 * p + 1] = dot(tn, du);
@@ -472,6 +476,7 @@ namespace tribodyn
                   const double beta = beta_i[p];
                   dsm[i] += beta * dqi * geometry.inv_half_rest(p);
                   if (beta == 0 || mb_shape[i] == ManyBodyShape::general)
+                    [[unlikely]]
                     {
                       side_dq[i] += Sp * dqi;
                       dw[many_body_work] += Sp * dqi * mb_i[p];
@@ -482,6 +487,7 @@ namespace tribodyn
                   const double beta = beta_j[p];
                   dsm[j] += beta * dqj * geometry.inv_half_rest(p);
                   if (beta == 0 || mb_shape[j] == ManyBodyShape::general)
+                    [[unlikely]]
                     {
                       side_dq[j] += Sp * dqj;
                       dw[many_body_work] += Sp * dqj * mb_j[p];
@@ -611,7 +617,8 @@ namespace tribodyn
               const double       qi = q_i[p], qj = r - qi;
               const double       Sp = geometry.area(p);
               const Vec3         t  = tau[p];
-              double             ai = tau_scale_i[p], aj = tau_scale_j[p];
+              // (pass A set both shear factors to 1)
+              double ai = 1, aj = 1;
               if constexpr (!plastic)
                 {
                   // many-body part of the elastic update (gathered above)
@@ -625,7 +632,7 @@ namespace tribodyn
                 pair_events<plastic>(p, geometry, law, t, ai, aj, dw);
               else if (!bonded[p] || mat[i] != mat[j])
                 events_out_of_line(p, t, ai, aj);
-              if (plastic || !bonded[p])
+              if (ai != 1 || aj != 1)
                 {
                   tau_scale_i[p] = ai;
                   tau_scale_j[p] = aj;
