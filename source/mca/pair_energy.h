@@ -68,6 +68,21 @@ namespace tribodyn
         return state.kappa * (G * G - G_new * G_new);
       }
 
+      /// The many-body part m of a side of weight @p g (g = beta / h) of
+      /// an automaton with many-body state @p state moves by @p dm: G moves
+      /// by g dm; returns the drop of kappa G^2. A weighted side's m that
+      /// moves on its own ends the automaton's uniform shape (lambda = 0:
+      /// the pair kernel marks it general at its end). Nothing for an
+      /// unweighted side.
+      inline double
+      move_weighted_side(ManyBodyState &state, const double g, const double dm)
+      {
+        if (g == 0)
+          return 0;
+        state.lambda = 0;
+        return shift_sum(state, g * dm);
+      }
+
       /// Energy lost when the series springs of a pair (area @p S,
       /// @p inv_sum = 1 / (k_i + k_j)) set its two sides' shear stresses
       /// alpha_i t, alpha_j t equal again (|t|^2 = @p t2): S t2 (alpha_i -

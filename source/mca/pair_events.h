@@ -20,6 +20,19 @@ namespace tribodyn
 {
   namespace mca
   {
+    template <class Law>
+    inline double
+    AutomatonSystem::friction_coefficient(const Law         &law,
+                                          const unsigned int p) const
+    {
+      // a rate-dependent law's mu of this step, from pass A; a constant one
+      if constexpr (Law::stateful)
+        return pair_mu[p];
+      else
+        return law.coefficient();
+    }
+
+
     template <bool plastic, class Pairs, class Law>
     [[gnu::always_inline]] inline void
     AutomatonSystem::pair_events(const unsigned int p,
@@ -114,14 +127,10 @@ namespace tribodyn
                     {
                       dw[many_body_work]
                         += c * (m_new - m) * (2 * s_new - m - m_new);
-                      const double beta = (s ? beta_j : beta_i)[p];
-                      if (beta != 0)
-                        {
-                          dw[many_body_work] += pair_energy::shift_sum(
-                            mb_state[a],
-                            beta * geometry.inv_half_rest(p) * (m_new - m));
-                          mb_state[a].lambda = 0;
-                        }
+                      dw[many_body_work] += pair_energy::move_weighted_side(
+                        mb_state[a],
+                        (s ? beta_j : beta_i)[p] * geometry.inv_half_rest(p),
+                        m_new - m);
                     }
                 }
               sigma = s_new;
@@ -151,13 +160,10 @@ namespace tribodyn
                       const double alpha = side ? aj : ai;
                       double       w = released(side, sigma, 0, alpha, alpha)
                                  + c_of(side) * m * m;
-                      const double beta = (side ? beta_j : beta_i)[p];
-                      if (beta != 0)
-                        {
-                          w += pair_energy::shift_sum(
-                            mb_state[a], -beta * geometry.inv_half_rest(p) * m);
-                          mb_state[a].lambda = 0;
-                        }
+                      w += pair_energy::move_weighted_side(
+                        mb_state[a],
+                        (side ? beta_j : beta_i)[p] * geometry.inv_half_rest(p),
+                        -m);
                       dw[switching_work] += w;
                     }
                   (side ? mb_j : mb_i)[p] = -mc[mat[a]].D * mb_mu[a];

@@ -12,6 +12,7 @@
 #include "pair_energy.h"
 #include "pair_events.h"
 #include "pair_geometry.h"
+#include "pair_stress.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,48 +39,6 @@ namespace tribodyn
 
 
     } // namespace
-
-
-    inline void
-    AutomatonSystem::add_pair_stress(const unsigned int p,
-                                     const Vec3        &n,
-                                     const double       r,
-                                     std::vector<Mat3> &target,
-                                     const bool         skip_elastic) const
-    {
-      // Seed eq. (4): T^i += (q_ij S / V_i) n_ij (x) F_ij / S, for each
-      // owned side of the pair (q_ji = r_ij - q_ij); sigma^i = sym(B^-1 T).
-      // (In the kernel's translation unit so that the passes inline it.)
-      if (owned(pi[p]) && !(skip_elastic && elastic(pi[p])))
-        {
-          Vec3 t;
-          for (unsigned int c = 0; c < 3; ++c)
-            t[c] = sig_i[p] * n[c] + tau_scale_i[p] * tau.component[c][p];
-          add_outer(target[pi[p]], q_i[p] * area_of(p) / volume[pi[p]], n, t);
-        }
-      if (owned(pj[p]) && !(skip_elastic && elastic(pj[p])))
-        {
-          Vec3 t;
-          for (unsigned int c = 0; c < 3; ++c)
-            t[c] = sig_j[p] * n[c] + tau_scale_j[p] * tau.component[c][p];
-          add_outer(target[pj[p]],
-                    (r - q_i[p]) * area_of(p) / volume[pj[p]],
-                    n,
-                    t);
-        }
-    }
-
-    template <class Law>
-    inline double
-    AutomatonSystem::friction_coefficient(const Law         &law,
-                                          const unsigned int p) const
-    {
-      // a rate-dependent law's mu of this step, from pass A; a constant one
-      if constexpr (Law::stateful)
-        return pair_mu[p];
-      else
-        return law.coefficient();
-    }
 
 
     void
