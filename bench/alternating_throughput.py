@@ -13,6 +13,13 @@ of old and new swapped every repeat; prints each pair and the medians with
 new / old. --old-lib: LD_LIBRARY_PATH for the old binary (a copied build
 needs its libtribodyn.so). --only: one case ("contact pin",
 "two_body_friction", "10^5 block"). Outputs in bench-output/alternating/.
+
+--concurrent: old and new at the same time instead, each pinned to a core
+of its own (taskset; cores swapped every repeat), and the median of the
+pairs' ratios new / old: both runs see the same moment of a shared host,
+whose drift from one run to the next (10-30 %) then cancels in each pair.
+(They share the memory bandwidth and the last-level cache; a ratio, not a
+one-rank rate.)
 """
 import argparse
 import json
@@ -31,6 +38,7 @@ def main():
     parser.add_argument("repeats", type=int, nargs="?", default=5)
     parser.add_argument("--old-lib", default="")
     parser.add_argument("--only", default="")
+    parser.add_argument("--concurrent", action="store_true")
     args = parser.parse_args()
     os.makedirs(OUT, exist_ok=True)
     block = os.path.join(OUT, "block.prm")
@@ -57,7 +65,8 @@ def main():
     for rep in range(args.repeats):
         for case, (prm, extra, key) in cases.items():
             order = ("old", "new") if rep % 2 == 0 else ("new", "old")
-            for which in order:
+            runs = []
+            for core, which in enumerate(order):
                 d = os.path.join(OUT, "%s_%s" % (case.replace(" ", "_")
                                                  .replace("^", ""), which))
                 with open(d + ".prm", "w") as f:
@@ -66,18 +75,33 @@ def main():
                 e = dict(env)
                 if which == "old" and args.old_lib:
                     e["LD_LIBRARY_PATH"] = args.old_lib
-                subprocess.run([getattr(args, which), d + ".prm"], env=e,
-                               stdout=subprocess.DEVNULL,
-                               stderr=subprocess.DEVNULL, check=True)
+                command = [getattr(args, which), d + ".prm"]
+                if args.concurrent:
+                    command = ["taskset", "-c", str(core)] + command
+                run = subprocess.Popen(command, env=e,
+                                       stdout=subprocess.DEVNULL,
+                                       stderr=subprocess.DEVNULL)
+                if not args.concurrent and run.wait() != 0:
+                    raise SystemExit("failed: " + " ".join(command))
+                runs.append((which, d, run))
+            for which, d, run in runs:
+                if run.wait() != 0:
+                    raise SystemExit("failed: %s %s.prm" % (which, d))
                 with open(os.path.join(d, "summary.json")) as f:
                     results[case][which].append(json.load(f)[key])
             print(rep, case, results[case]["old"][-1],
-                  results[case]["new"][-1], flush=True)
+                  results[case]["new"][-1], "%.3f" % (results[case]["new"][-1]
+                                                      / results[case]["old"][-1]),
+                  flush=True)
     for case in cases:
         old = statistics.median(results[case]["old"])
         new = statistics.median(results[case]["new"])
-        print("%s: median old %.4g, new %.4g, new/old %.3f"
-              % (case, old, new, new / old))
+        ratios = [n / o for n, o in zip(results[case]["new"],
+                                        results[case]["old"])]
+        print("%s: median old %.4g, new %.4g, new/old %.3f; median of the "
+              "pairs' ratios %.3f (%.3f-%.3f)"
+              % (case, old, new, new / old, statistics.median(ratios),
+                 min(ratios), max(ratios)))
 
 
 if __name__ == "__main__":
