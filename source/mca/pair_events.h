@@ -1,6 +1,7 @@
 // The events of a pair at the end of its step (pass C of the pair kernel,
 // pair_kernel.cc): plastic returns of its sides, no tension and the
-// friction law's limit of an unbonded pair; each side releases energy
+// friction law's limit of an unbonded pair (its coefficient mu of the step,
+// friction_coefficient(), here too); each side releases energy
 // (pair_energy.h, doc/theory/mca.md §8.4), booked by the side's owner. In
 // the kernel's translation unit; pass C of a plastic kernel calls it for
 // every pair, inlined (its pairs have many events), that of an elastic
