@@ -429,29 +429,23 @@ namespace tribodyn
               // that of their offsets c here, S c dq; that of D mu from the
               // sums S dq of each automaton; none of the weighted sides of
               // a uniform automaton, update_many_body_state())
-              const double dqj = dr_p - dqi;
-              if (owned(i))
-                {
-                  const double beta = beta_i[p];
-                  dsm[i] += beta * dqi * geometry.inv_half_rest(p);
-                  if (beta == 0 || mb_shape[i] == ManyBodyShape::general)
-                    [[unlikely]]
-                    {
-                      side_dq[i] += Sp * dqi;
-                      dw[many_body_work] += Sp * dqi * mb_i[p];
-                    }
-                }
-              if (owned(j))
-                {
-                  const double beta = beta_j[p];
-                  dsm[j] += beta * dqj * geometry.inv_half_rest(p);
-                  if (beta == 0 || mb_shape[j] == ManyBodyShape::general)
-                    [[unlikely]]
-                    {
-                      side_dq[j] += Sp * dqj;
-                      dw[many_body_work] += Sp * dqj * mb_j[p];
-                    }
-                }
+              const auto book_side = [&](const unsigned int         a,
+                                         const std::vector<double> &beta_s,
+                                         const double               dq,
+                                         const std::vector<double> &mb_s) {
+                if (!owned(a))
+                  return;
+                const double beta = beta_s[p];
+                dsm[a] += beta * dq * geometry.inv_half_rest(p);
+                if (beta == 0 || mb_shape[a] == ManyBodyShape::general)
+                  [[unlikely]]
+                  {
+                    side_dq[a] += Sp * dq;
+                    dw[many_body_work] += Sp * dq * mb_s[p];
+                  }
+              };
+              book_side(i, beta_i, dqi, mb_i);
+              book_side(j, beta_j, dr_p - dqi, mb_j);
             }
         }
 
