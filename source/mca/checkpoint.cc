@@ -18,8 +18,8 @@
 // fail if something is missed. Per-step scratch buffers (plast,
 // bond_buffer, dsm, side_dq, pair_dr, trial) and the rebuild's transient lists
 // (kept_states, kept_keys, old_pairs, old_flags) are rebuilt before use and
-// are not saved; the material constants (mc, springs) come from the
-// parameters.
+// are not saved, nor is mb_shape (derived from mb_state on resume); the
+// material constants (mc, springs) come from the parameters.
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 #include <boost/serialization/array.hpp>
@@ -42,8 +42,9 @@ namespace tribodyn
       // order, source/mca/mca_problem.cc)
       // 7: the pair-level energy (many-body offsets of the sides, mu,
       // kappa, gamma, G of the automata, switching and many-body work);
-      // 8: which automata are many-body uniform
-      constexpr unsigned int state_version = 8;
+      // 8: which automata are many-body uniform; 9: that derived from
+      // lambda on resume (sync_many_body_shapes()), not saved
+      constexpr unsigned int state_version = 9;
 
       // Scalars and vectors of trivially copyable types as raw bytes (fast
       // and exact); anything else through Boost's own serialization.
@@ -108,7 +109,6 @@ namespace tribodyn
   apply(v) apply(w) apply(f) apply(torque) apply(u)                           \
   apply(mat) apply(body) apply(size_level) apply(volume) apply(groups)       \
   apply(eps_p) apply(sigma_y) apply(mb_mu) apply(mb_state)                   \
-  apply(mb_shape)                                                           \
   apply(group_reaction) apply(fabric_inverse) apply(changed) apply(f_damp)   \
   /* pairs: the list (the persistent fields follow, from pair_fields) */     \
   apply(pi) apply(pj) apply(pshift)
@@ -165,6 +165,7 @@ namespace tribodyn
                                  [&](auto &a) { get(ar, a); });
       MCA_CHECKPOINT_PAIR_LISTS(MCA_GET)
 #undef MCA_GET
+      sync_many_body_shapes();
       get(ar, offsets);
       std::size_t n_lists = 0;
       ar >> n_lists;

@@ -150,6 +150,20 @@ namespace tribodyn
 
 
     void
+    AutomatonSystem::sync_many_body_shapes()
+    {
+      // Between steps an automaton is uniform exactly where lambda != 0:
+      // update_many_body_state() and many_body_step() set the two
+      // together, and an event that ends the shape zeroes lambda (the
+      // kernel's end calls this); no automaton is left opened.
+      mb_shape.resize(mb_state.size());
+      for (unsigned int k = 0; k < mb_state.size(); ++k)
+        mb_shape[k] = mb_state[k].lambda != 0 ? ManyBodyShape::uniform
+                                              : ManyBodyShape::general;
+    }
+
+
+    void
     AutomatonSystem::fold_many_body_stress()
     {
       for (unsigned int p = 0; p < pi.size(); ++p)

@@ -667,9 +667,7 @@ namespace tribodyn
         work[k] += dw[k];
       // the uniform automata whose shape an event ended (lambda = 0)
       if (plastic || events_out_of_line_called)
-        for (unsigned int k = 0; k < n_owned; ++k)
-          if (mb_state[k].lambda == 0)
-            mb_shape[k] = ManyBodyShape::general;
+        sync_many_body_shapes();
     }
 
 

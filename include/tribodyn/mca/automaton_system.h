@@ -468,6 +468,9 @@ namespace tribodyn
       /// sums (after pass A); mu of the automata anew.
       double
       many_body_step();
+      /// The shapes of the owned automata from their lambda (0: general).
+      void
+      sync_many_body_shapes();
       double
       many_body_energy() const;
       void
