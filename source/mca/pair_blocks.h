@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <tribodyn/mca/vector_algebra.h>
+#include <unistd.h>
 
 namespace tribodyn
 {
@@ -51,6 +52,49 @@ namespace tribodyn
           {dn[0][b] * inv_r[b], dn[1][b] * inv_r[b], dn[2][b] * inv_r[b]}};
       }
     };
+
+
+    /**
+     * Ask for the j-side data of the pair `distance` pairs ahead (two
+     * blocks): the pairs run in the order of their automata i, so the
+     * processor streams the i side and the pair arrays by itself, but it
+     * cannot foresee the neighbours j. Requested a block early, their
+     * cache lines arrive while the block in between computes. A hint only:
+     * no result changes. `n_ahead` is the pair count, or 0 where the
+     * automata's data stay in the core's caches anyway (prefetch_pairs()).
+     */
+    template <class... Arrays>
+    inline void
+    prefetch_ahead(const unsigned int *pj,
+                   const unsigned int  p,
+                   const unsigned int  n_ahead,
+                   const Arrays &...arrays)
+    {
+      constexpr unsigned int distance = 2 * NormalBlock::size;
+      if (p + distance < n_ahead)
+        {
+          const unsigned int j = pj[p + distance];
+          (__builtin_prefetch(&arrays[j]), ...);
+        }
+    }
+
+
+    /**
+     * The `n_ahead` of prefetch_ahead(): the pair count where the positions,
+     * velocities and spins of the local automata (72 bytes each) exceed a
+     * core's level-2 cache (as the system reports it; 1 MiB if it does
+     * not), 0 below: there the neighbours' data stay cached and requests
+     * would only cost (doc/performance.md, "Prefetching the neighbours").
+     */
+    inline unsigned int
+    prefetch_pairs(const unsigned int n_pairs, const unsigned int n_local)
+    {
+      static const long level2 = [] {
+        const long bytes = sysconf(_SC_LEVEL2_CACHE_SIZE);
+        return bytes > 0 ? bytes : 1L << 20;
+      }();
+      return static_cast<long>(n_local) * 72 > level2 ? n_pairs : 0;
+    }
   } // namespace mca
 } // namespace tribodyn
 

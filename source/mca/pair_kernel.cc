@@ -124,6 +124,8 @@ namespace tribodyn
                                  Moment      &moment)
     {
       const unsigned int n_pairs = pi.size();
+      // (the pair count, or 0 in scenes that fit in a core's caches)
+      const unsigned int n_ahead = prefetch_pairs(n_pairs, n_local);
       if constexpr (Law::stateful)
         pair_mu.resize(n_pairs);
       pair_dr.resize(2 * static_cast<std::size_t>(n_pairs));
@@ -179,6 +181,11 @@ namespace tribodyn
                     b_wj[c][b] = w[j][c];
                   }
               __builtin_prefetch(&dsm[j], 1);
+              // (and those of the block after next, pair_blocks.h)
+              if constexpr (rot)
+                prefetch_ahead(pj.data(), p, n_ahead, x, v, w);
+              else
+                prefetch_ahead(pj.data(), p, n_ahead, x, v);
             }
           for (unsigned int b = 0; b < nb; ++b)
             {
@@ -499,6 +506,7 @@ namespace tribodyn
               for (unsigned int b = 0; b < nb; ++b)
                 {
                   const unsigned int p = p0 + b;
+                  prefetch_ahead(pj.data(), p, n_ahead, x, dsm);
                   if (!bonded[p] && !in_contact[p])
                     continue;
                   elastic_update(p);
@@ -558,6 +566,7 @@ namespace tribodyn
               __builtin_prefetch(&f[j], 1);
               if constexpr (rot)
                 __builtin_prefetch(&torque[j], 1);
+              prefetch_ahead(pj.data(), p0 + b, n_ahead, x, dsm);
             }
           for (unsigned int b = 0; b < nb; ++b)
             {
