@@ -181,7 +181,18 @@ namespace tribodyn
                     b_wj[c][b] = w[j][c];
                   }
               __builtin_prefetch(&dsm[j], 1);
-              // (and those of the block after next, pair_blocks.h)
+              // (and those of the block after next, and the pair arrays
+              // further on: pair_blocks.h)
+              prefetch_streams<1>(p,
+                                  n_ahead,
+                                  sig_i,
+                                  sig_j,
+                                  q_i,
+                                  tau.component[0],
+                                  tau.component[1],
+                                  tau.component[2]);
+              prefetch_streams<0>(
+                p, n_ahead, tau_scale_i, tau_scale_j, beta_i, beta_j);
               if constexpr (rot)
                 prefetch_ahead(pj.data(), p, n_ahead, x, v, w);
               else
