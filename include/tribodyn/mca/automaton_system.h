@@ -20,8 +20,8 @@
 #include <tribodyn/mca/pair_arrays.h>
 #include <tribodyn/mca/pair_fields.h>
 #include <tribodyn/mca/parameters.h>
-#include <tribodyn/mca/series_springs.h>
 #include <tribodyn/mca/system_figures.h>
+#include <tribodyn/mca/system_scalars.h>
 #include <tribodyn/mca/vector_algebra.h>
 #include <vector>
 
@@ -55,7 +55,9 @@ namespace tribodyn
      * index: owned automata first (along the space-filling curve of their
      * cells), then ghosts (the base AutomatonArrays, automaton_arrays.h),
      * and in flat arrays indexed by pair (the base PairArrays,
-     * pair_arrays.h, with the table of the persistent pair fields). At a
+     * pair_arrays.h, with the table of the persistent pair fields); the
+     * scene's constants and counters are the base SystemScalars
+     * (system_scalars.h). At a
      * rebuild, automata that entered a cell of another rank migrate through
      * deal.II's ParticleHandler (sort_particles_into_subdomains_and_cells), and
      * the states of their pairs follow them point to point.
@@ -69,7 +71,9 @@ namespace tribodyn
      * kernel (compiled per combination of the pair law's policies,
      * include/tribodyn/mca/pair_law.h), boundary conditions, half kick.
      */
-    class AutomatonSystem : private AutomatonArrays, private PairArrays
+    class AutomatonSystem : private AutomatonArrays,
+                            private PairArrays,
+                            private SystemScalars
     {
     public:
       AutomatonSystem(const Parameters &parameters, const MPI_Comm comm);
@@ -650,39 +654,6 @@ namespace tribodyn
       dealii::MappingQ1<3>                                   mapping;
       std::unique_ptr<dealii::Particles::ParticleHandler<3>> particles;
       NeighbourExchange                                      neighbours;
-
-      // material constants indexed by material
-      struct MaterialConstants
-      {
-        double             rho, G, K, D, two_G, yield0, sigma_b, w_b;
-        MaterialParameters m;
-      };
-      std::vector<MaterialConstants> mc;
-      /// The normal springs of each pair of materials (series_springs.h),
-      /// by mat_i * n_materials + mat_j.
-      std::vector<SeriesSprings> springs;
-      unsigned int               n_materials = 0;
-      bool   plastic_scene = false, bond_scene = false, rotations = true;
-      double d = 0, r0 = 0, S = 0, V = 0, range = 0;
-      /// Geometry/Size bands given: automata of several sizes.
-      bool graded = false;
-      /// Graded pair-list ranges [near a change of size][size level].
-      RangeTable graded_range{};
-
-      double        dt = 0, critical_dt = 0, current_time = 0;
-      unsigned long n_steps_done = 0;
-      /// set_agreed_displacement_since_rebuild()'s value, for the next
-      /// step only (negative: not given, step() reduces on its own)
-      double             agreed_displacement2 = -1;
-      unsigned long long n_global             = 0;
-      unsigned int       rebuild_count        = 0;
-      /// Rebalances so far, the imbalance right after the last partition,
-      /// and the weights this rank gave at each rebalance: (number of
-      /// cells, then key and weight per cell) per rebalance.
-      unsigned int                    rebalance_count     = 0;
-      double                          partition_imbalance = 1;
-      std::vector<std::uint64_t>      rebalance_history;
-      std::vector<unsigned long long> group_size;
 
       void
       register_pair_fields();

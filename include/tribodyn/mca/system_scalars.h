@@ -1,0 +1,58 @@
+// The scene's scalars of AutomatonSystem (a base, like AutomatonArrays and
+// PairArrays): the constants of its materials and of their pairs' springs,
+// the lattice's geometry, the time step and the counters of the run.
+#ifndef tribodyn_mca_system_scalars_h
+#define tribodyn_mca_system_scalars_h
+
+#include <cstdint>
+#include <tribodyn/mca/automaton_arrays.h>
+#include <tribodyn/mca/parameters.h>
+#include <tribodyn/mca/series_springs.h>
+#include <vector>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    /**
+     * Scalars of AutomatonSystem, set by its constructor and its run.
+     */
+    struct SystemScalars
+    {
+      // material constants indexed by material
+      struct MaterialConstants
+      {
+        double             rho, G, K, D, two_G, yield0, sigma_b, w_b;
+        MaterialParameters m;
+      };
+      std::vector<MaterialConstants> mc;
+      /// The normal springs of each pair of materials (series_springs.h),
+      /// by mat_i * n_materials + mat_j.
+      std::vector<SeriesSprings> springs;
+      unsigned int               n_materials = 0;
+      bool   plastic_scene = false, bond_scene = false, rotations = true;
+      double d = 0, r0 = 0, S = 0, V = 0, range = 0;
+      /// Geometry/Size bands given: automata of several sizes.
+      bool graded = false;
+      /// Graded pair-list ranges [near a change of size][size level].
+      AutomatonArrays::RangeTable graded_range{};
+
+      double        dt = 0, critical_dt = 0, current_time = 0;
+      unsigned long n_steps_done = 0;
+      /// set_agreed_displacement_since_rebuild()'s value, for the next
+      /// step only (negative: not given, step() reduces on its own)
+      double             agreed_displacement2 = -1;
+      unsigned long long n_global             = 0;
+      unsigned int       rebuild_count        = 0;
+      /// Rebalances so far, the imbalance right after the last partition,
+      /// and the weights this rank gave at each rebalance: (number of
+      /// cells, then key and weight per cell) per rebalance.
+      unsigned int                    rebalance_count     = 0;
+      double                          partition_imbalance = 1;
+      std::vector<std::uint64_t>      rebalance_history;
+      std::vector<unsigned long long> group_size;
+    };
+  } // namespace mca
+} // namespace tribodyn
+
+#endif
