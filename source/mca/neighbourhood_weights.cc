@@ -23,6 +23,25 @@ namespace tribodyn
           2 * n[0] * n[2], 2 * n[0] * n[1];
         return N;
       }
+
+      /// Is the symmetric positive semi-definite @p A (with its LDLT
+      /// factors @p ldlt) certainly better conditioned than lambda_min >
+      /// 1e-6 lambda_max, the test of the weights' fit? From the bounds
+      /// lambda_max <= tr A and lambda_min >= 1 / tr A^-1, a factor 2 away
+      /// from the limit (round-off of A^-1): a few hundred operations where
+      /// the eigenvalues cost thousands. False for the rest, which the
+      /// caller tests with the eigenvalues, so the test's outcome is the
+      /// same.
+      template <class Matrix, class Factors>
+      bool
+      surely_well_conditioned(const Matrix &A, const Factors &ldlt)
+      {
+        if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().minCoeff() > 0))
+          return false;
+        const double trace_inverse
+          = ldlt.solve(Matrix::Identity()).diagonal().sum();
+        return trace_inverse > 0 && A.trace() * trace_inverse < 5e5;
+      }
     } // namespace
 
 
@@ -104,13 +123,18 @@ namespace tribodyn
           if (count > 0 && scale > 0)
             {
               // full rank: smallest eigenvalue of A not negligible against
-              // the largest (A is symmetric positive semi-definite)
-              const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(
-                A, Eigen::EigenvaluesOnly);
-              const auto &lambda = eigen.eigenvalues();
-              if (lambda(0) > 1e-6 * lambda(5))
+              // the largest (A is symmetric positive semi-definite); the
+              // eigenvalues only where a cheap bound leaves it open
+              const Eigen::LDLT<Matrix6> ldlt(A);
+              const auto                 eigenvalue_test = [&] {
+                const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(
+                  A, Eigen::EigenvaluesOnly);
+                const auto &lambda = eigen.eigenvalues();
+                return lambda(0) > 1e-6 * lambda(5);
+              };
+              if (surely_well_conditioned(A, ldlt) || eigenvalue_test())
                 {
-                  g         = A.ldlt().solve(e);
+                  g         = ldlt.solve(e);
                   full_rank = g.cwiseAbs().maxCoeff() < 8;
                 }
             }
