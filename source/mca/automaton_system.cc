@@ -502,7 +502,7 @@ namespace tribodyn
       add(mat), add(body), add(size_level), add(volume), add(groups),
         add(eps_p), add(sigma_y);
       add(plast), add(bond_buffer), add(dsm), add(side_dq), add(pair_mu),
-        add(pair_dr);
+        add(pair_dr), add(step_normals);
       add(mb_mu), add(mb_state), add(mb_shape);
       add(trial), add(fabric_inverse), add(changed);
       add(pi), add(pj), add(pshift);

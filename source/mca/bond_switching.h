@@ -47,13 +47,17 @@ namespace tribodyn
       if (neighbours.active())
         neighbours.update(ex.data(), 7);
       const unsigned int n_pairs = pi.size();
-      NormalBlock        nblock;
-      auto               pair_vector_of
+      // (the pairs' normals as pass A kept them, or anew)
+      NormalBlock nblock;
+      auto        pair_vector_of
         = [this](const unsigned int p) { return pair_vector(p); };
       for (unsigned int p0 = 0; p0 < n_pairs; p0 += NormalBlock::size)
         {
           const unsigned int nb = std::min(NormalBlock::size, n_pairs - p0);
-          nblock.fill(p0, nb, pair_vector_of);
+          if (step_normals.empty())
+            nblock.fill(p0, nb, pair_vector_of);
+          else
+            nblock.fill_kept(step_normals, n_pairs, p0, nb);
           for (unsigned int b = 0; b < nb; ++b)
             {
               const unsigned int p = p0 + b, i = pi[p], j = pj[p];

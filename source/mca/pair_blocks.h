@@ -5,8 +5,10 @@
 #define tribodyn_mca_pair_blocks_h
 
 #include <cmath>
+#include <cstddef>
 #include <tribodyn/mca/vector_algebra.h>
 #include <unistd.h>
+#include <vector>
 
 namespace tribodyn
 {
@@ -42,6 +44,26 @@ namespace tribodyn
             r[b]     = std::sqrt(dn[0][b] * dn[0][b] + dn[1][b] * dn[1][b]
                              + dn[2][b] * dn[2][b]);
             inv_r[b] = 1. / r[b];
+          }
+      }
+
+      /// Fill entries 0 .. nb-1 from the distances and normals that pass
+      /// A kept of pairs p0 .. p0+nb-1 (PairArrays::step_normals; its
+      /// blocks n_pairs long): dn holds the normal itself, inv_r 1, so
+      /// that normal() gives it unchanged.
+      void
+      fill_kept(const std::vector<double> &kept,
+                const unsigned int         n_pairs,
+                const unsigned int         p0,
+                const unsigned int         nb)
+      {
+        const double *k = kept.data() + p0;
+        for (unsigned int b = 0; b < nb; ++b)
+          {
+            r[b]     = k[b];
+            inv_r[b] = 1;
+            for (unsigned int c = 0; c < 3; ++c)
+              dn[c][b] = k[(c + 1) * std::size_t(n_pairs) + b];
           }
       }
 
@@ -106,14 +128,37 @@ namespace tribodyn
      * not), 0 below: there the neighbours' data stay cached and requests
      * would only cost (doc/performance.md, "Prefetching the neighbours").
      */
-    inline unsigned int
-    prefetch_pairs(const unsigned int n_pairs, const unsigned int n_local)
+    inline long
+    level2_cache_bytes()
     {
       static const long level2 = [] {
         const long bytes = sysconf(_SC_LEVEL2_CACHE_SIZE);
         return bytes > 0 ? bytes : 1L << 20;
       }();
-      return static_cast<long>(n_local) * 72 > level2 ? n_pairs : 0;
+      return level2;
+    }
+
+    inline unsigned int
+    prefetch_pairs(const unsigned int n_pairs, const unsigned int n_local)
+    {
+      return static_cast<long>(n_local) * 72 > level2_cache_bytes() ? n_pairs
+                                                                    : 0;
+    }
+
+    /**
+     * Does pass A keep the pairs' distances and normals for the later
+     * passes of a plastic or bond kernel (PairArrays::step_normals)? Where
+     * they (32 bytes a pair) fill at most a quarter of a core's level-2
+     * cache: reading them back is then cheaper than computing them anew
+     * (two_body_friction.prm, 4 480 pairs: 4 % faster), but beyond, the
+     * extra memory traffic costs more than the square roots (friction_steel
+     * with 69 504 pairs 2 % slower, the plastic 10^5 block 6 %;
+     * doc/performance.md).
+     */
+    inline bool
+    keep_pair_normals(const unsigned int n_pairs)
+    {
+      return static_cast<long>(n_pairs) * 32 <= level2_cache_bytes() / 4;
     }
   } // namespace mca
 } // namespace tribodyn

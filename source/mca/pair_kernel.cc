@@ -129,6 +129,14 @@ namespace tribodyn
       if constexpr (Law::stateful)
         pair_mu.resize(n_pairs);
       pair_dr.resize(2 * static_cast<std::size_t>(n_pairs));
+      // Plastic and bond kernels evaluate the pairs' normals up to three
+      // times more (passes B, C and bond switching): pass A keeps them
+      // where that is cheaper (keep_pair_normals(); empty otherwise).
+      const bool keep_normals
+        = (plastic || bonds) && keep_pair_normals(n_pairs);
+      step_normals.resize(keep_normals ? 4 * static_cast<std::size_t>(n_pairs)
+                                       : 0);
+      double *const kept_r = step_normals.data();
       // radius of the circular contact face of area S (moment limits)
       const double face_radius = std::sqrt(S / M_PI);
       dsm.assign(n_local, 0);
@@ -269,6 +277,12 @@ namespace tribodyn
                       nm[c] = (n[c] + (b_dnew[c][b] - du[c]) * b_inv_ro[b])
                               * b_inv_nm[b];
                     }
+                }
+              if (keep_normals)
+                {
+                  kept_r[p] = r;
+                  for (unsigned int c = 0; c < 3; ++c)
+                    kept_r[(c + 1) * std::size_t(n_pairs) + p] = n[c];
                 }
               double               dr_p = b_dr[b], r_prev = ro;
               const SeriesSprings &k = springs[mat[i] * n_materials + mat[j]];
@@ -513,7 +527,10 @@ namespace tribodyn
           for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
             {
               const unsigned int nb = std::min(block, n_pairs - p0);
-              nblock.fill(p0, nb, pair_vector_of);
+              if (keep_normals)
+                nblock.fill_kept(step_normals, n_pairs, p0, nb);
+              else
+                nblock.fill(p0, nb, pair_vector_of);
               for (unsigned int b = 0; b < nb; ++b)
                 {
                   const unsigned int p = p0 + b;
@@ -564,7 +581,10 @@ namespace tribodyn
       for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
         {
           const unsigned int nb = std::min(block, n_pairs - p0);
-          nblock.fill(p0, nb, pair_vector_of);
+          if (keep_normals)
+            nblock.fill_kept(step_normals, n_pairs, p0, nb);
+          else
+            nblock.fill(p0, nb, pair_vector_of);
           for (unsigned int b = 0; b < nb; ++b)
             {
               // scattered loads of the block together (see pass A)

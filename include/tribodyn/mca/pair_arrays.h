@@ -45,6 +45,11 @@ namespace tribodyn
       /// This step's normal increment dr and t . du of the pairs that may
       /// release energy in pass C (2 per pair; pair_kernel.cc).
       std::vector<double> pair_dr;
+      /// Plastic and bond kernels: this step's distance r and unit normal n
+      /// of every pair (4 blocks of the pair count: r, n_x, n_y, n_z), as
+      /// pass A computes them, for passes B, C and bond switching (the same
+      /// bits as computing them anew; pair_kernel.cc).
+      std::vector<double> step_normals;
       /// Shear stresses: tau_i = tau_scale_i tau, tau_j = tau_scale_j tau.
       /// The two sides' shear stresses are always parallel (the series
       /// springs set them equal; the plastic correction and the Coulomb
