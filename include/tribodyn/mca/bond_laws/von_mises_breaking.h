@@ -19,17 +19,6 @@ namespace tribodyn
 {
   namespace mca
   {
-    /// 3 J2, the square of the von Mises stress: the bond criterion
-    /// compares it with the squared strength (no square root per pair).
-    inline double
-    von_mises_squared(const Sym3 &s)
-    {
-      const double m = (s[0] + s[1] + s[2]) / 3;
-      const double a = s[0] - m, b = s[1] - m, c = s[2] - m;
-      return 1.5 * (a * a + b * b + c * c)
-             + 3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-    }
-
     class VonMisesBondBreaking
     {
     public:
@@ -69,6 +58,37 @@ namespace tribodyn
       {
       }
 
+      /// 3 J2 of the pair's stress state: the mean @p s of the stress
+      /// tensors of its automata (xx, yy, zz, yz, xz, xy) with the traction
+      /// on its face (unit normal @p n) replaced by the pair's own, normal
+      /// @p sn and shear @p am times @p tau: s' = s + a n n + n c + c n with
+      /// a = sn - n.s.n and c = am tau - (s n - (n.s.n) n). Without
+      /// building s': with P = I - n n, s' = P s P + (sn + 2 c_n) n n +
+      /// am (n (P tau) + (P tau) n), c_n = am tau.n, three orthogonal parts,
+      /// so |s'|^2 = |s|^2 - 2 |s n|^2 + (n.s.n)^2 + (sn + 2 c_n)^2 + 2 am^2
+      /// |P tau|^2 and tr s' = tr s - n.s.n + sn + 2 c_n (half the
+      /// operations; the same value to round-off, tests/mca/bond_breaking.cc).
+      static double
+      pair_von_mises_squared(const Sym3  &s,
+                             const Vec3  &n,
+                             const double sn,
+                             const double am,
+                             const Vec3  &tau)
+      {
+        const Vec3   s_n{{s[0] * n[0] + s[5] * n[1] + s[4] * n[2],
+                          s[5] * n[0] + s[1] * n[1] + s[3] * n[2],
+                          s[4] * n[0] + s[3] * n[1] + s[2] * n[2]}};
+        const double snn = dot(s_n, n), tn = dot(tau, n);
+        const double s_nn_new = sn + 2 * am * tn;
+        const double s2       = s[0] * s[0] + s[1] * s[1] + s[2] * s[2]
+                          + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+        const double norm2 = s2 - 2 * dot(s_n, s_n) + snn * snn
+                             + s_nn_new * s_nn_new
+                             + 2 * am * am * (dot(tau, tau) - tn * tn);
+        const double trace = s[0] + s[1] + s[2] - snn + s_nn_new;
+        return 1.5 * (norm2 - trace * trace / 3);
+      }
+
       /// Does the bond of a pair break? @p s_i, @p s_j: the stress tensors
       /// of its automata (xx, yy, zz, yz, xz, xy); @p n its unit normal,
       /// @p sn its normal stress, @p am times @p tau its shear stress;
@@ -86,21 +106,8 @@ namespace tribodyn
         Sym3 s;
         for (unsigned int c = 0; c < 6; ++c)
           s[c] = 0.5 * (s_i[c] + s_j[c]);
-        // replace the normal and shear parts by the pair's own
-        const double sxx = s[0], syy = s[1], szz = s[2], syz = s[3], sxz = s[4],
-                     sxy = s[5];
-        Vec3         sn_vec{{sxx * n[0] + sxy * n[1] + sxz * n[2],
-                             sxy * n[0] + syy * n[1] + syz * n[2],
-                             sxz * n[0] + syz * n[1] + szz * n[2]}};
-        const double snn = dot(sn_vec, n);
-        Vec3         corr;
-        for (unsigned int c = 0; c < 3; ++c)
-          corr[c] = am * tau[c] - (sn_vec[c] - snn * n[c]);
-        add_sym(s, sn - snn, n, n);
-        add_sym(s, 1, n, corr);
-        add_sym(s, 1, corr, n);
         const double limit = std::min(limit_i, limit_j);
-        return von_mises_squared(s) >= limit * limit;
+        return pair_von_mises_squared(s, n, sn, am, tau) >= limit * limit;
       }
     };
   } // namespace mca
