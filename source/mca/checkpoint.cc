@@ -16,10 +16,10 @@
 // the list (a persistent pair field: register it, nothing else); the ctest
 // mca_restart_* tests compare a resumed run with an uninterrupted one and
 // fail if something is missed. Per-step scratch buffers (plast,
-// bond_buffer, dsm, side_dq, pair_dr, trial) and the rebuild's transient lists
-// (kept_states, kept_keys, old_pairs, old_flags) are rebuilt before use and
-// are not saved, nor is mb_shape (derived from mb_state on resume); the
-// material constants (mc, springs) come from the parameters.
+// bond_buffer, dsm, side_dq, pair_dr, step_normals, trial) and the rebuild's
+// transient lists (kept_states, kept_keys, old_pairs, old_flags) are rebuilt
+// before use and are not saved, nor is mb_shape (derived from mb_state on
+// resume); the material constants (mc, springs) come from the parameters.
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 #include <boost/serialization/array.hpp>

@@ -25,32 +25,6 @@ namespace tribodyn
 {
   namespace mca
   {
-    namespace
-    {
-      /// The first coordinate of an array of 3-vectors, as the flat field
-      /// of a ghost update (nullptr when the array is empty: a rank that
-      /// owns no automata).
-      template <class Vector>
-      double *
-      flat(std::vector<Vector> &a)
-      {
-        return a.empty() ? nullptr : &a[0][0];
-      }
-
-
-    } // namespace
-
-
-    void
-    AutomatonSystem::update_ghost_kinematics()
-    {
-      // one message per neighbour rank; a rank that owns no automata still
-      // takes part, with empty messages, or its neighbours would wait for it
-      if (neighbours.active())
-        neighbours.update({{flat(x), 3}, {flat(v), 3}, {flat(w), 3}});
-    }
-
-
     void
     AutomatonSystem::evaluate_pairs(const double step_dt)
     {

@@ -45,6 +45,16 @@ namespace tribodyn
 
     namespace
     {
+      /// The first coordinate of an array of 3-vectors, as the flat field
+      /// of a ghost update (nullptr when the array is empty: a rank that
+      /// owns no automata).
+      template <class Vector>
+      double *
+      flat(std::vector<Vector> &a)
+      {
+        return a.empty() ? nullptr : &a[0][0];
+      }
+
       // An automaton record: position at the last rebuild, id, position
       // now, the migration record, then the step-to-step state beyond it
       // (with flags: present at the writer).
@@ -63,6 +73,16 @@ namespace tribodyn
       constexpr double listing_margin = 1e-4;
 
     } // namespace
+
+
+    void
+    AutomatonSystem::update_ghost_kinematics()
+    {
+      // one message per neighbour rank; a rank that owns no automata still
+      // takes part, with empty messages, or its neighbours would wait for it
+      if (neighbours.active())
+        neighbours.update({{flat(x), 3}, {flat(v), 3}, {flat(w), 3}});
+    }
 
 
     void
