@@ -9,11 +9,11 @@
 // a contact pressure), random unit normals, shear stresses with a normal
 // component up to 10 % (tau is tangent to the mid-step normal, not to n).
 // Tolerance 1e-13 of |s'|^2: the short form subtracts tr(s')^2/3 from
-// |s'|^2 and 2 |s n|^2 from |s|^2, so its round-off is some ulps of the
-// largest of these (measured: 3.1e-14 of |s'|^2; a lost factor 2 in the
-// normal part gives 0.3, tests fail). And the
-// criterion's outcome (3 J2 >= limit^2) agrees wherever 3 J2 lies more than
-// that round-off away from the limit.
+// |s'|^2 and 2 |s n|^2 from |s|^2, differences of terms of the size of
+// |s'|^2 over some fifteen operations (measured: 3.1e-14 at worst over the
+// 10^5 states; a lost factor 2 in the normal part gives 0.3, and the test
+// fails). And the criterion's outcome (3 J2 >= limit^2) agrees wherever
+// 3 J2 lies more than that round-off away from the limit.
 
 #include "../test_utilities.h"
 
