@@ -54,10 +54,7 @@ namespace tribodyn
       for (unsigned int p0 = 0; p0 < n_pairs; p0 += NormalBlock::size)
         {
           const unsigned int nb = std::min(NormalBlock::size, n_pairs - p0);
-          if (step_normals.empty())
-            nblock.fill(p0, nb, pair_vector_of);
-          else
-            nblock.fill_kept(step_normals, n_pairs, p0, nb);
+          nblock.fill(p0, nb, step_normals, n_pairs, pair_vector_of);
           for (unsigned int b = 0; b < nb; ++b)
             {
               const unsigned int p = p0 + b, i = pi[p], j = pj[p];

@@ -47,16 +47,24 @@ namespace tribodyn
           }
       }
 
-      /// Fill entries 0 .. nb-1 from the distances and normals that pass
-      /// A kept of pairs p0 .. p0+nb-1 (PairArrays::step_normals; its
-      /// blocks n_pairs long): dn holds the normal itself, inv_r 1, so
-      /// that normal() gives it unchanged.
+      /// Fill entries 0 .. nb-1 of pairs p0 .. p0+nb-1: from the distances
+      /// and normals that pass A kept (PairArrays::step_normals, written by
+      /// keep_normal(); dn then holds the normal itself and inv_r 1, so
+      /// that normal() gives it unchanged), or anew where it kept none
+      /// (@p kept empty).
+      template <class PairVector>
       void
-      fill_kept(const std::vector<double> &kept,
-                const unsigned int         n_pairs,
-                const unsigned int         p0,
-                const unsigned int         nb)
+      fill(const unsigned int         p0,
+           const unsigned int         nb,
+           const std::vector<double> &kept,
+           const unsigned int         n_pairs,
+           const PairVector          &pair_vector)
       {
+        if (kept.empty())
+          {
+            fill(p0, nb, pair_vector);
+            return;
+          }
         const double *k = kept.data() + p0;
         for (unsigned int b = 0; b < nb; ++b)
           {
@@ -65,6 +73,20 @@ namespace tribodyn
             for (unsigned int c = 0; c < 3; ++c)
               dn[c][b] = k[(c + 1) * std::size_t(n_pairs) + b];
           }
+      }
+
+      /// Keep distance @p r and unit normal @p n of pair @p p in @p kept
+      /// (4 blocks of @p n_pairs: r, n_x, n_y, n_z), for fill().
+      static void
+      keep_normal(std::vector<double> &kept,
+                  const unsigned int   n_pairs,
+                  const unsigned int   p,
+                  const double         r,
+                  const Vec3          &n)
+      {
+        kept[p] = r;
+        for (unsigned int c = 0; c < 3; ++c)
+          kept[(c + 1) * std::size_t(n_pairs) + p] = n[c];
       }
 
       Vec3

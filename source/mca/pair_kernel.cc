@@ -110,7 +110,6 @@ namespace tribodyn
         = (plastic || bonds) && keep_pair_normals(n_pairs);
       step_normals.resize(keep_normals ? 4 * static_cast<std::size_t>(n_pairs)
                                        : 0);
-      double *const kept_r = step_normals.data();
       // radius of the circular contact face of area S (moment limits)
       const double face_radius = std::sqrt(S / M_PI);
       dsm.assign(n_local, 0);
@@ -253,11 +252,7 @@ namespace tribodyn
                     }
                 }
               if (keep_normals)
-                {
-                  kept_r[p] = r;
-                  for (unsigned int c = 0; c < 3; ++c)
-                    kept_r[(c + 1) * std::size_t(n_pairs) + p] = n[c];
-                }
+                NormalBlock::keep_normal(step_normals, n_pairs, p, r, n);
               double               dr_p = b_dr[b], r_prev = ro;
               const SeriesSprings &k = springs[mat[i] * n_materials + mat[j]];
               const double         scale   = geometry.stiffness_scale(p);
@@ -501,10 +496,7 @@ namespace tribodyn
           for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
             {
               const unsigned int nb = std::min(block, n_pairs - p0);
-              if (keep_normals)
-                nblock.fill_kept(step_normals, n_pairs, p0, nb);
-              else
-                nblock.fill(p0, nb, pair_vector_of);
+              nblock.fill(p0, nb, step_normals, n_pairs, pair_vector_of);
               for (unsigned int b = 0; b < nb; ++b)
                 {
                   const unsigned int p = p0 + b;
@@ -555,10 +547,7 @@ namespace tribodyn
       for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
         {
           const unsigned int nb = std::min(block, n_pairs - p0);
-          if (keep_normals)
-            nblock.fill_kept(step_normals, n_pairs, p0, nb);
-          else
-            nblock.fill(p0, nb, pair_vector_of);
+          nblock.fill(p0, nb, step_normals, n_pairs, pair_vector_of);
           for (unsigned int b = 0; b < nb; ++b)
             {
               // scattered loads of the block together (see pass A)

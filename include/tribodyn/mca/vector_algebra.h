@@ -37,18 +37,6 @@ namespace tribodyn
                a[0] * b[1] - a[1] * b[0]}};
     }
 
-    /// Add c * sym(n (x) t) to s (xx yy zz yz xz xy).
-    inline void
-    add_sym(Sym3 &s, const double c, const Vec3 &n, const Vec3 &t)
-    {
-      s[0] += c * n[0] * t[0];
-      s[1] += c * n[1] * t[1];
-      s[2] += c * n[2] * t[2];
-      s[3] += c * 0.5 * (n[1] * t[2] + n[2] * t[1]);
-      s[4] += c * 0.5 * (n[0] * t[2] + n[2] * t[0]);
-      s[5] += c * 0.5 * (n[0] * t[1] + n[1] * t[0]);
-    }
-
     /// Add c * (n (x) t) to the full tensor m.
     inline void
     add_outer(Mat3 &m, const double c, const Vec3 &n, const Vec3 &t)
