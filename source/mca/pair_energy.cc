@@ -112,14 +112,15 @@ namespace tribodyn
     AutomatonSystem::many_body_step()
     {
       double work_mb = 0;
-      // Pair kernel, after pass A (dsm: the mean-stress increments).
-      // The many-body work of D mu at mid-step (mu and half of this
-      // step's increment) over the summed sides, minus the change of kappa
-      // G^2 (G moves by D dsm gamma) but where the automaton is uniform
-      // (the change is the work of its weighted sides, not summed); then
-      // mu of every local automaton.
+      // Pair kernel, after pass A (dsm: the volumetric strain increments;
+      // the mean-stress increments K dsm from here on). The many-body work
+      // of D mu at mid-step (mu and half of this step's increment) over
+      // the summed sides, minus the change of kappa G^2 (G moves by D dsm
+      // gamma) but where the automaton is uniform (the change is the work
+      // of its weighted sides, not summed); then mu of the automaton.
       for (unsigned int k = 0; k < n_owned; ++k)
         {
+          dsm[k] *= mc[mat[k]].K;
           const double D  = mc[mat[k]].D;
           const double dm = D * dsm[k];
           auto        &st = mb_state[k];
@@ -142,8 +143,12 @@ namespace tribodyn
             st.G += dm * st.gamma;
           else
             work_mb += pair_energy::shift_sum(st, dm * st.gamma);
+          mb_mu[k] += dsm[k];
         }
-      for (unsigned int k = 0; k < n_local; ++k)
+      // the ghosts' from their owners' increments
+      if (neighbours.active())
+        neighbours.update(dsm.data(), 1);
+      for (unsigned int k = n_owned; k < n_local; ++k)
         mb_mu[k] += dsm[k];
       return work_mb;
     }

@@ -454,12 +454,9 @@ namespace tribodyn
       // strain increment, the trace of the strain tensor fitted (least
       // squares) to its pairs' normal strains: dtheta = sum_j beta_ij
       // deps_ij (beta = 1/4 in a complete FCC neighbourhood).
-      for (unsigned int k = 0; k < n_owned; ++k)
-        dsm[k] *= mc[mat[k]].K;
-      if (neighbours.active())
-        neighbours.update(dsm.data(), 1);
-      // the many-body work of the step, mu of every automaton
-      // (pair_energy.cc)
+      // With it, in the same pass over the owned automata, the many-body
+      // work of the step and their new mu (pair_energy.cc); the ghosts'
+      // mu from their owners' increments.
       dw[many_body_work] += many_body_step();
 
       for (unsigned int k = 0; k < n_owned; ++k)

@@ -469,7 +469,8 @@ namespace tribodyn
       void
       update_many_body_state(const unsigned int k);
       /// The pair kernel's many-body work of a step from the automata's
-      /// sums (after pass A); mu of the automata anew.
+      /// sums (after pass A); their mean-stress increments dsm (K times
+      /// the volumetric ones, sent to the ghosts) and mu anew.
       double
       many_body_step();
       /// The shapes of the owned automata from their lambda (0: general).
