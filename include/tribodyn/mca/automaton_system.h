@@ -468,9 +468,8 @@ namespace tribodyn
       pair_elastic_energy() const;
       void
       update_many_body_state(const unsigned int k);
-      /// The pair kernel's many-body work of a step from the automata's
-      /// sums (after pass A); their mean-stress increments dsm (K times
-      /// the volumetric ones, sent to the ghosts) and mu anew.
+      /// The pair kernel's many-body work of a step (after pass A); dsm
+      /// times K (sent to the ghosts) and mu anew.
       double
       many_body_step();
       /// The shapes of the owned automata from their lambda (0: general).
