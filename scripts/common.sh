@@ -15,6 +15,10 @@ export OMPI_ALLOW_RUN_AS_ROOT=1
 export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
 export OMPI_MCA_btl_vader_single_copy_mechanism=none
+# SIGTERM to mpirun reaches the ranks, which save a checkpoint before they
+# stop; Open MPI's default of 1 s before SIGKILL is too short for a large
+# scene (doc/user_guide/mca_study.md).
+export OMPI_MCA_odls_base_sigkill_timeout="${OMPI_MCA_odls_base_sigkill_timeout:-30}"
 
 TRIBODYN_PACKAGES=(libdeal.ii-dev libeigen3-dev numdiff python3
                    python3-matplotlib cmake g++ make openmpi-bin

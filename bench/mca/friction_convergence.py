@@ -31,7 +31,6 @@ import csv
 import json
 import math
 import os
-import re
 import subprocess
 import sys
 import time
@@ -45,13 +44,18 @@ env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIR
            OMPI_MCA_rmaps_base_oversubscribe="1")
 
 
-def replace(text, name, value):
-    """Replace the first 'set NAME = ...' line."""
-    new, count = re.subn(r"(set\s+%s\s*=\s*)[^\n]*" % re.escape(name),
-                         lambda m: m.group(1) + value, text, count=1)
-    if count != 1:
-        sys.exit("friction_convergence: no 'set %s' in %s" % (name, BASE_PRM))
-    return new
+def overrides(entries):
+    """Parameter-file lines setting ENTRIES ('Subsection/Name' -> value);
+    appended after the base file, they replace its values (deal.II's
+    ParameterHandler keeps the last 'set' of an entry): nothing is edited."""
+    lines = []
+    for path, value in entries.items():
+        *sections, name = path.split("/")
+        lines += ["subsection %s" % s for s in sections]
+        lines.append("set %s = %s" % (name, value))
+        lines += ["end"] * len(sections)
+    return "\n# convergence case (bench/mca/friction_convergence.py)\n" \
+        + "\n".join(lines) + "\n"
 
 
 def make_prm(d, courant, end_time, out_dir):
@@ -62,16 +66,15 @@ def make_prm(d, courant, end_time, out_dir):
             sys.exit("friction_convergence: d = %g m: the %s is %.4g FCC cells, "
                      "not a whole number; use d = 7.5e-9 * 16 / k for a k that "
                      "divides 16 and 12 (7.5, 10, 15 nm)" % (d, what, cells))
-    text = open(BASE_PRM).read()
-    text = replace(text, "Output directory", out_dir)
-    text = replace(text, "Automaton size", repr(d))
-    text = replace(text, "Domain lower", "0, 0, %r" % (-2 * a))
-    text = replace(text, "Courant factor", repr(courant))
-    text = replace(text, "Write particles", "false")
-    text = replace(text, "Cross section", "false")
+    entries = {"Output directory": out_dir,
+               "Geometry/Automaton size": repr(d),
+               "Geometry/Domain lower": "0, 0, %r" % (-2 * a),
+               "Time/Courant factor": repr(courant),
+               "Output/Write particles": "false",
+               "Output/Cross section": "false"}
     if end_time is not None:
-        text = replace(text, "End time", repr(end_time))
-    return text
+        entries["Time/End time"] = repr(end_time)
+    return open(BASE_PRM).read() + overrides(entries)
 
 
 def in_nm(value):

@@ -11,7 +11,7 @@
 #include <tribodyn/core/global_parameters.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/output_directory.h>
-#include <tribodyn/core/parameter_messages.h>
+#include <tribodyn/core/parameter_file.h>
 #include <tribodyn/core/problem.h>
 #include <tribodyn/core/version.h>
 
@@ -73,63 +73,6 @@ namespace tribodyn
     }
 
 
-    void
-    check_readable(const std::string &file)
-    {
-      std::ifstream in(file);
-      if (!in)
-        throw InputError("Cannot read the parameter file '" + file
-                         + "': it does not exist or is not readable. Give the "
-                           "path of a .prm file (examples are in prm/).");
-    }
-
-
-    /// Read @p file into @p prm (declared for its problem, strictly
-    /// checked); returns the problem's description.
-    const ProblemDescription &
-    parse_parameter_file(const std::string &file, dealii::ParameterHandler &prm)
-    {
-      check_readable(file);
-
-      // First pass: only the global parameters, to learn which problem's
-      // parameters to declare. Undefined entries are skipped here and
-      // checked strictly in the second pass.
-      std::string problem_name;
-      {
-        dealii::ParameterHandler first;
-        GlobalParameters::declare_parameters(first);
-        try
-          {
-            first.parse_input(file, "", true);
-          }
-        catch (const dealii::ExceptionBase &e)
-          {
-            throw InputError(describe_parameter_error(e, file));
-          }
-        problem_name = first.get("Problem");
-      }
-      const ProblemDescription &description = find_problem(problem_name);
-
-      declare_all(prm, description);
-      try
-        {
-          // parameters that depend on the file's values (e.g. a list of
-          // names): a lenient first reading, then their declaration
-          if (description.declare_dependent_parameters)
-            {
-              prm.parse_input(file, "", true);
-              description.declare_dependent_parameters(prm);
-            }
-          prm.parse_input(file);
-        }
-      catch (const dealii::ExceptionBase &e)
-        {
-          throw InputError(describe_parameter_error(e, file));
-        }
-      return description;
-    }
-
-
     int
     partition_report(const std::string &count,
                      const std::string &file,
@@ -152,7 +95,7 @@ namespace tribodyn
                          "between 1 and 10^6 and a parameter file; got '"
                          + count + "'.");
       dealii::ParameterHandler  prm;
-      const ProblemDescription &description = parse_parameter_file(file, prm);
+      const ProblemDescription &description = read_parameter_file(file, prm);
       if (!description.partition_report)
         throw InputError("'--partition-report' is available for the mca "
                          "problem only; '"
@@ -167,7 +110,7 @@ namespace tribodyn
     run_parameter_file(const std::string &file, const MPI_Comm comm)
     {
       dealii::ParameterHandler  prm;
-      const ProblemDescription &description = parse_parameter_file(file, prm);
+      const ProblemDescription &description = read_parameter_file(file, prm);
 
       GlobalParameters global;
       global.parse_parameters(prm);

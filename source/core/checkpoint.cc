@@ -95,6 +95,7 @@ namespace tribodyn
               path += s + "/";
             path += name;
             if (path == end_time_entry || path == "Progress interval"
+                || path == "Output directory"
                 || path.rfind("Checkpoint/", 0) == 0)
               continue;
             lines.push_back(path + " = "
@@ -304,6 +305,57 @@ namespace tribodyn
   }
 
 
+  namespace
+  {
+    /// The fields of a `latest` file's text (format checked by the caller).
+    CheckpointInfo
+    parse_checkpoint_info(const std::string &text)
+    {
+      std::istringstream in(text);
+      std::string        line;
+      CheckpointInfo     info;
+      while (std::getline(in, line))
+        {
+          if (line.rfind("parameter ", 0) == 0)
+            info.parameters.push_back(line.substr(10));
+          else if (line.rfind("problem = ", 0) == 0)
+            info.problem = line.substr(10);
+          else if (line.rfind("slot = ", 0) == 0)
+            info.slot = std::stoul(line.substr(7)) == 1 ? 1 : 0;
+          else if (line.rfind("step = ", 0) == 0)
+            info.step = std::stoul(line.substr(7));
+          else if (line.rfind("time = ", 0) == 0)
+            info.time = std::stod(line.substr(7));
+          else if (line.rfind("ranks = ", 0) == 0)
+            info.n_ranks = std::stoul(line.substr(8));
+        }
+      return info;
+    }
+  } // namespace
+
+
+  bool
+  read_latest_checkpoint_info(const std::string &output_directory,
+                              CheckpointInfo    &info)
+  {
+    bool              ok   = true;
+    const std::string text = read_whole_file(
+      join_path(join_path(output_directory, "checkpoint"), "latest"), ok);
+    if (!ok
+        || (text.rfind(format_line, 0) != 0 && text.rfind(format_1, 0) != 0))
+      return false;
+    try
+      {
+        info = parse_checkpoint_info(text);
+      }
+    catch (const std::exception &)
+      {
+        return false;
+      }
+    return info.n_ranks > 0;
+  }
+
+
   std::vector<std::string>
   CheckpointStore::read(const std::vector<std::string> &parameters,
                         CheckpointInfo                 &info)
@@ -324,26 +376,8 @@ namespace tribodyn
           "first with 'Checkpoint/Interval' > 0 (or stop a run with "
           "SIGTERM), or set 'Checkpoint/Resume = false'.");
 
-    std::istringstream       in(text);
-    std::string              line;
-    std::vector<std::string> stored;
-    info = CheckpointInfo();
-    while (std::getline(in, line))
-      {
-        if (line.rfind("parameter ", 0) == 0)
-          stored.push_back(line.substr(10));
-        else if (line.rfind("problem = ", 0) == 0)
-          info.problem = line.substr(10);
-        else if (line.rfind("slot = ", 0) == 0)
-          info.slot = std::stoul(line.substr(7)) == 1 ? 1 : 0;
-        else if (line.rfind("step = ", 0) == 0)
-          info.step = std::stoul(line.substr(7));
-        else if (line.rfind("time = ", 0) == 0)
-          info.time = std::stod(line.substr(7));
-        else if (line.rfind("ranks = ", 0) == 0)
-          info.n_ranks = std::stoul(line.substr(8));
-      }
-    info.parameters = stored;
+    info                                   = parse_checkpoint_info(text);
+    const std::vector<std::string> &stored = info.parameters;
     if (info.problem != problem)
       throw InputError("The checkpoint in '" + path + "' belongs to a '"
                        + info.problem + "' run, not to '" + problem
@@ -497,13 +531,20 @@ namespace tribodyn
   namespace
   {
     bool acknowledged = false;
-  }
+    /// Handlers alive: a study installs them around its scenes, each
+    /// scene's time loop inside; a signal the outer ones recorded (between
+    /// two scenes, during a scene's set-up) is not forgotten by the inner.
+    unsigned int handler_depth = 0;
+  } // namespace
 
 
   InterruptHandlers::InterruptHandlers()
   {
-    received_signal = 0;
-    acknowledged    = false;
+    if (handler_depth++ == 0)
+      {
+        received_signal = 0;
+        acknowledged    = false;
+      }
     struct sigaction action;
     std::memset(&action, 0, sizeof(action));
     action.sa_handler = record_signal;
@@ -518,6 +559,8 @@ namespace tribodyn
   {
     sigaction(SIGTERM, &previous_term, nullptr);
     sigaction(SIGINT, &previous_int, nullptr);
+    if (--handler_depth > 0)
+      return; // the outer handlers act on a pending signal
     const int pending = received_signal;
     received_signal   = 0;
     if (pending != 0 && !acknowledged)

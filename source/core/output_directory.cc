@@ -103,12 +103,18 @@ namespace tribodyn
                       // A finished run replaces the one kept before it.
                       fs::remove_all(previous);
                       move_entries(earlier, previous);
+                      std::cout << "The finished run that was in '" << directory
+                                << "' moved to '" << previous.string() << "/'."
+                                << std::endl;
                     }
                   else
                     {
                       const fs::path unfinished = previous / "unfinished";
                       fs::remove_all(unfinished);
                       move_entries(earlier, unfinished);
+                      std::cout << "The unfinished run that was in '"
+                                << directory << "' moved to '"
+                                << unfinished.string() << "/'." << std::endl;
                     }
                 }
             }

@@ -462,6 +462,7 @@ namespace tribodyn
       if (root)
         write_file_atomically(join_path(out_dir, "summary.json"),
                               summary.dump() + "\n");
+      pcout << "Results in " << out_dir << std::endl;
     }
 
 

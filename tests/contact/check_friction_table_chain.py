@@ -49,9 +49,13 @@ check(len(rows) == 4 and grid == {(p, v) for p in (150e6, 300e6)
                                   for v in (5., 10.)},
       "mu_table.csv: the full 2 x 2 grid (%d rows)" % len(rows))
 copied = True
+with open(os.path.join(table_dir, "scenes.csv")) as f:
+    scenes = {(float(s["Friction loading/Pressure"]),
+               float(s["Friction loading/Sliding velocity"])): s["scene"]
+              for s in csv.DictReader(f)}
 for r in rows:
-    d = os.path.join(table_dir, "p%g_v%g" % (float(r["pressure"]),
-                                             float(r["speed"])), "seed_1")
+    d = os.path.join(table_dir, "scenes",
+                     scenes[(float(r["pressure"]), float(r["speed"]))])
     with open(os.path.join(d, "summary.json")) as f:
         copied = copied and float(r["mu"]) == json.load(f)["mu_steady"]
 check(copied, "each mu = its run's mu_steady")

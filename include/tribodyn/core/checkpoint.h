@@ -41,7 +41,9 @@ namespace tribodyn
   /**
    * The parameters of @p prm as "Section/Name = value" lines, without
    * those a resumed run may change: @p end_time_entry (the problem's end
-   * time), the Checkpoint subsection and the global Progress interval.
+   * time), the Checkpoint subsection, the global Progress interval and the
+   * Output directory (a run directory copied to another path or machine
+   * continues there).
    * Stored in a checkpoint to check that a resumed run continues the same
    * problem.
    */
@@ -59,6 +61,16 @@ namespace tribodyn
     unsigned int             slot    = 0;
     std::vector<std::string> parameters;
   };
+
+  /**
+   * What the latest checkpoint of the run in @p output_directory says about
+   * itself (rank-local file read, no MPI); false when there is none or its
+   * `latest` file is damaged. A study uses it to decide whether a scene
+   * resumes; CheckpointStore::read() does the full checks.
+   */
+  bool
+  read_latest_checkpoint_info(const std::string &output_directory,
+                              CheckpointInfo    &info);
 
   /**
    * Checkpoints of a run in `OUTPUT/checkpoint/`: two slots `slot_0/` and
@@ -153,7 +165,9 @@ namespace tribodyn
    * SIGTERM and SIGINT only set a flag: the loop polls it between steps
    * (agree_on_health()), writes a checkpoint, flushes its outputs and
    * throws Interrupted. The destructor restores the previous handlers and,
-   * if a signal arrived but was not acted upon, re-raises it.
+   * if a signal arrived but was not acted upon, re-raises it. Handlers
+   * nest (a study's around its scenes' time loops): the inner ones keep a
+   * signal the outer ones recorded and leave an unacted one to them.
    */
   class InterruptHandlers
   {

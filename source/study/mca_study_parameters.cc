@@ -1,0 +1,282 @@
+// The parameters of `set Problem = mca_study`: subsection Study and the
+// study-wide Time/End time, declared and checked.
+
+#include <algorithm>
+#include <deal.II/base/utilities.h>
+#include <set>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/output.h>
+#include <tribodyn/study/mca_study.h>
+#include <vector>
+
+namespace tribodyn
+{
+  namespace study
+  {
+    using dealii::ParameterHandler;
+    namespace Patterns = dealii::Patterns;
+
+    namespace
+    {
+
+      std::string
+      trim(const std::string &s)
+      {
+        return dealii::Utilities::trim(s);
+      }
+
+
+      /// "Path = value" items separated by ';' (@p parameter names the
+      /// entry in messages).
+      std::vector<std::pair<std::string, std::string>>
+      path_assignments(const std::string &text, const std::string &parameter)
+      {
+        std::vector<std::pair<std::string, std::string>> items;
+        for (const std::string &item :
+             dealii::Utilities::split_string_list(text, ';'))
+          {
+            const auto eq = item.find('=');
+            if (eq == std::string::npos || trim(item.substr(0, eq)).empty()
+                || trim(item.substr(eq + 1)).empty())
+              throw InputError(
+                "'" + parameter + "': '" + item
+                + "' is not of the form 'Subsection/Name = value' (items "
+                  "separated by ';', e.g. 'Friction loading/Pressure = "
+                  "150e6, 300e6; Time/Courant factor = 0.2').");
+            items.emplace_back(trim(item.substr(0, eq)),
+                               trim(item.substr(eq + 1)));
+          }
+        return items;
+      }
+
+
+      std::vector<unsigned int>
+      seed_list(const std::string &text, const std::string &parameter)
+      {
+        std::vector<unsigned int> seeds;
+        for (const std::string &item :
+             dealii::Utilities::split_string_list(text, ','))
+          {
+            int value = -1;
+            try
+              {
+                value = dealii::Utilities::string_to_int(item);
+              }
+            catch (...)
+              {
+                value = -1;
+              }
+            if (value < 0)
+              throw InputError("'" + parameter + "': '" + item
+                               + "' is not a seed (a non-negative integer). "
+                                 "Give a comma-separated list, e.g. "
+                                 "'1, 2, 3, 4'.");
+            seeds.push_back(value);
+          }
+        return seeds;
+      }
+    } // namespace
+
+
+    void
+    McaStudyParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time");
+      prm.declare_entry("End time",
+                        "0",
+                        Patterns::Double(0.),
+                        "Simulated time of every scene (s), replacing the "
+                        "base files' 'Time/End time'; 0 keeps each base's "
+                        "own. Raising it later continues the finished "
+                        "scenes from their last checkpoint (runs in legs).");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Study");
+      prm.declare_entry(
+        "Bases",
+        "steel: ../mca/friction_steel.prm, composite: "
+        "../mca/friction_composite.prm",
+        Patterns::Anything(),
+        "The base scenes, 'name: file' separated by commas: parameter "
+        "files of 'set Problem = mca' (their Output directory is replaced "
+        "by the scene's). Relative paths are relative to the directory of "
+        "the study's parameter file. Names are letters, digits, '-' and "
+        "'_'.");
+      prm.declare_entry("Reference base",
+                        "",
+                        Patterns::Anything(),
+                        "The base the others are compared with, scene by "
+                        "scene on the same seeds and factor levels: "
+                        "(mu_base - mu_reference) / mu_reference. Empty: "
+                        "the first base.");
+      prm.declare_entry("Roughness seeds",
+                        "1",
+                        Patterns::Anything(),
+                        "Comma-separated seeds of the rough interface "
+                        "(Geometry/Rough interface/Seed): every base runs "
+                        "on each, and the differences are paired per seed. "
+                        "Add seeds until the mean difference's standard "
+                        "error is small enough.");
+      prm.declare_entry("Inclusion seeds",
+                        "",
+                        Patterns::Anything(),
+                        "Comma-separated seeds of the inclusions "
+                        "(Geometry/Inclusions/Seed), one per roughness "
+                        "seed, paired with it; empty: each equal to its "
+                        "roughness seed.");
+      prm.declare_entry(
+        "Factors",
+        "",
+        Patterns::Anything(),
+        "Further factors, 'Subsection/Name = value, value, ...' separated "
+        "by ';' (any parameter of the scenes by its path, e.g. 'Friction "
+        "loading/Pressure = 150e6, 300e6, 600e6'): the scenes are the "
+        "bases x seeds x every combination of the factors' values.");
+      prm.declare_entry("Settings",
+                        "",
+                        Patterns::Anything(),
+                        "'Subsection/Name = value' separated by ';', set in "
+                        "every scene (e.g. 'Output/Write particles = "
+                        "false').");
+      prm.declare_entry("Checkpoint interval",
+                        "1e-9",
+                        Patterns::Double(0.),
+                        "Simulated time between two checkpoints of a scene "
+                        "(s), replacing the bases' 'Checkpoint/Interval': a "
+                        "study killed at any moment loses at most this much "
+                        "of each running scene. 0 keeps the bases' own.");
+      prm.declare_entry("Ranks per scene",
+                        "1",
+                        Patterns::Integer(1),
+                        "MPI ranks of each scene: the ranks form groups of "
+                        "this many (the remainder joins the last group), "
+                        "and the groups run scenes side by side.");
+      prm.declare_entry("Plot script",
+                        "auto",
+                        Patterns::Anything(),
+                        "Python script making the plots at the end: 'auto' "
+                        "looks for scripts/plot_mca_study next to the build "
+                        "directory (skipped when python3 or matplotlib is "
+                        "missing), 'none' makes no plots, or a path.");
+      prm.leave_subsection();
+    }
+
+
+    void
+    McaStudyParameters::parse_parameters(ParameterHandler  &prm,
+                                         const std::string &study_file)
+    {
+      prm.enter_subsection("Time");
+      end_time = prm.get_double("End time");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Study");
+      const std::string directory
+        = study_file.find('/') == std::string::npos
+            ? std::string(".")
+            : study_file.substr(0, study_file.find_last_of('/'));
+      bases.clear();
+      for (const std::string &item :
+           dealii::Utilities::split_string_list(prm.get("Bases"), ','))
+        {
+          const auto  colon = item.find(':');
+          Base        base;
+          std::string file;
+          if (colon != std::string::npos)
+            {
+              base.name = trim(item.substr(0, colon));
+              file      = trim(item.substr(colon + 1));
+            }
+          const bool good_name
+            = !base.name.empty()
+              && std::all_of(base.name.begin(), base.name.end(), [](char c) {
+                   return std::isalnum(static_cast<unsigned char>(c))
+                          || c == '-' || c == '_';
+                 });
+          if (!good_name || file.empty())
+            throw InputError("'Study/Bases': '" + item
+                             + "' is not of the form 'name: file' (a name "
+                               "of letters, digits, '-' and '_', then the "
+                               "path of an mca parameter file), e.g. "
+                               "'steel: ../mca/friction_steel.prm'.");
+          for (const Base &other : bases)
+            if (other.name == base.name)
+              throw InputError("'Study/Bases': the name '" + base.name
+                               + "' is given twice. Name each base once.");
+          base.file = file[0] == '/' ? file : join_path(directory, file);
+          if (!file_exists(base.file))
+            throw InputError("'Study/Bases': the file of base '" + base.name
+                             + "', '" + base.file
+                             + "', does not exist or is not readable "
+                               "(relative paths are relative to the "
+                               "directory of the study's parameter file, '"
+                             + directory + "').");
+          bases.push_back(base);
+        }
+      if (bases.empty())
+        throw InputError("'Study/Bases' is empty: name at least one base "
+                         "scene, e.g. 'steel: ../mca/friction_steel.prm'.");
+      reference = trim(prm.get("Reference base"));
+      if (reference.empty())
+        reference = bases.front().name;
+      if (std::none_of(bases.begin(), bases.end(), [&](const Base &b) {
+            return b.name == reference;
+          }))
+        throw InputError("'Study/Reference base' = '" + reference
+                         + "' is not one of the bases named in "
+                           "'Study/Bases'. Give one of their names, or "
+                           "leave it empty for the first.");
+
+      roughness_seeds
+        = seed_list(prm.get("Roughness seeds"), "Study/Roughness seeds");
+      if (roughness_seeds.empty())
+        throw InputError("'Study/Roughness seeds' is empty: give at least "
+                         "one seed, e.g. '1, 2, 3, 4'.");
+      if (std::set<unsigned int>(roughness_seeds.begin(), roughness_seeds.end())
+            .size()
+          != roughness_seeds.size())
+        throw InputError("'Study/Roughness seeds' names a seed twice: each "
+                         "seed is one pairing of the bases; list it once.");
+      inclusion_seeds
+        = seed_list(prm.get("Inclusion seeds"), "Study/Inclusion seeds");
+      if (inclusion_seeds.empty())
+        inclusion_seeds = roughness_seeds;
+      if (inclusion_seeds.size() != roughness_seeds.size())
+        throw InputError("'Study/Inclusion seeds' has "
+                         + std::to_string(inclusion_seeds.size())
+                         + " seeds, 'Study/Roughness seeds' "
+                         + std::to_string(roughness_seeds.size())
+                         + ": give one inclusion seed per roughness seed, or "
+                           "none (then each equals its roughness seed).");
+
+      factors.clear();
+      for (const auto &[path, values] :
+           path_assignments(prm.get("Factors"), "Study/Factors"))
+        {
+          if (path == McaStudyParameters::roughness_seed_path
+              || path == McaStudyParameters::inclusion_seed_path)
+            throw InputError("'Study/Factors' varies '" + path
+                             + "': the seeds are set by 'Study/Roughness "
+                               "seeds' and 'Study/Inclusion seeds' (paired "
+                               "across the bases). Use those.");
+          if (path == McaStudyParameters::end_time_path)
+            throw InputError("'Study/Factors' varies '" + path
+                             + "': a study has one end time, 'Time/End "
+                               "time'.");
+          Factor f;
+          f.path   = path;
+          f.values = dealii::Utilities::split_string_list(values, ',');
+          for (const Factor &other : factors)
+            if (other.path == f.path)
+              throw InputError("'Study/Factors' names '" + path
+                               + "' twice. List all its values once.");
+          factors.push_back(f);
+        }
+      settings = path_assignments(prm.get("Settings"), "Study/Settings");
+      checkpoint_interval = prm.get_double("Checkpoint interval");
+      ranks_per_scene     = prm.get_integer("Ranks per scene");
+      plot_script         = prm.get("Plot script");
+      prm.leave_subsection();
+    }
+  } // namespace study
+} // namespace tribodyn
