@@ -39,7 +39,7 @@ namespace tribodyn
         if (!std::isfinite(value))
           return "";
         std::ostringstream s;
-        s << std::setprecision(15) << value;
+        s << std::setprecision(17) << value; // reads back exactly
         return s.str();
       }
 

@@ -266,6 +266,13 @@ namespace tribodyn
           Factor f;
           f.path   = path;
           f.values = dealii::Utilities::split_string_list(values, ',');
+          if (std::set<std::string>(f.values.begin(), f.values.end()).size()
+                != f.values.size()
+              || std::count(f.values.begin(), f.values.end(), "") > 0)
+            throw InputError("'Study/Factors': the values of '" + path
+                             + "' must be distinct and not empty (each is "
+                               "one scene per base and seed); got '"
+                             + values + "'.");
           for (const Factor &other : factors)
             if (other.path == f.path)
               throw InputError("'Study/Factors' names '" + path

@@ -57,9 +57,11 @@ with tempfile.TemporaryDirectory() as work:
            "one seed: exit code %d, seeds.png written, no mean printed"
            % run.returncode)
     run = subprocess.run([script, "--help"], capture_output=True, text=True)
-    report(run.returncode == 0 and "seeds.csv" in run.stdout
-           and "relative_difference" in run.stdout,
-           "--help exits with 0 and describes seeds.csv (exit code %d)"
+    report(run.returncode == 0 and "seeds_COMPARE.csv" in run.stdout
+           and "relative_difference" in run.stdout
+           and "--reference" in run.stdout,
+           "--help exits with 0 and describes the study's seeds_COMPARE.csv "
+           "and its options (exit code %d)"
            % run.returncode)
     empty = os.path.join(work, "empty.csv")
     with open(empty, "w") as f:

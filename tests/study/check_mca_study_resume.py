@@ -14,7 +14,7 @@ FINISHED_DIR is the uninterrupted study (mca_study_app, 1 rank). Here:
    other two run; exit code 0;
 3. study.csv equals the uninterrupted study's: the labels exactly, every
    number to 1e-9 relative (the resumed scene continues bit for bit; the
-   CSV files carry 15 significant digits);
+   CSV files carry 17 significant digits);
 4. a third start reuses all four scenes and runs none;
 5. the legs of the interrupted scene (scenes/NAME.legs.csv): two, the
    first 'interrupted', the second 'resume' ... 'finished'.
