@@ -10,6 +10,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/version.h>
@@ -90,9 +91,9 @@ namespace tribodyn
           {
             return r;
           }
-        r.found              = true;
-        r.has_mu = j.contains("mu_steady") && j["mu_steady"].is_number();
-        r.mu_steady          = number_or_nan(j, "mu_steady");
+        r.found     = true;
+        r.has_mu    = j.contains("mu_steady") && j["mu_steady"].is_number();
+        r.mu_steady = number_or_nan(j, "mu_steady");
         r.mu_steady_stderr   = number_or_nan(j, "mu_steady_stderr");
         r.steady_found       = j.value("steady_state_found", false);
         r.steady_start_time  = number_or_nan(j, "steady_start_time");
@@ -308,10 +309,14 @@ namespace tribodyn
                                   const unsigned int seed_index,
                                   const unsigned int level) const
     {
-      // the order of McaStudyProblem's constructor: levels, seeds, bases
-      return (level * parameters.roughness_seeds.size() + seed_index)
-               * parameters.bases.size()
-             + base;
+      // by the scenes' own fields, not by the order they were made in
+      for (unsigned int i = 0; i < scenes.size(); ++i)
+        if (scenes[i].base == base && scenes[i].seed_index == seed_index
+            && scenes[i].level_index == level)
+          return i;
+      throw std::logic_error(
+        "McaStudyAnalysis: no scene of base " + std::to_string(base) + ", seed "
+        + std::to_string(seed_index) + ", level " + std::to_string(level));
     }
 
 
@@ -565,9 +570,8 @@ namespace tribodyn
         out << " (" << n_found - n_mu
             << " without a friction coefficient: they end before their "
                "bodies slide; raise 'Time/End time')";
-      out << ", " << fixed(core_hours, 3)
-          << " core-hours in all; tables in " << directory
-          << " (study.csv, study.md, scenes.csv)" << std::endl;
+      out << ", " << fixed(core_hours, 3) << " core-hours in all; tables in "
+          << directory << " (study.csv, study.md, scenes.csv)" << std::endl;
     }
   } // namespace study
 } // namespace tribodyn

@@ -53,7 +53,7 @@ namespace tribodyn
       bool found = false; ///< a finished run was read (its summary.json)
       /// It has a steady friction coefficient (a scene that ends before
       /// its bodies touch has none).
-      bool has_mu = false;
+      bool         has_mu             = false;
       double       mu_steady          = 0;
       double       mu_steady_stderr   = 0;
       bool         steady_found       = false;
@@ -119,7 +119,8 @@ namespace tribodyn
       }
 
     private:
-      /// The scene of @p base on seed @p seed_index at level @p level.
+      /// The scene of @p base on seed @p seed_index at level @p level (by
+      /// the scenes' fields).
       unsigned int
       scene_index(const unsigned int base,
                   const unsigned int seed_index,
