@@ -6,6 +6,7 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/patterns.h>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <tribodyn/core/errors.h>
@@ -131,8 +132,13 @@ namespace tribodyn
           "bodies are on both sides (a band may end at a body's top or "
           "bottom face with any size). Automata "
           "near a change of size take their volumes and contact areas from "
-          "their Voronoi cells (doc/theory/mca.md section 9). Plan a graded "
-          "scene with tribodyn --partition-report N FILE.prm.");
+          "their Voronoi cells (doc/theory/mca.md section 9). Or "
+          "'interface N', the layout of a friction scene: d within N cells "
+          "(a = d sqrt 2) of the rough interface's mean height and in the "
+          "4 cells at the bodies' bottom and top (the loading layers), 2d "
+          "in 4-cell transitions, 4d elsewhere (the log prints the bands). "
+          "Plan a graded scene with tribodyn --partition-report N "
+          "FILE.prm.");
         prm.declare_entry(
           "Size at free faces",
           "fine",
@@ -262,10 +268,38 @@ namespace tribodyn
                         "Geometry/Bodies",
                         "give at least one body.");
 
+        prm.enter_subsection("Rough interface");
+        {
+          rough_interface      = prm.get_bool("Enabled");
+          interface_height     = prm.get_double("Height");
+          roughness_amplitude  = prm.get_double("Amplitude");
+          roughness_wavelength = prm.get_double("Wavelength");
+          roughness_seed       = prm.get_integer("Seed");
+          interface_gap        = prm.get_double("Gap");
+          check_parameter_range("Geometry/Rough interface/Amplitude",
+                                roughness_amplitude,
+                                0,
+                                inf,
+                                false,
+                                true);
+          // (the fuzzer found a wavelength 1000 x below the automaton
+          // size hanging the set-up: a surface finer than the lattice
+          // cannot be represented)
+          check_parameter_range("Geometry/Rough interface/Wavelength",
+                                roughness_wavelength,
+                                rough_interface ? 2 * automaton_size : 0.,
+                                inf,
+                                !rough_interface,
+                                true);
+          check_parameter_range(
+            "Geometry/Rough interface/Gap", interface_gap, 0, inf, false, true);
+        }
+        prm.leave_subsection();
         fine_free_faces
           = get_selection(prm, "Size at free faces", free_face_table);
         size_bands.clear();
-        for (const std::string &entry : split(prm.get("Size bands"), ';'))
+        for (const std::string &entry :
+             split(bands_around_interface(prm.get("Size bands")), ';'))
           {
             const auto        t = tokens(entry);
             const std::string p = "Geometry/Size bands";
@@ -406,33 +440,6 @@ namespace tribodyn
             regions.push_back(r);
           }
 
-        prm.enter_subsection("Rough interface");
-        {
-          rough_interface      = prm.get_bool("Enabled");
-          interface_height     = prm.get_double("Height");
-          roughness_amplitude  = prm.get_double("Amplitude");
-          roughness_wavelength = prm.get_double("Wavelength");
-          roughness_seed       = prm.get_integer("Seed");
-          interface_gap        = prm.get_double("Gap");
-          check_parameter_range("Geometry/Rough interface/Amplitude",
-                                roughness_amplitude,
-                                0,
-                                inf,
-                                false,
-                                true);
-          // (the fuzzer found a wavelength 1000 x below the automaton
-          // size hanging the set-up: a surface finer than the lattice
-          // cannot be represented)
-          check_parameter_range("Geometry/Rough interface/Wavelength",
-                                roughness_wavelength,
-                                rough_interface ? 2 * automaton_size : 0.,
-                                inf,
-                                !rough_interface,
-                                true);
-          check_parameter_range(
-            "Geometry/Rough interface/Gap", interface_gap, 0, inf, false, true);
-        }
-        prm.leave_subsection();
         parse_inclusion_parameters(prm, material_names, inclusions);
       }
       prm.leave_subsection();
@@ -521,6 +528,71 @@ namespace tribodyn
             return static_cast<int>(m);
         }
       return -1;
+    }
+
+
+    std::string
+    GeometryParameters::bands_around_interface(const std::string &text) const
+    {
+      const auto t = tokens(text);
+      if (t.empty() || t[0] != "interface")
+        return text;
+      const std::string p = "Geometry/Size bands";
+      check_parameter(t.size() == 2,
+                      p,
+                      "'" + text
+                        + "' must read 'interface N' (N cells of fine "
+                          "automata on each side of the rough interface) or "
+                          "list the bands as 'z0 z1 k; ...'.");
+      const double n = to_double(t[1], p, text);
+      check_parameter(n >= 1 && n == std::round(n) && n < 1e6,
+                      p,
+                      "in '" + text
+                        + "' N must be a whole number of cells (a = d "
+                          "sqrt 2) >= 1.");
+      check_parameter(rough_interface,
+                      p,
+                      "'" + text
+                        + "' grades the bodies around the rough interface: "
+                          "enable Geometry/Rough interface, or give the "
+                          "bands as 'z0 z1 k; ...'.");
+      // Heights in cells of the fine lattice from the bodies' bottom, as
+      // the graded friction scenes were laid out by hand: the fine outer 4
+      // cells (loading layers), 4-cell transitions of 2d, 4d between.
+      const double a      = automaton_size * std::sqrt(2.);
+      double       bottom = domain_upper[2], top = domain_lower[2];
+      for (const Body &b : bodies)
+        {
+          bottom = std::min(bottom, b.lower[2]);
+          top    = std::max(top, b.upper[2]);
+        }
+      const long cells  = std::lround(std::floor((top - bottom) / a + 1e-6));
+      const long centre = std::lround((interface_height - bottom) / a);
+      const long N      = std::lround(n);
+      const long below  = centre - N - 16; // cells left for the 4d band
+      const long above  = cells - centre - N - 16;
+      check_parameter(
+        below > 0 && above > 0,
+        p,
+        "'" + text + "': the bodies are " + std::to_string(centre)
+          + " cells (a = d sqrt 2) below and " + std::to_string(cells - centre)
+          + " above the rough interface; 'interface N' needs more than N + 16 "
+            "on "
+            "each side (N fine, 4 of 2d, some 4d, 4 of 2d, 4 fine). Lower N, "
+            "make the bodies taller or give the bands as 'z0 z1 k; ...'.");
+      const std::array<std::array<long, 3>, 6> bands
+        = {{{{4, 8, 1}},
+            {{8, centre - N - 4, 2}},
+            {{centre - N - 4, centre - N, 1}},
+            {{centre + N, centre + N + 4, 1}},
+            {{centre + N + 4, cells - 8, 2}},
+            {{cells - 8, cells - 4, 1}}}};
+      std::ostringstream out;
+      out << std::setprecision(17);
+      for (const auto &band : bands)
+        out << (out.tellp() > 0 ? "; " : "") << bottom + band[0] * a << ' '
+            << bottom + band[1] * a << ' ' << band[2];
+      return out.str();
     }
 
 

@@ -21,6 +21,14 @@ namespace tribodyn
                    const Parameters           &p,
                    dealii::ConditionalOStream &out)
       {
+        if (!p.geometry.size_bands.empty())
+          {
+            out << "Size bands (Geometry/Size bands):";
+            for (const auto &band : p.geometry.size_bands)
+              out << " [" << band.z_lower << ", " << band.z_upper << ") m "
+                  << (1u << band.level) << "d;";
+            out << " d elsewhere" << std::endl;
+          }
         if (p.loading.enabled)
           out << "Friction loading: separation " << p.geometry.interface_gap
               << " m, shift " << p.geometry.interface_shift_y

@@ -1,0 +1,52 @@
+"""Geometry/Size bands = 'interface N' (issue #47 item 2, the narrowed fine
+band): the layout of the graded friction scenes generated from the bodies
+and the rough interface. Checked by counting: the seed-heights scene is 16 x
+16 periodic FCC cells of a = d sqrt 2 across and 404 cells tall (the
+interface at 202); a cell layer of height a holds 1024 automata of d, 128
+of 2d (8 times fewer) or 16 of 4d (64 times fewer). 'interface N' puts d in
+2N cells at the interface and the 2 x 4 outer cells, 2d in four 4-cell
+transitions and 4d in the rest, so --partition-report must print exactly
+(8 + 2N) 1024 of d, 2048 of 2d and (404 - 8 - 2N - 16) 16 of 4d. For N = 23
+the generated bands are the ones written out by hand in
+prm/mca/friction_seed_heights_steel.prm: the same counts (a shifted or
+misplaced band changes them by whole cell layers: 1024 automata).
+Arguments: the tribodyn binary, the prm/mca folder, a scratch directory."""
+import os
+import re
+import subprocess
+import sys
+
+from check_tools import finish, report
+
+tribodyn, folder, scratch = sys.argv[1], sys.argv[2], sys.argv[3]
+os.makedirs(scratch, exist_ok=True)
+base = open(f"{folder}/friction_seed_heights_steel.prm").read()
+
+
+def counts(prm_text, name):
+    path = os.path.join(scratch, name)
+    with open(path, "w") as f:
+        f.write(prm_text)
+    p = subprocess.run([tribodyn, "--partition-report", "1", path],
+                       capture_output=True, text=True)
+    m = re.search(r"automata per size: (\d+) of d, (\d+) of 2d, (\d+) of 4d", p.stdout)
+    if p.returncode != 0 or not m:
+        print(p.stdout, p.stderr)
+        return None
+    return tuple(int(x) for x in m.groups())
+
+
+def with_bands(text):
+    return re.sub(r"(?m)^  set Size bands .*$", f"  set Size bands = {text}", base)
+
+
+by_hand = counts(base, "by_hand.prm")
+report(by_hand == counts(with_bands("interface 23"), "interface_23.prm"),
+       f"'interface 23' packs as the hand-written bands of the seed-heights "
+       f"scene: {by_hand}")
+for n in (1, 8, 12):
+    expected = ((8 + 2 * n) * 1024, 2048, (404 - 8 - 2 * n - 16) * 16)
+    got = counts(with_bands(f"interface {n}"), f"interface_{n}.prm")
+    report(got == expected, f"'interface {n}': {got} automata of d, 2d, 4d; "
+           f"counted from the layout {expected}")
+finish()
