@@ -1,0 +1,82 @@
+"""The shipped automata studies run (issue #49 item 2), cut short:
+prm/study/mca_laptop.prm and prm/study/mca_seed_heights.prm, each with an
+override block appended (as a user continues a prm: later entries win; the
+shipped text is not edited) for one roughness seed, 2e-11 s (the bodies
+are still approaching) and an output directory of the test's; the bases
+made absolute, as the study reads them relative to its own file.
+
+    check_shipped_mca_studies.py TRIBODYN PRM_STUDY_DIR SCRATCH
+
+Checked: the study runs (exit 0) and writes its tables, one scene per base
+with its factors named in summary.json; each scene holds the automata its
+prm documents (the laptop scene: 16 x 16 x 12 FCC cells = 12 288; the seed
+heights with the fine band at 8 cells: 32 448, the count
+mca_size_bands_interface derives from the layout), and the seed-heights
+scenes really run the study's setting (their parameters.prm reads
+'interface 8')."""
+import csv
+import json
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "mca"))
+from check_tools import finish, report  # noqa: E402
+
+tribodyn, folder, scratch = sys.argv[1], os.path.abspath(sys.argv[2]), sys.argv[3]
+os.makedirs(scratch, exist_ok=True)
+AUTOMATA = {"mca_laptop": 12288, "mca_seed_heights": 32448}
+
+
+def bases(text):
+    """Study/Bases of a study prm: the entry with its continuation lines."""
+    joined = text.replace("\\\n", " ")
+    for line in joined.splitlines():
+        words = line.split("#", 1)[0].strip()
+        if words.startswith("set Bases") and "=" in words:
+            return [b.split(":", 1) for b in words.split("=", 1)[1].split(",")]
+    return []
+
+
+for name, n_automata in AUTOMATA.items():
+    shipped = os.path.join(folder, name + ".prm")
+    text = open(shipped).read()
+    out = os.path.join(scratch, name)
+    absolute = ", ".join(f"{b.strip()}: {os.path.join(folder, f.strip())}"
+                         for b, f in bases(text))
+    wrapper = os.path.join(scratch, name + ".prm")
+    with open(wrapper, "w") as f:
+        f.write(text + f"""
+# --- appended by the test: one seed, cut short ---
+set Output directory = {out}
+subsection Time
+  set End time = 2e-11
+end
+subsection Study
+  set Bases           = {absolute}
+  set Roughness seeds = 1
+end
+""")
+    run = subprocess.run([tribodyn, wrapper], capture_output=True, text=True)
+    print(run.stdout[-1500:], run.stderr[-1500:])
+    report(run.returncode == 0, f"{name}: the study ran (exit {run.returncode})")
+    if run.returncode != 0:
+        continue
+    with open(os.path.join(out, "scenes.csv")) as f:
+        scenes = list(csv.DictReader(f))
+    report(len(scenes) == 2 and os.path.exists(os.path.join(out, "study.csv")),
+           f"{name}: scenes.csv with the 2 bases' scenes, study.csv written")
+    for base in ("steel", "composite"):
+        scene = os.path.join(out, "scenes", f"{base}_seed1")
+        with open(os.path.join(scene, "summary.json")) as f:
+            summary = json.load(f)
+        tag = summary.get("study_scene", {})
+        report(tag.get("base") == base and summary.get("n_automata") == n_automata,
+               f"{name} {base}: {summary.get('n_automata')} automata "
+               f"(documented {n_automata}), scene tagged {tag}")
+        if name == "mca_seed_heights":
+            prm = open(os.path.join(scene, "parameters.prm")).read()
+            report("= interface 8" in prm,
+                   f"{name} {base}: the study's Size bands setting reached the scene")
+finish()
