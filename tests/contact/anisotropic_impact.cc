@@ -3,7 +3,8 @@
 // plane-strain stiffness is diag(E_L, E_T, G_LT) and the column is exactly
 // one-dimensional along y: the wave speed is c_T = sqrt(E_T / rho), the
 // contact force rho c_T v0 W, the contact duration 2 H / c_T (as in
-// contact_bar_impact, same tolerances: force 1 %, duration 2 %).
+// contact_bar_impact, same tolerances: force 5e-5, measured 6e-6 and
+// 8e-6; duration 2 %, measured 0.8 %).
 // Runs: (E_L, E_T) = (20, 60) GPa and the swap (60, 20) GPa through
 // 'engineering constants', and (20, 60) through 'anisotropic' (the 3 x 3
 // stiffness given directly). The durations of the swapped pins differ by
@@ -79,7 +80,7 @@ main(int argc, char **argv)
       check_relative(r.first, 2 * H / cT, 0.02, c.name + ": duration 2H/c_T");
       check_relative(r.second,
                      rho * cT * v0 * W,
-                     0.01,
+                     5e-5,
                      c.name + ": contact force rho c_T v0 W");
       check(std::abs(r.first / (2 * H / cO) - 1) > 0.2,
             c.name + ": far (> 20 %) from the swapped material's duration");

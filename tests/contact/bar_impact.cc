@@ -3,7 +3,11 @@
 // (no lateral coupling), so the 1D impact solution is the reference:
 // contact force rho c v0 W on the plateau (c = sqrt(E/rho)), contact
 // duration 2 L / c, rebound velocity v0 (elastic impact).
-// Tolerances: plateau force 1 %, duration 2 %, rebound velocity 2 %,
+// Tolerances: plateau force 5e-5 (measured 7.6e-6: the mean over the
+// plateau's samples; a density or modulus 0.1 % off moves rho c by 5e-4 and
+// fails it), duration 2 % (measured 0.87 %: 3.4 steps of 10 ns longer
+// than 2 L / c), rebound velocity 2 %
+// (measured 1.5 %: the column still vibrates after the release),
 // energy balance 1e-10 (exact for the scheme), energy lost to the
 // forward-increment contact < 3 % of the impact energy.
 
@@ -35,7 +39,7 @@ main(int argc, char **argv)
   const double plateau = impact.plateau_force, last_contact = impact.duration;
   check_relative(plateau,
                  force,
-                 0.01,
+                 5e-5,
                  "plateau contact force rho c v0 W (N/m)");
   check_relative(last_contact, duration, 0.02, "contact duration 2L/c (s)");
   const Sample &end = samples.back();

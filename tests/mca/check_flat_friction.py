@@ -61,10 +61,17 @@ law at mu0 (mu_macro 0.3847) misses the slowest and fastest by 0.019 and
    (2026-11-27, pair-level energy): -0.001 % (mu = 0.3), -0.029 % (Dieterich
    at +-1 m/s, where mu follows the automata's vibrations from step to step;
    +2.3 % before the friction work was taken from the energy the Coulomb
-   limit releases). ENERGY_TOLERANCE = 0.3 %: ten times the largest
-   measured residual; a dropped term fails it (many-body work 3 %, switching
-   work 0.03 % of the load work at +-1 m/s), and so does the bookkeeping
-   error fixed on 2026-11-22 (the kick's dt^2 f^2 / 8m on kinematically
+   limit releases). The tolerance is the scene's own (ENERGY_TOLERANCE,
+   issue #49: within 10x of its measured residual and below the smallest
+   term it must catch; measured 2026-11-29, residual / smallest term, both
+   of the load work): mu = 0.3 5e-5 (9.7e-6 / switching 1.4e-4);
+   frictionless 4e-4 (9.1e-5 / switching 8.3e-4); Dieterich at 2 and 4 m/s
+   5e-5 and 8e-5 (9.9e-6 and 2.3e-5 / switching 1.3e-4 and 1.05e-4). At
+   1 m/s the residual (2.9e-4) is as large as the switching work (2.8e-4):
+   1e-3 there catches a dropped kinetic (1.2 %) or many-body (3.3 %) term,
+   not the switching one. Dropping any term fails the other scenes (shown:
+   mu = 0.3 without its switching work, -1.3e-4), and so does the
+   bookkeeping error fixed on 2026-11-22 (the kick's dt^2 f^2 / 8m on kinematically
    held components counted as pair instead of load work: 65 % of the load
    work at mu = 0, 18 % at mu = 0.3).
 """
@@ -79,7 +86,13 @@ from check_tools import (energy_stored, energy_terms, finish,
 
 TOLERANCE = 0.01
 RISE_TOLERANCE = 0.02
-ENERGY_TOLERANCE = 0.003
+ENERGY_TOLERANCES = {"mca_flat_friction": 5e-5,
+                     "mca_flat_friction_frictionless": 4e-4,
+                     "mca_flat_friction_dieterich_1": 1e-3,
+                     "mca_flat_friction_dieterich_2": 5e-5,
+                     "mca_flat_friction_dieterich_4": 8e-5}
+ENERGY_TOLERANCE = ENERGY_TOLERANCES.get(
+    os.path.basename(os.path.normpath(sys.argv[1])), 3e-3)
 START = 0.25  # relative sliding (in periods) at which the averaging starts
 
 out = output_directory(sys.argv[1])

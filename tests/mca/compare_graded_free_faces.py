@@ -12,7 +12,10 @@ lower and upper fifth, a skin of d at the free lateral faces):
  - tests/mca/uniaxial_wide_{uniform,graded}.prm (10 x 10 x 20 cells, 8000
    against 5976 automata, 256 of 2d): E +0.27 %, nu +0.39 %,
    sigma_y -0.14 %.
-The issue's tolerances: E and nu within 1 %, sigma_y within 2 %.
+Tolerances (issue #49: within 10x of what is measured; the issue #18 bar
+was E and nu within 1 %, sigma_y within 2 %): E and sigma_y within 1 % for
+both pairs (measured 0.27-0.29 % and 0.14-0.16 %); nu within 0.04 % for the
+5 x 5 x 10 block (measured 0.004 %) and 1 % for the wide one (0.39 %).
 Arguments: the output folders of the app tests, uniform then graded, for
 each pair."""
 import json
@@ -31,6 +34,7 @@ for uniform_root, graded_root in zip(sys.argv[1::2], sys.argv[2::2]):
     report(len(sizes) > 1 and sizes[1] > 0 and sum(sizes) == g.get("n_automata"),
            f"{os.path.basename(graded_root)}: automata per size {sizes}, "
            f"uniform {u.get('n_automata')}")
-    report_relative(g, u, (("youngs_modulus", 0.01), ("poisson_ratio", 0.01),
-                           ("yield_stress", 0.02)), indent="  ")
+    nu_tolerance = 4e-4 if "wide" not in os.path.basename(graded_root) else 0.01
+    report_relative(g, u, (("youngs_modulus", 0.01), ("poisson_ratio", nu_tolerance),
+                           ("yield_stress", 0.01)), indent="  ")
 finish()
