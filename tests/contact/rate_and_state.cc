@@ -31,8 +31,10 @@
 //     k_c = sigma (b - a)/D_c (quasi-static: the inertia term M V^2/(sigma
 //     a D_c) is about 0.01 here). Velocity weakening (a = 0.05, b = 0.1),
 //     sigma = 50 MPa, V = 0.1 m/s, G/H = 6.25e12 Pa/m: with D_c = 1.6 um (k
-//     = 4 k_c) the sliding settles (over 300-500 us mu varies by < 1 %, at
-//     mu_ss(V), and point M slips at V within 1 %; measured 1e-4 and 3e-4);
+//     = 4 k_c) the sliding settles (over 300-500 us mu varies by < 1e-3, its
+//     mean is mu_ss(V) within 3e-6, and point M slips at V within 2e-3;
+//     measured 1.3e-4, 3.1e-7 and 2.7e-4: tolerances within 10x; a
+//     reference friction coefficient 1e-5 off fails it);
 //     with D_c = 0.1 um (k = k_c/4) it stick-slips: M's slip rate swings
 //     below 0.1 V and above 3 V (measured 7e-4 V to 22 V; the nodes creep
 //     rather than stick, as rate and state does) and mu by > 10 %. The
@@ -250,10 +252,13 @@ main(int argc, char **argv)
                                  + std::to_string(hi) + ", slip rate of M from "
                                  + std::to_string(slow) + " to "
                                  + std::to_string(fast) + " V";
+        const double deviation
+          = std::abs(mean - mu0 - (a - b) * std::log(V / V0));
         if (k_ratio > 1)
-          check((hi - lo) / mean < 0.01 && fast - slow < 0.01
-                  && std::abs(mean - mu0 - (a - b) * std::log(V / V0)) < 0.01,
-                "steady sliding above k_c (" + what + ")");
+          check((hi - lo) / mean < 1e-3 && fast - slow < 2e-3
+                  && deviation < 3e-6,
+                "steady sliding above k_c (" + what + "; mean - mu_ss(V) = "
+                  + format_number(deviation) + ")");
         else
           check((hi - lo) / mean > 0.1 && slow < 0.1 && fast > 3,
                 "stick-slip below k_c (" + what + ")");
