@@ -13,9 +13,12 @@ unstressed):
    the error of the time integration. Measured (2026-11-27):
    tests/mca/friction_energy.prm -0.0014 %, with K_ij -0.0012 % (before the
    pair-level bookkeeping -2.35 to -3 %: the homogenized energy missed what
-   the contacts hold). Tolerance 0.1 %: a missing or double-counted term
-   (friction work 33 %, damped energy 55 %, switching work 0.08-0.3 %,
-   many-body work 0.05-0.4 % of the load work here) fails it; scenes with
+   the contacts hold; 2026-11-29: 1.4e-5 and 1.2e-5 of the load work).
+   Tolerance 1e-4 (issue #49: within 10x of the residual, below the
+   smallest term): a missing or double-counted term (friction work 33 %,
+   damped energy 55 %, switching work 0.05-0.3 %, many-body work 0.08-0.4 %
+   of the load work here) fails it (shown: the switching work dropped from
+   mca_friction_energy's summary, residual +4.7e-4); scenes with
    bond breaking (parameter Bond breaking on) have tolerance 0.5 %: their
    plastic returns and releases are exact only to the step's first order
    (measured -0.06 / -0.10 / -0.13 % at Courant 0.1 / 0.2 / 0.4 on
@@ -32,7 +35,7 @@ from check_tools import (energy_stored, energy_terms, finish,
                          output_directory, parameter, report)
 
 out = output_directory(sys.argv[1])
-TOLERANCE = 0.005 if parameter(out, "Bond breaking") == "true" else 0.001
+TOLERANCE = 0.005 if parameter(out, "Bond breaking") == "true" else 1e-4
 with open(os.path.join(out, "summary.json")) as f:
     s = json.load(f)
 W = s["load_work"]
