@@ -1,18 +1,37 @@
 # tribodyn must refuse PRM: exit code EXIT_CODE (2, a refusal, unless
 # given), EXPECTED on stderr, no crash dump, and (for refusals) nothing
-# touched: the output directory 'output/' of the working directory holds a
-# finished run's files before, which must be byte for byte the same after,
-# and no other file may appear. Called by tribodyn_add_failure_test().
+# touched: 'output/' of the working directory and the prm's own 'Output
+# directory' (its top-level entry, when relative) hold a finished run's
+# files before, which must be byte for byte the same after, and no other
+# file may appear. With LAUNCHER (e.g. 'mpirun -np 2') the refusal runs in
+# parallel. Called by tribodyn_add_failure_test().
 if(NOT DEFINED EXIT_CODE OR EXIT_CODE STREQUAL "")
   set(EXIT_CODE 2)
 endif()
 file(REMOVE_RECURSE ${OUTPUT_DIR})
-file(MAKE_DIRECTORY ${OUTPUT_DIR}/output)
 set(sentinel "{\"problem\": \"a finished run that a refusal must keep\"}\n")
-file(WRITE ${OUTPUT_DIR}/output/summary.json "${sentinel}")
-file(WRITE ${OUTPUT_DIR}/output/parameters.prm "# the finished run's\n")
+set(kept output)
+set(own "")
+if(EXISTS ${PRM})
+  file(STRINGS ${PRM} own REGEX "^set +Output directory *=")
+endif()
+if(own)
+  list(GET own -1 own)
+  string(REGEX REPLACE "^set +Output directory *= *" "" own "${own}")
+  string(STRIP "${own}" own)
+  if(NOT own STREQUAL "" AND NOT IS_ABSOLUTE "${own}" AND NOT own MATCHES "\\.\\.")
+    list(APPEND kept ${own})
+  endif()
+endif()
+list(REMOVE_DUPLICATES kept)
+foreach(dir ${kept})
+  file(MAKE_DIRECTORY ${OUTPUT_DIR}/${dir})
+  file(WRITE ${OUTPUT_DIR}/${dir}/summary.json "${sentinel}")
+  file(WRITE ${OUTPUT_DIR}/${dir}/parameters.prm "# the finished run's\n")
+endforeach()
 file(GLOB_RECURSE files_before RELATIVE ${OUTPUT_DIR} ${OUTPUT_DIR}/*)
-execute_process(COMMAND ${TRIBODYN} ${PRM}
+separate_arguments(LAUNCHER)
+execute_process(COMMAND ${LAUNCHER} ${TRIBODYN} ${PRM}
                 WORKING_DIRECTORY ${OUTPUT_DIR}
                 RESULT_VARIABLE run_result
                 OUTPUT_VARIABLE run_stdout
@@ -43,12 +62,14 @@ if(EXIT_CODE EQUAL 2)
     message(FATAL_ERROR "the refusal touched the outputs: files before "
                         "'${files_before}', after '${files_after}'")
   endif()
-  file(READ ${OUTPUT_DIR}/output/summary.json after)
-  if(NOT after STREQUAL sentinel)
-    message(FATAL_ERROR "the refusal changed output/summary.json")
-  endif()
-  file(READ ${OUTPUT_DIR}/output/parameters.prm after)
-  if(NOT after STREQUAL "# the finished run's\n")
-    message(FATAL_ERROR "the refusal changed output/parameters.prm")
-  endif()
+  foreach(dir ${kept})
+    file(READ ${OUTPUT_DIR}/${dir}/summary.json after)
+    if(NOT after STREQUAL sentinel)
+      message(FATAL_ERROR "the refusal changed ${dir}/summary.json")
+    endif()
+    file(READ ${OUTPUT_DIR}/${dir}/parameters.prm after)
+    if(NOT after STREQUAL "# the finished run's\n")
+      message(FATAL_ERROR "the refusal changed ${dir}/parameters.prm")
+    endif()
+  endforeach()
 endif()
