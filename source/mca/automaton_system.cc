@@ -234,20 +234,24 @@ namespace tribodyn
           groups[k] = mask;
         }
       n_owned = n_local = n;
-      // Contacting parts and their inclusion automata (achieved fraction).
-      unsigned long long counts[2] = {0, 0};
+      // Contacting parts and their inclusion automata (achieved fraction):
+      // counts, and volumes in automata of d (an automaton of 2^L d
+      // stands for 8^L of them).
+      unsigned long long counts[4] = {0, 0, 0, 0};
       for (const auto &a : packed)
         if (a.part > 0)
           {
-            ++counts[0];
+            const unsigned long long volume = 1ull << (3 * a.level);
+            counts[0] += 1;
             counts[1] += a.part == 2;
+            counts[2] += volume;
+            counts[3] += a.part == 2 ? volume : 0;
           }
       dealii::Utilities::MPI::sum(
-        dealii::ArrayView<const unsigned long long>(counts, 2),
+        dealii::ArrayView<const unsigned long long>(counts, 4),
         comm,
-        dealii::ArrayView<unsigned long long>(counts, 2));
-      n_part_automata   = counts[0];
-      n_part_inclusions = counts[1];
+        dealii::ArrayView<unsigned long long>(counts, 4));
+      part_counts = {counts[0], counts[1], counts[2], counts[3]};
     }
 
 

@@ -133,10 +133,12 @@ namespace tribodyn
           "bottom face with any size). Automata "
           "near a change of size take their volumes and contact areas from "
           "their Voronoi cells (doc/theory/mca.md section 9). Or "
-          "'interface N', the layout of a friction scene: d within N cells "
+          "'interface N M', the layout of a friction scene: d within N cells "
           "(a = d sqrt 2) of the rough interface's mean height and in the "
           "4 cells at the bodies' bottom and top (the loading layers), 2d "
-          "in 4-cell transitions, 4d elsewhere (the log prints the bands). "
+          "in the next M cells from the interface (M >= 4; 'interface N' "
+          "is M = 4) and in 4-cell transitions next to the loading layers, "
+          "4d elsewhere (the log prints the bands). "
           "Plan a graded scene with tribodyn --partition-report N "
           "FILE.prm.");
         prm.declare_entry(
@@ -538,18 +540,25 @@ namespace tribodyn
       if (t.empty() || t[0] != "interface")
         return text;
       const std::string p = "Geometry/Size bands";
-      check_parameter(t.size() == 2,
+      check_parameter(t.size() == 2 || t.size() == 3,
                       p,
                       "'" + text
-                        + "' must read 'interface N' (N cells of fine "
-                          "automata on each side of the rough interface) or "
-                          "list the bands as 'z0 z1 k; ...'.");
-      const double n = to_double(t[1], p, text);
-      check_parameter(n >= 1 && n == std::round(n) && n < 1e6,
-                      p,
-                      "in '" + text
-                        + "' N must be a whole number of cells (a = d "
-                          "sqrt 2) >= 1.");
+                        + "' must read 'interface N' or 'interface N M' (N "
+                          "cells of fine automata on each side of the rough "
+                          "interface, then M of 2d) or list the bands as "
+                          "'z0 z1 k; ...'.");
+      const auto whole = [&](const std::string &word, const double lowest) {
+        const double n = to_double(word, p, text);
+        check_parameter(n >= lowest && n == std::round(n) && n < 1e6,
+                        p,
+                        "in '" + text
+                          + "' N and M must be whole numbers of "
+                            "cells (a = d sqrt 2), N >= 1, "
+                            "M >= 4.");
+        return std::lround(n);
+      };
+      const long N = whole(t[1], 1);
+      const long M = t.size() == 3 ? whole(t[2], 4) : 4;
       check_parameter(rough_interface,
                       p,
                       "'" + text
@@ -558,7 +567,8 @@ namespace tribodyn
                           "bands as 'z0 z1 k; ...'.");
       // Heights in cells of the fine lattice from the bodies' bottom, as
       // the graded friction scenes were laid out by hand: the fine outer 4
-      // cells (loading layers), 4-cell transitions of 2d, 4d between.
+      // cells (loading layers), 4-cell transitions of 2d next to them, M
+      // cells of 2d next to the fine band, 4d between.
       const double a      = automaton_size * std::sqrt(2.);
       double       bottom = domain_upper[2], top = domain_lower[2];
       for (const Body &b : bodies)
@@ -568,24 +578,23 @@ namespace tribodyn
         }
       const long cells  = std::lround(std::floor((top - bottom) / a + 1e-6));
       const long centre = std::lround((interface_height - bottom) / a);
-      const long N      = std::lround(n);
-      const long below  = centre - N - 16; // cells left for the 4d band
-      const long above  = cells - centre - N - 16;
+      const long below  = centre - N - M - 12; // cells left for the 4d band
+      const long above  = cells - centre - N - M - 12;
       check_parameter(
         below > 0 && above > 0,
         p,
         "'" + text + "': the bodies are " + std::to_string(centre)
           + " cells (a = d sqrt 2) below and " + std::to_string(cells - centre)
-          + " above the rough interface; 'interface N' needs more than N + 16 "
-            "on "
-            "each side (N fine, 4 of 2d, some 4d, 4 of 2d, 4 fine). Lower N, "
-            "make the bodies taller or give the bands as 'z0 z1 k; ...'.");
+          + " above the rough interface; the layout needs more than N + M + "
+            "12 on each side (N fine, M of 2d, some 4d, 4 of 2d, 4 fine). "
+            "Lower N or M, make the bodies taller or give the bands as 'z0 "
+            "z1 k; ...'.");
       const std::array<std::array<long, 3>, 6> bands
         = {{{{4, 8, 1}},
-            {{8, centre - N - 4, 2}},
-            {{centre - N - 4, centre - N, 1}},
-            {{centre + N, centre + N + 4, 1}},
-            {{centre + N + 4, cells - 8, 2}},
+            {{8, centre - N - M, 2}},
+            {{centre - N - M, centre - N, 1}},
+            {{centre + N, centre + N + M, 1}},
+            {{centre + N + M, cells - 8, 2}},
             {{cells - 8, cells - 4, 1}}}};
       std::ostringstream out;
       out << std::setprecision(17);

@@ -47,10 +47,11 @@ namespace tribodyn
                   << " % of the "
                   << "part's box), " << part.set.n_voids << " voids ("
                   << 100 * part.set.void_volume_fraction << " %);";
-            out << " automata: " << counts.second << " of " << counts.first
-                << " in the contacting parts = "
-                << 100. * counts.second / std::max(1ull, counts.first) << " %"
-                << std::endl;
+            out << " automata: " << counts.inclusions << " of "
+                << counts.automata << " in the contacting parts, "
+                << 100. * counts.inclusion_volume
+                     / std::max(1ull, counts.volume)
+                << " % of their volume" << std::endl;
           }
       }
 
@@ -73,7 +74,7 @@ namespace tribodyn
           {
             const auto counts = system.contacting_part_counts();
             summary["inclusion_volume_fraction"]
-              = double(counts.second) / std::max(1ull, counts.first);
+              = double(counts.inclusion_volume) / std::max(1ull, counts.volume);
             double f = 0, fv = 0;
             for (const auto &part : layout->parts)
               {

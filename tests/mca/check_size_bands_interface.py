@@ -4,9 +4,10 @@ and the rough interface. Checked by counting: the seed-heights scene is 16 x
 16 periodic FCC cells of a = d sqrt 2 across and 404 cells tall (the
 interface at 202); a cell layer of height a holds 1024 automata of d, 128
 of 2d (8 times fewer) or 16 of 4d (64 times fewer). 'interface N' puts d in
-2N cells at the interface and the 2 x 4 outer cells, 2d in four 4-cell
-transitions and 4d in the rest, so --partition-report must print exactly
-(8 + 2N) 1024 of d, 2048 of 2d and (404 - 8 - 2N - 16) 16 of 4d. For N = 23
+2N cells at the interface and the 2 x 4 outer cells, 2d in M cells on each
+side of the fine band (4 if not given) and in two 4-cell transitions next to
+the outer cells, 4d in the rest, so --partition-report must print exactly
+(8 + 2N) 1024 of d, (2M + 8) 128 of 2d and (404 - 8 - 2N - 2M - 8) 16 of 4d. For N = 23
 the generated bands are the ones the seed-heights scene had written out by
 hand before (BY_HAND below): the same counts (a shifted or misplaced band
 changes them by whole cell layers: 1024 automata; shown failing with the
@@ -50,10 +51,12 @@ by_hand = counts(with_bands(BY_HAND), "by_hand.prm")
 report(by_hand == counts(with_bands("interface 23"), "interface_23.prm"),
        f"'interface 23' packs as the hand-written bands of the seed-heights "
        f"scene: {by_hand}")
-for n in (1, 8, 12):
-    expected = ((8 + 2 * n) * 1024, 2048, (404 - 8 - 2 * n - 16) * 16)
-    got = counts(with_bands(f"interface {n}"), f"interface_{n}.prm")
-    report(got == expected, f"'interface {n}': {got} automata of d, 2d, 4d; "
+for n, m in ((1, None), (8, None), (12, None), (8, 16), (3, 9)):
+    words = f"interface {n}" + (f" {m}" if m else "")
+    m = m or 4
+    expected = ((8 + 2 * n) * 1024, (2 * m + 8) * 128, (404 - 8 - 2 * n - 2 * m - 8) * 16)
+    got = counts(with_bands(words), words.replace(" ", "_") + ".prm")
+    report(got == expected, f"'{words}': {got} automata of d, 2d, 4d; "
            f"counted from the layout {expected}")
 for prm, n in (("friction_tall_graded.prm", 6), ("friction_tall_graded_far.prm", 8)):
     expected = ((8 + 2 * n) * 1024, 2048, (96 - 8 - 2 * n - 16) * 16)

@@ -10,10 +10,10 @@ made absolute, as the study reads them relative to its own file.
 Checked: the study runs (exit 0) and writes its tables, one scene per base
 with its factors named in summary.json; each scene holds the automata its
 prm documents (the laptop scene: 16 x 16 x 12 FCC cells = 12 288; the seed
-heights with the fine band at 8 cells: 32 448, the count
+heights with the fine band at 8 cells and 16 of 2d: 35 136, the count
 mca_size_bands_interface derives from the layout), and the seed-heights
 scenes really run the study's setting (their parameters.prm reads
-'interface 8')."""
+'interface 8 16')."""
 import csv
 import json
 import os
@@ -26,7 +26,7 @@ from check_tools import finish, report  # noqa: E402
 
 tribodyn, folder, scratch = sys.argv[1], os.path.abspath(sys.argv[2]), sys.argv[3]
 os.makedirs(scratch, exist_ok=True)
-AUTOMATA = {"mca_laptop": 12288, "mca_seed_heights": 32448}
+AUTOMATA = {"mca_laptop": 12288, "mca_seed_heights": 35136}
 
 
 def bases(text):
@@ -77,6 +77,6 @@ end
                f"(documented {n_automata}), scene tagged {tag}")
         if name == "mca_seed_heights":
             prm = open(os.path.join(scene, "parameters.prm")).read()
-            report("= interface 8" in prm,
+            report("= interface 8 16" in prm,
                    f"{name} {base}: the study's Size bands setting reached the scene")
 finish()

@@ -198,13 +198,20 @@ namespace tribodyn
       {
         return first_contact_time;
       }
-      /// Automata of the contacting parts (Geometry/Inclusions) and those
-      /// of them turned into the inclusion material, global, counted at
-      /// set-up (voids are removed: counted in neither).
-      std::pair<unsigned long long, unsigned long long>
+      /// The contacting parts (Geometry/Inclusions) at set-up, global:
+      /// their automata and those turned into the inclusion material, and
+      /// the same as volumes in automata of d (an automaton of 2^L d counts
+      /// 8^L: in a graded part the inclusions' share of the volume is not
+      /// their share of the automata). Voids are removed: in neither.
+      struct PartCounts
+      {
+        unsigned long long automata = 0, inclusions = 0;
+        unsigned long long volume = 0, inclusion_volume = 0;
+      };
+      const PartCounts &
       contacting_part_counts() const
       {
-        return {n_part_automata, n_part_inclusions};
+        return part_counts;
       }
       /// Bytes held by this rank's automata and pair arrays.
       std::size_t
@@ -684,9 +691,9 @@ namespace tribodyn
                          const std::vector<Vec3> &values) const;
       bool wait_for_contact = false;
       /// Global damping or a damping group (f_damp is used).
-      bool               damping_on         = false;
-      double             first_contact_time = -1;
-      unsigned long long n_part_automata = 0, n_part_inclusions = 0;
+      bool       damping_on         = false;
+      double     first_contact_time = -1;
+      PartCounts part_counts;
       /// The works since the start, by Work (system_figures.h).
       WorkSums work{};
       /// Damping part of f of each owned automaton (for damped_work), valid
