@@ -346,7 +346,9 @@ namespace tribodyn
                             summary.dump() + "\n");
       std::cout << "\n"
                 << md.str() << "\nRVE study written to " << dir
-                << "/ (rve.csv, rve.md, rve.png, summary.json) in "
+                << "/ (rve.csv, rve.md, "
+                << (parameters.plot_script == "none" ? "" : "rve.png, ")
+                << "summary.json) in "
                 << std::fixed << std::setprecision(1) << wall_time << " s"
                 << std::endl;
       run_plot_script(parameters.plot_script,
