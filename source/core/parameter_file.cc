@@ -3,6 +3,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 #include <fstream>
+#include <sstream>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/global_parameters.h>
 #include <tribodyn/core/parameter_file.h>
@@ -94,6 +95,48 @@ namespace tribodyn
                              "interface/Seed'.");
         }
     }
+
+    /// The text of @p file with each 'include NAME' whose NAME is a
+    /// relative path made relative to the directory of @p file (deal.II
+    /// looks for it in the working directory), so that a parameter file
+    /// can build on a neighbour wherever it is run from. Lines keep their
+    /// numbers: messages point at the file's own lines.
+    std::string
+    with_includes_beside(const std::string &file)
+    {
+      std::ifstream      in(file);
+      std::ostringstream text;
+      const auto         slash = file.find_last_of('/');
+      const std::string  dir   = slash == std::string::npos
+                                   ? std::string()
+                                   : file.substr(0, slash + 1);
+      for (std::string line; std::getline(in, line);)
+        {
+          const std::string trimmed = dealii::Utilities::trim(line);
+          if (trimmed.rfind("include ", 0) == 0
+              || trimmed.rfind("INCLUDE ", 0) == 0)
+            {
+              const std::string name
+                = dealii::Utilities::trim(trimmed.substr(8));
+              if (!name.empty() && name[0] != '/' && name[0] != '#')
+                line = trimmed.substr(0, 8) + dir + name;
+            }
+          text << line << '\n';
+        }
+      return text.str();
+    }
+
+
+    /// ParameterHandler::parse_input() on @p file with its includes
+    /// resolved beside it; messages name @p file.
+    void
+    parse_file(dealii::ParameterHandler &prm,
+               const std::string        &file,
+               const bool                skip_undefined)
+    {
+      std::istringstream text(with_includes_beside(file));
+      prm.parse_input(text, file, "", skip_undefined);
+    }
   } // namespace
 
 
@@ -111,7 +154,7 @@ namespace tribodyn
       GlobalParameters::declare_parameters(first);
       try
         {
-          first.parse_input(file, "", true);
+          parse_file(first, file, true);
         }
       catch (const dealii::ExceptionBase &e)
         {
@@ -129,10 +172,10 @@ namespace tribodyn
         // names): a lenient first reading, then their declaration
         if (description.declare_dependent_parameters)
           {
-            prm.parse_input(file, "", true);
+            parse_file(prm, file, true);
             description.declare_dependent_parameters(prm);
           }
-        prm.parse_input(file);
+        parse_file(prm, file, false);
       }
     catch (const dealii::ExceptionBase &e)
       {

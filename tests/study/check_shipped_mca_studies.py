@@ -1,5 +1,6 @@
 """The shipped automata studies run (issue #49 item 2), cut short:
-prm/study/mca_laptop.prm and prm/study/mca_seed_heights.prm, each with an
+prm/study/mca_laptop.prm, mca_seed_heights.prm and mca_fibre_content.prm,
+each with an
 override block appended (as a user continues a prm: later entries win; the
 shipped text is not edited) for one roughness seed, 2e-11 s (the bodies
 are still approaching) and an output directory of the test's; the bases
@@ -26,7 +27,13 @@ from check_tools import finish, report  # noqa: E402
 
 tribodyn, folder, scratch = sys.argv[1], os.path.abspath(sys.argv[2]), sys.argv[3]
 os.makedirs(scratch, exist_ok=True)
-AUTOMATA = {"mca_laptop": 12288, "mca_seed_heights": 35136}
+AUTOMATA = {"mca_laptop": 12288, "mca_seed_heights": 35136,
+            "mca_fibre_content": 12288}
+# the generated fibres' share of each contacting part's box (the set-up's
+# 'Inclusions:' line), per base of the fibre-content study: the 4 % base
+# reads friction_composite.prm through an include beside it, run from the
+# test's directory
+FIBRES = {"composite": 1.90895, "composite_4": 3.8179}
 
 
 def bases(text):
@@ -65,9 +72,10 @@ end
         continue
     with open(os.path.join(out, "scenes.csv")) as f:
         scenes = list(csv.DictReader(f))
-    report(len(scenes) == 2 and os.path.exists(os.path.join(out, "study.csv")),
-           f"{name}: scenes.csv with the 2 bases' scenes, study.csv written")
-    for base in ("steel", "composite"):
+    bases_run = [b.strip() for b, _ in bases(text)]
+    report(len(scenes) == len(bases_run) and os.path.exists(os.path.join(out, "study.csv")),
+           f"{name}: scenes.csv with the {len(bases_run)} bases' scenes, study.csv written")
+    for base in bases_run:
         scene = os.path.join(out, "scenes", f"{base}_seed1")
         with open(os.path.join(scene, "summary.json")) as f:
             summary = json.load(f)
@@ -79,4 +87,9 @@ end
             prm = open(os.path.join(scene, "parameters.prm")).read()
             report("= interface 8 16" in prm,
                    f"{name} {base}: the study's Size bands setting reached the scene")
+        if name == "mca_fibre_content" and base in FIBRES:
+            fraction = summary.get("inclusion_volume_fraction_generated", 0) * 100
+            report(abs(fraction - FIBRES[base]) < 1e-3,
+                   f"{name} {base}: fibres {fraction:.5f} % of the part's box "
+                   f"(the generator's {FIBRES[base]} %)")
 finish()

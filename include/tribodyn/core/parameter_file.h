@@ -13,7 +13,12 @@ namespace tribodyn
    * Problem`) are declared, the parameters that depend on the file's values
    * too (ProblemDescription::declare_dependent_parameters), and the file is
    * checked strictly. Returns the problem's description. Throws InputError
-   * naming the file, the line and the parameter on any fault.
+   * naming the file, the line and the parameter on any fault. A line
+   * 'include NAME' with a relative NAME reads NAME from the directory of
+   * @p file (deal.II alone looks in the working directory), so a file can
+   * build on a neighbour: 'include friction_composite.prm' and then the
+   * entries that differ (prm/mca/friction_composite_4.prm). An included
+   * file's own includes are deal.II's (working directory).
    *
    * The driver reads the file of a run with it; a study reads its base
    * scenes with it, then changes entries with set_parameter_by_path().
