@@ -348,9 +348,8 @@ namespace tribodyn
                 << md.str() << "\nRVE study written to " << dir
                 << "/ (rve.csv, rve.md, "
                 << (parameters.plot_script == "none" ? "" : "rve.png, ")
-                << "summary.json) in "
-                << std::fixed << std::setprecision(1) << wall_time << " s"
-                << std::endl;
+                << "summary.json) in " << std::fixed << std::setprecision(1)
+                << wall_time << " s" << std::endl;
       run_plot_script(parameters.plot_script,
                       "plot_rve",
                       "RVE study/Plot script",

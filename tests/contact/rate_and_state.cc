@@ -257,8 +257,8 @@ main(int argc, char **argv)
         if (k_ratio > 1)
           check((hi - lo) / mean < 1e-3 && fast - slow < 2e-3
                   && deviation < 3e-6,
-                "steady sliding above k_c (" + what + "; mean - mu_ss(V) = "
-                  + format_number(deviation) + ")");
+                "steady sliding above k_c (" + what
+                  + "; mean - mu_ss(V) = " + format_number(deviation) + ")");
         else
           check((hi - lo) / mean > 0.1 && slow < 0.1 && fast > 3,
                 "stick-slip below k_c (" + what + ")");

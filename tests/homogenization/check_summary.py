@@ -18,6 +18,10 @@ import os
 import math
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "scripts"))
+import plot_tools  # noqa: E402  (read_parameters)
+
 out = os.path.join(sys.argv[1], "output")
 with open(os.path.join(out, "summary.json")) as f:
     s = json.load(f)
@@ -34,20 +38,6 @@ def check(condition, what):
 for key in ["volume_fraction", "n_dofs", "KUBC", "SUBC", "periodic", "bounds",
             "wall_time_s", "n_mpi_ranks", "tribodyn_version"]:
     check(key in s, "summary.json has key " + key)
-
-def parameters(path):
-    values, section = {}, []
-    for line in open(path):
-        t = line.split("#", 1)[0].strip()
-        if t.startswith("subsection "):
-            section.append(t[len("subsection "):].strip())
-        elif t == "end" and section:
-            section.pop()
-        elif t.startswith("set ") and "=" in t:
-            name, value = t[4:].split("=", 1)
-            values["/".join(section + [name.strip()])] = value.strip()
-    return values
-
 
 def inverse(A):
     """Inverse of a 3 x 3 matrix (cofactors)."""
@@ -71,7 +61,7 @@ def constants(C, c_z):
     return {"E_L": 1 / S[0][0], "E_T": 1 / S[1][1], "G_LT": C[2][2]}
 
 
-prm = parameters(os.path.join(out, "parameters.prm"))
+prm = plot_tools.read_parameters(out)
 pixels = [int(v) for line in open(os.path.join(out, "morphology.txt"))
           if not line.startswith("#") for v in line.split()]
 f = sum(pixels) / len(pixels)
