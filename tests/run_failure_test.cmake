@@ -3,8 +3,12 @@
 # touched: 'output/' of the working directory and the prm's own 'Output
 # directory' (its top-level entry, when relative) hold a finished run's
 # files before, which must be byte for byte the same after, and no other
-# file may appear. With LAUNCHER (e.g. 'mpirun -np 2') the refusal runs in
-# parallel. Called by tribodyn_add_failure_test().
+# file may appear. A run stopped on its way (exit code 3: a blow-up, a
+# failed health check) keeps what it wrote: the finished run it found is
+# moved, byte for byte, under previous_run/, and its own output directory
+# holds its series so far (a CSV file with a header and at least one row).
+# With LAUNCHER (e.g. 'mpirun -np 2') the refusal runs in parallel. Called
+# by tribodyn_add_failure_test().
 if(NOT DEFINED EXIT_CODE OR EXIT_CODE STREQUAL "")
   set(EXIT_CODE 2)
 endif()
@@ -72,4 +76,36 @@ if(EXIT_CODE EQUAL 2)
       message(FATAL_ERROR "the refusal changed ${dir}/parameters.prm")
     endif()
   endforeach()
+elseif(EXIT_CODE EQUAL 3)
+  foreach(dir ${kept})
+    file(GLOB_RECURSE moved ${OUTPUT_DIR}/${dir}/summary.json
+      ${OUTPUT_DIR}/${dir}/previous_run/*summary.json)
+    set(found FALSE)
+    foreach(file ${moved})
+      file(READ ${file} content)
+      if(content STREQUAL sentinel)
+        set(found TRUE)
+      endif()
+    endforeach()
+    if(NOT found)
+      message(FATAL_ERROR "the stopped run lost the finished run that was "
+                          "in ${dir} (its summary.json is nowhere: "
+                          "'${moved}')")
+    endif()
+  endforeach()
+  if(NOT own STREQUAL "" AND NOT IS_ABSOLUTE "${own}" AND NOT own MATCHES "\\.\\.")
+    file(GLOB series ${OUTPUT_DIR}/${own}/*.csv)
+    set(rows 0)
+    foreach(file ${series})
+      file(STRINGS ${file} lines)
+      list(LENGTH lines n)
+      if(n GREATER rows)
+        set(rows ${n})
+      endif()
+    endforeach()
+    if(rows LESS 2)
+      message(FATAL_ERROR "the stopped run kept no series in ${own} (CSV "
+                          "files: '${series}')")
+    endif()
+  endif()
 endif()

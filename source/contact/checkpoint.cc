@@ -31,8 +31,9 @@ namespace tribodyn
       // 2: records keyed by place (any number of ranks); 3: a contact
       // node's state is ContactNode::for_each_state_field() (with the
       // friction law's state); 4: the outputs' states are their
-      // postprocessors' (by name)
-      constexpr unsigned int state_version = 4;
+      // postprocessors' (by name); 5: the friction law's run counters (by
+      // name)
+      constexpr unsigned int state_version = 5;
 
       static_assert(std::is_trivially_copyable<Sample>::value,
                     "Sample is saved as raw bytes");
@@ -68,6 +69,13 @@ namespace tribodyn
     ContactSolver::save_state(const LoopState &loop) const
     {
       const unsigned int n_owned = mass.size();
+      // The friction law's counts over the run so far (collective).
+      std::vector<std::pair<std::string, unsigned long long>> counters;
+      FrictionLaws::visit(friction_law, [&](const auto &law) {
+        law.for_each_counter([&](const char *name, RunCounter &c) {
+          counters.emplace_back(name, c.total(comm));
+        });
+      });
       std::ostringstream out(std::ios::binary);
       {
         boost::archive::binary_oarchive ar(out);
@@ -85,6 +93,7 @@ namespace tribodyn
               const_cast<Sample *>(history.data()), n_samples * sizeof(Sample));
           // The outputs' states (rows written, fields), by name.
           g << loop.outputs;
+          g << counters;
         }
         const std::string global = global_out.str();
         ar << state_version << global;
@@ -178,6 +187,17 @@ namespace tribodyn
                                                         n_samples
                                                           * sizeof(Sample));
         g >> loop.outputs;
+        // The friction law's counts of the earlier legs, by name.
+        std::vector<std::pair<std::string, unsigned long long>> counters;
+        g >> counters;
+        FrictionLaws::visit(friction_law, [&](const auto &law) {
+          law.for_each_counter([&](const char *name, RunCounter &c) {
+            c.leg = c.earlier = 0;
+            for (const auto &[saved_name, value] : counters)
+              if (saved_name == name)
+                c.earlier = value;
+          });
+        });
       });
 
       // Each record to the ranks whose cells hold its node (the pin's

@@ -203,7 +203,7 @@ namespace tribodyn
 
     namespace
     {
-      const bool registered = register_problem(
+      const bool contact_problem_registered = register_problem(
         {"contact",
          "explicit dynamics of a 2D pin in contact with friction on a moving "
          "rigid plane (forward-increment Lagrange multipliers, beta2 scheme)",

@@ -248,8 +248,8 @@ namespace tribodyn
                           + "') is a TIFF that tribodyn does not "
                             "read: "
                           + cause
-                          + ". Save it as an uncompressed "
-                            "or LZW/Deflate TIFF in strips with 8- or 16-bit "
+                          + ". Save it as an uncompressed, LZW, Deflate "
+                            "or PackBits TIFF in strips with 8- or 16-bit "
                             "grey, indexed or RGB pixels (or as a PNG).");
       };
       std::uint32_t width = 0, height = 0;

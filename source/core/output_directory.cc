@@ -21,7 +21,7 @@ namespace tribodyn
     };
 
     ClaimRegistry &
-    registry()
+    claims()
     {
       static ClaimRegistry r;
       return r;
@@ -120,7 +120,7 @@ namespace tribodyn
             }
           else if (fs::exists(dir / "summary.json"))
             fs::rename(dir / "summary.json", dir / "summary.previous_leg.json");
-          registry().claimed.push_back(normalized(directory));
+          claims().claimed.push_back(normalized(directory));
           if (!parameters_text.empty())
             write_file_atomically(join_path(directory, "parameters.prm"),
                                   parameters_text);
@@ -155,21 +155,21 @@ namespace tribodyn
     if (!error.empty())
       throw InputError(error);
     if (!root)
-      registry().claimed.push_back(normalized(directory));
+      claims().claimed.push_back(normalized(directory));
   }
 
 
   void
   guard_unclaimed_output_writes()
   {
-    registry().guard_on = true;
+    claims().guard_on = true;
   }
 
 
   void
   assert_output_claimed(const std::string &path)
   {
-    const ClaimRegistry &r = registry();
+    const ClaimRegistry &r = claims();
     if (!r.guard_on)
       return;
     const fs::path p = normalized(path);

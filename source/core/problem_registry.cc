@@ -9,7 +9,7 @@ namespace tribodyn
     /// Function-local static: safe to use from other translation units'
     /// static initializers (no initialization-order fiasco).
     std::vector<ProblemDescription> &
-    registry()
+    problem_list()
     {
       static std::vector<ProblemDescription> problems;
       return problems;
@@ -20,7 +20,7 @@ namespace tribodyn
   bool
   register_problem(const ProblemDescription &description)
   {
-    auto &problems = registry();
+    auto &problems = problem_list();
     problems.push_back(description);
     std::sort(problems.begin(),
               problems.end(),
@@ -34,7 +34,7 @@ namespace tribodyn
   const std::vector<ProblemDescription> &
   registered_problems()
   {
-    return registry();
+    return problem_list();
   }
 
 

@@ -492,7 +492,7 @@ namespace tribodyn
 
     namespace
     {
-      const bool registered = register_problem(
+      const bool homogenization_problem_registered = register_problem(
         {"homogenization",
          "apparent and effective elastic properties of a 2D composite from "
          "its morphology (KUBC, SUBC and periodic cell problems)",

@@ -662,7 +662,7 @@ namespace tribodyn
 
     namespace
     {
-      const bool registered = register_problem(
+      const bool rve_study_registered = register_problem(
         {"rve",
          "RVE-size study (Kanit et al. 2003): apparent constants of windows "
          "of growing size, their mean and variance per boundary condition, "

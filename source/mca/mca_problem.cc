@@ -466,7 +466,7 @@ namespace tribodyn
     }
 
 
-    static const bool registered = register_problem(
+    static const bool mca_problem_registered = register_problem(
       {"mca",
        "3D movable cellular automata: bonded automata with many-body pair "
        "law, rotations, von Mises plasticity, bond breaking and formation "

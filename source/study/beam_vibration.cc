@@ -434,7 +434,7 @@ namespace tribodyn
 
     namespace
     {
-      const bool registered = register_problem(
+      const bool beam_vibration_registered = register_problem(
         {"beam",
          "verification: free vibration of a free-free plane-strain beam with "
          "the explicit contact solver, against Timoshenko beam theory and the "

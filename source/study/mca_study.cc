@@ -399,7 +399,7 @@ namespace tribodyn
 
     namespace
     {
-      const bool registered = register_problem(
+      const bool mca_study_registered = register_problem(
         {"mca_study",
          "automata study (seed 000's question): base scenes x roughness "
          "seeds x factors on groups of MPI ranks, paired differences with "

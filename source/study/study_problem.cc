@@ -444,7 +444,7 @@ namespace tribodyn
 
     namespace
     {
-      const bool registered = register_problem(
+      const bool study_problem_registered = register_problem(
         {"study",
          "seed 001's Table 2 study: pressures x pin models (homogeneous "
          "matrix, homogenized, meso with N morphologies) x repeats, with "

@@ -13,7 +13,14 @@ mu equal to its run's mu_steady (summary.json, exactly: the script copies,
 not recomputes); the pin runs with it (summary: friction_law = tabulated,
 the clamped evaluations counted) and its contact mu, sum |lambda_T| / sum
 lambda_N, lies within [0, the table's largest mu] (every node's |lambda_T|
-<= mu(p, v) lambda_N with mu from the table).
+<= mu(p, v) lambda_N with mu from the table). Then an exact identity: the
+same pin reading the table at the corner (lowest pressure, highest speed:
+`Pressure scale` 1e-300 and `Speed = plane speed` with `Speed scale` 1e300
+clamp every look-up there, where the table returns its entry exactly) is,
+bit for bit (friction.csv, point_M.csv and contact_status.csv as text),
+the pin with `Friction law = Coulomb` and that entry as its coefficient,
+read here from mu_table.csv: a look-up, a scale or a clamp applied wrongly
+changes the series.
 """
 import csv
 import json
@@ -86,4 +93,35 @@ mu = s["mu_contact_mean"]
 check(mu is not None and math.isfinite(mu) and 0 <= abs(mu) <= mu_max * (1 + 1e-9),
       "pin: contact mu %r within [0, largest mu of the table %r]"
       % (mu, mu_max))
+
+# The identity at the table's corner.
+p_min = min(float(r["pressure"]) for r in rows)
+v_max = max(float(r["speed"]) for r in rows)
+corner = [r["mu"] for r in rows
+          if float(r["pressure"]) == p_min and float(r["speed"]) == v_max][0]
+runs = {}
+for name, law in (("corner", "  set Friction law = tabulated\n"
+                   "  subsection Tabulated friction\n    set File = " + path
+                   + "\n    set Pressure scale = 1e-300\n"
+                   "    set Speed = plane speed\n"
+                   "    set Speed scale = 1e300\n  end\n"),
+                  ("coulomb", "  set Friction law = Coulomb\n"
+                   "  set Friction coefficient = " + corner + "\n")):
+    run_dir = os.path.join(out, name)
+    run_prm = os.path.join(out, name + ".prm")
+    with open(run_prm, "w") as f:
+        f.write(text.replace("set Output directory = output",
+                             "set Output directory = " + run_dir)
+                + "subsection Contact\n" + law + "end\n")
+    subprocess.run([tribodyn, run_prm], check=True, env=env,
+                   stdout=subprocess.DEVNULL)
+    runs[name] = {}
+    for series in ("friction.csv", "point_M.csv", "contact_status.csv"):
+        with open(os.path.join(run_dir, series)) as f:
+            runs[name][series] = f.read()
+same = [series for series in runs["corner"]
+        if runs["corner"][series] == runs["coulomb"][series]]
+check(len(same) == 3 and len(runs["corner"]["friction.csv"]) > 1000,
+      "the table read at its corner (mu = %s) = Coulomb with that mu, bit "
+      "for bit (%s identical)" % (corner, ", ".join(same) or "no series"))
 sys.exit(1 if failures else 0)

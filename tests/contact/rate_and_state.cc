@@ -41,11 +41,21 @@
 //     factor 4 on each side: the free sides of the 4 x 2 mm block make its
 //     shear stiffness lower than G/H (measured: stick-slip persists up to k
 //     = 1.25 k_c, steady sliding from 2-4 k_c; doc/theory/contact.md).
+// (d) The implicit slip-rate solve at any force scale: one slipping node
+//     (m = 1e-3 kg/m, dt = 1e-8 s, h = dt^2/2: c = h/(m dt) = 5e-6 m/s
+//     per N/m) whose trial is T = 0.3 lambda_N + 1/c (it would slip at
+//     about 1 m/s), lambda_N from 1e-10 to 1e6 N/m: |lambda_T| = mu(V,
+//     theta') lambda_N with V = c (T - |lambda_T|) and theta' the aging
+//     law's closed form, to 1e-12 relative (measured 1.8e-16; the solve
+//     for V instead of |lambda_T|, as before, gave 7e-2 at 1e-10 N/m:
+//     |lambda_T| = T - V/c cancels), and no solve is counted unconverged.
 
 #include "contact_test_tools.h"
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <tribodyn/contact/friction_laws/rate_and_state.h>
 
 namespace
 {
@@ -263,6 +273,52 @@ main(int argc, char **argv)
           check((hi - lo) / mean > 0.1 && slow < 0.1 && fast > 3,
                 "stick-slip below k_c (" + what + ")");
       }
+  }
+
+  // (d)
+  {
+    using tribodyn::contact::RateAndState;
+    RateAndState::Parameters p;
+    p.mu0 = 0.31, p.a = 0.01, p.b = 0.005, p.V0 = 1, p.Dc = 1e-6;
+    const RateAndState::Parameters &unused = p;
+    RateAndState                    law(unused, p, 1e-8);
+    tribodyn::contact::PlaneStep    step;
+    step.dt = 1e-8, step.h = 0.5 * step.dt * step.dt, step.speed = 1;
+    law.begin_step(step);
+    ContactNode node;
+    node.m             = 1e-3;
+    node.length        = 1e-4;
+    node.law_state[0]  = 2 * p.Dc; // steady at 0.5 m/s
+    const double c     = step.h / (node.m * step.dt);
+    double       worst = 0, worst_at = 0;
+    for (double lambda_n = 1e-10; lambda_n < 2e6; lambda_n *= 10)
+      {
+        ContactStatus status   = separated;
+        const double  T        = 0.3 * lambda_n + 1 / c;
+        const double  lambda_t = law.tangential(node, T, lambda_n, status);
+        const double  V        = c * (T - std::abs(lambda_t));
+        const double  x        = V * step.dt / p.Dc;
+        const double  theta
+          = node.law_state[0] * std::exp(-x) + p.Dc / V * (1 - std::exp(-x));
+        const double mu = p.mu0 + p.a * std::log(V / p.V0)
+                          + p.b * std::log(p.V0 * theta / p.Dc);
+        const double error
+          = std::abs(lambda_t - mu * lambda_n) / (mu * lambda_n);
+        if (status != slip || !(error <= worst))
+          worst_at = lambda_n;
+        worst = status != slip ? 1. : std::max(worst, error);
+      }
+    tribodyn::JsonValue summary;
+    std::ostringstream  figures;
+    law.report(summary, figures, MPI_COMM_WORLD);
+    // the law's own line: "...; N slip-rate solve(s) not converged..."
+    const bool converged
+      = figures.str().find("; 0 slip-rate solve(s)") != std::string::npos;
+    check(worst < 1e-12 && converged,
+          "slip-rate solve at lambda_N 1e-10 to 1e6 N/m: |lambda_T| = mu(V, "
+          "theta') lambda_N to "
+            + format_number(worst) + " (worst at " + format_number(worst_at)
+            + " N/m; 1e-12 allowed); " + figures.str());
   }
   return result();
 }

@@ -1,8 +1,10 @@
 // One map in every supported format gives one morphology (issue #19): the
 // small noisy three-level map of scripts/make_synthetic_images as PNG and
-// TIFF, each 8-bit grey, 16-bit grey, indexed and RGB, plus a Deflate TIFF,
-// a big-endian 16-bit TIFF, a MinIsWhite TIFF and a 2-bit palette PNG.
-// Segmented by Otsu's method into three phases, all twelve must give the
+// TIFF, each 8-bit grey, 16-bit grey, indexed and RGB, plus Deflate, LZW
+// and PackBits TIFFs, a big-endian 16-bit TIFF, a MinIsWhite TIFF, a 2-bit
+// palette PNG, grey + alpha and RGBA PNGs (a varying alpha, which the
+// reader drops) and an Adam7-interlaced PNG.
+// Segmented by Otsu's method into three phases, all seventeen must give the
 // material map of the 8-bit grey PNG pixel for pixel, and the pixel size of
 // their resolution tags (PNG pHYs 1e6 per m, TIFF 1e4 per cm) must be 1 um.
 // (The 16-bit files hold the 8-bit level in the high byte and a varying low
@@ -49,12 +51,18 @@ main(int argc, char **argv)
         const std::string name = "formats_" + kind + "." + ext;
         same(Morphology::create(image_parameters(image_path(name), 3)), name);
       }
-  // Other layouts: Deflate strips, big-endian 16 bits, MinIsWhite, and a
-  // 2-bit palette PNG of the three classes.
+  // Other layouts: Deflate, LZW and PackBits strips, big-endian 16 bits,
+  // MinIsWhite, a 2-bit palette PNG of the three classes, alpha channels,
+  // interlacing.
   for (const std::string name : {"formats_deflate.tif",
+                                 "formats_lzw.tif",
+                                 "formats_packbits.tif",
                                  "formats_grey16_big_endian.tif",
                                  "formats_min_is_white.tif",
-                                 "formats_indexed2.png"})
+                                 "formats_indexed2.png",
+                                 "formats_grey_alpha.png",
+                                 "formats_rgba.png",
+                                 "formats_interlaced.png"})
     same(Morphology::create(image_parameters(image_path(name), 3)), name);
 
   // Thresholds of a 16-bit image are in 16-bit levels.

@@ -20,7 +20,10 @@
 //    &)` (constants of the step), `end_step(ContactNode &, double dt)` (its
 //    state per node after the step, called for every node, in contact or
 //    not: the node's law_state, checkpointed with the node),
-//    `report(summary, figures, comm)` (its figures at the end of the run).
+//    `report(summary, figures, comm)` (its figures at the end of the run),
+//    `for_each_counter(f)` (f(name, RunCounter &) for each count the law
+//    keeps over the run: checkpointed by name, so that a resumed run
+//    reports what the uninterrupted one does).
 // A new law is one header in include/tribodyn/contact/friction_laws/ and
 // its name in the list of friction_laws.h.
 #ifndef tribodyn_contact_friction_law_h
@@ -143,9 +146,31 @@ namespace tribodyn
       return (trial >= 0 ? 1. : -1.) * limit;
     }
 
+    /// A count a law keeps over the run (e.g. the tabulated law's clamped
+    /// evaluations): this leg's count on this rank, and the total of the
+    /// legs before the run was resumed (the same on every rank).
+    struct RunCounter
+    {
+      unsigned long long leg = 0, earlier = 0;
+
+      /// The run's total (collective).
+      unsigned long long
+      total(const MPI_Comm comm) const
+      {
+        unsigned long long sum = 0;
+        MPI_Allreduce(&leg, &sum, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
+        return sum + earlier;
+      }
+    };
+
     /// Defaults of the optional members of a law.
     struct FrictionLawBase
     {
+      template <class F>
+      void
+      for_each_counter(const F &) const
+      {
+      }
       void
       begin_step(const PlaneStep &)
       {

@@ -13,8 +13,11 @@ namespace tribodyn
    * A list of plugins that register themselves from their own source files
    * (ASPECT's way): each file holds
    *
-   *   static const bool registered = PluginRegistry<Base, Inputs>::add(
+   *   static const bool name_registered = PluginRegistry<Base, Inputs>::add(
    *     {"name", order, [](const Inputs &in) { return ...; }});
+   *
+   * (the flag named after the file: the library is compiled in unity
+   * batches, where names at file scope must differ between files)
    *
    * and create_all() makes, in the order of the `order` keys (static
    * initialization runs in an unspecified order across files, so the list

@@ -102,8 +102,9 @@ namespace tribodyn
   /**
    * Add @p description to the registry. Called during static
    * initialization of the shared library, typically as
-   * `static const bool registered = register_problem({...});` in the
-   * problem's source file. Returns true.
+   * `static const bool name_registered = register_problem({...});` in the
+   * problem's source file (named after the file: unity builds). Returns
+   * true.
    */
   bool
   register_problem(const ProblemDescription &description);

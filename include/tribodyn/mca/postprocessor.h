@@ -61,9 +61,12 @@ namespace tribodyn
      * the list of those the run needs, in their registration order; a new
      * output is one new source file that registers itself:
      *
-     *   static const bool registered = PostprocessorRegistry::add(
+     *   static const bool name_registered = PostprocessorRegistry::add(
      *     {"name", order, [](const PostprocessorInputs &in)
      *        -> std::unique_ptr<Postprocessor> { ... or nullptr }});
+     *
+     * (the flag named after the file: the library is compiled in unity
+     * batches, where names at file scope must differ between files).
      *
      * Every member but the destructor has a default that does nothing. The
      * collective ones (record(), write_output(), after_step(), finish())

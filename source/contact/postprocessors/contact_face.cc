@@ -152,7 +152,7 @@ namespace tribodyn
         std::size_t   rows    = 0;
       };
 
-      const bool registered = PostprocessorRegistry::add(
+      const bool contact_face_registered = PostprocessorRegistry::add(
         {"contact face", 40, [](const PostprocessorInputs &in) {
            return in.prm.output.contact_face_interval > 0
                     ? std::make_unique<ContactFace>(in)

@@ -69,7 +69,7 @@ namespace tribodyn
         std::vector<std::pair<double, std::string>> entries;
       };
 
-      const bool registered = PostprocessorRegistry::add(
+      const bool fields_registered = PostprocessorRegistry::add(
         {"fields", 50, [](const PostprocessorInputs &in) {
            return std::make_unique<Fields>(in);
          }});

@@ -94,7 +94,7 @@ namespace tribodyn
       };
 
 
-      const bool registered = PostprocessorRegistry::add(
+      const bool energies_registered = PostprocessorRegistry::add(
         {"energies", 10, [](const PostprocessorInputs &in) {
            return std::make_unique<Energies>(in.system);
          }});

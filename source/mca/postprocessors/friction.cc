@@ -361,7 +361,7 @@ namespace tribodyn
       }
 
 
-      const bool registered = PostprocessorRegistry::add(
+      const bool friction_registered = PostprocessorRegistry::add(
         {"friction",
          30,
          [](const PostprocessorInputs &in) -> std::unique_ptr<Postprocessor> {

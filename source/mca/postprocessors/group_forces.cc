@@ -58,7 +58,7 @@ namespace tribodyn
       };
 
 
-      const bool registered = PostprocessorRegistry::add(
+      const bool group_forces_registered = PostprocessorRegistry::add(
         {"boundary groups", 20, [](const PostprocessorInputs &in) {
            return std::make_unique<GroupForces>(in.system, in.parameters);
          }});

@@ -125,7 +125,7 @@ namespace tribodyn
       };
 
 
-      const bool registered = PostprocessorRegistry::add(
+      const bool pulse_registered = PostprocessorRegistry::add(
         {"pulse",
          50,
          [](const PostprocessorInputs &in) -> std::unique_ptr<Postprocessor> {

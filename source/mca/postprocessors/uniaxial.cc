@@ -322,7 +322,7 @@ namespace tribodyn
       };
 
 
-      const bool registered = PostprocessorRegistry::add(
+      const bool uniaxial_registered = PostprocessorRegistry::add(
         {"uniaxial",
          40,
          [](const PostprocessorInputs &in) -> std::unique_ptr<Postprocessor> {

@@ -102,7 +102,7 @@ namespace tribodyn
       };
 
 
-      const bool registered = PostprocessorRegistry::add(
+      const bool visualization_registered = PostprocessorRegistry::add(
         {"visualization", 60, [](const PostprocessorInputs &in) {
            return std::make_unique<Visualization>(in);
          }});

@@ -129,7 +129,7 @@ namespace tribodyn
           = speed == Speed::slip_rate ? before.slip_rate : plane_speed;
         const double mu
           = table(pressure_scale * lambda_n / before.length, speed_scale * v);
-        if (!warned && table.clamped() > 0)
+        if (!warned && clamped.earlier == 0 && table.clamped() > 0)
           warn_clamped(pressure_scale * lambda_n / before.length,
                        speed_scale * v);
         return coulomb_tangential(trial, mu * lambda_n, status);
@@ -140,12 +140,22 @@ namespace tribodyn
              std::ostream  &figures,
              const MPI_Comm comm) const
       {
-        const unsigned long long n
-          = dealii::Utilities::MPI::sum(table.clamped(), comm);
+        clamped.leg                           = table.clamped();
+        const unsigned long long n            = clamped.total(comm);
         summary["tabulated_friction_clamped"] = n;
         figures << "Tabulated friction: " << n
                 << " evaluation(s) outside the table (clamped to its edges)"
                 << std::endl;
+      }
+
+      /// f("tabulated_friction_clamped", count of evaluations outside the
+      /// table).
+      template <class F>
+      void
+      for_each_counter(const F &f) const
+      {
+        clamped.leg = table.clamped();
+        f("tabulated_friction_clamped", clamped);
       }
 
       FrictionTable table;
@@ -163,13 +173,14 @@ namespace tribodyn
                   << table.speed_axis().front() << " to "
                   << table.speed_axis().back()
                   << " m/s): clamped to its edges (this warning once per "
-                     "rank; the count is in summary.json)."
+                     "rank and run; the count is in summary.json)."
                   << std::endl;
       }
 
-      Speed        speed;
-      double       pressure_scale, speed_scale, plane_speed = 0;
-      mutable bool warned = false;
+      Speed              speed;
+      double             pressure_scale, speed_scale, plane_speed = 0;
+      mutable bool       warned = false;
+      mutable RunCounter clamped;
     };
   } // namespace contact
 } // namespace tribodyn
