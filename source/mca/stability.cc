@@ -103,7 +103,8 @@ namespace tribodyn
         m << "the damping: c dt = " << damping_product << " > 1 in "
           << (damped_group.empty() ? std::string("'Boundary conditions/Global "
                                                  "damping'")
-                                   : "the damping group '" + damped_group + "'")
+                                   : "the damping group '" + damped_group
+                                       + "' of 'Boundary conditions/Groups'")
           << " (explicit viscous damping needs c dt < 1); lower the "
              "coefficient.";
       else if (courant > 0.9 * TimeParameters::max_courant)

@@ -145,13 +145,19 @@ namespace tribodyn
             csv << P << "," << to_string(model) << "," << runs.size() << ","
                 << mean << "," << se << "," << fr[0] << "," << fr[1] << ","
                 << fr[2] << "," << regime << "\n";
-            const double       seed = seed_mu(P, model);
+            const double seed = seed_mu(P, model);
+            // a run whose blocking curve found no plateau gives a lower
+            // bound of its error bar: marked, and said below the table
+            bool lower_bound = false;
+            for (const CaseResult *r : runs)
+              lower_bound = lower_bound || !(r->plateau_found > 0);
             std::ostringstream row;
             row << std::fixed << std::setprecision(3) << "| " << P / 1e6
                 << " | " << to_string(model) << " | " << runs.size() << " | "
-                << mean << " ± " << std::setprecision(4) << se << " | "
-                << std::setprecision(3) << fr[0] << " / " << fr[1] << " / "
-                << fr[2] << " | " << regime << " | " << regime_M << " | ";
+                << mean << " ± " << std::setprecision(4) << se
+                << (lower_bound ? " *" : "") << " | " << std::setprecision(3)
+                << fr[0] << " / " << fr[1] << " / " << fr[2] << " | " << regime
+                << " | " << regime_M << " | ";
             if (std::isnan(seed))
               row << "– | – |";
             else
@@ -171,6 +177,16 @@ namespace tribodyn
             entry["seed_mu"]             = seed;
             table.push_back(entry);
           }
+      unsigned int n_without_plateau = 0;
+      for (const CaseResult &r : results)
+        n_without_plateau += !(r.plateau_found > 0);
+      if (n_without_plateau > 0)
+        md << "\n\\* " << n_without_plateau << " of " << results.size()
+           << " cases found no plateau in their blocking curve (cases.csv, "
+              "plateau_found = 0): the averaging window holds too few "
+              "independent blocks, and their error bars are lower bounds. A "
+              "longer window ('Output/Averaging start time' earlier or a "
+              "later 'Time integration/End time') gives a plateau.\n";
       write_file_atomically(join_path(dir, "table2.csv"), csv.str());
       write_file_atomically(join_path(dir, "table2.md"), md.str());
 
@@ -181,8 +197,10 @@ namespace tribodyn
         = dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
       summary["n_case_groups"] = n_case_groups();
       summary["n_cases"]       = study_cases.size();
-      summary["mesh_size"]     = base.geometry.mesh_size;
-      summary["end_time"]      = base.time.end_time;
+      // cases whose error bar is a lower bound (no blocking plateau)
+      summary["n_cases_without_plateau"] = n_without_plateau;
+      summary["mesh_size"]               = base.geometry.mesh_size;
+      summary["end_time"]                = base.time.end_time;
       summary["averaging_window"]
         = json_array({base.output.average_start,
                       base.output.average_end < 0 ? base.time.end_time

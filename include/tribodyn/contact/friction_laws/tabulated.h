@@ -9,6 +9,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <iostream>
+#include <sstream>
 #include <tribodyn/contact/friction_law.h>
 #include <tribodyn/contact/friction_table.h>
 #include <tribodyn/core/errors.h>
@@ -165,20 +166,25 @@ namespace tribodyn
       warn_clamped(const double p, const double v) const
       {
         warned = true;
-        std::cerr << "Warning: 'Contact/Tabulated friction/File': mu read "
-                     "outside the table (pressure "
-                  << p << " Pa, speed " << v << " m/s; the table covers "
-                  << table.pressure_axis().front() << " to "
-                  << table.pressure_axis().back() << " Pa and "
-                  << table.speed_axis().front() << " to "
-                  << table.speed_axis().back()
-                  << " m/s): clamped to its edges (this warning once per "
-                     "rank and run; the count is in summary.json)."
-                  << std::endl;
+        // one write of the whole line, so that the ranks' warnings do not
+        // interleave
+        std::ostringstream m;
+        m << "Warning (rank " << rank
+          << "): 'Contact/Tabulated friction/File': mu read outside the "
+             "table (pressure "
+          << p << " Pa, speed " << v << " m/s; the table covers "
+          << table.pressure_axis().front() << " to "
+          << table.pressure_axis().back() << " Pa and "
+          << table.speed_axis().front() << " to " << table.speed_axis().back()
+          << " m/s): clamped to its edges (this warning once per rank and "
+             "run; the count is in summary.json).\n";
+        std::cerr << m.str() << std::flush;
       }
 
-      Speed              speed;
-      double             pressure_scale, speed_scale, plane_speed = 0;
+      Speed        speed;
+      double       pressure_scale, speed_scale, plane_speed = 0;
+      unsigned int rank
+        = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
       mutable bool       warned = false;
       mutable RunCounter clamped;
     };
