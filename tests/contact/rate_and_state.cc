@@ -280,9 +280,10 @@ main(int argc, char **argv)
     using tribodyn::contact::RateAndState;
     RateAndState::Parameters p;
     p.mu0 = 0.31, p.a = 0.01, p.b = 0.005, p.V0 = 1, p.Dc = 1e-6;
-    const RateAndState::Parameters &unused = p;
-    RateAndState                    law(unused, p, 1e-8);
-    tribodyn::contact::PlaneStep    step;
+    // (the first argument, Contact's shared entries, is not read by this
+    // law)
+    RateAndState                 law(p, p, 1e-8);
+    tribodyn::contact::PlaneStep step;
     step.dt = 1e-8, step.h = 0.5 * step.dt * step.dt, step.speed = 1;
     law.begin_step(step);
     ContactNode node;

@@ -25,7 +25,7 @@ the in-plane bulk kappa_i = lambda_i + mu_i and shear mu_i moduli
   mu_+- = (sum c_i / (mu_i + zeta_+-))^-1 - zeta_+-,
   zeta = kappa mu / (kappa + 2 mu) at the largest (+) or smallest (-) kappa
   and mu. The summary's bounds must equal these to 1e-12 relative (the
-  same formulas in another order of operations; measured 1e-15).
+  same formulas in another order of operations; measured 2.8e-16).
 """
 import json
 import os

@@ -22,21 +22,14 @@ fraction rows exist (no cell problems): 4 sizes x 2 phases = 8 rows.
 import csv
 import math
 import os
-import re
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "mca"))
+from check_tools import finish, parameter, report as check  # noqa: E402
+
 out = os.path.join(sys.argv[1], "output")
-failures = []
-
-
-def check(condition, what):
-    print(("PASS  " if condition else "FAIL  ") + what)
-    if not condition:
-        failures.append(what)
-
-
-with open(os.path.join(out, "parameters.prm")) as f:
-    grid = re.search(r"set Grid file\s*=\s*(\S+)", f.read()).group(1)
+grid = parameter(out, "Morphology/Grid file")
 ones = total = 0
 with open(grid) as f:
     for line in f:
@@ -79,4 +72,4 @@ check(abs(math.log(study_A1) - ln_A1) <= 0.1 * se,
       % (study_A1, math.exp(ln_A1)))
 check(abs(study_alpha - alpha) <= 1e-6,
       "the study's alpha = %.6f is this fit's %.6f" % (study_alpha, alpha))
-sys.exit(1 if failures else 0)
+finish()

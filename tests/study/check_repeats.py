@@ -13,15 +13,11 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "mca"))
+from check_tools import finish, report as check  # noqa: E402
+
 out = os.path.join(sys.argv[1], "output")
-failures = []
-
-
-def check(condition, what):
-    print(("PASS  " if condition else "FAIL  ") + what)
-    if not condition:
-        failures.append(what)
-
 
 with open(os.path.join(out, "cases.csv")) as f:
     cases = list(csv.DictReader(f))
@@ -48,4 +44,4 @@ check(abs(float(row["mu_mean"]) - mean) <= 5e-6 * abs(mean),
 check(abs(float(row["mu_stderr"]) - expected_se) <= 5e-6 * expected_se,
       "table error bar %s = max(s/sqrt(n), sqrt(sum se_i^2)/n) = %.6g"
       % (row["mu_stderr"], expected_se))
-sys.exit(1 if failures else 0)
+finish()
