@@ -84,6 +84,7 @@ namespace tribodyn
             "set the stiffness to 0.");
         law.set_up(springs, S);
       });
+      register_automaton_fields();
       register_pair_fields();
     }
 
@@ -159,21 +160,45 @@ namespace tribodyn
 
 
     void
-    AutomatonSystem::resize_automaton_arrays(const unsigned int n)
+    AutomatonSystem::register_automaton_fields()
     {
-      id.resize(n);
-      cell_of.resize(n);
-      x.resize(n);
-      for (auto *vec : {&v, &w, &f, &torque, &u})
-        vec->resize(n, {{0, 0, 0}});
-      mat.resize(n, 0);
-      body.resize(n, 0);
-      size_level.resize(n, 0);
-      volume.resize(n, V);
-      groups.resize(n, 0);
-      eps_p.resize(n, 0);
-      if (plastic_scene)
-        sigma_y.resize(n, 0);
+      // In checkpoint order. identity: sized, ordered and checkpointed
+      // with the automaton, its id and position the head of a migration
+      // record; carried: in the record too; step: checkpointed only;
+      // scratch: per-step buffers, counted as memory only. to_ghosts: in
+      // the record of a ghost (the pair law and the list need them).
+      using Kind                                = AutomatonFieldKind;
+      auto &t                                   = automaton_fields;
+      t.add("id", Kind::identity, id).to_ghosts = true;
+      // (the global order key: set at a rebuild, read by the ghosts' ranks)
+      t.add("order", Kind::step, order).to_ghosts = true;
+      t.add("cell", Kind::identity, cell_of);
+      t.add("position", Kind::identity, x).to_ghosts = true;
+      t.add("position at rebuild", Kind::step, x_at_rebuild);
+      t.add("velocity", Kind::carried, v);
+      t.add("angular velocity", Kind::carried, w);
+      t.add("force", Kind::carried, f);
+      t.add("torque", Kind::carried, torque);
+      t.add("displacement", Kind::carried, u);
+      t.add("material", Kind::carried, mat).to_ghosts          = true;
+      t.add("body", Kind::carried, body).to_ghosts             = true;
+      t.add("size level", Kind::carried, size_level).to_ghosts = true;
+      // (a new automaton of the uniform packing: d^3 / sqrt 2)
+      t.add("volume", Kind::carried, volume, V);
+      t.add("groups", Kind::carried, groups);
+      t.add("plastic strain", Kind::carried, eps_p);
+      t.add("yield stress", Kind::carried, sigma_y, 0, [this] {
+        return plastic_scene;
+      });
+      t.add("many-body mean stress", Kind::step, mb_mu);
+      t.add("many-body state", Kind::step, mb_state);
+      t.add("inverse fabric", Kind::step, fabric_inverse);
+      t.add("neighbourhood changed", Kind::step, changed);
+      t.add("damping force", Kind::step, f_damp);
+      for (auto *buffer : {&plast, &bond_buffer, &dsm, &side_dq})
+        t.add("buffer", Kind::scratch, *buffer);
+      t.add("many-body shape", Kind::scratch, mb_shape);
+      t.add("stress", Kind::scratch, trial);
     }
 
 
@@ -204,7 +229,7 @@ namespace tribodyn
           });
         }
       const unsigned int n = packed.size();
-      resize_automaton_arrays(n);
+      automaton_fields.resize(n);
       for (unsigned int k = 0; k < n; ++k)
         {
           const auto &a = packed[k];
@@ -353,7 +378,7 @@ namespace tribodyn
       // rebuild (their state in the particle properties); it is empty
       // between rebuilds.
       particles = std::make_unique<dealii::Particles::ParticleHandler<3>>(
-        cells.triangulation(), mapping, migration_properties);
+        cells.triangulation(), mapping, automaton_fields.record_width());
       neighbours.reinit(comm, cells.neighbour_ranks());
       rebuild(true);
     }
@@ -461,18 +486,14 @@ namespace tribodyn
         dealii::ArrayView<const unsigned long long>(counts, 2),
         comm,
         dealii::ArrayView<unsigned long long>(counts, 2));
-      e.kinetic             = sums[0];
-      e.elastic             = sums[1];
-      const double *ws      = sums.data() + 2;
-      e.plastic_work        = ws[plastic_work];
-      e.friction_work       = ws[friction_work];
-      e.switching_work      = ws[switching_work];
-      e.many_body_work      = ws[many_body_work];
-      e.load_work           = ws[load_work];
-      e.damped_work         = ws[damped_work];
-      e.pair_work           = ws[pair_work];
-      e.n_bonded            = counts[0];
-      e.n_unbonded_contacts = counts[1];
+      const double *ws = sums.data() + 2;
+      for (const LedgerEntry &entry : energy_ledger)
+        if (entry.work < n_works)
+          e[entry.term] = ws[entry.work];
+      e[Energy::kinetic]    = sums[0];
+      e[Energy::elastic]    = sums[1];
+      e[Energy::n_bonded]   = counts[0];
+      e[Energy::n_unbonded] = counts[1];
       return e;
     }
 
@@ -500,20 +521,13 @@ namespace tribodyn
       std::size_t bytes = 0;
       auto        add
         = [&](const auto &vec) { bytes += vec.capacity() * sizeof(vec[0]); };
-      add(id), add(order), add(cell_of), add(x), add(x_at_rebuild);
-      for (const auto *vec : {&v, &w, &f, &torque, &u})
-        add(*vec);
-      add(mat), add(body), add(size_level), add(volume), add(groups),
-        add(eps_p), add(sigma_y);
-      add(plast), add(bond_buffer), add(dsm), add(side_dq), add(pair_mu),
-        add(pair_dr), add(step_normals);
-      add(mb_mu), add(mb_state), add(mb_shape);
-      add(trial), add(fabric_inverse), add(changed);
+      bytes += automaton_fields.memory_consumption();
+      add(pair_mu), add(pair_dr), add(step_normals);
       add(pi), add(pj), add(pshift);
       bytes += pair_fields.memory_consumption();
       add(beta_i), add(beta_j), add(kept_states), add(kept_keys);
       add(i_pairs_first);
-      add(i_pairs_count), add(j_pairs_first), add(j_pairs), add(f_damp);
+      add(i_pairs_count), add(j_pairs_first), add(j_pairs);
       return bytes;
     }
 
@@ -543,6 +557,19 @@ namespace tribodyn
             ++n[pj[p]];
           }
       return n;
+    }
+
+
+    std::vector<AutomatonSystem::ContactLine>
+    AutomatonSystem::unbonded_contact_lines() const
+    {
+      std::vector<ContactLine> lines;
+      for (unsigned int p = 0; p < pi.size(); ++p)
+        if (!bonded[p] && in_contact[p] && owned(pi[p]))
+          lines.push_back({cells.wrap(x[pi[p]]),
+                           pair_vector(p),
+                           0.5 * (sig_i[p] + sig_j[p])});
+      return lines;
     }
 
 

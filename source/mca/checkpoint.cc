@@ -9,16 +9,17 @@
 // another number of ranks the saved arrays are read one writer at a time
 // and turned into records sent to the new owners (redistribution.cc).
 //
-// MCA_CHECKPOINT_STATE and MCA_CHECKPOINT_PAIR_LISTS below, with the
-// persistent pair fields of AutomatonSystem::register_pair_fields() between
-// them, are the ONE list of what is saved: when an array of AutomatonSystem
-// that lives from one step to the next is added, removed or renamed, update
-// the list (a persistent pair field: register it, nothing else); the ctest
-// mca_restart_* tests compare a resumed run with an uninterrupted one and
-// fail if something is missed. Per-step scratch buffers (plast,
-// bond_buffer, dsm, side_dq, pair_dr, step_normals, trial) and the rebuild's
-// transient lists (kept_states, kept_keys, old_pairs, old_flags) are rebuilt
-// before use and are not saved, nor is mb_shape (derived from mb_state on
+// What is saved: the run's counters (MCA_CHECKPOINT_STATE below), every
+// per-automaton array but the scratch ones (AutomatonSystem::
+// register_automaton_fields()), the pair list, the persistent pair fields
+// (register_pair_fields()) and the pair lists of the automata
+// (MCA_CHECKPOINT_PAIR_LISTS). A new per-automaton array or persistent pair
+// field is registered, nothing else; a new counter goes into the list
+// below. The ctest mca_restart_* tests compare a resumed run with an
+// uninterrupted one and fail if something is missed. Per-step pair buffers
+// (pair_dr, step_normals) and the rebuild's transient lists (kept_states,
+// kept_keys, old_pairs, old_flags) are rebuilt before use and are not
+// saved, nor is mb_shape (a scratch field, derived from mb_state on
 // resume); the material constants (mc, springs) come from the parameters.
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
@@ -43,8 +44,10 @@ namespace tribodyn
       // 7: the pair-level energy (many-body offsets of the sides, mu,
       // kappa, gamma, G of the automata, switching and many-body work);
       // 8: which automata are many-body uniform; 9: that derived from
-      // lambda on resume (sync_many_body_shapes()), not saved
-      constexpr unsigned int state_version = 9;
+      // lambda on resume (sync_many_body_shapes()), not saved; 10: the
+      // per-automaton arrays from their table (automaton_fields), after the
+      // group reactions
+      constexpr unsigned int state_version = 10;
 
       // Scalars and vectors of trivially copyable types as raw bytes (fast
       // and exact); anything else through Boost's own serialization.
@@ -103,14 +106,10 @@ namespace tribodyn
   /* the partition: weights of each rebalance (replayed on resume) */         \
   apply(rebalance_count) apply(partition_imbalance) apply(rebalance_history)  \
   /* staged loading and energy bookkeeping */                                 \
-  apply(first_contact_time) apply(f_damp_rebuild)                            \
-  /* automata: owned first, then ghosts */                                    \
-  apply(id) apply(order) apply(cell_of) apply(x) apply(x_at_rebuild)          \
-  apply(v) apply(w) apply(f) apply(torque) apply(u)                           \
-  apply(mat) apply(body) apply(size_level) apply(volume) apply(groups)       \
-  apply(eps_p) apply(sigma_y) apply(mb_mu) apply(mb_state)                   \
-  apply(group_reaction) apply(fabric_inverse) apply(changed) apply(f_damp)   \
-  /* pairs: the list (the persistent fields follow, from pair_fields) */     \
+  apply(first_contact_time) apply(f_damp_rebuild) apply(group_reaction)
+// (then the automata, from automaton_fields; the pairs: the list, the
+// persistent fields from pair_fields, the lists of the automata)
+#define MCA_CHECKPOINT_PAIRS(apply)                                           \
   apply(pi) apply(pj) apply(pshift)
 #define MCA_CHECKPOINT_PAIR_LISTS(apply)                                      \
   apply(beta_i) apply(beta_j) apply(i_pairs_first) apply(i_pairs_count)      \
@@ -124,6 +123,8 @@ namespace tribodyn
       ar << state_version << n_ranks << dt << n_global;
 #define MCA_PUT(member) put(ar, member);
       MCA_CHECKPOINT_STATE(MCA_PUT)
+      automaton_fields.save(ar);
+      MCA_CHECKPOINT_PAIRS(MCA_PUT)
       pair_fields.for_each_array([&](const auto &a) { put(ar, a); },
                                  [&](const auto &a) { put(ar, a); });
       MCA_CHECKPOINT_PAIR_LISTS(MCA_PUT)
@@ -161,6 +162,8 @@ namespace tribodyn
             "version of tribodyn.");
 #define MCA_GET(member) get(ar, member);
       MCA_CHECKPOINT_STATE(MCA_GET)
+      automaton_fields.load(ar);
+      MCA_CHECKPOINT_PAIRS(MCA_GET)
       pair_fields.for_each_array([&](auto &a) { get(ar, a); },
                                  [&](auto &a) { get(ar, a); });
       MCA_CHECKPOINT_PAIR_LISTS(MCA_GET)
@@ -199,6 +202,7 @@ namespace tribodyn
     }
 
 #undef MCA_CHECKPOINT_STATE
+#undef MCA_CHECKPOINT_PAIRS
 #undef MCA_CHECKPOINT_PAIR_LISTS
   } // namespace mca
 } // namespace tribodyn

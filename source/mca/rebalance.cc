@@ -87,7 +87,7 @@ namespace tribodyn
       // The automata (all owned ones: after migrate() each is in an owned
       // cell, x wrapped into the box).
       particles->clear_particles();
-      std::vector<double> props(migration_properties);
+      std::vector<double> props(automaton_fields.record_width());
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           pack_automaton(k, props.data());
@@ -136,7 +136,7 @@ namespace tribodyn
       // Read them back.
       n_owned = particles->n_locally_owned_particles();
       n_local = n_owned;
-      resize_automaton_arrays(n_owned);
+      automaton_fields.resize(n_owned);
       unsigned int k = 0, n_bad = 0;
       for (const auto &particle : *particles)
         {

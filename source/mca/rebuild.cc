@@ -16,32 +16,9 @@ namespace tribodyn
 {
   namespace mca
   {
-    namespace
-    {
-      // Layout of the particle properties of a migrating automaton.
-      namespace prop
-      {
-        constexpr unsigned int v = 0, w = 3, f = 6, torque = 9, u = 12,
-                               mat = 15, body = 16, groups = 17, eps_p = 18,
-                               sigma_y = 19, size_level = 20, volume = 21,
-                               n = 22;
-      } // namespace prop
-
-      // Fields of a ghost record (doubles; keys as raw 64-bit words).
-      namespace ghost_field
-      {
-        constexpr unsigned int id = 0, order = 1, x = 2, mat = 5, body = 6,
-                               size_level = 7, n = 8;
-      } // namespace ghost_field
-
-    } // namespace
-
     using records::bits_to_double;
     using records::double_to_bits;
     using records::pair_key;
-
-    static_assert(prop::n == 22,
-                  "AutomatonSystem::migration_properties must equal prop::n");
 
 
     void
@@ -86,21 +63,7 @@ namespace tribodyn
     void
     AutomatonSystem::pack_automaton(const unsigned int k, double *props) const
     {
-      for (unsigned int c = 0; c < 3; ++c)
-        {
-          props[prop::v + c]      = v[k][c];
-          props[prop::w + c]      = w[k][c];
-          props[prop::f + c]      = f[k][c];
-          props[prop::torque + c] = torque[k][c];
-          props[prop::u + c]      = u[k][c];
-        }
-      props[prop::mat]        = mat[k];
-      props[prop::body]       = body[k];
-      props[prop::groups]     = groups[k];
-      props[prop::eps_p]      = eps_p[k];
-      props[prop::sigma_y]    = plastic_scene ? sigma_y[k] : 0.;
-      props[prop::size_level] = size_level[k];
-      props[prop::volume]     = volume[k];
+      automaton_fields.pack(k, props);
     }
 
 
@@ -113,22 +76,7 @@ namespace tribodyn
       id[k]      = the_id;
       x[k]       = location;
       cell_of[k] = cells.local_cell(x[k]);
-      for (unsigned int c = 0; c < 3; ++c)
-        {
-          v[k][c]      = props[prop::v + c];
-          w[k][c]      = props[prop::w + c];
-          f[k][c]      = props[prop::f + c];
-          torque[k][c] = props[prop::torque + c];
-          u[k][c]      = props[prop::u + c];
-        }
-      mat[k]        = static_cast<unsigned char>(props[prop::mat]);
-      body[k]       = static_cast<unsigned char>(props[prop::body]);
-      size_level[k] = static_cast<unsigned char>(props[prop::size_level]);
-      volume[k]     = props[prop::volume];
-      groups[k]     = static_cast<std::uint32_t>(props[prop::groups]);
-      eps_p[k]      = props[prop::eps_p];
-      if (plastic_scene)
-        sigma_y[k] = props[prop::sigma_y];
+      automaton_fields.unpack(k, props);
     }
 
 
@@ -249,9 +197,10 @@ namespace tribodyn
       // automata that crossed a periodic face go to their new owner point
       // to point, with the same record.
       particles->clear_particles();
-      Assert(particles->n_properties_per_particle() == prop::n,
+      const unsigned int n_props = automaton_fields.record_width();
+      Assert(particles->n_properties_per_particle() == n_props,
              dealii::ExcInternalError());
-      std::vector<double>              props(prop::n);
+      std::vector<double>              props(n_props);
       std::vector<std::vector<double>> out_automata(nb_ranks.size());
       for (unsigned int k = 0; k < n_owned; ++k)
         if (destination[k] != rank)
@@ -283,32 +232,15 @@ namespace tribodyn
           {
             cell_of[k] = new_cell[k];
             if (kept != k)
-              {
-                id[kept]         = id[k];
-                x[kept]          = x[k];
-                cell_of[kept]    = cell_of[k];
-                v[kept]          = v[k];
-                w[kept]          = w[k];
-                f[kept]          = f[k];
-                torque[kept]     = torque[k];
-                u[kept]          = u[k];
-                mat[kept]        = mat[k];
-                body[kept]       = body[k];
-                size_level[kept] = size_level[k];
-                volume[kept]     = volume[k];
-                groups[kept]     = groups[k];
-                eps_p[kept]      = eps_p[k];
-                if (plastic_scene)
-                  sigma_y[kept] = sigma_y[k];
-              }
+              automaton_fields.move(k, kept);
             ++kept;
           }
-      const unsigned int record    = 4 + prop::n;
+      const unsigned int record    = 4 + n_props;
       unsigned int       n_arrived = particles->n_locally_owned_particles();
       for (const auto &buf : in_automata)
         n_arrived += buf.size() / record;
       n_owned = kept + n_arrived;
-      resize_automaton_arrays(n_owned);
+      automaton_fields.resize(n_owned);
       unsigned int k = kept, n_bad = 0;
       auto         arrive = [&](const std::uint32_t the_id,
                         const Point3       &location,
@@ -366,18 +298,12 @@ namespace tribodyn
         return cell_curve[a] != cell_curve[b] ? cell_curve[a] < cell_curve[b]
                                               : id[a] < id[b];
       });
-      auto permute = [&](auto &vec) {
-        auto copy = vec;
+      automaton_fields.permute(perm);
+      {
+        const auto copy = cell_curve;
         for (unsigned int k = 0; k < n_owned; ++k)
-          vec[k] = copy[perm[k]];
-      };
-      permute(id), permute(cell_of), permute(x), permute(v), permute(w);
-      permute(f), permute(torque), permute(u), permute(mat);
-      permute(body), permute(size_level), permute(volume), permute(groups);
-      permute(eps_p);
-      if (plastic_scene)
-        permute(sigma_y);
-      permute(cell_curve);
+          cell_curve[k] = copy[perm[k]];
+      }
       order.resize(n_owned);
       for (unsigned int k = 0, rank_in_cell = 0; k < n_owned; ++k)
         {
@@ -440,8 +366,9 @@ namespace tribodyn
       // the scene (1.12 · 4d with automata of 4d); without this choice the
       // fine automata next to another rank would all be sent, a layer 4.5
       // times thicker than their pairs reach (doc/performance.md).
-      const unsigned int               n_nb = cells.neighbour_ranks().size();
-      std::vector<std::vector<double>> out(n_nb);
+      const unsigned int n_nb        = cells.neighbour_ranks().size();
+      const unsigned int ghost_width = automaton_fields.ghost_width();
+      std::vector<std::vector<double>>       out(n_nb);
       std::vector<std::vector<unsigned int>> send_indices(n_nb);
       std::vector<unsigned int> first_of_cell(cells.n_owned_cells() + 1, 0);
       for (unsigned int k = 0; k < n_owned; ++k)
@@ -505,36 +432,26 @@ namespace tribodyn
                 if (!needed)
                   continue;
                 send_indices[n].push_back(k);
-                auto &buf = out[n];
-                buf.push_back(id[k]);
-                buf.push_back(bits_to_double(order[k]));
-                for (unsigned int e = 0; e < 3; ++e)
-                  buf.push_back(x[k][e]);
-                buf.push_back(mat[k]);
-                buf.push_back(body[k]);
-                buf.push_back(size_level[k]);
+                auto             &buf   = out[n];
+                const std::size_t start = buf.size();
+                buf.resize(start + ghost_width);
+                automaton_fields.pack_ghost(k, buf.data() + start);
               }
           }
       const auto                in = neighbours.exchange(out, 82);
       std::vector<unsigned int> offsets(n_nb + 1, n_owned);
       for (unsigned int n = 0; n < n_nb; ++n)
-        offsets[n + 1] = offsets[n] + in[n].size() / ghost_field::n;
+        offsets[n + 1] = offsets[n] + in[n].size() / ghost_width;
       n_local = offsets[n_nb];
-      resize_automaton_arrays(n_local);
+      automaton_fields.resize(n_local);
       order.resize(n_local);
       unsigned int n_bad = 0;
       for (unsigned int n = 0; n < n_nb; ++n)
         for (unsigned int g = 0, k = offsets[n]; k < offsets[n + 1]; ++g, ++k)
           {
-            const double *r = in[n].data() + g * ghost_field::n;
-            id[k]           = static_cast<std::uint32_t>(r[ghost_field::id]);
-            order[k]        = double_to_bits(r[ghost_field::order]);
-            for (unsigned int e = 0; e < 3; ++e)
-              x[k][e] = r[ghost_field::x + e];
-            mat[k]  = static_cast<unsigned char>(r[ghost_field::mat]);
-            body[k] = static_cast<unsigned char>(r[ghost_field::body]);
-            size_level[k]
-              = static_cast<unsigned char>(r[ghost_field::size_level]);
+            automaton_fields.unpack_ghost(k,
+                                          in[n].data()
+                                            + std::size_t(g) * ghost_width);
             cell_of[k] = cells.local_cell(x[k]);
             if (cell_of[k] == Decomposition::invalid)
               ++n_bad;

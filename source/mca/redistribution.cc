@@ -103,7 +103,8 @@ namespace tribodyn
       const bool has_fabric = fabric_inverse.size() >= n_owned;
       const bool has_damp   = damping_on && f_damp_rebuild == rebuild_count
                             && f_damp.size() == n_owned;
-      const unsigned int  stride = field::props + migration_properties + extras;
+      const unsigned int stride
+        = field::props + automaton_fields.record_width() + extras;
       std::vector<double> record(stride, 0.);
       for (unsigned int k = 0; k < n_owned; ++k)
         {
@@ -115,7 +116,8 @@ namespace tribodyn
             }
           record[field::id] = id[k];
           pack_automaton(k, record.data() + field::props);
-          double *e = record.data() + field::props + migration_properties;
+          double *e
+            = record.data() + field::props + automaton_fields.record_width();
           if (has_fabric)
             std::copy_n(fabric_inverse[k].begin(), 6, e);
           e[6] = k < changed.size() ? changed[k] : 1;
@@ -164,8 +166,9 @@ namespace tribodyn
                                   static_cast<unsigned int>(
                                     std::max(0, top - 1)),
                                   comm);
-      const unsigned int  stride = field::props + migration_properties + extras;
-      const unsigned int  width  = pair_head + pair_fields.width();
+      const unsigned int   stride
+        = field::props + automaton_fields.record_width() + extras;
+      const unsigned int  width       = pair_head + pair_fields.width();
       std::vector<double> in_automata = router.route(absorbed.automata, stride);
       std::vector<double>().swap(absorbed.automata);
       std::vector<double> in_pairs = router.route(absorbed.pairs, width);
@@ -182,7 +185,7 @@ namespace tribodyn
         if (owned_here(in_automata.data() + o))
           mine.push_back(o);
       n_owned = n_local = mine.size();
-      resize_automaton_arrays(n_owned);
+      automaton_fields.resize(n_owned);
       std::vector<std::pair<std::uint32_t, std::size_t>> record_of(n_owned);
       for (unsigned int k = 0; k < n_owned; ++k)
         {
@@ -304,7 +307,7 @@ namespace tribodyn
               x_at_rebuild[k][c] = static_cast<float>(r[field::x_rebuild + c]);
               x[k][c]            = r[field::x + c];
             }
-          const double *e = r + field::props + migration_properties;
+          const double *e = r + field::props + automaton_fields.record_width();
           if (fabric_stored && e[10] != 0)
             std::copy_n(e, 6, fabric_inverse[k].begin());
           changed[k] = e[6] != 0;

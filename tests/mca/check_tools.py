@@ -34,23 +34,26 @@ def report_relative(graded, uniform, checks, indent=""):
 
 
 # The terms of the energy balance in summary.json (doc/theory/mca.md §8.4):
-# what the scene holds, dissipated or booked since the start; their sum is
-# the work of the loads (the scenes start at rest and unstressed).
-ENERGY_TERMS = ("kinetic_energy", "elastic_energy", "plastic_work",
-                "friction_work", "switching_work", "many_body_work",
-                "damped_work")
+# the run's energy ledger ("energy_ledger": include/tribodyn/mca/
+# system_figures.h, each term declared once there) names what the scene
+# holds, dissipated or booked since the start ("held"); their sum is the
+# work of the loads ("supplied": the scenes start at rest and unstressed).
+def energy_ledger(summary, role="held"):
+    """The names of the ledger's terms of ROLE in SUMMARY."""
+    return summary["energy_ledger"][role]
 
 
 def energy_stored(summary):
-    """The sum of ENERGY_TERMS in SUMMARY."""
-    return sum(summary[k] for k in ENERGY_TERMS)
+    """The sum of the held terms of SUMMARY's ledger."""
+    return sum(summary[k] for k in energy_ledger(summary))
 
 
 def energy_terms(summary):
-    """The ENERGY_TERMS of SUMMARY as fractions of its load work (text)."""
-    W = summary["load_work"]
+    """The held terms of SUMMARY as fractions of its load work (text)."""
+    W = sum(summary[k] for k in energy_ledger(summary, "supplied"))
     return ", ".join("%s %+.4f" % (k.replace("_energy", "").replace("_work", ""),
-                                   summary[k] / W) for k in ENERGY_TERMS)
+                                   summary[k] / W)
+                     for k in energy_ledger(summary))
 
 
 def finish():

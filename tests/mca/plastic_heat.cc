@@ -140,7 +140,7 @@ main(int argc, char **argv)
   check(first_yield > 0,
         "the blocks yield (first at increment " + std::to_string(first_yield)
           + ")");
-  check_relative(system.energies().plastic_work,
+  check_relative(system.energies()[Energy::plastic],
                  sum_work,
                  work_tolerance,
                  "plastic work released by the pair sides against the J2 "

@@ -288,11 +288,12 @@ main(int argc, char **argv)
         worst_inv    = std::max(worst_inv, std::abs(Iv - I0) / I0);
         const auto e = sys.energies();
         worst_work
-          = std::max(worst_work, std::abs(e.kinetic - e.pair_work - E0) / E0);
+          = std::max(worst_work,
+                     std::abs(e[Energy::kinetic] - e[Energy::pair] - E0) / E0);
         const Vec3 K = sys.pair_views().at(0).moment;
         worst_elastic
           = std::max(worst_elastic,
-                     std::abs(e.elastic - dot(K, K) / (2 * k_t)) / E0);
+                     std::abs(e[Energy::elastic] - dot(K, K) / (2 * k_t)) / E0);
       }
     check(crossings.size() >= 8,
           std::to_string(crossings.size()) + " zero crossings of K . n");
@@ -387,7 +388,7 @@ main(int argc, char **argv)
                    twist_limit,
                    1e-12,
                    "twisting moment at the limit while slipping");
-    check(pair.system.energies().friction_work > 0,
+    check(pair.system.energies()[Energy::friction] > 0,
           "slip of the twisting moment counted as friction work");
     const double bend_limit = 0.25 * -pv.sigma * S * a;
     double       worst_b = 0, last_b = 0;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <tribodyn/mca/automaton_fields.h>
 #include <tribodyn/mca/parameters.h>
 #include <tribodyn/mca/vector_algebra.h>
 #include <vector>
@@ -102,6 +103,11 @@ namespace tribodyn
       /// Owned automata whose contacts or bonds changed (weights stale).
       std::vector<unsigned char> changed;
       bool                       any_changed = true;
+      /// Every per-automaton array, registered once with its kind
+      /// (AutomatonSystem::register_automaton_fields(): the one list of
+      /// what an automaton carries, what is checkpointed and what is
+      /// counted as memory).
+      AutomatonFieldTable automaton_fields;
 
       /// Is local automaton @p k owned by this rank?
       bool

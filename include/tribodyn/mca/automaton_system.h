@@ -12,6 +12,7 @@
 #include <deal.II/particles/particle_handler.h>
 #include <functional>
 #include <memory>
+#include <tribodyn/core/archive_fwd.h>
 #include <tribodyn/mca/automaton_arrays.h>
 #include <tribodyn/mca/bond_laws.h>
 #include <tribodyn/mca/decomposition.h>
@@ -24,15 +25,6 @@
 #include <tribodyn/mca/system_scalars.h>
 #include <tribodyn/mca/vector_algebra.h>
 #include <vector>
-
-namespace boost
-{
-  namespace archive
-  {
-    class binary_oarchive;
-    class binary_iarchive;
-  } // namespace archive
-} // namespace boost
 
 namespace tribodyn
 {
@@ -222,23 +214,12 @@ namespace tribodyn
         return cells;
       }
 
-      /// Write particles_NNNN.pvtu (+ .vtu per rank); returns the pvtu name
-      /// relative to @p directory. With @p slab, only automata whose
-      /// coordinate along @p axis lies within [lo, hi].
-      std::string
-      write_particles(const std::string &directory,
-                      const std::string &base,
-                      const unsigned int number,
-                      const bool         with_stress,
-                      const bool         slab    = false,
-                      const unsigned int axis    = 0,
-                      const double       slab_lo = 0,
-                      const double       slab_hi = 0) const;
-
       // ---- access for analyses and tests (owned automata: index < n_owned)
       // (read access to the automata's arrays: automaton_arrays.h)
       using AutomatonArrays::angular_velocities;
+      using AutomatonArrays::body_index;
       using AutomatonArrays::displacements;
+      using AutomatonArrays::elastic;
       using AutomatonArrays::forces;
       using AutomatonArrays::ids;
       using AutomatonArrays::materials;
@@ -268,16 +249,25 @@ namespace tribodyn
       std::vector<unsigned int>
       unbonded_contact_counts() const;
 
-      /// Write the unbonded pairs in contact whose both automata lie in
-      /// the slab [lo, hi] along @p axis as line cells (NAME_NNNN.pvtu +
-      /// one .vtu per rank; the seed's Fig. 3a connects them by lines).
-      std::string
-      write_unbonded_pairs(const std::string &directory,
-                           const std::string &base,
-                           const unsigned int number,
-                           const unsigned int axis,
-                           const double       slab_lo,
-                           const double       slab_hi) const;
+      /// An unbonded pair in contact as a line: from x_i (wrapped into
+      /// the box) to x_i + (x_j - x_i + image shift), so that pairs across
+      /// a periodic face are short lines, not box-long ones; sigma: the
+      /// mean normal stress of its two sides.
+      struct ContactLine
+      {
+        Point3 from;
+        Vec3   along;
+        double sigma;
+      };
+      /// The unbonded pairs in contact, each once (by the owner of its i).
+      std::vector<ContactLine>
+      unbonded_contact_lines() const;
+      /// Size 2^L d of local automaton @p k.
+      double
+      automaton_size(const unsigned int k) const
+      {
+        return d * (1u << (size_level[k] & ~transitional_flag));
+      }
 
       /// Set velocity and angular velocity of every local automaton from a
       /// function of the position (tests, initial conditions).
@@ -363,8 +353,9 @@ namespace tribodyn
       /// records too (kept_keys, kept_states) for repartition_automata().
       void
       migrate(const bool all_pair_states = false);
-      /// The migration record of automaton @p k (migration_properties
-      /// doubles) and its inverse, which also finds the local cell.
+      /// The migration record of automaton @p k (its carried fields,
+      /// automaton_fields.record_width() doubles) and its inverse, which
+      /// also sets its id and position and finds its local cell.
       void
       pack_automaton(const unsigned int k, double *props) const;
       void
@@ -416,8 +407,6 @@ namespace tribodyn
       /// Restore the pair states kept over a rebuild.
       void
       restore_pair_states(const bool initial);
-      void
-      resize_automaton_arrays(const unsigned int n);
 
       // --- dynamics (pair_kernel.cc)
       /// Ghosts' x, v, w from their owners.
@@ -594,12 +583,6 @@ namespace tribodyn
       group_value(const BoundaryGroup &g, const double t) const;
 
       // --- automata of several sizes (graded_geometry.cc)
-      /// Size 2^L d of local automaton @p k.
-      double
-      automaton_size(const unsigned int k) const
-      {
-        return d * (1u << (size_level[k] & ~transitional_flag));
-      }
       double
       mass_of(const unsigned int k) const
       {
@@ -650,9 +633,6 @@ namespace tribodyn
       void
       drop_inert_pairs();
 
-      /// Particle properties of a migrating automaton (see rebuild.cc).
-      static constexpr unsigned int migration_properties = 22;
-
       const Parameters &prm;
       MPI_Comm          comm;
       unsigned int      n_ranks, rank;
@@ -664,6 +644,8 @@ namespace tribodyn
 
       void
       register_pair_fields();
+      void
+      register_automaton_fields();
       /// The friction laws of unbonded pairs (the chosen one holds its
       /// pair state, registered in pair_fields).
       FrictionLaws friction_laws;

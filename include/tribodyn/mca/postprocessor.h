@@ -4,20 +4,12 @@
 #include <mpi.h>
 #include <ostream>
 #include <string>
+#include <tribodyn/core/archive_fwd.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/plugin_registry.h>
 #include <tribodyn/mca/automaton_system.h>
 #include <tribodyn/mca/parameters.h>
 #include <vector>
-
-namespace boost
-{
-  namespace archive
-  {
-    class binary_oarchive;
-    class binary_iarchive;
-  } // namespace archive
-} // namespace boost
 
 namespace tribodyn
 {

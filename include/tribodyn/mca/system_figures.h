@@ -3,6 +3,7 @@
 #define tribodyn_mca_system_figures_h
 
 #include <array>
+#include <cstddef>
 
 namespace tribodyn
 {
@@ -35,28 +36,119 @@ namespace tribodyn
     /// One value per Work.
     using WorkSums = std::array<double, n_works>;
 
-    /// Global figures of the current state (summed over ranks).
+    /// What a term of the energy ledger is to the balance.
+    enum class EnergyRole : unsigned char
+    {
+      /// held by the scene or dissipated since the start: the left side
+      held,
+      /// supplied: the work of the boundary groups (loads)
+      supplied,
+      /// a figure beside the balance (the pair forces' work on the
+      /// automata, for the kinetic-energy identity)
+      diagnostic,
+      /// a count of pairs
+      count
+    };
+
+    /// The terms of the ledger, in the order of its entries.
+    enum class Energy : unsigned int
+    {
+      kinetic,
+      elastic,
+      plastic,
+      friction,
+      n_bonded,
+      n_unbonded,
+      load,
+      damped,
+      pair,
+      switching,
+      many_body,
+      n
+    };
+
+    /// One term of the energy ledger.
+    struct LedgerEntry
+    {
+      Energy term;
+      /// Its column in series.csv and its key in summary.json.
+      const char *name;
+      /// Its name on the screen.
+      const char *label;
+      EnergyRole  role;
+      /// The accumulated work it reads (Work), or n_works: computed from
+      /// the state (kinetic and elastic energies, counts).
+      unsigned int work;
+    };
+
+    /**
+     * The energy ledger (doc/theory/mca.md §8.4): each term of the balance
+     * declared once. The energies postprocessor writes its columns and
+     * summary keys in this order, the balance sums its held terms against
+     * its supplied ones, and summary.json lists the roles
+     * ("energy_ledger") for the test tools (tests/mca/check_tools.py).
+     */
+    // clang-format off
+    inline constexpr std::array<LedgerEntry, std::size_t(Energy::n)>
+      energy_ledger = {{
+        // term               name                   label                role                  work
+        {Energy::kinetic,    "kinetic_energy",      "kinetic",           EnergyRole::held,       n_works},
+        {Energy::elastic,    "elastic_energy",      "elastic",           EnergyRole::held,       n_works},
+        {Energy::plastic,    "plastic_work",        "plastic",           EnergyRole::held,       plastic_work},
+        {Energy::friction,   "friction_work",       "friction",          EnergyRole::held,       friction_work},
+        {Energy::n_bonded,   "n_bonded_pairs",      "bonded pairs",      EnergyRole::count,      n_works},
+        {Energy::n_unbonded, "n_unbonded_contacts", "unbonded contacts", EnergyRole::count,      n_works},
+        {Energy::load,       "load_work",           "load work",         EnergyRole::supplied,   load_work},
+        {Energy::damped,     "damped_work",         "damped",            EnergyRole::held,       damped_work},
+        {Energy::pair,       "pair_work",           "pair work",         EnergyRole::diagnostic, pair_work},
+        {Energy::switching,  "switching_work",      "switching",         EnergyRole::held,       switching_work},
+        {Energy::many_body,  "many_body_work",      "many-body",         EnergyRole::held,       many_body_work},
+      }};
+    // clang-format on
+
+    namespace internal
+    {
+      constexpr bool
+      ledger_in_term_order()
+      {
+        for (std::size_t i = 0; i < energy_ledger.size(); ++i)
+          if (static_cast<std::size_t>(energy_ledger[i].term) != i)
+            return false;
+        return true;
+      }
+    } // namespace internal
+    static_assert(internal::ledger_in_term_order(),
+                  "energy_ledger lists the terms in the order of Energy");
+
+    /// The ledger's values for the current state (summed over ranks):
+    /// energies and works in J, counts of pairs.
     struct SystemEnergies
     {
-      double kinetic       = 0;
-      double elastic       = 0;
-      double plastic_work  = 0;
-      double friction_work = 0;
-      /// Released where the state of a pair switches (contacts opening or
-      /// losing their tension, bonds broken beyond contact, re-weighted
-      /// neighbourhoods), and the non-conservative work of the many-body
-      /// law (doc/theory/mca.md §8.4), both since the start.
-      double             switching_work = 0, many_body_work = 0;
-      unsigned long long n_bonded            = 0;
-      unsigned long long n_unbonded_contacts = 0;
-      /// Work of the boundary groups (applied forces and prescribed
-      /// velocities, damping excluded) and energy removed by damping, both
-      /// since the start (see AutomatonSystem::step()).
-      double load_work   = 0;
-      double damped_work = 0;
-      /// Work of the pair forces and torques on the automata since the
-      /// start (minus the energy the pairs stored or dissipated).
-      double pair_work = 0;
+      std::array<double, std::size_t(Energy::n)> value{};
+
+      double
+      operator[](const Energy term) const
+      {
+        return value[static_cast<std::size_t>(term)];
+      }
+      double &
+      operator[](const Energy term)
+      {
+        return value[static_cast<std::size_t>(term)];
+      }
+      /// Sum of the held terms minus the supplied ones (0 when the energy
+      /// is balanced).
+      double
+      balance_residual() const
+      {
+        double held = 0, supplied = 0;
+        for (const LedgerEntry &entry : energy_ledger)
+          if (entry.role == EnergyRole::held)
+            held += (*this)[entry.term];
+          else if (entry.role == EnergyRole::supplied)
+            supplied += (*this)[entry.term];
+        return held - supplied;
+      }
     };
 
     /// Number of automata per rank for a partition (partition report).

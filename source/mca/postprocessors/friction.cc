@@ -167,8 +167,8 @@ namespace tribodyn
         times.push_back(time);
         normal.push_back(fn);
         tangential.push_back(ft);
-        bonded.push_back(energies.n_bonded);
-        unbonded.push_back(energies.n_unbonded_contacts);
+        bonded.push_back(energies[Energy::n_bonded]);
+        unbonded.push_back(energies[Energy::n_unbonded]);
         return fn > 0 ? ft / fn : 0;
       }
 
