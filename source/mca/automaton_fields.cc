@@ -177,16 +177,5 @@ namespace tribodyn
         bytes += field.array->memory_consumption();
       return bytes;
     }
-
-
-    std::size_t
-    AutomatonFieldTable::bytes_per_automaton() const
-    {
-      std::size_t bytes = 0;
-      for (const AutomatonField &field : fields)
-        if (!field.in_use || field.in_use())
-          bytes += field.array->bytes_per_row();
-      return bytes;
-    }
   } // namespace mca
 } // namespace tribodyn

@@ -110,8 +110,6 @@ namespace tribodyn
         = 0;
       virtual std::size_t
       memory_consumption() const = 0;
-      virtual std::size_t
-      bytes_per_row() const = 0;
       virtual void
       save(boost::archive::binary_oarchive &ar) const = 0;
       virtual void
@@ -193,13 +191,13 @@ namespace tribodyn
       /// Bytes held by all registered arrays (their capacity).
       std::size_t
       memory_consumption() const;
-      /// Bytes per row of the fields in use.
-      std::size_t
-      bytes_per_automaton() const;
 
     private:
+      /// Is @p field an identity or carried field the scene uses (sized,
+      /// moved and ordered with the automata)?
       bool
-                                  sized(const AutomatonField &field) const;
+      sized(const AutomatonField &field) const;
+
       std::vector<AutomatonField> fields;
     };
 
@@ -262,11 +260,6 @@ namespace tribodyn
         memory_consumption() const override
         {
           return vec.capacity() * sizeof(T);
-        }
-        std::size_t
-        bytes_per_row() const override
-        {
-          return sizeof(T);
         }
         void
         save(boost::archive::binary_oarchive &ar) const override
