@@ -167,8 +167,9 @@ namespace tribodyn
       // record; carried: in the record too; step: checkpointed only;
       // scratch: per-step buffers, counted as memory only. to_ghosts: in
       // the record of a ghost (the pair law and the list need them).
-      using Kind                                = AutomatonFieldKind;
-      auto &t                                   = automaton_fields;
+      using Kind = AutomatonFieldKind;
+      auto &t    = automaton_fields;
+
       t.add("id", Kind::identity, id).to_ghosts = true;
       // (the global order key: set at a rebuild, read by the ghosts' ranks)
       t.add("order", Kind::step, order).to_ghosts = true;
