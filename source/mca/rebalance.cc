@@ -90,7 +90,7 @@ namespace tribodyn
       std::vector<double> props(automaton_fields.record_width());
       for (unsigned int k = 0; k < n_owned; ++k)
         {
-          pack_automaton(k, props.data());
+          automaton_fields.pack(k, props.data());
           insert(*particles, k, id[k], props.data(), props.size());
         }
 

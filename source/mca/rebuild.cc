@@ -61,13 +61,6 @@ namespace tribodyn
 
 
     void
-    AutomatonSystem::pack_automaton(const unsigned int k, double *props) const
-    {
-      automaton_fields.pack(k, props);
-    }
-
-
-    void
     AutomatonSystem::unpack_automaton(const unsigned int  k,
                                       const std::uint32_t the_id,
                                       const Point3       &location,
@@ -205,7 +198,7 @@ namespace tribodyn
       for (unsigned int k = 0; k < n_owned; ++k)
         if (destination[k] != rank)
           {
-            pack_automaton(k, props.data());
+            automaton_fields.pack(k, props.data());
             if (crossed[k])
               {
                 auto &buf = out_automata[cells.neighbour_index(destination[k])];

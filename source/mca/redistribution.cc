@@ -4,10 +4,10 @@
 // and turns them into records that know their place:
 //
 //  - an automaton: its position at the last pair-list rebuild (x_at_rebuild)
-//    and now, its id, the migration record of a rebuild (pack_automaton())
-//    and what lives from one step to the next beyond it (inverse fabric
-//    tensor, the "neighbourhood changed" flag, the damping force of the
-//    last step);
+//    and now, its id, the migration record of a rebuild
+//    (automaton_fields.pack()) and what lives from one step to the next
+//    beyond it (inverse fabric tensor, the "neighbourhood changed" flag, the
+//    damping force of the last step);
 //  - a pair state, once for each automaton of the pair its writer owned:
 //    that automaton's position at the last rebuild, the pair's key, the
 //    automaton's id and its side's neighbourhood weight beta (valid on the
@@ -115,7 +115,7 @@ namespace tribodyn
               record[field::x + c]         = x[k][c];
             }
           record[field::id] = id[k];
-          pack_automaton(k, record.data() + field::props);
+          automaton_fields.pack(k, record.data() + field::props);
           double *e
             = record.data() + field::props + automaton_fields.record_width();
           if (has_fabric)

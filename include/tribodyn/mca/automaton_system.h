@@ -353,11 +353,9 @@ namespace tribodyn
       /// records too (kept_keys, kept_states) for repartition_automata().
       void
       migrate(const bool all_pair_states = false);
-      /// The migration record of automaton @p k (its carried fields,
-      /// automaton_fields.record_width() doubles) and its inverse, which
-      /// also sets its id and position and finds its local cell.
-      void
-      pack_automaton(const unsigned int k, double *props) const;
+      /// Automaton @p k from its id, its position and its migration record
+      /// (automaton_fields.pack(): the carried fields); finds its local
+      /// cell.
       void
       unpack_automaton(const unsigned int  k,
                        const std::uint32_t the_id,
