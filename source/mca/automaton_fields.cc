@@ -1,4 +1,5 @@
 // The table of per-automaton arrays (include/tribodyn/mca/automaton_fields.h).
+#include <algorithm>
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 #include <boost/serialization/binary_object.hpp>
@@ -176,6 +177,25 @@ namespace tribodyn
       for (const AutomatonField &field : fields)
         bytes += field.array->memory_consumption();
       return bytes;
+    }
+
+
+    void
+    AutomatonFieldTable::memory_by_field(
+      std::vector<std::pair<std::string, std::size_t>> &parts) const
+    {
+      for (const AutomatonField &field : fields)
+        {
+          const std::size_t bytes = field.array->memory_consumption();
+          auto              same
+            = std::find_if(parts.begin(), parts.end(), [&](const auto &part) {
+                return part.first == field.name;
+              });
+          if (same != parts.end())
+            same->second += bytes;
+          else
+            parts.emplace_back(field.name, bytes);
+        }
     }
   } // namespace mca
 } // namespace tribodyn

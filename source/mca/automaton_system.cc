@@ -516,19 +516,39 @@ namespace tribodyn
     }
 
 
+    std::vector<std::pair<std::string, std::size_t>>
+    AutomatonSystem::memory_by_part() const
+    {
+      std::vector<std::pair<std::string, std::size_t>> parts;
+      automaton_fields.memory_by_field(parts);
+      pair_fields.memory_by_field(parts);
+      const auto add = [&](const char *name, const auto &...vecs) {
+        parts.emplace_back(name, ((vecs.capacity() * sizeof(vecs[0])) + ...));
+      };
+      add("pair list (i, j, image shift)", pi, pj, pshift);
+      add("pair list by automaton",
+          i_pairs_first,
+          i_pairs_count,
+          j_pairs_first,
+          j_pairs);
+      add("pair step buffers (distance, normal, mu)",
+          pair_dr,
+          step_normals,
+          pair_mu);
+      add("pair side factors (beta)", beta_i, beta_j);
+      add("kept pair states", kept_states, kept_keys);
+      parts.emplace_back("background mesh and cell tables",
+                         cells.memory_consumption());
+      return parts;
+    }
+
+
     std::size_t
     AutomatonSystem::memory_consumption() const
     {
       std::size_t bytes = 0;
-      auto        add
-        = [&](const auto &vec) { bytes += vec.capacity() * sizeof(vec[0]); };
-      bytes += automaton_fields.memory_consumption();
-      add(pair_mu), add(pair_dr), add(step_normals);
-      add(pi), add(pj), add(pshift);
-      bytes += pair_fields.memory_consumption();
-      add(beta_i), add(beta_j), add(kept_states), add(kept_keys);
-      add(i_pairs_first);
-      add(i_pairs_count), add(j_pairs_first), add(j_pairs);
+      for (const auto &part : memory_by_part())
+        bytes += part.second;
       return bytes;
     }
 

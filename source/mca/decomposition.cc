@@ -194,6 +194,17 @@ namespace tribodyn
     }
 
 
+    std::size_t
+    Decomposition::memory_consumption() const
+    {
+      return tria.memory_consumption()
+             + cell_index.capacity() * sizeof(cell_index[0])
+             + cell_owner.capacity() * sizeof(cell_owner[0])
+             + cells.capacity() * sizeof(cells[0])
+             + local_of_key.capacity() * sizeof(local_of_key[0]);
+    }
+
+
     std::uint64_t
     Decomposition::cell_key(const unsigned int c) const
     {

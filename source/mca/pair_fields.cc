@@ -207,6 +207,23 @@ namespace tribodyn
     }
 
 
+    void
+    PairFieldTable::memory_by_field(
+      std::vector<std::pair<std::string, std::size_t>> &parts) const
+    {
+      for (const PairField &field : fields)
+        {
+          std::size_t bytes = 0;
+          if (field.flags != nullptr)
+            bytes = field.flags->capacity();
+          else
+            for (const std::vector<double> *a : field.arrays)
+              bytes += a->capacity() * sizeof(double);
+          parts.emplace_back(std::string("pair ") + field.name, bytes);
+        }
+    }
+
+
     std::size_t
     PairFieldTable::bytes_per_pair() const
     {

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <tribodyn/mca/automaton_system.h>
 #include <tribodyn/mca/pair_law.h>
 #include <tribodyn/mca/plasticity.h>
@@ -102,7 +103,14 @@ namespace tribodyn
       const unsigned int n_ahead = prefetch_pairs(n_pairs, n_local);
       if constexpr (Law::stateful)
         pair_mu.resize(n_pairs);
-      pair_dr.resize(2 * static_cast<std::size_t>(n_pairs));
+      // this step's increments of the pairs that can release energy in
+      // pass C (pair_events()): none in an elastic bulk of one material, all
+      // bonded, where the array stays empty (scans of a byte per pair and
+      // per automaton)
+      if (plastic || std::find(bonded.begin(), bonded.end(), 0) != bonded.end()
+          || std::adjacent_find(mat.begin(), mat.end(), std::not_equal_to<>())
+               != mat.end())
+        pair_dr.resize(2 * static_cast<std::size_t>(n_pairs));
       // Plastic and bond kernels evaluate the pairs' normals up to three
       // times more (passes B, C and bond switching): pass A keeps them
       // where that is cheaper (keep_pair_normals(); empty otherwise).

@@ -150,6 +150,16 @@ namespace tribodyn
           = dealii::Utilities::MPI::max(system.n_owned_automata(), comm);
         summary["memory_bytes_max"] = dealii::Utilities::MPI::max(
           static_cast<double>(system.memory_consumption()), comm);
+        // each array's largest share over the ranks (issue #48: where the
+        // bytes per automaton go)
+        const auto          parts = system.memory_by_part();
+        std::vector<double> bytes;
+        for (const auto &part : parts)
+          bytes.push_back(static_cast<double>(part.second));
+        dealii::Utilities::MPI::max(bytes, comm, bytes);
+        for (unsigned int k = 0; k < parts.size(); ++k)
+          if (bytes[k] > 0)
+            summary["memory_bytes_by_part"][parts[k].first] = bytes[k];
       }
     } // namespace
 

@@ -43,6 +43,7 @@ import sys
 TIMING_KEYS = {"wall_time_s", "time_loop_s", "dof_steps_per_second",
                "dof_steps_per_second_per_rank", "automaton_steps_per_second",
                "automaton_steps_per_second_per_rank", "memory_bytes_max",
+               "memory_bytes_by_part",
                "tribodyn_version"}
 
 

@@ -15,6 +15,7 @@
 #include <string>
 #include <tribodyn/core/archive_fwd.h>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace dealii
@@ -191,6 +192,11 @@ namespace tribodyn
       /// Bytes held by all registered arrays (their capacity).
       std::size_t
       memory_consumption() const;
+      /// The same, field by field: (name, bytes) appended to @p parts
+      /// (fields of one name, such as the scratch buffers, summed).
+      void
+      memory_by_field(
+        std::vector<std::pair<std::string, std::size_t>> &parts) const;
 
     private:
       /// Is @p field an identity or carried field the scene uses (sized,

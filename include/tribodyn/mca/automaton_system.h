@@ -205,9 +205,15 @@ namespace tribodyn
       {
         return part_counts;
       }
-      /// Bytes held by this rank's automata and pair arrays.
+      /// Bytes held by this rank's automata and pair arrays and its
+      /// background mesh.
       std::size_t
       memory_consumption() const;
+      /// The same, array by array (name, bytes), in a fixed order: the
+      /// automaton fields, the pair fields, the pair list and the per-step
+      /// pair buffers, the mesh.
+      std::vector<std::pair<std::string, std::size_t>>
+      memory_by_part() const;
       const Decomposition &
       decomposition() const
       {

@@ -122,6 +122,11 @@ namespace tribodyn
         return tria;
       }
 
+      /// Bytes of the background mesh (deal.II's cells of all levels; not
+      /// p4est's own quadrants) and of the cell tables.
+      std::size_t
+      memory_consumption() const;
+
       unsigned int
       n_owned_cells() const
       {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -134,6 +135,11 @@ namespace tribodyn
       /// Bytes held by the fields' arrays.
       std::size_t
       memory_consumption() const;
+      /// The same, field by field: ("pair " + name, bytes) appended to
+      /// @p parts.
+      void
+      memory_by_field(
+        std::vector<std::pair<std::string, std::size_t>> &parts) const;
 
       /// Bytes per pair of the fields in use.
       std::size_t
