@@ -98,6 +98,7 @@ namespace tribodyn
                                  Law         &law,
                                  Moment      &moment)
     {
+      // The step's buffers.
       const unsigned int n_pairs = pi.size();
       // (the pair count, or 0 in scenes that fit in a core's caches)
       const unsigned int n_ahead = prefetch_pairs(n_pairs, n_local);
@@ -118,8 +119,7 @@ namespace tribodyn
         = (plastic || bonds) && keep_pair_normals(n_pairs);
       step_normals.resize(keep_normals ? 4 * static_cast<std::size_t>(n_pairs)
                                        : 0);
-      // radius of the circular contact face of area S (moment limits)
-      const double face_radius = std::sqrt(S / M_PI);
+      const PairStep step{step_dt, n_pairs, n_ahead, keep_normals};
       dsm.assign(n_local, 0);
       side_dq.assign(n_owned, 0);
       // The works of this step's events (added to work at its end), among
@@ -127,6 +127,52 @@ namespace tribodyn
       // many-body parts of the side stresses over the step, minus the
       // change of the automata's kappa G^2.
       WorkSums dw{};
+
+      pair_pass_a<rot, plastic>(step, dw, geometry, law, moment);
+
+      // Mean-stress increment of each automaton: K times its volumetric
+      // strain increment, the trace of the strain tensor fitted (least
+      // squares) to its pairs' normal strains: dtheta = sum_j beta_ij
+      // deps_ij (beta = 1/4 in a complete FCC neighbourhood).
+      // With it, in the same pass over the owned automata, the many-body
+      // work of the step and their new mu (pair_energy.cc); the ghosts'
+      // mu from their owners' increments.
+      dw[many_body_work] += many_body_step();
+
+      for (unsigned int k = 0; k < n_owned; ++k)
+        {
+          f[k]      = {{0, 0, 0}};
+          torque[k] = {{0, 0, 0}};
+        }
+
+      if constexpr (plastic)
+        {
+          pair_pass_b(step);
+          radial_returns();
+        }
+
+      const bool events
+        = pair_pass_c<rot, plastic, bonds>(step, dw, geometry, law, moment);
+
+      for (unsigned int k = 0; k < n_works; ++k)
+        work[k] += dw[k];
+      // the uniform automata whose shape an event ended (lambda = 0)
+      if (plastic || events)
+        sync_many_body_shapes();
+    }
+
+
+    template <bool rot, bool plastic, class Pairs, class Law, class Moment>
+    void
+    AutomatonSystem::pair_pass_a(const PairStep &step,
+                                 WorkSums       &dw,
+                                 const Pairs    &geometry,
+                                 Law            &law,
+                                 Moment         &moment)
+    {
+      const unsigned int n_pairs = step.n_pairs, n_ahead = step.n_ahead;
+      const bool         keep_normals = step.keep_normals;
+      const double       step_dt      = step.dt;
       // Contact and bond changes of this step mark both automata.
       auto mark = [&](const unsigned int p) {
         changed[pi[p]] = 1;
@@ -143,8 +189,7 @@ namespace tribodyn
       alignas(64) double     b_dnew[3][block], b_du[3][block];
       alignas(64) double     b_r[block], b_ro[block], b_inv_r[block],
         b_inv_ro[block], b_inv_nm[block], b_dr[block], b_t[3][block],
-        b_wi[3][block], b_wj[3][block], b_dsm_i[block], b_dsm_j[block],
-        b_n[3][block], b_nold[3][block];
+        b_wi[3][block], b_wj[3][block], b_n[3][block], b_nold[3][block];
       for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
         {
           const unsigned int nb = std::min(block, n_pairs - p0);
@@ -457,28 +502,96 @@ namespace tribodyn
               book_side(j, beta_j, dr_p - dqi, mb_j);
             }
         }
+    }
 
-      // Mean-stress increment of each automaton: K times its volumetric
-      // strain increment, the trace of the strain tensor fitted (least
-      // squares) to its pairs' normal strains: dtheta = sum_j beta_ij
-      // deps_ij (beta = 1/4 in a complete FCC neighbourhood).
-      // With it, in the same pass over the owned automata, the many-body
-      // work of the step and their new mu (pair_energy.cc); the ghosts'
-      // mu from their owners' increments.
-      dw[many_body_work] += many_body_step();
 
-      for (unsigned int k = 0; k < n_owned; ++k)
-        {
-          f[k]      = {{0, 0, 0}};
-          torque[k] = {{0, 0, 0}};
-        }
+    void
+    AutomatonSystem::pair_pass_b(const PairStep &step)
+    {
+      // Pass B (plastic scenes): trial side stresses and trial tensors.
+      const unsigned int     n_pairs = step.n_pairs, n_ahead = step.n_ahead;
+      constexpr unsigned int block = NormalBlock::size;
+      NormalBlock            nblock;
+      auto                   pair_vector_of
+        = [this](const unsigned int p) { return pair_vector(p); };
       // Many-body part of the elastic update of the side stresses.
       auto elastic_update = [&](const unsigned int p) {
         const unsigned int i = pi[p], j = pj[p];
         sig_i[p] += mc[mat[i]].D * dsm[i];
         sig_j[p] += mc[mat[j]].D * dsm[j];
       };
+      trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
+      for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
+        {
+          const unsigned int nb = std::min(block, n_pairs - p0);
+          nblock.fill(p0, nb, step_normals, n_pairs, pair_vector_of);
+          for (unsigned int b = 0; b < nb; ++b)
+            {
+              const unsigned int p = p0 + b;
+              prefetch_ahead(pj.data(), p, n_ahead, x, dsm);
+              if (!bonded[p] && !in_contact[p])
+                continue;
+              elastic_update(p);
+              // automata of elastic regions need no trial stress
+              add_pair_stress(p, nblock.normal(b), nblock.r[b], trial, true);
+            }
+        }
+    }
 
+
+    void
+    AutomatonSystem::radial_returns()
+    {
+      // The radial return of each owned automaton from its trial tensor
+      // (pass B): the mean stress sigma_m and the factor M of its sides.
+      // (the plastic work is what the sides release, pass C)
+      plast.assign(static_cast<std::size_t>(n_local) * 2, 0.);
+      for (unsigned int k = 0; k < n_owned; ++k)
+        {
+          if (elastic(k))
+            {
+              plast[2 * k + 1] = 1; // M = 1: no plastic correction
+              continue;
+            }
+          const auto  &m  = mc[mat[k]];
+          const Sym3   s  = fabric_corrected(k, trial[k]);
+          const double sm = (s[0] + s[1] + s[2]) / 3;
+          const double q  = von_mises(s);
+          double       M  = 1;
+          if (m.m.is_plastic() && q > sigma_y[k])
+            {
+              const double de     = plastic_increment(m.m, m.G, eps_p[k], q);
+              const double sy_new = m.m.yield_stress_at(eps_p[k] + de);
+              M                   = sy_new / q;
+              eps_p[k] += de;
+              sigma_y[k] = sy_new;
+            }
+          plast[2 * k]     = sm;
+          plast[2 * k + 1] = M;
+        }
+      if (neighbours.active())
+        neighbours.update(plast.data(), 2);
+    }
+
+
+    template <bool rot,
+              bool plastic,
+              bool bonds,
+              class Pairs,
+              class Law,
+              class Moment>
+    bool
+    AutomatonSystem::pair_pass_c(const PairStep &step,
+                                 WorkSums       &dw,
+                                 const Pairs    &geometry,
+                                 Law            &law,
+                                 Moment         &moment)
+    {
+      const unsigned int     n_pairs = step.n_pairs, n_ahead = step.n_ahead;
+      constexpr unsigned int block = NormalBlock::size;
+      alignas(64) double     b_dsm_i[block], b_dsm_j[block];
+      // radius of the circular contact face of area S (moment limits)
+      const double face_radius = std::sqrt(S / M_PI);
       // (an elastic kernel's events in a call of their own: an elastic
       // bulk has none, and its hot loop keeps its registers)
       bool       events_out_of_line_called = false;
@@ -492,56 +605,6 @@ namespace tribodyn
       NormalBlock nblock;
       auto        pair_vector_of
         = [this](const unsigned int p) { return pair_vector(p); };
-
-      // Pass B (plastic scenes): trial side stresses and trial tensors,
-      // radial return per automaton.
-      if constexpr (plastic)
-        {
-          trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
-          for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
-            {
-              const unsigned int nb = std::min(block, n_pairs - p0);
-              nblock.fill(p0, nb, step_normals, n_pairs, pair_vector_of);
-              for (unsigned int b = 0; b < nb; ++b)
-                {
-                  const unsigned int p = p0 + b;
-                  prefetch_ahead(pj.data(), p, n_ahead, x, dsm);
-                  if (!bonded[p] && !in_contact[p])
-                    continue;
-                  elastic_update(p);
-                  // automata of elastic regions need no trial stress
-                  add_pair_stress(
-                    p, nblock.normal(b), nblock.r[b], trial, true);
-                }
-            }
-          // (the plastic work is what the sides release, pass C)
-          plast.assign(static_cast<std::size_t>(n_local) * 2, 0.);
-          for (unsigned int k = 0; k < n_owned; ++k)
-            {
-              if (elastic(k))
-                {
-                  plast[2 * k + 1] = 1; // M = 1: no plastic correction
-                  continue;
-                }
-              const auto  &m  = mc[mat[k]];
-              const Sym3   s  = fabric_corrected(k, trial[k]);
-              const double sm = (s[0] + s[1] + s[2]) / 3;
-              const double q  = von_mises(s);
-              double       M  = 1;
-              if (m.m.is_plastic() && q > sigma_y[k])
-                {
-                  const double de = plastic_increment(m.m, m.G, eps_p[k], q);
-                  const double sy_new = m.m.yield_stress_at(eps_p[k] + de);
-                  M                   = sy_new / q;
-                  eps_p[k] += de;
-                  sigma_y[k] = sy_new;
-                }
-              plast[2 * k]     = sm;
-              plast[2 * k + 1] = M;
-            }
-          if (neighbours.active())
-            neighbours.update(plast.data(), 2);
-        }
 
       // Pass C: plastic correction, contact constraints, forces, torques;
       // in bond scenes also the final stress tensors (T of eq. 4) of the
@@ -671,11 +734,7 @@ namespace tribodyn
                 add_pair_stress(p, n, r, trial, false);
             }
         }
-      for (unsigned int k = 0; k < n_works; ++k)
-        work[k] += dw[k];
-      // the uniform automata whose shape an event ended (lambda = 0)
-      if (plastic || events_out_of_line_called)
-        sync_many_body_shapes();
+      return events_out_of_line_called;
     }
 
 

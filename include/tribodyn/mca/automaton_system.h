@@ -435,6 +435,54 @@ namespace tribodyn
                   const Pairs &geometry,
                   FrictionLaw &law,
                   MomentLaw   &moment);
+      /// What the passes of one step of the pair kernel share; each adds
+      /// the works of its events to the step's sums (WorkSums).
+      struct PairStep
+      {
+        double       dt;
+        unsigned int n_pairs;
+        /// prefetch distance (0 in scenes that fit in a core's caches)
+        unsigned int n_ahead;
+        /// pass A keeps r and n of every pair for the later passes
+        bool keep_normals;
+      };
+      // The passes are functions of their own in the source and one body in
+      // the binary (always_inline into pair_kernel): the rounding of the
+      // kernel (which products fuse into FMAs) stays that of one function.
+      /// Pass A: geometry, tangential stresses, split of the normal
+      /// increment, volumetric strain increments of both sides.
+      template <bool rotations,
+                bool plastic,
+                class Pairs,
+                class FrictionLaw,
+                class MomentLaw>
+      [[gnu::always_inline]] inline void
+      pair_pass_a(const PairStep &step,
+                  WorkSums       &works,
+                  const Pairs    &geometry,
+                  FrictionLaw    &law,
+                  MomentLaw      &moment);
+      /// Pass B (plastic kernels): trial side stresses and tensors.
+      [[gnu::always_inline]] inline void
+      pair_pass_b(const PairStep &step);
+      /// The radial return of each owned automaton (plastic kernels).
+      [[gnu::always_inline]] inline void
+      radial_returns();
+      /// Pass C: plastic correction, contact constraints, forces and
+      /// torques; in bond scenes the final stress tensors. Whether an
+      /// elastic kernel ran events (its uniform automata's shapes to sync).
+      template <bool rotations,
+                bool plastic,
+                bool bonds,
+                class Pairs,
+                class FrictionLaw,
+                class MomentLaw>
+      [[gnu::always_inline]] inline bool
+      pair_pass_c(const PairStep &step,
+                  WorkSums       &works,
+                  const Pairs    &geometry,
+                  FrictionLaw    &law,
+                  MomentLaw      &moment);
       /// The events of pair @p p at the end of its step (plastic
       /// returns, no tension, friction limits) and the energy they release,
       /// added to @p works (source/mca/pair_events.h).
