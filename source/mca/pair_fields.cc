@@ -194,19 +194,6 @@ namespace tribodyn
     }
 
 
-    std::size_t
-    PairFieldTable::memory_consumption() const
-    {
-      std::size_t bytes = 0;
-      for_each_array(
-        [&](const std::vector<double> &a) {
-          bytes += a.capacity() * sizeof(double);
-        },
-        [&](const std::vector<unsigned char> &a) { bytes += a.capacity(); });
-      return bytes;
-    }
-
-
     void
     PairFieldTable::memory_by_field(
       std::vector<std::pair<std::string, std::size_t>> &parts) const

@@ -132,11 +132,8 @@ namespace tribodyn
               f(*a);
       }
 
-      /// Bytes held by the fields' arrays.
-      std::size_t
-      memory_consumption() const;
-      /// The same, field by field: ("pair " + name, bytes) appended to
-      /// @p parts.
+      /// Bytes held by the fields' arrays, field by field: ("pair " +
+      /// name, bytes) appended to @p parts.
       void
       memory_by_field(
         std::vector<std::pair<std::string, std::size_t>> &parts) const;
