@@ -10,7 +10,7 @@
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
-#include <tribodyn/core/version.h>
+#include <tribodyn/core/time_loop.h>
 
 namespace tribodyn
 {
@@ -90,8 +90,8 @@ namespace tribodyn
       if (!context.output_directory.empty())
         solver.set_output_claim(
           [this](const OutputClaim how) { context.claim_output(how); });
-      const unsigned long n_steps = static_cast<unsigned long>(
-        std::ceil(parameters.time.end_time / solver.time_step() - 1e-9));
+      const unsigned long n_steps
+        = TimeLoop::n_steps(parameters.time.end_time, solver.time_step());
       pcout << "Pin: " << solver.material_description() << "\n"
             << "Mesh: " << solver.n_dofs() << " degrees of freedom, "
             << solver.n_contact_nodes() << " contact nodes, "
@@ -118,15 +118,12 @@ namespace tribodyn
                                  std::chrono::steady_clock::now() - start)
                                  .count();
 
-      JsonValue summary           = JsonValue::object();
-      summary["problem"]          = "contact";
-      summary["tribodyn_version"] = version_string;
-      summary["n_mpi_ranks"]    = dealii::Utilities::MPI::n_mpi_processes(comm);
-      summary["material"]       = solver.material_description();
-      summary["friction_law"]   = parameters.contact.friction.selected_name();
-      summary["pressure"]       = parameters.loading.pressure;
-      summary["plane_velocity"] = parameters.loading.plane_velocity;
-      summary["mu_global_mean"] = s.mu_global_mean;
+      JsonValue summary           = summary_header("contact", comm);
+      summary["material"]         = solver.material_description();
+      summary["friction_law"]     = parameters.contact.friction.selected_name();
+      summary["pressure"]         = parameters.loading.pressure;
+      summary["plane_velocity"]   = parameters.loading.plane_velocity;
+      summary["mu_global_mean"]   = s.mu_global_mean;
       summary["mu_contact_mean"]  = s.mu_contact_mean;
       summary["averaging_window"] = json_array(
         {parameters.output.average_start,

@@ -28,6 +28,7 @@
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/progress.h>
+#include <tribodyn/core/time_loop.h>
 
 namespace tribodyn
 {
@@ -203,20 +204,214 @@ namespace tribodyn
     }
 
 
+    /**
+     * The beta2 run as the common time loop drives it: a step is the
+     * internal forces, the predictor, the contact multipliers of t_{n+1}
+     * and the corrector; the ranks agree on its health every step on one
+     * rank, every health_check_interval steps and at each sample on
+     * several; a sample records the solver's Sample and hands it to the
+     * postprocessors; a checkpoint carries the solver's state and the
+     * postprocessors' by name.
+     */
+    class ContactSolver::Steps : public SteppedRun
+    {
+    public:
+      Steps(ContactSolver                               &solver,
+            LoopState                                   &loop,
+            std::vector<std::unique_ptr<Postprocessor>> &outputs,
+            const std::vector<std::string>              &output_names,
+            CheckpointStore                             *store,
+            const bool                                   large)
+          : solver(solver)
+          , loop(loop)
+          , outputs(outputs)
+          , output_names(output_names)
+          , store(store)
+          , large(large)
+          , several(Utilities::MPI::n_mpi_processes(solver.comm) > 1)
+          , v_limit(solver.velocity_limit())
+      {
+      }
+
+      unsigned long
+      steps_done() const override
+      {
+        return solver.step_count;
+      }
+
+      double
+      time() const override
+      {
+        return solver.step_count * solver.dt;
+      }
+
+      bool
+      sample_due(const unsigned long index) const override
+      {
+        return index % solver.prm.output.sample_interval == 0;
+      }
+
+      void
+      advance(const LoopStep &step) override
+      {
+        ContactSolver &S = solver;
+        const double   t = step.index * S.dt;
+        const double   s = S.prm.loading.pressure_at(t);
+        // Internal forces of u_n and the damping force beta K p_n.
+        S.add_internal_forces(large);
+        S.predict(s);
+        if (step.sample || step.last)
+          {
+            // Reaction of the held top face: R = r - f (a = 0 there).
+            double f = 0;
+            if (S.prm.loading.top_held_in_x)
+              for (const unsigned int i : S.top_x_dofs)
+                f += S.r.local_element(i) - s * S.unit_load[i];
+            top_force = Utilities::MPI::sum(f, S.comm);
+          }
+        // Contact and friction: multipliers at t_{n+1}.
+        S.solve_contact(t + S.dt);
+        n_bad += S.correct(s, S.prm.time.damping, v_limit);
+        S.u_prev.swap(S.u); // u_prev = u_n
+        S.u.swap(S.u_next); // u = u_{n+1}
+        ++S.step_count;
+      }
+
+      bool
+      health_due(const LoopStep &step) const override
+      {
+        return !several || step.sample || step.last
+               || solver.step_count % health_check_interval == 0;
+      }
+
+      RunHealth
+      agree_on_health(const LoopStep &) override
+      {
+        const RunHealth health = tribodyn::agree_on_health(n_bad, solver.comm);
+        n_bad                  = 0;
+        return health;
+      }
+
+      [[noreturn]] void
+      report_instability(const LoopStep &step) override
+      {
+        solver.report_instability(step.index,
+                                  step.index * solver.dt + solver.dt);
+      }
+
+      void
+      after_step(const LoopStep &step) override
+      {
+        for (auto &o : outputs)
+          o->after_step(step.index * solver.dt);
+      }
+
+      void
+      sample(const LoopStep &step) override
+      {
+        take_sample(step);
+      }
+
+      void
+      end_of_run(const LoopStep &step) override
+      {
+        if (!step.sample)
+          take_sample(step);
+      }
+
+      /// Flush the series and save the state after step_count steps.
+      void
+      save_checkpoint() override
+      {
+        if (!store)
+          return;
+        flush_outputs(true);
+        loop.outputs.clear();
+        for (std::size_t k = 0; k < outputs.size(); ++k)
+          {
+            std::ostringstream text(std::ios::binary);
+            {
+              boost::archive::binary_oarchive ar(text);
+              outputs[k]->save(ar);
+            }
+            loop.outputs.emplace_back(output_names[k], text.str());
+          }
+        store->write(solver.save_state(loop),
+                     solver.step_count,
+                     solver.step_count * solver.dt,
+                     solver.checkpoint_parameters);
+      }
+
+      void
+      stop_early() override
+      {
+        flush_outputs(true);
+      }
+
+      std::string
+      progress_key() const override
+      {
+        return key;
+      }
+
+    private:
+      /// Record the sample of step n (time t_n), its rows and the key
+      /// figure of the progress lines.
+      void
+      take_sample(const LoopStep &step)
+      {
+        const unsigned long n = step.index;
+        const double        t = n * solver.dt;
+        solver.record_sample(t);
+        Sample &smp          = solver.history.back();
+        smp.tangential_force = top_force;
+        smp.mu_global = solver.prm.loading.top_held_in_x && smp.normal_force > 0
+                          ? -(solver.prm.loading.plane_velocity >= 0 ? 1. : -1.)
+                              * top_force / smp.normal_force
+                          : smp.mu_contact;
+        for (auto &o : outputs)
+          o->sample(smp);
+        flush_outputs(false);
+        key = solver.progress_key(smp);
+        if (!std::isfinite(smp.kinetic_energy) || !std::isfinite(smp.mu_global))
+          throw RunError("The solution became non-finite at t = "
+                         + format_number(t) + " s (step " + std::to_string(n)
+                         + "): the run is unstable.");
+      }
+
+      void
+      flush_outputs(const bool complete)
+      {
+        for (auto &o : outputs)
+          o->flush(complete);
+      }
+
+      ContactSolver                               &solver;
+      LoopState                                   &loop;
+      std::vector<std::unique_ptr<Postprocessor>> &outputs;
+      const std::vector<std::string>              &output_names;
+      CheckpointStore                             *store;
+      const bool                                   large;
+      const bool                                   several;
+      const double                                 v_limit;
+      /// The reaction of the held top face at the step's sample.
+      double top_force = 0;
+      /// Unstable dofs counted since the last health check.
+      double      n_bad = 0;
+      std::string key;
+    };
+
+
     void
     ContactSolver::run(const std::string &output_directory,
                        const double       progress_interval)
     {
-      const bool   root    = Utilities::MPI::this_mpi_process(comm) == 0;
-      const bool   several = Utilities::MPI::n_mpi_processes(comm) > 1;
-      const auto   start   = std::chrono::steady_clock::now();
-      const double beta    = prm.time.damping;
-      const bool   large
+      const bool root  = Utilities::MPI::this_mpi_process(comm) == 0;
+      const auto start = std::chrono::steady_clock::now();
+      const bool large
         = prm.material.kinematics
           == ContactMaterialParameters::Kinematics::large_deformation;
       const bool write = !output_directory.empty();
-      // SIGTERM/SIGINT: polled between steps (checkpoint, clean stop).
-      const InterruptHandlers interrupt_handlers;
 
       // Initial state, or the state of the latest checkpoint.
       LoopState                        loop;
@@ -244,16 +439,13 @@ namespace tribodyn
         }
       else
         set_initial_state();
-      const double        end_time = prm.time.end_time;
-      const unsigned long n_steps
-        = static_cast<unsigned long>(std::ceil(end_time / dt - 1e-9));
-      if (resumed && step_count >= n_steps)
-        throw InputError("Nothing to resume: the checkpoint is at step "
-                         + std::to_string(step_count)
-                         + " (t = " + format_number(step_count * dt)
-                         + " s), at or beyond 'Time integration/End time' = "
-                         + format_number(end_time)
-                         + " s. Raise the end time to continue the run.");
+      const unsigned long n_steps = TimeLoop::n_steps(prm.time.end_time, dt);
+      if (resumed)
+        TimeLoop::check_something_to_resume(step_count,
+                                            step_count * dt,
+                                            n_steps,
+                                            "Time integration/End time",
+                                            prm.time.end_time);
       // Every check passed: the output directory may be touched from here.
       if (output_claim)
         output_claim(resumed ? OutputClaim::resume : OutputClaim::fresh);
@@ -285,162 +477,27 @@ namespace tribodyn
           for (auto &o : outputs)
             o->open(resumed);
         }
-      auto flush_outputs = [&](const bool complete) {
-        for (auto &o : outputs)
-          o->flush(complete);
-      };
-
-      ProgressReporter progress(std::cout,
-                                root && progress_interval >= 0,
-                                n_steps * dt,
-                                std::max(0., progress_interval),
-                                progress_label);
-      progress.set_start_time(step_count * dt);
-      const unsigned int sample_every = prm.output.sample_interval;
-      const double       v_limit      = velocity_limit();
-      const double       interval     = checkpoint.interval;
-      double             next_checkpoint
-        = interval > 0
-            ? (std::floor(step_count * dt / interval + 1e-9) + 1) * interval
-            : std::numeric_limits<double>::max();
-      double     top_force    = 0;
-      double     loop_seconds = 0;
-      double     n_bad        = 0;
-      const auto loop_start   = std::chrono::steady_clock::now();
-
-      // Record the sample of step n (time t), its rows and the progress.
-      auto take_sample = [&](const unsigned long n, const double t) {
-        const auto t0 = std::chrono::steady_clock::now();
-        record_sample(t);
-        Sample &smp          = history.back();
-        smp.tangential_force = top_force;
-        smp.mu_global        = prm.loading.top_held_in_x && smp.normal_force > 0
-                                 ? -(prm.loading.plane_velocity >= 0 ? 1. : -1.)
-                              * top_force / smp.normal_force
-                                 : smp.mu_contact;
-        for (auto &o : outputs)
-          o->sample(smp);
-        flush_outputs(false);
-        progress.update(step_count, t + dt, progress_key(smp));
-        if (!std::isfinite(smp.kinetic_energy) || !std::isfinite(smp.mu_global))
-          throw RunError("The solution became non-finite at t = "
-                         + format_number(t) + " s (step " + std::to_string(n)
-                         + "): the run is unstable.");
-        loop_seconds -= std::chrono::duration<double>(
-                          std::chrono::steady_clock::now() - t0)
-                          .count();
-      };
-      // Flush the series and save the state after step_count steps.
-      auto save_checkpoint = [&]() {
-        if (!store)
-          return;
-        const auto t0 = std::chrono::steady_clock::now();
-        flush_outputs(true);
-        loop.outputs.clear();
-        for (std::size_t k = 0; k < outputs.size(); ++k)
-          {
-            std::ostringstream text(std::ios::binary);
-            {
-              boost::archive::binary_oarchive ar(text);
-              outputs[k]->save(ar);
-            }
-            loop.outputs.emplace_back(output_names[k], text.str());
-          }
-        store->write(save_state(loop),
-                     step_count,
-                     step_count * dt,
-                     checkpoint_parameters);
-        loop_seconds -= std::chrono::duration<double>(
-                          std::chrono::steady_clock::now() - t0)
-                          .count();
-      };
-
-      for (unsigned long n = step_count; n < n_steps; ++n)
-        {
-          const double t = n * dt;
-          const double s = prm.loading.pressure_at(t);
-          // Internal forces of u_n and the damping force beta K p_n.
-          add_internal_forces(large);
-
-          predict(s);
-          const bool regular = n % sample_every == 0;
-          const bool last    = n + 1 == n_steps;
-          if (regular || last)
-            {
-              // Reaction of the held top face: R = r - f (a = 0 there).
-              double f = 0;
-              if (prm.loading.top_held_in_x)
-                for (const unsigned int i : top_x_dofs)
-                  f += r.local_element(i) - s * unit_load[i];
-              top_force = Utilities::MPI::sum(f, comm);
-            }
-
-          // Contact and friction: multipliers at t_{n+1}.
-          solve_contact(t + dt);
-
-          n_bad += correct(s, beta, v_limit);
-          u_prev.swap(u); // u_prev = u_n
-          u.swap(u_next); // u = u_{n+1}
-          ++step_count;
-
-          // Stability and interruption: agreed by all ranks before the
-          // state is sampled or saved.
-          int signal = 0;
-          if (!several || regular || last
-              || step_count % health_check_interval == 0)
-            {
-              const RunHealth health = agree_on_health(n_bad, comm);
-              if (health.badness > 0)
-                report_instability(n, t + dt);
-              n_bad  = 0;
-              signal = health.signal;
-            }
-          if (regular)
-            take_sample(n, t);
-          if (!outputs.empty())
-            {
-              const auto t0 = std::chrono::steady_clock::now();
-              for (auto &o : outputs)
-                o->after_step(t);
-              loop_seconds -= std::chrono::duration<double>(
-                                std::chrono::steady_clock::now() - t0)
-                                .count();
-            }
-          // Checkpoint at the interval, at the end and on a signal: before
-          // the end-of-run sample, which a longer run would not take.
-          if ((interval > 0
-               && (step_count * dt >= next_checkpoint - 0.5 * dt || last))
-              || signal != 0)
-            {
-              save_checkpoint();
-              while (next_checkpoint <= step_count * dt + 0.5 * dt)
-                next_checkpoint += interval;
-            }
-          if (signal != 0)
-            {
-              flush_outputs(true);
-              InterruptHandlers::acknowledge();
-              throw Interrupted(
-                signal,
-                "signal " + std::to_string(signal) + " received at step "
-                  + std::to_string(step_count)
-                  + " (t = " + format_number(step_count * dt) + " s)"
-                  + (store ? "; the state was saved in '" + store->directory()
-                               + "': continue with 'Checkpoint/Resume = "
-                                 "true'."
-                           : " (no checkpoint: no output directory)."));
-            }
-          if (last && !regular)
-            take_sample(n, t);
-        }
-      loop_seconds += std::chrono::duration<double>(
-                        std::chrono::steady_clock::now() - loop_start)
-                        .count();
-      loop_wall_time = loop_seconds;
-      progress.update(step_count, n_steps * dt, "", true);
-      flush_outputs(true);
+      // The steps: the common loop (core/time_loop.h) drives Steps below.
+      Steps steps(*this, loop, outputs, output_names, store.get(), large);
+      TimeLoopSettings settings;
+      settings.n_steps             = n_steps;
+      settings.time_step           = dt;
+      settings.end_time            = n_steps * dt;
+      settings.checkpoint_interval = store ? checkpoint.interval : 0.;
+      if (store)
+        settings.checkpoint_directory = store->directory();
+      settings.show_progress     = root && progress_interval >= 0;
+      settings.progress_interval = std::max(0., progress_interval);
+      settings.label             = progress_label;
+      TimeLoop time_loop(settings);
+      time_loop.run(steps);
+      const double loop_seconds = time_loop.step_seconds();
+      loop_wall_time            = loop_seconds;
       for (auto &o : outputs)
-        o->close();
+        {
+          o->flush(true);
+          o->close();
+        }
       run_wall_time = std::chrono::duration<double>(
                         std::chrono::steady_clock::now() - start)
                         .count();

@@ -10,8 +10,10 @@
 #include <sys/stat.h>
 #include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/output_directory.h>
+#include <tribodyn/core/version.h>
 #include <unistd.h>
 
 namespace tribodyn
@@ -301,5 +303,16 @@ namespace tribodyn
           << "\" group=\"\" part=\"0\" file=\"" << r.second << "\"/>\n";
     out << "  </Collection>\n</VTKFile>\n";
     write_file_atomically(path_name, out.str());
+  }
+
+
+  JsonValue
+  summary_header(const std::string &problem, const MPI_Comm comm)
+  {
+    JsonValue header           = JsonValue::object();
+    header["problem"]          = problem;
+    header["tribodyn_version"] = version_string;
+    header["n_mpi_ranks"]      = dealii::Utilities::MPI::n_mpi_processes(comm);
+    return header;
   }
 } // namespace tribodyn

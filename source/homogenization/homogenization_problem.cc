@@ -8,7 +8,6 @@
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
-#include <tribodyn/core/version.h>
 #include <tribodyn/homogenization/homogenization_problem.h>
 
 namespace tribodyn
@@ -374,11 +373,8 @@ namespace tribodyn
             morphology.write_grid_file(join_path(out_dir, "morphology.txt"));
         }
 
-      JsonValue summary           = JsonValue::object();
-      summary["problem"]          = "homogenization";
-      summary["tribodyn_version"] = version_string;
-      summary["n_mpi_ranks"] = dealii::Utilities::MPI::n_mpi_processes(comm);
-      summary["morphology"]  = morphology.description();
+      JsonValue summary            = summary_header("homogenization", comm);
+      summary["morphology"]        = morphology.description();
       summary["volume_fraction"]   = fractions[material_id::heterogeneity];
       summary["n_heterogeneities"] = morphology.n_heterogeneities();
       summary["phases"]            = phases_to_json(fractions);

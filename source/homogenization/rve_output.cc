@@ -10,7 +10,6 @@
 #include <sstream>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
-#include <tribodyn/core/version.h>
 #include <tribodyn/homogenization/rve_study.h>
 
 namespace tribodyn
@@ -295,11 +294,7 @@ namespace tribodyn
       write_file_atomically(join_path(dir, "rve.md"), md.str());
 
       // summary.json
-      JsonValue summary           = JsonValue::object();
-      summary["problem"]          = "rve";
-      summary["tribodyn_version"] = version_string;
-      summary["n_mpi_ranks"]
-        = dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
+      JsonValue summary = summary_header("rve", context.mpi_communicator);
       summary["n_window_groups"] = n_groups;
       summary["n_windows"]       = static_cast<unsigned int>(windows.size());
       summary["source"] = parameters.source == RveStudyParameters::Source::crops

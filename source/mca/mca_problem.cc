@@ -18,7 +18,7 @@
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/progress.h>
-#include <tribodyn/core/version.h>
+#include <tribodyn/core/time_loop.h>
 #include <tribodyn/mca/automaton_system.h>
 #include <tribodyn/mca/mca_problem.h>
 #include <tribodyn/mca/postprocessor.h>
@@ -171,6 +171,195 @@ namespace tribodyn
         });
         system.redistribute_absorbed();
       }
+
+
+      /// The automata run as the common time loop drives it: the system's
+      /// step, its health (finiteness and speed of the automata, and the
+      /// displacement that decides the next pair-list rebuild, agreed in
+      /// the same reduction), the series and visual outputs of the
+      /// postprocessors, the checkpoints.
+      class AutomataRun : public SteppedRun
+      {
+      public:
+        struct Cadence
+        {
+          /// Steps between series rows and between visual outputs (0:
+          /// only at the start and the end).
+          unsigned long series_every, output_every;
+          /// Blow-up limit of the automata's speed.
+          double v_limit;
+        };
+
+        AutomataRun(AutomatonSystem                &system,
+                    const PostprocessorList        &postprocessors,
+                    CsvWriter                      &series,
+                    CheckpointStore                &store,
+                    const std::vector<std::string> &checkpoint_lines,
+                    dealii::TimerOutput            &timer,
+                    const MPI_Comm                  comm,
+                    const Cadence                  &cadence)
+            : system(system)
+            , postprocessors(postprocessors)
+            , series(series)
+            , store(store)
+            , checkpoint_lines(checkpoint_lines)
+            , timer(timer)
+            , comm(comm)
+            , cadence(cadence)
+        {
+        }
+
+        /// A fresh run's outputs and series row at t = 0.
+        void
+        initial_sample()
+        {
+          write_outputs();
+          record_series();
+        }
+
+        unsigned long
+        steps_done() const override
+        {
+          return system.step_number();
+        }
+
+        double
+        time() const override
+        {
+          return system.time();
+        }
+
+        bool
+        sample_due(const unsigned long index) const override
+        {
+          return (index + 1) % cadence.series_every == 0;
+        }
+
+        void
+        advance(const LoopStep &) override
+        {
+          system.step();
+        }
+
+        RunHealth
+        agree_on_health(const LoopStep &) override
+        {
+          double          displacement2 = system.displacement_since_rebuild();
+          const RunHealth health
+            = tribodyn::agree_on_health(system.count_unstable_automata(
+                                          cadence.v_limit),
+                                        comm,
+                                        &displacement2);
+          system.set_agreed_displacement_since_rebuild(displacement2);
+          return health;
+        }
+
+        [[noreturn]] void
+        report_instability(const LoopStep &) override
+        {
+          system.report_instability(cadence.v_limit);
+          throw RunError("The automata became unstable.");
+        }
+
+        void
+        after_step(const LoopStep &) override
+        {
+          for (const auto &pp : postprocessors)
+            pp->after_step();
+        }
+
+        void
+        sample(const LoopStep &step) override
+        {
+          record_series();
+          if (output_due(step))
+            write_outputs();
+        }
+
+        void
+        end_of_run(const LoopStep &step) override
+        {
+          if (!step.sample)
+            record_series();
+          if (!output_due(step))
+            write_outputs();
+        }
+
+        void
+        save_checkpoint() override
+        {
+          dealii::TimerOutput::Scope scope(timer, "checkpoint");
+          series.flush(true);
+          store.write(save_checkpoint_blob(system,
+                                           postprocessors,
+                                           series.n_rows()),
+                      system.step_number(),
+                      system.time(),
+                      checkpoint_lines);
+        }
+
+        /// A run that stops early keeps what its samples give
+        /// (friction.csv).
+        void
+        stop_early() override
+        {
+          for (const auto &pp : postprocessors)
+            pp->write_partial_results();
+        }
+
+        std::string
+        progress_key() const override
+        {
+          return key_figure;
+        }
+
+      private:
+        bool
+        output_due(const LoopStep &step) const
+        {
+          return step.sample && cadence.output_every > 0
+                 && (step.index + 1) % cadence.output_every == 0;
+        }
+
+        void
+        write_outputs()
+        {
+          dealii::TimerOutput::Scope scope(timer, "output");
+          for (const auto &pp : postprocessors)
+            pp->write_output();
+        }
+
+        void
+        record_series()
+        {
+          dealii::TimerOutput::Scope scope(timer, "series");
+          const SystemEnergies       e      = system.energies();
+          const auto                 forces = system.group_forces();
+          const auto                 disp   = system.group_displacements();
+          const SeriesSample         sample{system.time(), e, forces, disp};
+          std::vector<double>        row;
+          key_figure.clear();
+          for (const auto &pp : postprocessors)
+            {
+              pp->record(sample, row);
+              const std::string figure = pp->key_figure();
+              if (!figure.empty())
+                key_figure += (key_figure.empty() ? "" : ", ") + figure;
+            }
+          series.add_row(row);
+          series.flush();
+        }
+
+        AutomatonSystem                &system;
+        const PostprocessorList        &postprocessors;
+        CsvWriter                      &series;
+        CheckpointStore                &store;
+        const std::vector<std::string> &checkpoint_lines;
+        dealii::TimerOutput            &timer;
+        const MPI_Comm                  comm;
+        const Cadence                   cadence;
+        std::string                     key_figure;
+      };
     } // namespace
 
 
@@ -225,8 +414,7 @@ namespace tribodyn
                         + format_number(p.time.end_time / dt)
                         + " steps of dt = " + format_number(dt)
                         + " s (limit 1e12): lower the end time.");
-      const auto n_steps
-        = static_cast<unsigned long>(std::ceil(p.time.end_time / dt - 1e-9));
+      const unsigned long n_steps = TimeLoop::n_steps(p.time.end_time, dt);
       report_scene(system, p, pcout);
       const double imbalance = system.work_imbalance();
       pcout << "MCA: " << system.n_global_automata() << " automata, "
@@ -254,12 +442,13 @@ namespace tribodyn
                        static_cast<unsigned long>(
                          std::round(p.output.series_interval / dt)))
             : 100ul;
+      // 0: visual outputs only at the start and the end
       const unsigned long output_every
         = p.output.output_interval > 0
             ? std::max(1ul,
                        static_cast<unsigned long>(
                          std::round(p.output.output_interval / dt)))
-            : n_steps;
+            : 0ul;
 
       // A fresh start, or the state of the latest checkpoint.
       CheckpointStore            store(out_dir, "mca", comm);
@@ -272,13 +461,11 @@ namespace tribodyn
           const auto     blobs = store.read(checkpoint_lines, info);
           load_checkpoint(
             blobs, info.n_ranks == n_ranks, system, postprocessors, rows, comm);
-          if (system.step_number() >= n_steps)
-            throw InputError("Nothing to resume: the checkpoint is at step "
-                             + std::to_string(system.step_number())
-                             + " (t = " + format_number(system.time())
-                             + " s), at or beyond 'Time/End time' = "
-                             + format_number(p.time.end_time)
-                             + " s. Raise the end time to continue the run.");
+          TimeLoop::check_something_to_resume(system.step_number(),
+                                              system.time(),
+                                              n_steps,
+                                              "Time/End time",
+                                              p.time.end_time);
           // Every check passed: the output directory may be touched.
           context.claim_output(OutputClaim::resume);
           for (const auto &pp : postprocessors)
@@ -301,143 +488,41 @@ namespace tribodyn
           series = std::make_unique<CsvWriter>(series_path, columns, root);
         }
 
-      auto write_outputs = [&]() {
-        dealii::TimerOutput::Scope scope(timer, "output");
-        for (const auto &pp : postprocessors)
-          pp->write_output();
-      };
-
-      std::string key_figure;
-      auto        record_series = [&]() {
-        dealii::TimerOutput::Scope scope(timer, "series");
-        const SystemEnergies       e      = system.energies();
-        const auto                 forces = system.group_forces();
-        const auto                 disp   = system.group_displacements();
-        const SeriesSample         sample{system.time(), e, forces, disp};
-        std::vector<double>        row;
-        key_figure.clear();
-        for (const auto &pp : postprocessors)
-          {
-            pp->record(sample, row);
-            const std::string figure = pp->key_figure();
-            if (!figure.empty())
-              key_figure += (key_figure.empty() ? "" : ", ") + figure;
-          }
-        series->add_row(row);
-        series->flush();
-      };
-
-      // Flush the series and save the state after the current step.
-      auto save_checkpoint = [&]() {
-        dealii::TimerOutput::Scope scope(timer, "checkpoint");
-        series->flush(true);
-        store.write(save_checkpoint_blob(system,
-                                         postprocessors,
-                                         series->n_rows()),
-                    system.step_number(),
-                    system.time(),
-                    checkpoint_lines);
-      };
-
-      ProgressReporter progress(
-        std::cout, root, p.time.end_time, context.progress_interval, "mca");
-      progress.set_start_time(system.time());
-      const unsigned long first_step = system.step_number() + 1;
-      if (first_step == 1)
-        {
-          write_outputs();
-          record_series();
-        }
-      // Blow-up limit: twice the largest P-wave speed (d / critical dt).
-      const double v_limit
-        = 2 * p.geometry.automaton_size / system.critical_time_step();
-      const double interval = checkpoint.interval;
-      double       next_checkpoint
-        = interval > 0
-            ? (std::floor(system.time() / interval + 1e-9) + 1) * interval
-            : std::numeric_limits<double>::max();
-      // SIGTERM/SIGINT: polled between steps (checkpoint, clean stop).
-      const InterruptHandlers interrupt_handlers;
-      const auto              loop_start = std::chrono::steady_clock::now();
-      // A run that stops early keeps what its samples give (friction.csv).
-      auto write_partial_results = [&]() {
-        for (const auto &pp : postprocessors)
-          pp->write_partial_results();
-      };
-      timer.enter_subsection("time steps");
-      for (unsigned long s = first_step; s <= n_steps; ++s)
-        {
-          system.step();
-          for (const auto &pp : postprocessors)
-            pp->after_step();
-          // Every step: finiteness and speed of the automata, signals and
-          // the displacement that decides the next step's pair-list
-          // rebuild, agreed by all ranks in one small MPI_Allreduce.
-          double          displacement2 = system.displacement_since_rebuild();
-          const RunHealth health
-            = agree_on_health(system.count_unstable_automata(v_limit),
-                              comm,
-                              &displacement2);
-          system.set_agreed_displacement_since_rebuild(displacement2);
-          if (health.badness > 0)
-            {
-              write_partial_results();
-              system.report_instability(v_limit);
-            }
-          const bool regular = s % series_every == 0;
-          const bool regular_output
-            = regular && p.output.output_interval > 0 && s % output_every == 0;
-          const bool last = s == n_steps;
-          timer.leave_subsection("time steps");
-          if (regular)
-            record_series();
-          if (regular_output)
-            write_outputs();
-          // Checkpoint at the interval, at the end and on a signal: before
-          // the end-of-run outputs, which a longer run would not write.
-          if ((interval > 0
-               && (system.time() >= next_checkpoint - 0.5 * dt || last))
-              || health.signal != 0)
-            {
-              save_checkpoint();
-              while (next_checkpoint <= system.time() + 0.5 * dt)
-                next_checkpoint += interval;
-            }
-          if (health.signal != 0)
-            {
-              InterruptHandlers::acknowledge();
-              write_partial_results();
-            }
-          if (health.signal != 0)
-            throw Interrupted(
-              health.signal,
-              "signal " + std::to_string(health.signal) + " received at step "
-                + std::to_string(s) + " (t = " + format_number(system.time())
-                + " s); the state was saved in '" + store.directory()
-                + "': continue with 'Checkpoint/Resume = true'.");
-          if (last && !regular)
-            record_series();
-          if (last && !regular_output)
-            write_outputs();
-          timer.enter_subsection("time steps");
-          progress.update(s, system.time(), key_figure);
-        }
-      timer.leave_subsection("time steps");
-      const unsigned long steps_run = n_steps + 1 - first_step;
-      const double        loop_seconds
-        = std::chrono::duration<double>(std::chrono::steady_clock::now()
-                                        - loop_start)
-            .count();
-      progress.update(n_steps, system.time(), key_figure, true);
+      // The steps: the common loop (core/time_loop.h) drives the run below.
+      AutomataRun run(system,
+                      postprocessors,
+                      *series,
+                      store,
+                      checkpoint_lines,
+                      timer,
+                      comm,
+                      {series_every,
+                       output_every,
+                       2 * p.geometry.automaton_size
+                         / system.critical_time_step()});
+      if (system.step_number() == 0)
+        run.initial_sample();
+      TimeLoopSettings loop_settings;
+      loop_settings.n_steps              = n_steps;
+      loop_settings.time_step            = dt;
+      loop_settings.end_time             = p.time.end_time;
+      loop_settings.checkpoint_interval  = checkpoint.interval;
+      loop_settings.checkpoint_directory = store.directory();
+      loop_settings.show_progress        = root;
+      loop_settings.progress_interval    = context.progress_interval;
+      loop_settings.label                = "mca";
+      loop_settings.timer                = &timer;
+      loop_settings.timer_section        = "time steps";
+      TimeLoop loop(loop_settings);
+      loop.run(run);
+      const unsigned long steps_run    = loop.steps_run();
+      const double        loop_seconds = loop.step_seconds();
       series->flush(true);
 
       const double wall = std::chrono::duration<double>(
                             std::chrono::steady_clock::now() - start)
                             .count();
-      JsonValue summary           = JsonValue::object();
-      summary["problem"]          = "mca";
-      summary["tribodyn_version"] = version_string;
-      summary["n_mpi_ranks"]      = n_ranks;
+      JsonValue summary = summary_header("mca", comm);
       add_run_keys(system, p, n_steps, imbalance, comm, pcout, summary);
       summary["wall_time_s"] = wall;
       summary["time_loop_s"] = loop_seconds;

@@ -14,7 +14,6 @@
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
-#include <tribodyn/core/version.h>
 #include <tribodyn/study/beam_vibration.h>
 
 namespace tribodyn
@@ -397,12 +396,8 @@ namespace tribodyn
       const double wall = std::chrono::duration<double>(
                             std::chrono::steady_clock::now() - start)
                             .count();
-      JsonValue s           = JsonValue::object();
-      s["problem"]          = "beam";
-      s["tribodyn_version"] = version_string;
-      s["n_mpi_ranks"]
-        = dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
-      s["frequency_hz"]                 = r.frequency_hz;
+      JsonValue s       = summary_header("beam", context.mpi_communicator);
+      s["frequency_hz"] = r.frequency_hz;
       s["frequency_reference_hz"]       = r.frequency_reference_hz;
       s["frequency_euler_bernoulli_hz"] = r.frequency_euler_bernoulli_hz;
       s["frequency_relative_error"]

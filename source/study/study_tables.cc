@@ -12,7 +12,6 @@
 #include <tribodyn/contact/contact_solver.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
-#include <tribodyn/core/version.h>
 #include <tribodyn/study/study_problem.h>
 
 namespace tribodyn
@@ -190,11 +189,7 @@ namespace tribodyn
       write_file_atomically(join_path(dir, "table2.csv"), csv.str());
       write_file_atomically(join_path(dir, "table2.md"), md.str());
 
-      JsonValue summary           = JsonValue::object();
-      summary["problem"]          = "study";
-      summary["tribodyn_version"] = version_string;
-      summary["n_mpi_ranks"]
-        = dealii::Utilities::MPI::n_mpi_processes(context.mpi_communicator);
+      JsonValue summary = summary_header("study", context.mpi_communicator);
       summary["n_case_groups"] = n_case_groups();
       summary["n_cases"]       = study_cases.size();
       // cases whose error bar is a lower bound (no blocking plateau)

@@ -6,10 +6,11 @@
 //
 // - sample() once per sample, in step with friction.csv: the plugin's file
 //   has the same times, row for row, over both legs;
-// - after_step() once per step: the steps counted before each sample equal
-//   time / dt exactly (an integer; one more at the end-of-run sample, taken
-//   after the last step's after_step()), across the restart (save()/load()
-//   carry the count: without them the second leg would count from 0);
+// - after_step() once per step, before the step's sample (the order of the
+//   common time loop, core/time_loop.h): the steps counted at each sample
+//   equal time / dt + 1 exactly (a sample of step n has the time t_n and
+//   comes after that step), across the restart (save()/load() carry the
+//   count: without them the second leg would count from 0);
 // - open() is told whether the run resumes; close() ends each leg.
 #include "../test_utilities.h"
 
@@ -163,17 +164,17 @@ main(int argc, char **argv)
   const auto        mine       = read_csv(dir + "plugin_steps.csv");
   const double      dt         = 5e-9;
   unsigned int      misaligned = 0;
-  // the end-of-run sample (the last step is not a regular one here) comes
-  // after that step's after_step(): one step more
+  // every sample, the end-of-run one included, comes after its step's
+  // after_step(): the count is that step's number plus one
   const std::size_t n = std::min(friction.size(), mine.size());
   for (std::size_t k = 0; k < n; ++k)
     misaligned += mine[k][0] != friction[k][0]
-                  || mine[k][1] != std::round(mine[k][0] / dt) + (k + 1 == n);
+                  || mine[k][1] != std::round(mine[k][0] / dt) + 1;
   check(friction.size() == mine.size() && friction.size() > 500
           && misaligned == 0,
         "plugin_steps.csv: " + std::to_string(mine.size()) + " rows, "
           + std::to_string(friction.size()) + " in friction.csv; "
           + std::to_string(misaligned)
-          + " rows off the sample times or with steps != time / dt");
+          + " rows off the sample times or with steps != time / dt + 1");
   return tribodyn_test::result();
 }

@@ -283,6 +283,8 @@ namespace tribodyn
       max_von_mises();
 
     private:
+      /// The run as the common time loop drives it (integrator.cc).
+      class Steps;
       /// Counters of run() that a checkpoint carries besides the solver
       /// state (the rows of the series already written, the fields).
       struct LoopState

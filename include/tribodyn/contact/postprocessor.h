@@ -5,7 +5,8 @@
 // name). Each registers itself from its own file in
 // source/contact/postprocessors/ (PluginRegistry: sorted by an order key;
 // a factory returns nullptr when the run does not need it), and
-// ContactSolver::run() calls the list: a new output is one file.
+// ContactSolver::run() calls the list from the common time loop
+// (core/time_loop.h): a new output is one file.
 //
 // The samples themselves (Sample, ContactSolver::samples()) and the
 // averages of the summary (ContactSolver::summarize()) are the run's
@@ -52,9 +53,8 @@ namespace tribodyn
         = 0;
 
       /// A sample was taken (the solver's latest, complete: its
-      /// mu_global and top reaction included). A regular sample of step n
-      /// comes before after_step() of step n; the end-of-run sample (when
-      /// the last step is not a regular one) after it.
+      /// mu_global and top reaction included). A sample of step n comes
+      /// after after_step() of step n (core/time_loop.h).
       virtual void
       sample(const Sample &)
       {

@@ -152,6 +152,13 @@ namespace tribodyn
     bool                                        is_active = false;
     std::vector<std::pair<double, std::string>> records;
   };
+
+  class JsonValue;
+
+  /// The keys every run's summary.json begins with: "problem" (@p problem),
+  /// "tribodyn_version" and "n_mpi_ranks" (the ranks of @p comm).
+  JsonValue
+  summary_header(const std::string &problem, const MPI_Comm comm);
 } // namespace tribodyn
 
 #endif
