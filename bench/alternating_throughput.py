@@ -14,6 +14,11 @@ new / old. --old-lib: LD_LIBRARY_PATH for the old binary (a copied build
 needs its libtribodyn.so). --only: one case ("contact pin",
 "two_body_friction", "10^5 block"). Outputs in bench-output/alternating/.
 
+--by-wall: compare 1 / wall_time_s of the whole run (set-up included)
+instead of the throughput figure, for binaries whose figures are defined
+differently (the time-loop change of issue #52: time_loop_s no longer counts
+the automata's samples and outputs).
+
 --concurrent: old and new at the same time instead, each pinned to a core
 of its own (taskset; cores swapped every repeat), and the median of the
 pairs' ratios new / old: both runs see the same moment of a shared host,
@@ -39,6 +44,7 @@ def main():
     parser.add_argument("--old-lib", default="")
     parser.add_argument("--only", default="")
     parser.add_argument("--concurrent", action="store_true")
+    parser.add_argument("--by-wall", action="store_true")
     args = parser.parse_args()
     os.makedirs(OUT, exist_ok=True)
     block = os.path.join(OUT, "block.prm")
@@ -88,7 +94,9 @@ def main():
                 if run.wait() != 0:
                     raise SystemExit("failed: %s %s.prm" % (which, d))
                 with open(os.path.join(d, "summary.json")) as f:
-                    results[case][which].append(json.load(f)[key])
+                    summary = json.load(f)
+                results[case][which].append(1 / summary["wall_time_s"]
+                                            if args.by_wall else summary[key])
             print(rep, case, results[case]["old"][-1],
                   results[case]["new"][-1], "%.3f" % (results[case]["new"][-1]
                                                       / results[case]["old"][-1]),
