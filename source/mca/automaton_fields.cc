@@ -170,16 +170,6 @@ namespace tribodyn
     }
 
 
-    std::size_t
-    AutomatonFieldTable::memory_consumption() const
-    {
-      std::size_t bytes = 0;
-      for (const AutomatonField &field : fields)
-        bytes += field.array->memory_consumption();
-      return bytes;
-    }
-
-
     void
     AutomatonFieldTable::memory_by_field(
       std::vector<std::pair<std::string, std::size_t>> &parts) const

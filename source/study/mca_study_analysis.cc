@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/core/statistics.h>
 #include <tribodyn/core/version.h>
 
 namespace tribodyn
@@ -72,6 +73,137 @@ namespace tribodyn
         for (const double v : values)
           s2 += (v - mean) * (v - mean);
         return {mean, std::sqrt(s2 / (n - 1) / n)};
+      }
+
+
+      /// (time, mu) of a scene's friction.csv; empty when it cannot be
+      /// read.
+      void
+      read_mu_series(const std::string   &directory,
+                     std::vector<double> &t,
+                     std::vector<double> &mu)
+      {
+        t.clear();
+        mu.clear();
+        std::ifstream in(join_path(directory, "friction.csv"));
+        std::string   line;
+        if (!std::getline(in, line))
+          return;
+        const auto   names = dealii::Utilities::split_string_list(line, ',');
+        unsigned int it = names.size(), im = names.size();
+        for (unsigned int k = 0; k < names.size(); ++k)
+          {
+            if (names[k] == "time")
+              it = k;
+            if (names[k] == "mu")
+              im = k;
+          }
+        if (it == names.size() || im == names.size())
+          return;
+        while (std::getline(in, line))
+          {
+            const auto fields = dealii::Utilities::split_string_list(line, ',');
+            if (fields.size() != names.size())
+              continue;
+            try
+              {
+                const double tk = std::stod(fields[it]),
+                             mk = std::stod(fields[im]);
+                t.push_back(tk);
+                mu.push_back(mk);
+              }
+            catch (const std::exception &)
+              {
+                t.clear();
+                mu.clear();
+                return;
+              }
+          }
+      }
+
+
+      /// Mean sample spacing of @p t (0 for fewer than two samples).
+      double
+      spacing(const std::vector<double> &t)
+      {
+        return t.size() < 2 ? 0. : (t.back() - t.front()) / (t.size() - 1);
+      }
+
+
+      /// Means of the samples of (@p t, @p y) in the bins [from + k w,
+      /// from + (k + 1) w), k < n; NaN for a bin without samples.
+      std::vector<double>
+      bin_means(const std::vector<double> &t,
+                const std::vector<double> &y,
+                const double               from,
+                const double               w,
+                const unsigned int         n)
+      {
+        std::vector<double>       sum(n, 0.);
+        std::vector<unsigned int> count(n, 0);
+        for (std::size_t k = 0; k < t.size(); ++k)
+          {
+            const double x = (t[k] - from) / w;
+            if (x >= 0 && x < n)
+              {
+                const unsigned int b = static_cast<unsigned int>(x);
+                sum[b] += y[k];
+                ++count[b];
+              }
+          }
+        for (unsigned int b = 0; b < n; ++b)
+          sum[b] = count[b] > 0 ? sum[b] / count[b]
+                                : std::numeric_limits<double>::quiet_NaN();
+        return sum;
+      }
+
+
+      /**
+       * The difference of two runs paired in time (PairedDifference::
+       * in_time): both mu(t) binned onto bins of twice the larger sample
+       * spacing from the later averaging start @p from to the earlier end;
+       * the bins both runs fill give the series d_k = mu_c,k - mu_r,k,
+       * block-averaged (statistics::block_average), relative to the mean
+       * of mu_r,k over the same bins. False when a series is missing or
+       * leaves fewer than 8 common bins.
+       */
+      bool
+      difference_in_time(const std::string &reference,
+                         const std::string &compare,
+                         const double       from,
+                         PairedDifference  &d)
+      {
+        std::vector<double> tr, mr, tc, mc;
+        read_mu_series(reference, tr, mr);
+        read_mu_series(compare, tc, mc);
+        if (tr.size() < 2 || tc.size() < 2 || !std::isfinite(from))
+          return false;
+        const double w  = 2 * std::max(spacing(tr), spacing(tc));
+        const double to = std::min(tr.back(), tc.back());
+        if (!(w > 0) || !(to > from))
+          return false;
+        const unsigned int n  = static_cast<unsigned int>((to - from) / w);
+        const auto         br = bin_means(tr, mr, from, w, n),
+                   bc         = bin_means(tc, mc, from, w, n);
+        std::vector<double> difference;
+        double              reference_sum = 0;
+        for (unsigned int b = 0; b < n; ++b)
+          if (std::isfinite(br[b]) && std::isfinite(bc[b]))
+            {
+              difference.push_back(bc[b] - br[b]);
+              reference_sum += br[b];
+            }
+        if (difference.size() < 8 || !(reference_sum != 0))
+          return false;
+        const double reference_mean = reference_sum / difference.size();
+        const statistics::MeanWithError e
+          = statistics::block_average(difference);
+        d.in_time             = e.mean / reference_mean;
+        d.in_time_stderr      = e.standard_error / std::abs(reference_mean);
+        d.in_time_runs_stderr = d.in_time_stderr;
+        d.in_time_from        = from;
+        d.in_time_bins        = difference.size();
+        return true;
       }
 
 
@@ -248,6 +380,11 @@ namespace tribodyn
                   d.steady_start_reference = r.steady_start_time;
                   d.steady_start_compare   = m.steady_start_time;
                   d.n_steady = r.steady_found && m.steady_found ? 1 : 0;
+                  difference_in_time(directories[ir],
+                                     directories[ic],
+                                     std::max(r.steady_start_time,
+                                              m.steady_start_time),
+                                     d);
                   per_seed.push_back(d);
                 }
               pairs.insert(pairs.end(), per_seed.begin(), per_seed.end());
@@ -290,6 +427,26 @@ namespace tribodyn
                   mean.relative_difference_stderr
                     = per_seed[0].relative_difference_stderr;
                 }
+              // the difference in time over the seeds that have one
+              {
+                std::vector<double> values;
+                double              variance = 0;
+                for (const auto &d : per_seed)
+                  if (std::isfinite(d.in_time))
+                    {
+                      values.push_back(d.in_time);
+                      variance += d.in_time_stderr * d.in_time_stderr;
+                    }
+                if (values.size() == per_seed.size())
+                  {
+                    std::tie(mean.in_time, mean.in_time_stderr)
+                      = mean_and_stderr(values);
+                    mean.in_time_runs_stderr
+                      = std::sqrt(variance) / values.size();
+                    if (values.size() == 1)
+                      mean.in_time_stderr = per_seed[0].in_time_stderr;
+                  }
+              }
               mean.layer_reference
                 = over_seeds(&PairedDifference::layer_reference).first;
               mean.layer_compare
@@ -380,7 +537,10 @@ namespace tribodyn
              "mu_reference,mu_reference_stderr,mu_compare,mu_compare_stderr,"
              "relative_difference,relative_difference_stderr,"
              "relative_difference_runs_stderr,layer_reference,layer_compare,"
-             "steady_start_reference,steady_start_compare,n_seeds,n_steady\n";
+             "steady_start_reference,steady_start_compare,n_seeds,n_steady,"
+             "relative_difference_in_time,relative_difference_in_time_stderr,"
+             "relative_difference_in_time_runs_stderr,in_time_from,"
+             "in_time_bins\n";
         for (const PairedDifference &d : pairs)
           {
             const McaScene &first = scenes[scene_index(
@@ -406,7 +566,10 @@ namespace tribodyn
                                    d.steady_start_reference,
                                    d.steady_start_compare})
               t << "," << csv(v);
-            t << "," << d.n_seeds << "," << d.n_steady << "\n";
+            t << "," << d.n_seeds << "," << d.n_steady << "," << csv(d.in_time)
+              << "," << csv(d.in_time_stderr) << ","
+              << csv(d.in_time_runs_stderr) << "," << csv(d.in_time_from) << ","
+              << d.in_time_bins << "\n";
           }
         write_file_atomically(join_path(directory, "study.csv"), t.str());
       }
@@ -447,7 +610,9 @@ namespace tribodyn
             "mu_reference, paired on each roughness seed; the mean over the "
             "seeds with the standard error of that mean from the scatter "
             "between the seeds (the runs' own errors propagated: "
-            "'runs').\n";
+            "'runs'). Paired in time: the runs' mu(t) binned onto common "
+            "bins from the later averaging start, their difference "
+            "block-averaged as one series (doc/user_guide/mca_study.md).\n";
       for (unsigned int c = 0; c < bases.size(); ++c)
         for (unsigned int l = 0; l < n_levels && c != reference; ++l)
           {
@@ -457,8 +622,9 @@ namespace tribodyn
                << "\n\n| roughness seed | mu " << bases[reference].name
                << " | mu " << bases[c].name << " | difference | layer "
                << bases[reference].name << " | layer " << bases[c].name
-               << " | steady from | both steady |\n"
-                  "|---|---|---|---|---|---|---|---|\n";
+               << " | steady from | both steady | difference paired in time "
+                  "|\n"
+                  "|---|---|---|---|---|---|---|---|---|\n";
             for (const PairedDifference &d : pairs)
               {
                 if (d.compare != c || d.level != l)
@@ -488,6 +654,12 @@ namespace tribodyn
                    << d.n_steady
                    << (mean ? " of " + std::to_string(d.n_seeds)
                             : std::string(d.n_steady ? " (yes)" : " (no)"))
+                   << " | "
+                   << (std::isfinite(d.in_time)
+                         ? std::string(d.in_time >= 0 ? "+" : "−")
+                             + fixed(100 * std::abs(d.in_time), 1) + " % ± "
+                             + fixed(100 * d.in_time_stderr, 1) + " %"
+                         : std::string("-"))
                    << " |\n";
                 if (mean)
                   {
@@ -500,6 +672,10 @@ namespace tribodyn
                         << fixed(100 * d.relative_difference, 2) << " % +- "
                         << fixed(100 * d.relative_difference_stderr, 2)
                         << " % over " << d.n_seeds << " seed(s)";
+                    if (std::isfinite(d.in_time))
+                      out << "; paired in time " << fixed(100 * d.in_time, 2)
+                          << " % +- " << fixed(100 * d.in_time_stderr, 2)
+                          << " %";
                     if (d.n_steady < d.n_seeds)
                       out << "; " << d.n_seeds - d.n_steady
                           << " pair(s) reached no quasi-steady regime (their "
@@ -554,6 +730,11 @@ namespace tribodyn
               = json_number(d.relative_difference_stderr);
             m["relative_difference_runs_stderr"]
               = json_number(d.relative_difference_runs_stderr);
+            m["relative_difference_in_time"] = json_number(d.in_time);
+            m["relative_difference_in_time_stderr"]
+              = json_number(d.in_time_stderr);
+            m["relative_difference_in_time_runs_stderr"]
+              = json_number(d.in_time_runs_stderr);
             m["mu_reference"]    = json_number(d.mu_reference);
             m["mu_compare"]      = json_number(d.mu_compare);
             m["layer_reference"] = json_number(d.layer_reference);

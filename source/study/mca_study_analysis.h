@@ -6,6 +6,7 @@
 #ifndef tribodyn_study_mca_study_analysis_h
 #define tribodyn_study_mca_study_analysis_h
 
+#include <limits>
 #include <ostream>
 #include <string>
 #include <tribodyn/study/mca_study.h>
@@ -86,6 +87,21 @@ namespace tribodyn
       double       layer_reference = 0, layer_compare = 0;
       double       steady_start_reference = 0, steady_start_compare = 0;
       unsigned int n_seeds = 1, n_steady = 0;
+      /// The difference paired in time: the two runs share the loading
+      /// history, so mu_compare(t) - mu_reference(t), binned onto common
+      /// bins over the later of the two averaging starts to the end, is
+      /// block-averaged as one series (its error is that of the
+      /// difference, not of the two runs as if independent), relative to
+      /// the reference's mean over the same bins. For the mean over the
+      /// seeds: the mean of the seeds' values, its standard error from
+      /// their scatter (runs_stderr from the seeds' own errors). NaN where
+      /// a run's friction.csv is missing.
+      double in_time             = std::numeric_limits<double>::quiet_NaN();
+      double in_time_stderr      = std::numeric_limits<double>::quiet_NaN();
+      double in_time_runs_stderr = std::numeric_limits<double>::quiet_NaN();
+      /// Start of the common window (s) and its number of bins.
+      double       in_time_from = std::numeric_limits<double>::quiet_NaN();
+      unsigned int in_time_bins = 0;
     };
 
 

@@ -189,11 +189,9 @@ namespace tribodyn
       save(boost::archive::binary_oarchive &ar) const;
       void
       load(boost::archive::binary_iarchive &ar) const;
-      /// Bytes held by all registered arrays (their capacity).
-      std::size_t
-      memory_consumption() const;
-      /// The same, field by field: (name, bytes) appended to @p parts
-      /// (fields of one name, such as the scratch buffers, summed).
+      /// Bytes held by the registered arrays (their capacity), field by
+      /// field: (name, bytes) appended to @p parts (fields of one name,
+      /// such as the scratch buffers, summed).
       void
       memory_by_field(
         std::vector<std::pair<std::string, std::size_t>> &parts) const;
