@@ -15,7 +15,6 @@
 #include <deal.II/numerics/data_out.h>
 #include <iomanip>
 #include <iostream>
-#include <limits>
 #include <map>
 #include <memory>
 #include <set>
@@ -27,7 +26,6 @@
 #include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
-#include <tribodyn/core/progress.h>
 #include <tribodyn/core/time_loop.h>
 
 namespace tribodyn

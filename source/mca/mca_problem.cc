@@ -11,13 +11,11 @@
 #include <deal.II/base/timer.h>
 #include <iomanip>
 #include <iostream>
-#include <limits>
 #include <sstream>
 #include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
-#include <tribodyn/core/progress.h>
 #include <tribodyn/core/time_loop.h>
 #include <tribodyn/mca/automaton_system.h>
 #include <tribodyn/mca/mca_problem.h>

@@ -129,7 +129,6 @@ main(int argc, char **argv)
   std::size_t counted = 0;
   for (const auto &part : parts)
     counted += part.second;
-  check(counted == expected,
-        "memory: the capacity of every registered array");
+  check(counted == expected, "memory: the capacity of every registered array");
   return result();
 }
