@@ -54,7 +54,7 @@ def main():
                         os.path.join(OUT, "block_out")], stdout=f, check=True)
     cases = {
         "contact pin": (os.path.join(ROOT, "prm/contact/homogeneous_matrix.prm"),
-                        "subsection Time integration\nset End time = 100e-6\n"
+                        "subsection Time\nset End time = 100e-6\n"
                         "end\nsubsection Output\nset Averaging start time = "
                         "20e-6\nset Field interval = 0\nend\n",
                         "dof_steps_per_second"),

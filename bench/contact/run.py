@@ -63,10 +63,10 @@ def throughput(args):
 subsection Geometry
   set Mesh size = %g
 end
-subsection Material
+subsection Materials
   set Kinematics = %s
 end
-subsection Time integration
+subsection Time
   set Time step = %g
   set End time = %g
 end
@@ -98,7 +98,7 @@ subsection Geometry
   set Height = 8e-3
   set Mesh size = %g
 end
-subsection Material
+subsection Materials
   subsection Isotropic
     set Young modulus = 30e9
     set Poisson ratio = 0
@@ -108,10 +108,10 @@ end
 subsection Loading
   set Pressure = 0
   set Top face held in x = false
-  set Plane velocity = 0
+  set Sliding velocity = 0
   set Initial velocity = 0, -1
 end
-subsection Time integration
+subsection Time
   set Time step = %g
   set End time = 6e-6
   set Damping coefficient = 0

@@ -90,7 +90,7 @@ def cell(bcs="KUBC, SUBC", subdivisions=1, refinements=0, fields="false", seed=N
              "  set Write morphology = false",
              "end"]
     if seed is not None:
-        lines += ["subsection Morphology", "  set Random seed = %d" % seed, "end"]
+        lines += ["subsection Morphology", "  set Seed = %d" % seed, "end"]
     return lines
 
 

@@ -82,9 +82,9 @@ def caps(problem, path_name):
     """Lines appended to keep the run short (unless the end time itself is
     the perturbed parameter)."""
     if problem in ("contact", "study"):
-        if path_name.endswith("Time integration/End time"):
+        if path_name.endswith("Time/End time"):
             return ""
-        return ("subsection Time integration\n  set End time = 2e-6\nend\n"
+        return ("subsection Time\n  set End time = 2e-6\nend\n"
                 "subsection Output\n  set Averaging start time = 0\n"
                 "  set Averaging end time = -1\nend\n")
     if problem == "mca":

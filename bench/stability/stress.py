@@ -46,7 +46,7 @@ end
 CASES = {
     # contact (pin of tests/contact/short_pin.prm: 28 x 8 mm, h = 0.25 mm)
     "contact_contrast_1000": (SHORT_PIN, """
-subsection Material
+subsection Materials
   set Type = morphology
   subsection Matrix
     set Young modulus = 0.08e9
@@ -63,24 +63,24 @@ subsection Morphology
   set Volume fraction = 0.1
   set Heterogeneity width = 0.25e-3
 end
-subsection Time integration
+subsection Time
   set End time = 20e-6
 end"""),
     "contact_nu_0.499": (SHORT_PIN, """
-subsection Material
+subsection Materials
   subsection Isotropic
     set Poisson ratio = 0.499
   end
 end
-subsection Time integration
+subsection Time
   set End time = 20e-6
 end"""),
     "contact_P100MPa_V100": (SHORT_PIN, """
 subsection Loading
   set Pressure = 100e6
-  set Plane velocity = -100
+  set Sliding velocity = -100
 end
-subsection Time integration
+subsection Time
   set End time = 20e-6
 end"""),
     # mca

@@ -71,26 +71,27 @@ namespace tribodyn
                         "28e-3",
                         Double(),
                         "Extent of the pin along x, the sliding direction (m). "
-                        "Ignored for 'Material/Type = morphology', whose pin "
+                        "Ignored for 'Materials/Type = morphology', whose pin "
                         "is the morphology's rectangle.");
       prm.declare_entry("Height",
                         "8e-3",
                         Double(),
                         "Extent of the pin along y (m). Ignored for "
-                        "'Material/Type = morphology'.");
+                        "'Materials/Type = morphology'.");
       prm.declare_entry("Mesh size",
                         "0.25e-3",
                         Double(),
                         "Target size h of the square Q1 elements (m); the mesh "
                         "has round(Width/h) x round(Height/h) elements. The "
                         "seed uses 0.25e-3 (coarse) and 0.1e-3 (fine). "
-                        "Ignored for 'Material/Type = morphology'.");
-      prm.declare_entry("Subdivisions per pixel",
-                        "1",
-                        Integer(1, 64),
-                        "Meso pin ('Material/Type = morphology'): elements per "
-                        "morphology pixel along each axis, so that the phase "
-                        "boundaries lie on element edges.");
+                        "Ignored for 'Materials/Type = morphology'.");
+      prm.declare_entry(
+        "Subdivisions per pixel",
+        "1",
+        Integer(1, 64),
+        "Meso pin ('Materials/Type = morphology'): elements per "
+        "morphology pixel along each axis, so that the phase "
+        "boundaries lie on element edges.");
       prm.leave_subsection();
     }
 
@@ -140,7 +141,7 @@ namespace tribodyn
                         Double(0),
                         "Duration t_r of the smooth ramp P(t) = P (1 - "
                         "cos(pi t/t_r))/2 (s); 0 applies P at once.");
-      prm.declare_entry("Plane velocity",
+      prm.declare_entry("Sliding velocity",
                         "-2",
                         Double(),
                         "Velocity V of the rigid plane along x (m/s).");
@@ -160,29 +161,29 @@ namespace tribodyn
                         Double(0),
                         "Initial distance between the bottom face and the "
                         "plane (m).");
-      prm.declare_entry("Plane start time",
+      prm.declare_entry("Sliding start time",
                         "0",
                         Double(0),
                         "The plane is at rest until this time (the pressure "
                         "preloads the pin), then its velocity ramps to "
-                        "'Plane velocity' (s). 0: it moves from the start.");
-      prm.declare_entry("Plane velocity ramp time",
+                        "'Sliding velocity' (s). 0: it moves from the start.");
+      prm.declare_entry("Sliding velocity ramp time",
                         "0",
                         Double(0),
                         "Duration of the smooth ramp V(t) = V (1 - cos(pi "
                         "(t - t_start)/t_v))/2 of the plane velocity (s); 0 "
                         "starts the plane at V at once.");
-      prm.declare_entry("Plane velocity step time",
+      prm.declare_entry("Sliding velocity step time",
                         "0",
                         Double(0),
                         "At this time the plane's velocity steps at once to "
-                        "'Plane velocity after step' (s), e.g. to see the "
+                        "'Sliding velocity after step' (s), e.g. to see the "
                         "transient of rate-and-state friction. 0: no step.");
-      prm.declare_entry("Plane velocity after step",
+      prm.declare_entry("Sliding velocity after step",
                         "-2",
                         Double(),
                         "The plane's velocity after that step (m/s): "
-                        "nonzero, in the direction of 'Plane velocity'.");
+                        "nonzero, in the direction of 'Sliding velocity'.");
       prm.declare_entry("Surface imperfection amplitude",
                         "0",
                         Double(0),
@@ -217,7 +218,7 @@ namespace tribodyn
       prm.enter_subsection("Loading");
       pressure            = prm.get_double("Pressure");
       ramp_time           = prm.get_double("Ramp time");
-      plane_velocity      = prm.get_double("Plane velocity");
+      plane_velocity      = prm.get_double("Sliding velocity");
       top_held_in_x       = prm.get_bool("Top face held in x");
       const auto v        = internal::parse_numbers(prm.get("Initial velocity"),
                                              2,
@@ -225,10 +226,10 @@ namespace tribodyn
       initial_velocity[0] = v[0];
       initial_velocity[1] = v[1];
       initial_gap         = prm.get_double("Initial gap");
-      plane_start_time    = prm.get_double("Plane start time");
-      plane_velocity_ramp_time  = prm.get_double("Plane velocity ramp time");
-      plane_velocity_step_time  = prm.get_double("Plane velocity step time");
-      plane_velocity_after_step = prm.get_double("Plane velocity after step");
+      plane_start_time    = prm.get_double("Sliding start time");
+      plane_velocity_ramp_time  = prm.get_double("Sliding velocity ramp time");
+      plane_velocity_step_time  = prm.get_double("Sliding velocity step time");
+      plane_velocity_after_step = prm.get_double("Sliding velocity after step");
       imperfection_amplitude = prm.get_double("Surface imperfection amplitude");
       imperfection_wavelength
         = prm.get_double("Surface imperfection wavelength");
@@ -259,20 +260,20 @@ namespace tribodyn
                             "The pressure pushes the pin on the plane; it "
                             "must not be negative.");
       check_parameter_range(
-        "Loading/Plane velocity", plane_velocity, -1e4, 1e4, false, false);
+        "Loading/Sliding velocity", plane_velocity, -1e4, 1e4, false, false);
       if (plane_velocity_step_time > 0)
         {
           check_parameter(plane_velocity_step_time
                             > plane_start_time + plane_velocity_ramp_time,
-                          "Loading/Plane velocity step time",
+                          "Loading/Sliding velocity step time",
                           "a time after the plane's start and velocity ramp ("
                             + format_number(plane_start_time
                                             + plane_velocity_ramp_time)
                             + " s)");
           check_parameter(plane_velocity_after_step * plane_velocity > 0
                             && std::abs(plane_velocity_after_step) <= 1e4,
-                          "Loading/Plane velocity after step",
-                          "a velocity in the direction of 'Loading/Plane "
+                          "Loading/Sliding velocity after step",
+                          "a velocity in the direction of 'Loading/Sliding "
                           "velocity' (friction is measured against that "
                           "direction), at most 1e4 m/s in magnitude");
         }
@@ -338,7 +339,7 @@ namespace tribodyn
     void
     TimeParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Time integration");
+      prm.enter_subsection("Time");
       prm.declare_entry("Time step",
                         "5e-9",
                         Double(),
@@ -375,7 +376,7 @@ namespace tribodyn
     void
     TimeParameters::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Time integration");
+      prm.enter_subsection("Time");
       time_step           = prm.get_double("Time step");
       end_time            = prm.get_double("End time");
       beta2               = prm.get_double("Beta2");
@@ -383,11 +384,9 @@ namespace tribodyn
       automatic_time_step = prm.get_bool("Automatic time step");
       safety_factor       = prm.get_double("Safety factor");
       prm.leave_subsection();
-      check_parameter_range(
-        "Time integration/Time step", time_step, 0, 1, true, false);
-      check_parameter_range(
-        "Time integration/End time", end_time, 0, 1e3, true, false);
-      check_parameter_range("Time integration/Beta2",
+      check_parameter_range("Time/Time step", time_step, 0, 1, true, false);
+      check_parameter_range("Time/End time", end_time, 0, 1e3, true, false);
+      check_parameter_range("Time/Beta2",
                             beta2,
                             0.5,
                             1,
@@ -396,12 +395,12 @@ namespace tribodyn
                             "The beta2 scheme is stable and at least first "
                             "order accurate only for beta2 in [0.5, 1].");
       check_parameter_range(
-        "Time integration/Damping coefficient", damping, 0, 1, false, false);
+        "Time/Damping coefficient", damping, 0, 1, false, false);
       check_parameter_range(
-        "Time integration/Safety factor", safety_factor, 0, 1, true, false);
+        "Time/Safety factor", safety_factor, 0, 1, true, false);
       const double n_steps = end_time / time_step;
       check_parameter(n_steps < 4e9,
-                      "Time integration/End time",
+                      "Time/End time",
                       "fewer than 4e9 time steps (End time / Time step = "
                         + format_number(n_steps) + ")");
     }
@@ -448,7 +447,7 @@ namespace tribodyn
                         "'plane speed': t* = L*/|V(t)| (seed eq. (4)); 'local "
                         "slip rate': t* = L*/|[u']| with the node's slip rate "
                         "of the previous step (Prakash-Clifton), L* = "
-                        "'Regularization time' x |Plane velocity|.");
+                        "'Regularization time' x |Sliding velocity|.");
       prm.declare_entry("State on re-contact",
                         "reset to zero",
                         selection_pattern(recontact_choices),
@@ -578,17 +577,17 @@ namespace tribodyn
               || morphology.generator
                    == MorphologyParameters::Generator::grid_file))
         {
-          // The meso pin has the two phases of Material/Matrix and
-          // Material/Heterogeneity: refuse a map of more.
+          // The meso pin has the two phases of Materials/Matrix and
+          // Materials/Heterogeneity: refuse a map of more.
           const bool image
             = morphology.generator == MorphologyParameters::Generator::image;
           const unsigned int n = Morphology::create(morphology).n_phases();
           check_parameter(
             n <= 2,
             image ? "Morphology/Image/Segmentation" : "Morphology/Grid file",
-            "the meso pin ('Material/Type = morphology') has two phases "
-            "(material id 0: 'Material/Matrix', 1: "
-            "'Material/Heterogeneity'), but the "
+            "the meso pin ('Materials/Type = morphology') has two phases "
+            "(material id 0: 'Materials/Matrix', 1: "
+            "'Materials/Heterogeneity'), but the "
               + (image
                    ? "image '" + morphology.image.file + "' is segmented into "
                    : "grid file '" + morphology.grid_file + "' holds ")
@@ -597,17 +596,18 @@ namespace tribodyn
                          "= 2' or two colours), or homogenize"
                        : "Use ids 0 and 1 only, or homogenize")
               + " the map with 'set Problem = homogenization' and use its "
-                "constants with 'Material/Type = homogenization summary'.");
+                "constants with 'Materials/Type = homogenization summary'.");
         }
       loading.parse_parameters(prm);
       time.parse_parameters(prm);
       contact.parse_parameters(prm);
       output.parse_parameters(prm);
       if (contact.regularization_rate == RegularizationRate::local_slip_rate)
-        check_parameter(loading.plane_velocity != 0,
-                        "Contact/Regularization rate",
-                        "'plane speed' when 'Loading/Plane velocity' is 0 (L* "
-                        "= Regularization time x |V| would vanish)");
+        check_parameter(
+          loading.plane_velocity != 0,
+          "Contact/Regularization rate",
+          "'plane speed' when 'Loading/Sliding velocity' is 0 (L* "
+          "= Regularization time x |V| would vanish)");
     }
 
 
@@ -616,7 +616,7 @@ namespace tribodyn
     {
       check_parameter(checkpointed || output.average_start < time.end_time,
                       "Output/Averaging start time",
-                      "a time before 'Time integration/End time' ("
+                      "a time before 'Time/End time' ("
                         + format_number(time.end_time)
                         + " s), or checkpoints (Checkpoint/Interval > 0) "
                           "when this run is the first leg of a longer one");

@@ -34,7 +34,7 @@ namespace tribodyn
       checkpoint.parse_parameters(prm);
       parameters.check_averaging_window(checkpoint.interval > 0);
       checkpoint_lines
-        = resumable_parameter_lines(prm, "Time integration/End time");
+        = resumable_parameter_lines(prm, "Time/End time");
       checkpoints_on = true;
     }
 

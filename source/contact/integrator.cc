@@ -442,7 +442,7 @@ namespace tribodyn
         TimeLoop::check_something_to_resume(step_count,
                                             step_count * dt,
                                             n_steps,
-                                            "Time integration/End time",
+                                            "Time/End time",
                                             prm.time.end_time);
       // Every check passed: the output directory may be touched from here.
       if (output_claim)

@@ -1,4 +1,4 @@
-// Subsection "Material" of the contact problem and the stiffnesses it
+// Subsection "Materials" of the contact problem and the stiffnesses it
 // builds: transversely isotropic constants, homogenization summaries.
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
@@ -38,7 +38,7 @@ namespace tribodyn
     void
     ContactMaterialParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Material");
+      prm.enter_subsection("Materials");
       prm.declare_entry(
         "Type",
         "isotropic",
@@ -111,27 +111,27 @@ namespace tribodyn
     void
     ContactMaterialParameters::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Material");
+      prm.enter_subsection("Materials");
       type       = get_selection(prm, "Type", type_choices);
       kinematics = get_selection(prm, "Kinematics", kinematics_choices);
       density    = prm.get_double("Density");
-      check_parameter_range("Material/Density", density, 0, 1e6, true, false);
+      check_parameter_range("Materials/Density", density, 0, 1e6, true, false);
       prm.enter_subsection("Isotropic");
-      isotropic.parse_parameters(prm, "Material/Isotropic");
+      isotropic.parse_parameters(prm, "Materials/Isotropic");
       prm.leave_subsection();
       prm.enter_subsection("Anisotropic");
       {
         const auto c
           = internal::parse_numbers(prm.get("Stiffness"),
                                     9,
-                                    "Material/Anisotropic/Stiffness");
+                                    "Materials/Anisotropic/Stiffness");
         for (unsigned int i = 0; i < 3; ++i)
           for (unsigned int j = 0; j < 3; ++j)
             anisotropic_stiffness[i][j] = c[3 * i + j];
         const auto z
           = internal::parse_numbers(prm.get("Out-of-plane stiffness"),
                                     3,
-                                    "Material/Anisotropic/Out-of-plane "
+                                    "Materials/Anisotropic/Out-of-plane "
                                     "stiffness");
         for (unsigned int i = 0; i < 3; ++i)
           anisotropic_c_z[i] = z[i];
@@ -148,12 +148,12 @@ namespace tribodyn
       summary_file = prm.get("File");
       summary_key  = prm.get("Boundary condition");
       prm.leave_subsection();
-      composite.parse_parameters(prm, "Material");
+      composite.parse_parameters(prm, "Materials");
       prm.leave_subsection();
 
       if (type == Type::engineering_constants)
         {
-          const std::string s = "Material/Engineering constants/";
+          const std::string s = "Materials/Engineering constants/";
           check_parameter_range(s + "E_L", E_L, 0, 1e15, true, false);
           check_parameter_range(s + "E_T", E_T, 0, 1e15, true, false);
           check_parameter_range(s + "G_LT", G_LT, 0, 1e15, true, false);
@@ -162,9 +162,9 @@ namespace tribodyn
         }
       if (type == Type::homogenization_summary)
         check_parameter(!summary_file.empty(),
-                        "Material/Homogenization summary/File",
+                        "Materials/Homogenization summary/File",
                         "the path of a homogenization summary.json when "
-                        "'Material/Type = homogenization summary'");
+                        "'Materials/Type = homogenization summary'");
     }
 
 
@@ -179,7 +179,7 @@ namespace tribodyn
         std::ifstream in(file);
         if (!in)
           throw InputError("Cannot read the homogenization summary '" + file
-                           + "' ('Material/Homogenization summary/File'): it "
+                           + "' ('Materials/Homogenization summary/File'): it "
                              "does not exist or is not readable. Run 'set "
                              "Problem = homogenization' first; it writes "
                              "OUTPUT_DIRECTORY/summary.json.");
@@ -198,7 +198,7 @@ namespace tribodyn
         throw InputError("The homogenization summary '" + file
                          + "' has no stiffness '" + key
                          + ".C'; was it computed with that boundary "
-                           "condition? Choose another 'Material/"
+                           "condition? Choose another 'Materials/"
                            "Homogenization summary/Boundary condition'.");
       VoigtStiffness C;
       unsigned int   i = 0;

@@ -177,7 +177,7 @@ namespace tribodyn
             break;
           case Type::anisotropic:
             check_stiffness(m.anisotropic_stiffness,
-                            "'Material/Anisotropic/Stiffness'");
+                            "'Materials/Anisotropic/Stiffness'");
             stiffness.push_back(m.anisotropic_stiffness);
             stiffness_z.push_back(m.anisotropic_c_z);
             density.push_back(m.density);
@@ -189,9 +189,9 @@ namespace tribodyn
                 TransverselyIsotropicConstants{
                   m.E_L, m.E_T, m.nu_LT, m.nu_TT, m.G_LT, 0},
                 m.density,
-                "Material/Engineering constants"));
+                "Materials/Engineering constants"));
               check_stiffness(stiffness.back(),
-                              "'Material/Engineering constants'");
+                              "'Materials/Engineering constants'");
               text << "transversely isotropic (E_L = " << m.E_L / 1e9
                    << " GPa, E_T = " << m.E_T / 1e9
                    << " GPa, G_LT = " << m.G_LT / 1e9 << " GPa)";
@@ -528,7 +528,7 @@ namespace tribodyn
             dt = prm.time.safety_factor * dt_critical;
           else if (prm.time.refuse_unstable_time_step)
             throw InputError(
-              "'Time integration/Time step' = " + format_number(dt)
+              "'Time/Time step' = " + format_number(dt)
               + " s is above the critical time step "
               + format_number(dt_critical)
               + " s of this mesh and material (omega_max = "

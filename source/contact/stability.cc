@@ -105,19 +105,19 @@ namespace tribodyn
           << " times the critical step " << dt_critical
           << " s of the damped beta2 scheme (beta2 = " << prm.time.beta2
           << ", damping beta = " << prm.time.damping
-          << " s); lower 'Time integration/Time step' or set 'Automatic "
+          << " s); lower 'Time/Time step' or set 'Automatic "
              "time step = true'.";
       else if (w[4] >= 1)
         m << "contact at this node (P = " << prm.loading.pressure / 1e6
           << " MPa, V = " << prm.loading.plane_velocity
           << " m/s): the contact correction h lambda / m is too large for "
-             "the step; lower 'Time integration/Time step' (now "
+             "the step; lower 'Time/Time step' (now "
           << ratio << " of the critical step) or the load.";
       else if (ratio > 0.9)
         m << "the time step, " << ratio
           << " of the critical step (the element bound of omega_max is not "
-             "exact for every mesh and material); lower 'Time "
-             "integration/Time step'.";
+             "exact for every mesh and material); lower "
+             "'Time/Time step'.";
       else
         m << "the loading or the material (P = " << prm.loading.pressure / 1e6
           << " MPa, V = " << prm.loading.plane_velocity

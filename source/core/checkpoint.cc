@@ -18,6 +18,7 @@
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/output_directory.h>
+#include <tribodyn/core/parameter_renames.h>
 #include <unistd.h>
 
 namespace tribodyn
@@ -66,12 +67,10 @@ namespace tribodyn
 
 
   std::vector<std::string>
-  resumable_parameter_lines(dealii::ParameterHandler &prm,
-                            const std::string        &end_time_entry)
+  resumable_parameter_lines(std::istream      &short_prm,
+                            const std::string &end_time_entry,
+                            double            *end_time)
   {
-    std::ostringstream text;
-    prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
-    std::istringstream       in(text.str());
     std::vector<std::string> sections, lines;
     std::string              line;
     auto                     trim = [](const std::string &s) {
@@ -79,7 +78,7 @@ namespace tribodyn
       const auto e = s.find_last_not_of(" \t\r");
       return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
     };
-    while (std::getline(in, line))
+    while (std::getline(short_prm, line))
       {
         line = trim(line);
         if (line.rfind("subsection ", 0) == 0)
@@ -88,23 +87,41 @@ namespace tribodyn
           sections.pop_back();
         else if (line.rfind("set ", 0) == 0)
           {
-            const auto  eq   = line.find('=');
-            std::string name = trim(line.substr(4, eq - 4));
+            const auto  eq = line.find('=');
             std::string path;
             for (const auto &s : sections)
               path += s + "/";
-            path += name;
-            if (path == end_time_entry || path == "Progress interval"
-                || path == "Output directory"
-                || path.rfind("Checkpoint/", 0) == 0)
-              continue;
+            path += trim(line.substr(4, eq - 4));
             lines.push_back(path + " = "
                             + (eq == std::string::npos
                                  ? std::string()
                                  : trim(line.substr(eq + 1))));
           }
       }
-    return lines;
+    // a run written before a rename reads as one of the current names
+    std::vector<std::string> kept;
+    for (const std::string &l : with_current_names(lines))
+      {
+        const std::string path = l.substr(0, l.find(" = "));
+        if (path == end_time_entry && end_time != nullptr)
+          *end_time = std::stod(l.substr(l.find(" = ") + 3));
+        if (path == end_time_entry || path == "Progress interval"
+            || path == "Output directory" || path.rfind("Checkpoint/", 0) == 0)
+          continue;
+        kept.push_back(l);
+      }
+    return kept;
+  }
+
+
+  std::vector<std::string>
+  resumable_parameter_lines(dealii::ParameterHandler &prm,
+                            const std::string        &end_time_entry)
+  {
+    std::ostringstream text;
+    prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
+    std::istringstream in(text.str());
+    return resumable_parameter_lines(in, end_time_entry);
   }
 
 
@@ -329,6 +346,8 @@ namespace tribodyn
           else if (line.rfind("ranks = ", 0) == 0)
             info.n_ranks = std::stoul(line.substr(8));
         }
+      // a checkpoint written before a rename: its lines in today's names
+      info.parameters = with_current_names(info.parameters);
       return info;
     }
   } // namespace

@@ -119,7 +119,7 @@ namespace tribodyn
                         Double(),
                         "Largest height of a random vertical heterogeneity, "
                         "in m (rounded down to whole pixels).");
-      prm.declare_entry("Random seed",
+      prm.declare_entry("Seed",
                         "1",
                         Integer(0),
                         "Seed of the random number generator: each seed "
@@ -164,7 +164,7 @@ namespace tribodyn
       inclusion_width      = prm.get_double("Heterogeneity width");
       inclusion_min_height = prm.get_double("Heterogeneity min height");
       inclusion_max_height = prm.get_double("Heterogeneity max height");
-      random_seed          = prm.get_integer("Random seed");
+      random_seed          = prm.get_integer("Seed");
       laminate_normal
         = get_selection(prm, "Laminate normal", laminate_normal_choices);
       n_laminate_periods = prm.get_integer("Laminate periods");

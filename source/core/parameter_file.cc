@@ -8,6 +8,7 @@
 #include <tribodyn/core/global_parameters.h>
 #include <tribodyn/core/parameter_file.h>
 #include <tribodyn/core/parameter_messages.h>
+#include <tribodyn/core/parameter_renames.h>
 
 namespace tribodyn
 {
@@ -87,9 +88,18 @@ namespace tribodyn
                                + "which takes " + pattern_in_words(pattern)
                                + ".");
             }
+          // a renamed subsection or entry on the way: say its new name
+          std::string renamed, parent;
+          for (const std::string &part : parts)
+            if (renamed.empty())
+              {
+                renamed = renamed_hint(parent, part);
+                parent += (parent.empty() ? "" : "/") + part;
+              }
           throw InputError("'" + source + "': '" + path
-                           + "' names no parameter of the scene's problem. "
-                             "Write the path as the parameter reference "
+                           + "' names no parameter of the scene's problem"
+                           + renamed
+                           + ". Write the path as the parameter reference "
                              "names it ('tribodyn --print-parameters "
                              "PROBLEM'), e.g. 'Geometry/Rough "
                              "interface/Seed'.");

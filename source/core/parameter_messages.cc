@@ -7,6 +7,7 @@
 #include <regex>
 #include <sstream>
 #include <tribodyn/core/parameter_messages.h>
+#include <tribodyn/core/parameter_renames.h>
 #include <vector>
 
 namespace tribodyn
@@ -167,7 +168,8 @@ namespace tribodyn
         return "Error in the parameter file '" + m[2].str() + "', line "
                + m[1].str() + ": the value '" + trim(m[3].str())
                + "' of parameter '" + name + "' is not valid: it must be "
-               + pattern_in_words(m[5].str()) + "." + hint;
+               + pattern_in_words(m[5].str())
+               + renamed_choice_hint(name, trim(m[3].str())) + "." + hint;
       }
     // An entry or subsection that is not declared.
     if (std::regex_search(
@@ -180,23 +182,33 @@ namespace tribodyn
               cause,
               e,
               std::regex(R"(No entry with name <([^>]*)> was declared)")))
-          cause = "there is no parameter '" + e[1].str() + "' in "
-                  + (where.empty() ? std::string("the top level")
-                                   : "subsection '" + where + "'")
-                  + " (check its spelling and the subsection it is in).";
+          {
+            const std::string renamed = renamed_hint(where, e[1].str());
+            cause = "there is no parameter '" + e[1].str() + "' in "
+                    + (where.empty() ? std::string("the top level")
+                                     : "subsection '" + where + "'")
+                    + (renamed.empty() ? " (check its spelling and the "
+                                         "subsection it is in)."
+                                       : renamed + ".");
+          }
         else if (std::regex_search(
                    cause,
                    e,
                    std::regex(
                      R"(There is no such subsection to be entered: (.*))")))
-          cause = "there is no subsection '" + trim(e[1].str()) + "' in "
-                  + (where.empty() ? std::string("the top level")
-                                   : "subsection '" + where + "'")
-                  + (where == "Materials"
-                       ? " (a material's subsection exists for the names "
-                         "of 'Materials/Names' only: add the material's "
-                         "name there, or check its spelling)."
-                       : " (check its spelling).");
+          {
+            const std::string name    = trim(e[1].str());
+            const std::string renamed = renamed_hint(where, name);
+            cause = "there is no subsection '" + name + "' in "
+                    + (where.empty() ? std::string("the top level")
+                                     : "subsection '" + where + "'")
+                    + (!renamed.empty() ? renamed + "."
+                       : where == "Materials"
+                         ? " (a material's subsection exists for the names "
+                           "of 'Materials/Names' only: add the material's "
+                           "name there, or check its spelling)."
+                         : " (check its spelling).");
+          }
         else if (!where.empty())
           cause += " (in subsection '" + where + "')";
         return "Error in the parameter file '" + m[2].str() + "', line "

@@ -121,13 +121,13 @@ namespace tribodyn
           "'crops': windows cut at uniformly random positions from the "
           "morphology of the subsection 'Morphology' (with 'random "
           "vertical', a new realisation of it for every window, seed "
-          "'Morphology/Random seed' + window number, so that windows are "
+          "'Morphology/Seed' + window number, so that windows are "
           "independent; with an image, a grid file or a laminate, the one "
           "map). 'realisations': the generator ('random vertical') run at "
           "each window's size, one seed per window (pixel size = "
           "'Morphology/Width' / 'Pixels in x'); heterogeneities then never "
           "cut the window's edges, as in the seed's cells.");
-        prm.declare_entry("Random seed",
+        prm.declare_entry("Seed",
                           "1",
                           Integer(0),
                           "Seed of the random window positions ('crops').");
@@ -198,7 +198,7 @@ namespace tribodyn
           }
 
         source         = get_selection(prm, "Source", source_choices);
-        random_seed    = prm.get_integer("Random seed");
+        random_seed    = prm.get_integer("Seed");
         relative_error = prm.get_double("Relative error");
 
         realisations.clear();

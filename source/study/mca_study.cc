@@ -9,6 +9,7 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <tribodyn/core/checkpoint.h>
@@ -174,26 +175,20 @@ namespace tribodyn
       const double end_time = std::stod(get_parameter_by_path(
         prm, McaStudyParameters::end_time_path, "Time/End time"));
 
-      // A finished run of these parameters to this end time: reused.
+      // A finished run of these parameters to this end time: reused. Its
+      // parameters.prm is read as text, so that a scene written by a
+      // version before a parameter was renamed is still recognised.
       if (file_exists(join_path(dir, "summary.json"))
           && file_exists(join_path(dir, "parameters.prm")))
         {
-          try
-            {
-              ParameterHandler old;
-              read_parameter_file(join_path(dir, "parameters.prm"), old);
-              const double old_end = std::stod(get_parameter_by_path(
-                old, McaStudyParameters::end_time_path, "Time/End time"));
-              if (resumable_parameter_lines(old,
-                                            McaStudyParameters::end_time_path)
-                    == wanted
-                  && std::abs(old_end - end_time) <= 1e-12 * end_time)
-                return Start::reuse;
-            }
-          catch (const InputError &)
-            {
-              // not a run of this study: run anew (it moves aside)
-            }
+          std::ifstream in(join_path(dir, "parameters.prm"));
+          double        old_end = -1;
+          if (resumable_parameter_lines(in,
+                                        McaStudyParameters::end_time_path,
+                                        &old_end)
+                == wanted
+              && std::abs(old_end - end_time) <= 1e-12 * end_time)
+            return Start::reuse;
         }
       // An interrupted run (or a shorter finished one) with a checkpoint
       // of these parameters before the end time: resumed.

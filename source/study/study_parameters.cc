@@ -43,22 +43,22 @@ namespace tribodyn
                         Patterns::MultipleSelection(
                           "homogeneous matrix|homogenized|meso"),
                         "Pin models: 'homogeneous matrix' (isotropic, "
-                        "'Material/Matrix'), 'homogenized' (anisotropic, "
+                        "'Materials/Matrix'), 'homogenized' (anisotropic, "
                         "the apparent stiffness averaged over homogenization "
                         "runs on the study's morphologies, chained "
                         "automatically), 'meso' (the heterogeneous pin, one "
-                        "run per morphology). 'Material/Type' is ignored.");
+                        "run per morphology). 'Materials/Type' is ignored.");
       prm.declare_entry("Number of morphologies",
                         "6",
                         Patterns::Integer(1, 1000),
-                        "Morphologies (random seeds First random seed, +1, "
+                        "Morphologies (random seeds First seed, +1, "
                         "...) of the meso pin and of the homogenization "
                         "runs. The seed uses six.");
-      prm.declare_entry("First random seed",
+      prm.declare_entry("First seed",
                         "1",
                         Patterns::Integer(0),
-                        "Random seed of the first morphology; replaces "
-                        "'Morphology/Random seed'.");
+                        "Seed of the first morphology; replaces "
+                        "'Morphology/Seed'.");
       prm.declare_entry("Repeats",
                         "1",
                         Patterns::Integer(1, 1000),
@@ -146,7 +146,7 @@ namespace tribodyn
                                                  : PinModel::meso);
       check_parameter(!models.empty(), "Study/Models", "at least one model");
       n_morphologies     = prm.get_integer("Number of morphologies");
-      first_seed         = prm.get_integer("First random seed");
+      first_seed         = prm.get_integer("First seed");
       repeats            = prm.get_integer("Repeats");
       perturbation       = prm.get_double("Perturbation amplitude");
       boundary_condition = prm.get("Homogenization boundary condition");

@@ -124,12 +124,12 @@ namespace tribodyn
           if (parameters.reuse_cases && file_exists(summaries.back()))
             continue;
           // The homogenization problem on the study's morphology parameters
-          // (and the two phases of 'Material/Matrix', 'Heterogeneity').
+          // (and the two phases of 'Materials/Matrix', 'Heterogeneity').
           ParameterHandler hprm;
           homogenization::HomogenizationProblem::declare_parameters(hprm);
           hprm.parse_input_from_string(prm_text, "", true);
           hprm.enter_subsection("Morphology");
-          hprm.set("Random seed", std::to_string(seed));
+          hprm.set("Seed", std::to_string(seed));
           hprm.leave_subsection();
           hprm.enter_subsection("Materials");
           for (const auto &[name, phase] :

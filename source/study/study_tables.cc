@@ -185,7 +185,7 @@ namespace tribodyn
               "plateau_found = 0): the averaging window holds too few "
               "independent blocks, and their error bars are lower bounds. A "
               "longer window ('Output/Averaging start time' earlier or a "
-              "later 'Time integration/End time') gives a plateau.\n";
+              "later 'Time/End time') gives a plateau.\n";
       write_file_atomically(join_path(dir, "table2.csv"), csv.str());
       write_file_atomically(join_path(dir, "table2.md"), md.str());
 

@@ -31,7 +31,7 @@ main(int argc, char **argv)
     end
     subsection Loading
       set Pressure = 5e6
-      set Plane velocity = -2
+      set Sliding velocity = -2
     end
     subsection Contact
       set Friction law = Coulomb
@@ -47,7 +47,7 @@ main(int argc, char **argv)
       subsection Loading
         set Ramp time = 5e-6
       end
-      subsection Time integration
+      subsection Time
         set Damping coefficient = 2e-8
         set Automatic time step = true
         set Time step = 5e-9
@@ -84,7 +84,7 @@ main(int argc, char **argv)
         set Ramp time = 2e-6
         set Top face held in x = false
       end
-      subsection Time integration
+      subsection Time
         set Damping coefficient = 2e-8
         set Time step = 5e-9
         set End time = 14e-6

@@ -76,11 +76,11 @@ namespace tribodyn_test
       end
       subsection Loading
         set Pressure = 5e6
-        set Plane velocity = )"
+        set Sliding velocity = )"
            + format_number(-V) + R"(
         set Ramp time = 5e-6
       end
-      subsection Time integration
+      subsection Time
         set Damping coefficient = )"
            + format_number(damping) + R"(
         set Automatic time step = true
@@ -111,17 +111,17 @@ namespace tribodyn_test
         set Height = 8e-3
         set Mesh size = 0.1e-3
       end
-      subsection Material
+      subsection Materials
 )" + material
            + R"(
       end
       subsection Loading
         set Pressure = 0
         set Top face held in x = false
-        set Plane velocity = 0
+        set Sliding velocity = 0
         set Initial velocity = 0, -1
       end
-      subsection Time integration
+      subsection Time
         set Time step = )"
            + format_number(time_step) + R"(
         set End time = )"

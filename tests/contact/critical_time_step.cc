@@ -30,7 +30,7 @@ namespace
         set Top face held in x = false
         set Initial gap = 1
       end
-      subsection Time integration
+      subsection Time
         set Time step = 1e-6
         set Automatic time step = true
         set Safety factor = 0.999

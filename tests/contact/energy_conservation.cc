@@ -48,7 +48,7 @@ namespace
         set Initial gap = )"
            + gap + R"(
       end
-      subsection Time integration
+      subsection Time
         set Time step = 20e-9
         set End time = 200e-6
         set Damping coefficient = 0

@@ -63,11 +63,11 @@ main(int argc, char **argv)
   }
   {
     const std::string       prm = R"(
-      subsection Material
+      subsection Materials
         set Type = morphology
       end
       subsection Morphology
-        set Random seed = 3
+        set Seed = 3
       end
       subsection Output
         set Averaging start time = 0

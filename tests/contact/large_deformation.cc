@@ -24,7 +24,7 @@ namespace
         set Height = 2e-3
         set Mesh size = 0.25e-3
       end
-      subsection Material
+      subsection Materials
         set Kinematics = )"
            + kinematics + R"(
         subsection Isotropic
@@ -90,10 +90,10 @@ main(int argc, char **argv)
     const std::string impact = R"(
       subsection Loading
         set Pressure = 0
-        set Plane velocity = 0
+        set Sliding velocity = 0
         set Initial velocity = 0, -0.01
       end
-      subsection Time integration
+      subsection Time
         set End time = 2e-6
         set Damping coefficient = 0
       end

@@ -10,7 +10,7 @@
 //     motion and friction-state code of both paths), 30 us, h = 0.5 mm;
 // (3) each variant alone does what it is for, against the default run
 //     (window 20-30 us):
-//     - Plane start time = 5 us: until then the plane stands still, so
+//     - Sliding start time = 5 us: until then the plane stands still, so
 //       the friction dissipation at 5 us is below 1 % of the default's
 //       (only the pin's own Poisson spreading slips);
 //     - a waviness of 0.1 um (about the pin's elastic shortening under
@@ -38,7 +38,7 @@ namespace
     subsection Geometry
       set Mesh size = 0.5e-3
     end
-    subsection Time integration
+    subsection Time
       set End time = 30e-6
     end
     subsection Loading
@@ -51,8 +51,8 @@ namespace
 
   const std::string all_variants = R"(
     subsection Loading
-      set Plane start time = 5e-6
-      set Plane velocity ramp time = 3e-6
+      set Sliding start time = 5e-6
+      set Sliding velocity ramp time = 3e-6
       set Surface imperfection amplitude = 0.1e-6
       set Surface imperfection wavelength = 2e-3
     end
@@ -128,10 +128,10 @@ main(int argc, char **argv)
   };
   const Outcome base = outcome(common);
   const Outcome late
-    = outcome(common + "subsection Loading\nset Plane start time = 5e-6\nend");
+    = outcome(common + "subsection Loading\nset Sliding start time = 5e-6\nend");
   check(base.dissipation_at_5us > 0
           && late.dissipation_at_5us < 0.01 * base.dissipation_at_5us,
-        "Plane start time 5 us: friction dissipation at 5 us "
+        "Sliding start time 5 us: friction dissipation at 5 us "
           + std::to_string(late.dissipation_at_5us) + " < 1 % of the "
           + "default's " + std::to_string(base.dissipation_at_5us));
   const Outcome wavy = outcome(

@@ -68,7 +68,7 @@ main(int argc, char **argv)
       end
     )";
     ContactRun        from_file(common + R"(
-      subsection Material
+      subsection Materials
         set Type = homogenization summary
         subsection Homogenization summary
           set File = )" + file
@@ -76,7 +76,7 @@ main(int argc, char **argv)
         end
       end)");
     ContactRun        given(common + R"(
-      subsection Material
+      subsection Materials
         set Type = anisotropic
         subsection Anisotropic
           set Stiffness = 3.6e10, 8.9e9, 1.0e7, 8.9e9, 3.7e10, -2.0e7, 1.0e7, -2.0e7, 1.33e10

@@ -59,7 +59,7 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::string                        prm = R"(
-    subsection Time integration
+    subsection Time
       set End time = 10e-6
     end
     subsection Loading

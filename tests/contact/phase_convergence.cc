@@ -51,13 +51,13 @@ namespace
         set Mesh size = )"
                    + h + R"(
       end
-      subsection Material
+      subsection Materials
         set Type = engineering constants
       end
       subsection Loading
         set Ramp time = 0
       end
-      subsection Time integration
+      subsection Time
         set Time step = )"
                    + dt + R"(
         set End time = 250e-6

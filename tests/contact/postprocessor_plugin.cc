@@ -106,7 +106,7 @@ subsection Geometry
   set Height = 2e-3
   set Mesh size = 0.25e-3
 end
-subsection Time integration
+subsection Time
   set Time step = 5e-9
   set End time = )")
            + tribodyn::format_number(end_time) + R"(

@@ -163,8 +163,8 @@ main(int argc, char **argv)
                                   2e-7)
                        + R"(
           subsection Loading
-            set Plane velocity step time = 15e-6
-            set Plane velocity after step = -4
+            set Sliding velocity step time = 15e-6
+            set Sliding velocity after step = -4
           end)");
         const auto &samples = run.run();
         double      worst   = 0;

@@ -28,7 +28,7 @@ namespace
         set Mesh size = )"
                    + h + R"(
       end
-      subsection Time integration
+      subsection Time
         set Time step = )"
                    + dt + R"(
         set End time = 100e-6

@@ -79,8 +79,8 @@ prm/contact/meso.prm (1 ms -> 20 us, averages over 12-20 us; 1 rank, ~8 s).
   +0.08 %, the lag of the 1.5 us regularization behind the varying pressure.
 
 prm/homogenization/rve_seed_cell.prm (sizes 140x40 x 3 and 280x80 x 6
-  instead of four sizes, 64/64/24/8 windows, from Random seed 62: a window's
-  cell has the seed Random seed + window number, so these are the last
+  instead of four sizes, 64/64/24/8 windows, from Seed 62: a window's
+  cell has the seed Seed + window number, so these are the last
   three 14 x 4 mm and the first six 28 x 8 mm cells of the documented run;
   plots off; 2 ranks, ~8 s).
   Generator cells: the generator stops within half a heterogeneity of 10 %
@@ -339,7 +339,7 @@ def check_beam():
 
 def check_rate_and_state():
     out = run("prm/contact/rate_and_state.prm", "rate_and_state",
-              "subsection Time integration\n  set End time = 20e-6\nend\n"
+              "subsection Time\n  set End time = 20e-6\nend\n"
               "subsection Output\n  set Averaging start time = 12e-6\nend\n")
     if not out:
         return
@@ -356,8 +356,8 @@ def check_rate_and_state():
     mu0, V0 = (parameter(out, rs + "Reference friction coefficient"),
                parameter(out, rs + "Reference slip rate"))
     Dc, P = parameter(out, rs + "Critical slip distance"), parameter(out, "Loading/Pressure")
-    V = abs(parameter(out, "Loading/Plane velocity"))
-    G = parameter(out, "Material/Engineering constants/G_LT")
+    V = abs(parameter(out, "Loading/Sliding velocity"))
+    G = parameter(out, "Materials/Engineering constants/G_LT")
     kc, kpin = P * (b - a) / Dc, G / H
     report(f"{kc:.1e}" == "2.5e+09" and f"{kpin:.1e}" == "1.7e+12",
            f"  rate_and_state: k_c = P (b - a)/D_c = {kc:.3g} Pa/m and G/H = "
@@ -373,7 +373,7 @@ def check_rate_and_state():
 
 def check_meso(seed1_morphology):
     out = run("prm/contact/meso.prm", "meso",
-              "subsection Time integration\n  set End time = 20e-6\nend\n"
+              "subsection Time\n  set End time = 20e-6\nend\n"
               "subsection Output\n  set Averaging start time = 12e-6\nend\n")
     if not out:
         return
@@ -428,7 +428,7 @@ def read_morphology(path):
 
 def check_study(name, cases, seeds, plots):
     out = run(f"prm/study/{name}.prm", name,
-              "subsection Time integration\n  set End time = 2e-6\nend\n"
+              "subsection Time\n  set End time = 2e-6\nend\n"
               "subsection Output\n  set Averaging start time = 1e-6\nend\n"
               + ("" if plots else "subsection Study\n  set Plot script = none\nend\n"),
               ranks=2)
@@ -508,7 +508,7 @@ def check_rve_seed_cell():
               # seeds 62-64 and 65-70: the last three 14 x 4 mm and the
               # first six 28 x 8 mm cells of the documented run (seed 1 +
               # window number, source/homogenization/rve_study.cc)
-              "subsection Morphology\n  set Random seed = 62\nend\n"
+              "subsection Morphology\n  set Seed = 62\nend\n"
               "subsection RVE study\n  set Window sizes = 140x40, 280x80\n"
               "  set Windows per size = 3, 6\n  set Plot script = none\nend\n", ranks=2)
     if not out:

@@ -46,7 +46,7 @@ contacts (a few 1e-3 d at the ~1 GPa pair stresses).
 Not the summary's mu_steady: its band test picks a window that is not a
 whole number of periods of this periodic signal.
 
-With Friction law = Dieterich (flat_friction_dieterich_{1,2,4}.prm, issue
+With Friction law = rate and state (flat_friction_dieterich_{1,2,4}.prm, issue
 #17 item 2) the contact slides at V_rel / cos(alpha) on the path, its state
 is the steady one (D_c << a), and phi(alpha) = atan mu_ss(V_rel / cos(alpha))
 under the integral (midpoint rule). Measured deviations -0.0002, +0.0025,
@@ -108,7 +108,7 @@ law = parameter(out, "Interaction/Friction law")
 d = parameter(out, "Geometry/Automaton size")
 a = d * math.sqrt(2)
 
-if law == "Dieterich":
+if law == "rate and state":
     # Rate and state (issue #17 item 2): on the on-top path the contact
     # slides at V_rel / cos(alpha) (the relative position turns on a circle
     # of radius d; the layers move at +-V), and with D_c << a its state is
@@ -116,7 +116,7 @@ if law == "Dieterich":
     # integrals over a period, by the midpoint rule (N_MID points: the
     # integrand is smooth, the rule's error ~1e-9).
     N_MID = 20000
-    dieterich = {k: parameter(out, "Interaction/Dieterich/" + k) for k in
+    dieterich = {k: parameter(out, "Interaction/Rate and state friction/" + k) for k in
                  ("Reference friction coefficient", "Direct effect",
                   "Evolution effect", "Reference slip rate",
                   "Critical slip distance")}

@@ -41,9 +41,9 @@ main(int argc, char **argv)
   const double                             d = 1e-3;
   Parameters                               p = two_automata_parameters(d);
   p.interaction.bond_breaking.get<VonMisesBondBreaking>().on = true;
-  auto &law = p.interaction.friction.get<Dieterich>();
-  p.interaction.friction.select<Dieterich>();
-  check(p.interaction.friction.is<Dieterich>(), "Dieterich chosen");
+  auto &law = p.interaction.friction.get<RateAndState>();
+  p.interaction.friction.select<RateAndState>();
+  check(p.interaction.friction.is<RateAndState>(), "rate and state chosen");
   law.mu0    = 0.3;
   law.a      = 0.012;
   law.b      = 0.004;

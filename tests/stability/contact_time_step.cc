@@ -68,14 +68,14 @@ namespace
       const unsigned    steps,
       const bool        refuse = true)
   {
-    const std::string prm = base + "subsection Time integration\n"
+    const std::string prm = base + "subsection Time\n"
                             + "set Damping coefficient = " + damping
                             + "\nset Time step = 1e-12\nend\n";
     ContactRun        probe(prm);
     const double      critical = probe.solver->critical_time_step();
     const double      dt       = factor * critical;
     ContactParameters p        = contact_parameters(
-      prm + "subsection Time integration\n set Time step = "
+      prm + "subsection Time\n set Time step = "
       + format_number(std::min(dt, critical))
       + "\n set End time = " + format_number(dt * steps) + "\nend\n");
     p.time.time_step                 = dt; // exactly factor x critical
@@ -162,7 +162,7 @@ main(int argc, char **argv)
       }
     catch (const InputError &e)
       {
-        refused = std::string(e.what()).find("'Time integration/Time step'")
+        refused = std::string(e.what()).find("'Time/Time step'")
                   != std::string::npos;
       }
     check(refused, "(c) 1.01 x critical is refused, naming the parameter");

@@ -88,7 +88,7 @@ def section_text(section, lines):
 
 SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 RESUME_CONTACT = (section_text("Checkpoint", ["Resume = true"])
-                  + section_text("Time integration", ["End time = 20e-6"]))
+                  + section_text("Time", ["End time = 20e-6"]))
 
 
 def latest_rank_file(out):
@@ -109,14 +109,14 @@ def overwrite(path):
 CASES = {
     "time_step": dict(
         first=section_text("Checkpoint", ["Interval = 5e-6"]),
-        second=section_text("Time integration",
+        second=section_text("Time",
                             ["Automatic time step = false",
                              "Time step = 1e-7"]),
         expected="Time step"),
     "resume": dict(
         first=section_text("Checkpoint", ["Interval = 5e-6"]),
         second=section_text("Checkpoint", ["Resume = true"])
-        + section_text("Time integration", ["End time = 20e-6"])
+        + section_text("Time", ["End time = 20e-6"])
         + section_text("Loading", ["Pressure = 2.5e6"]),
         expected="Pressure"),
     "mca_time": dict(

@@ -15,11 +15,17 @@ identical) for contact, 1e-12 relative for mca.
 
 Usage: restart_test.py TRIBODYN BASE.prm WORKDIR END_SECTION T TOLERANCE
        "LAUNCHER" FILE [FILE...] [--before-checkpoint KEY]
-       [--resume-launcher "LAUNCHER2"]
-END_SECTION is the subsection holding 'End time' ('Time integration' for
-contact, 'Time' for mca); FILE are the CSV files to compare. With
+       [--resume-launcher "LAUNCHER2"] [--written-before-renames]
+END_SECTION is the subsection holding 'End time' ('Time' in every
+engine); FILE are the CSV files to compare. With
 --before-checkpoint KEY, the first part's summary.json must have KEY > 0
 (e.g. n_rebalances: the state to restore existed at the checkpoint).
+
+With --written-before-renames (issue #52 item 3), the checkpoint of the
+first part is rewritten as a version before the parameter renames would
+have written it: its parameter lines in the old names (OLD_NAMES, the
+names tribodyn used up to commit 6969d3e). The resumed run must accept it
+and still equal the uninterrupted run.
 
 With --resume-launcher (restart on another number of ranks, issue #21), A
 and the resumed part run with LAUNCHER2 (e.g. "mpirun -np 1") and the first
@@ -45,6 +51,41 @@ TIMING_KEYS = {"wall_time_s", "time_loop_s", "dof_steps_per_second",
                "automaton_steps_per_second_per_rank", "memory_bytes_max",
                "memory_bytes_by_part",
                "tribodyn_version"}
+
+
+# (engine, current text in a checkpoint's parameter line, text before the
+# renames of issue #52 item 3)
+OLD_NAMES = [
+    ("contact", "parameter Time/", "parameter Time integration/"),
+    ("contact", "parameter Materials/", "parameter Material/"),
+    ("contact", "Loading/Sliding velocity", "Loading/Plane velocity"),
+    ("contact", "Loading/Sliding start time", "Loading/Plane start time"),
+    ("contact", "Morphology/Seed =", "Morphology/Random seed ="),
+    ("mca", "Interaction/Rate and state friction/", "Interaction/Dieterich/"),
+    ("mca", "Friction law = rate and state", "Friction law = Dieterich"),
+    ("mca", "Friction law = Coulomb", "Friction law = Amontons-Coulomb"),
+]
+
+
+def write_old_names(latest_path):
+    """Rewrite the parameter lines of a checkpoint's 'latest' file in the
+    names before the renames; returns the number of lines changed."""
+    lines = open(latest_path).read().split("\n")
+    problem = [l for l in lines if l.startswith("problem = ")][0][10:]
+    changed = 0
+    for k, line in enumerate(lines):
+        if not line.startswith("parameter "):
+            continue
+        old = line
+        for engine, new_text, old_text in OLD_NAMES:
+            if engine == problem:
+                line = line.replace(new_text, old_text)
+        if line != old:
+            lines[k] = line
+            changed += 1
+    with open(latest_path, "w") as f:
+        f.write("\n".join(lines))
+    return changed
 
 
 def write_prm(path, base, out, section, end, interval, resume):
@@ -182,6 +223,9 @@ def main():
         at = args.index("--resume-launcher")
         resume_launcher = args[at + 1]
         args = args[:at] + args[at + 2:]
+    old_names = "--written-before-renames" in args
+    if old_names:
+        args.remove("--written-before-renames")
     tribodyn, base, work, section, t_end, tolerance, launcher = args[:7]
     files = args[7:]
     required = None
@@ -208,6 +252,13 @@ def main():
         if not value or value <= 0:
             sys.exit(f"FAIL: the first part has {required} = {value}, "
                      "not > 0: the restart would not test it")
+    if old_names:
+        changed = write_old_names(os.path.join(b, "checkpoint", "latest"))
+        print(f"checkpoint rewritten with the names before the renames: "
+              f"{changed} parameter lines")
+        if changed == 0:
+            sys.exit("FAIL: no parameter line of the checkpoint has a "
+                     "renamed name: the test would test nothing")
     latest = open(os.path.join(b, "checkpoint", "latest")).read()
     print("checkpoint after the first part:",
           " ".join(l for l in latest.splitlines()[1:6]))

@@ -35,7 +35,7 @@ namespace tribodyn
       parse_parameters(dealii::ParameterHandler &prm);
     };
 
-    /// Subsection "Material": the constitutive model of the pin.
+    /// Subsection "Materials": the constitutive model of the pin.
     struct ContactMaterialParameters
     {
       enum class Type
@@ -139,7 +139,7 @@ namespace tribodyn
       }
     };
 
-    /// Subsection "Time integration": the beta2 scheme.
+    /// Subsection "Time": the beta2 scheme.
     struct TimeParameters
     {
       double time_step = 5e-9;

@@ -121,9 +121,9 @@ namespace tribodyn
       double dt = 0;
       /// Displacement of the plane over the step.
       double slide = 0;
-      /// |Plane velocity| (the loading's nominal speed).
+      /// |Sliding velocity| (the loading's nominal speed).
       double speed = 0;
-      /// Whether the plane moves at the constant Plane velocity.
+      /// Whether the plane moves at the constant Sliding velocity.
       bool constant_velocity = true;
       /// The scheme's update of a node's displacement by its multiplier
       /// over the step: Delta u = h lambda / m.

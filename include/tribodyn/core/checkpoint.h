@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <functional>
+#include <istream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -45,11 +46,21 @@ namespace tribodyn
    * Output directory (a run directory copied to another path or machine
    * continues there).
    * Stored in a checkpoint to check that a resumed run continues the same
-   * problem.
+   * problem. Sorted, and in the current names of renamed parameters
+   * (with_current_names()), so that a run of a version before a rename
+   * resumes.
    */
   std::vector<std::string>
   resumable_parameter_lines(dealii::ParameterHandler &prm,
                             const std::string        &end_time_entry);
+
+  /// The same lines from the text @p short_prm of a run's parameters.prm
+  /// (ShortPRM, as the application writes it), whatever names its version
+  /// used; @p end_time, if given, receives the value of @p end_time_entry.
+  std::vector<std::string>
+  resumable_parameter_lines(std::istream      &short_prm,
+                            const std::string &end_time_entry,
+                            double            *end_time = nullptr);
 
   /// What a checkpoint says about itself (the `checkpoint/latest` file).
   struct CheckpointInfo

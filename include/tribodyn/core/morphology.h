@@ -22,7 +22,7 @@ namespace tribodyn
    * The two isotropic phases of a morphology: the subsections "Matrix" and
    * "Heterogeneity" of the current subsection. One struct for the
    * homogenization problem ("Materials") and the meso pin of the contact
-   * problem ("Material"), so that both read the same entries with the same
+   * problem ("Materials"), so that both read the same entries with the same
    * defaults and checks.
    */
   struct TwoPhaseMaterials

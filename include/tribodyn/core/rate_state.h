@@ -1,5 +1,5 @@
 // Rate-and-state friction (Dieterich 1979, Ruina 1983), shared by the
-// automata's unbonded pairs (mca, `Interaction/Dieterich`) and the contact
+// automata's unbonded pairs (mca, `Interaction/Rate and state friction`) and the contact
 // pin's nodes (contact, `Contact/Rate and state friction`):
 //
 //   mu(V, theta) = mu0 + a ln(V / V0) + b ln(V0 theta / D_c),
@@ -125,7 +125,7 @@ namespace tribodyn
       }
 
       /// Read the entries of the current subsection; @p path (e.g.
-      /// "Interaction/Dieterich/") names them in errors.
+      /// "Interaction/Rate and state friction/") names them in errors.
       void
       parse_entries(dealii::ParameterHandler &prm, const std::string &path)
       {

@@ -62,7 +62,7 @@ namespace tribodyn
       unsigned int size_index = 0;
       /// Index among the windows of its size and among all windows.
       unsigned int index = 0, global_index = 0;
-      /// Random seed of the morphology the window is made from.
+      /// Seed of the morphology the window is made from.
       unsigned int morphology_seed = 0;
       /// Lower-left pixel in that morphology (crops).
       unsigned int i0 = 0, j0 = 0;

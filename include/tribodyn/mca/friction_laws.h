@@ -4,15 +4,15 @@
 #define tribodyn_mca_friction_laws_h
 
 #include <tribodyn/mca/friction_law.h>
-#include <tribodyn/mca/friction_laws/amontons_coulomb.h>
-#include <tribodyn/mca/friction_laws/dieterich.h>
+#include <tribodyn/mca/friction_laws/coulomb.h>
+#include <tribodyn/mca/friction_laws/rate_and_state.h>
 
 namespace tribodyn
 {
   namespace mca
   {
     /// The first is the default.
-    using FrictionLaws = FrictionLawList<AmontonsCoulomb, Dieterich>;
+    using FrictionLaws = FrictionLawList<Coulomb, RateAndState>;
   } // namespace mca
 } // namespace tribodyn
 

@@ -1,7 +1,7 @@
 // Amontons-Coulomb friction of unbonded pairs: |tau| <= mu |sigma| on each
 // side of a pair, mu constant (seed 000, Sec. 2.1).
-#ifndef tribodyn_mca_friction_laws_amontons_coulomb_h
-#define tribodyn_mca_friction_laws_amontons_coulomb_h
+#ifndef tribodyn_mca_friction_laws_coulomb_h
+#define tribodyn_mca_friction_laws_coulomb_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <functional>
@@ -13,10 +13,10 @@ namespace tribodyn
 {
   namespace mca
   {
-    class AmontonsCoulomb
+    class Coulomb
     {
     public:
-      static constexpr const char *name     = "Amontons-Coulomb";
+      static constexpr const char *name     = "Coulomb";
       static constexpr bool        stateful = false;
 
       struct Parameters
@@ -31,7 +31,7 @@ namespace tribodyn
                             dealii::Patterns::Double(),
                             "Amontons-Coulomb coefficient of unbonded pairs "
                             "(|tau| <= mu |sigma|), >= 0 (Friction law = "
-                            "Amontons-Coulomb).");
+                            "Coulomb).");
         }
 
         void
@@ -47,7 +47,7 @@ namespace tribodyn
         }
       };
 
-      explicit AmontonsCoulomb(const Parameters &p)
+      explicit Coulomb(const Parameters &p)
           : mu(p.mu)
       {
       }

@@ -11,8 +11,8 @@
 // D_c. The state is advanced exactly for a slip rate constant over the
 // step, per pair, and carried with the pair (PairFieldTable: rebuilds,
 // migration, checkpoints).
-#ifndef tribodyn_mca_friction_laws_dieterich_h
-#define tribodyn_mca_friction_laws_dieterich_h
+#ifndef tribodyn_mca_friction_laws_rate_and_state_h
+#define tribodyn_mca_friction_laws_rate_and_state_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <functional>
@@ -24,29 +24,31 @@ namespace tribodyn
 {
   namespace mca
   {
-    class Dieterich
+    class RateAndState
     {
     public:
-      static constexpr const char *name     = "Dieterich";
+      static constexpr const char *name     = "rate and state";
       static constexpr bool        stateful = true;
 
-      /// Subsection `Dieterich` of Interaction.
+      /// Subsection `Rate and state friction` of Interaction.
       struct Parameters : rate_state::Parameters
       {
         static void
         declare_parameters(dealii::ParameterHandler &prm)
         {
-          declare_in(prm, "Dieterich", "0.3", "1e-9");
+          declare_in(prm, "Rate and state friction", "0.3", "1e-9");
         }
 
         void
         parse_parameters(dealii::ParameterHandler &prm)
         {
-          parse_in(prm, "Dieterich", "Interaction/Dieterich/");
+          parse_in(prm,
+                   "Rate and state friction",
+                   "Interaction/Rate and state friction/");
         }
       };
 
-      explicit Dieterich(const Parameters &p)
+      explicit RateAndState(const Parameters &p)
           : law(p)
       {
       }
