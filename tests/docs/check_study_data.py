@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
-"""The README's table of seed 000's question is made from the data kept in
-the repository, byte for byte (issue #47 item 5).
+"""The tables of kept studies that README.md and doc/performance.md quote
+are made from the data kept in the repository, byte for byte (issue #47
+item 5).
 
     check_study_data.py SOURCE_DIR WORK_DIR
 
 For each study kept under data/ (a folder with study.csv and PROVENANCE)
-whose folder name README.md names in a marker line
+whose folder name README.md or doc/performance.md names in a marker line
 '<!-- table: data/NAME (scripts/mca_study_data table data/NAME) -->',
 `scripts/mca_study_data table data/NAME` must print exactly the lines that
 follow the marker; `scripts/mca_study_data figures data/NAME WORK` must
@@ -30,11 +31,17 @@ def check(condition, what):
 
 
 script = os.path.join(source, "scripts", "mca_study_data")
-readme = open(os.path.join(source, "README.md")).read()
-markers = re.findall(r"<!-- table: (data/[\w./-]+) \(scripts/mca_study_data "
-                     r"table \1\) -->\n", readme)
-check(len(markers) > 0, "README.md has a table marker: %s" % markers)
-for name in markers:
+# the documents that quote a kept study's table
+documents = {d: open(os.path.join(source, d)).read()
+             for d in ("README.md", os.path.join("doc", "performance.md"))}
+markers = [(d, name) for d, text in documents.items()
+           for name in re.findall(r"<!-- table: (data/[\w./-]+) "
+                                  r"\(scripts/mca_study_data table \1\) -->\n",
+                                  text)]
+check(any(d == "README.md" for d, _ in markers),
+      "README.md has a table marker: %s" % markers)
+for document, name in markers:
+    readme = documents[document]
     data = os.path.join(source, name)
     provenance = open(os.path.join(data, "PROVENANCE")).read()
     check(re.search(r"^commit: [0-9a-f]{40}", provenance, re.M) is not None,
@@ -58,7 +65,8 @@ for name in markers:
     start = readme.index(marker) + len(marker)
     quoted = readme[start:start + len(table)]
     check(table and quoted == table,
-          "%s: README's table is what the data gives, byte for byte" % name)
+          "%s: %s's table is what the data gives, byte for byte"
+          % (name, document))
     images = os.path.join(work, os.path.basename(name))
     run = subprocess.run([script, "figures", data, images],
                          capture_output=True, text=True)
