@@ -66,6 +66,45 @@ namespace tribodyn
   }
 
 
+  namespace
+  {
+    /// Parameter lines as a run of any version compares them: renamed
+    /// entries in their current names (with_current_names()), a value that
+    /// is one number in one spelling ("0.5e6" and "5e5", as defaults were
+    /// written before and after they came from the parameter structs),
+    /// sorted.
+    std::vector<std::string>
+    comparable_lines(const std::vector<std::string> &lines)
+    {
+      std::vector<std::string> out;
+      for (std::string line : with_current_names(lines))
+        {
+          const auto eq = line.find(" = ");
+          if (eq != std::string::npos)
+            {
+              const std::string value = line.substr(eq + 3);
+              try
+                {
+                  std::size_t  used = 0;
+                  const double x    = std::stod(value, &used);
+                  if (used == value.size())
+                    {
+                      line = line.substr(0, eq + 3) + exact_number(x);
+                    }
+                }
+              catch (const std::exception &)
+                {
+                  // not a number: compared as written
+                }
+            }
+          out.push_back(line);
+        }
+      std::sort(out.begin(), out.end());
+      return out;
+    }
+  } // namespace
+
+
   std::vector<std::string>
   resumable_parameter_lines(std::istream      &short_prm,
                             const std::string &end_time_entry,
@@ -100,7 +139,7 @@ namespace tribodyn
       }
     // a run written before a rename reads as one of the current names
     std::vector<std::string> kept;
-    for (const std::string &l : with_current_names(lines))
+    for (const std::string &l : comparable_lines(lines))
       {
         const std::string path = l.substr(0, l.find(" = "));
         if (path == end_time_entry && end_time != nullptr)
@@ -347,7 +386,7 @@ namespace tribodyn
             info.n_ranks = std::stoul(line.substr(8));
         }
       // a checkpoint written before a rename: its lines in today's names
-      info.parameters = with_current_names(info.parameters);
+      info.parameters = comparable_lines(info.parameters);
       return info;
     }
   } // namespace

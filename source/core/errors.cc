@@ -1,3 +1,6 @@
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <deal.II/base/mpi.h>
 #include <iomanip>
 #include <limits>
@@ -70,6 +73,39 @@ namespace tribodyn
     std::ostringstream s;
     s << std::setprecision(10) << value;
     return s.str();
+  }
+
+
+  /// @p value with the fewest significant digits that read back to it,
+  /// as one writes a default by hand: 0.9, 0.028, 500 but 5e5, 2.5e-4,
+  /// 1.1e-9 (the exponent without '+' and leading zeros).
+  std::string
+  exact_number(const double value)
+  {
+    const double magnitude = std::abs(value);
+    const bool   exponent
+      = magnitude != 0 && (magnitude < 1e-2 || magnitude >= 1e5);
+    char text[32];
+    for (int digits = 1; digits <= 17; ++digits)
+      {
+        std::snprintf(text,
+                      sizeof(text),
+                      exponent ? "%.*e" : "%.*g",
+                      exponent ? digits - 1 : digits,
+                      value);
+        if (std::stod(text) == value)
+          break;
+      }
+    std::string out = text;
+    const auto  e   = out.find('e');
+    if (e == std::string::npos)
+      return out;
+    std::string mantissa = out.substr(0, e), power = out.substr(e + 1);
+    const bool  negative = power[0] == '-';
+    power = power.substr(power[0] == '-' || power[0] == '+' ? 1 : 0);
+    power
+      = power.substr(std::min(power.find_first_not_of('0'), power.size() - 1));
+    return mantissa + "e" + (negative ? "-" : "") + power;
   }
 
 

@@ -61,6 +61,10 @@ OLD_NAMES = [
     ("contact", "Loading/Sliding velocity", "Loading/Plane velocity"),
     ("contact", "Loading/Sliding start time", "Loading/Plane start time"),
     ("contact", "Morphology/Seed =", "Morphology/Random seed ="),
+    # defaults as the declarations spelled them (since 2026-11-29 they are
+    # written from the parameter structs: 5e5, not 0.5e6)
+    ("contact", "Loading/Pressure = 5e5", "Loading/Pressure = 0.5e6"),
+    ("contact", "Geometry/Width = 0.028", "Geometry/Width = 28e-3"),
     ("mca", "Interaction/Rate and state friction/", "Interaction/Dieterich/"),
     ("mca", "Friction law = rate and state", "Friction law = Dieterich"),
     ("mca", "Friction law = Coulomb", "Friction law = Amontons-Coulomb"),

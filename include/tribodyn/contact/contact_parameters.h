@@ -7,6 +7,7 @@
 #include <tribodyn/contact/friction_laws.h>
 #include <tribodyn/core/material.h>
 #include <tribodyn/core/morphology.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <vector>
 
 namespace tribodyn
@@ -29,6 +30,10 @@ namespace tribodyn
       /// Meso pins only: elements per morphology pixel along each axis.
       unsigned int subdivisions_per_pixel = 1;
 
+      /// The entries of the subsection, each bound to its member
+      /// (core/parameter_binding.h).
+      ParameterBinding
+      binding();
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
@@ -102,7 +107,7 @@ namespace tribodyn
       /// At this time (0: never) the plane's velocity steps to the velocity
       /// after the step (m/s): the velocity-step test of rate and state.
       double plane_velocity_step_time  = 0.;
-      double plane_velocity_after_step = 0.;
+      double plane_velocity_after_step = -2.;
       /// Waviness of the plane (absolute, m): its surface is
       /// y = -gap - A (1 - cos(2 pi xi / lambda)) / 2, xi the coordinate
       /// along the plane (it moves with the plane).
@@ -113,6 +118,10 @@ namespace tribodyn
       double       velocity_perturbation = 0.;
       unsigned int perturbation_seed     = 1;
 
+      /// The entries of the subsection, each bound to its member
+      /// (core/parameter_binding.h).
+      ParameterBinding
+      binding();
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
@@ -156,6 +165,10 @@ namespace tribodyn
       /// that the blow-up detection stops an unstable run.
       bool refuse_unstable_time_step = true;
 
+      /// The entries of the subsection, each bound to its member
+      /// (core/parameter_binding.h).
+      ParameterBinding
+      binding();
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
@@ -182,6 +195,10 @@ namespace tribodyn
       double             pgs_tolerance       = 1e-12;
       unsigned int       pgs_max_iterations  = 50;
 
+      /// The entries of the subsection, each bound to its member
+      /// (core/parameter_binding.h).
+      ParameterBinding
+      binding();
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
@@ -204,6 +221,10 @@ namespace tribodyn
       /// per contact node) every this many samples (0: none).
       unsigned int contact_face_interval = 0;
 
+      /// The entries of the subsection, each bound to its member
+      /// (core/parameter_binding.h).
+      ParameterBinding
+      binding();
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void

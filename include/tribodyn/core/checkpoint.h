@@ -46,9 +46,10 @@ namespace tribodyn
    * Output directory (a run directory copied to another path or machine
    * continues there).
    * Stored in a checkpoint to check that a resumed run continues the same
-   * problem. Sorted, and in the current names of renamed parameters
-   * (with_current_names()), so that a run of a version before a rename
-   * resumes.
+   * problem. Sorted, in the current names of renamed parameters
+   * (with_current_names()), and a value that is one number written in one
+   * spelling (0.5e6 and 5e5 are one line), so that a run of a version
+   * before a rename or with other spellings of the defaults resumes.
    */
   std::vector<std::string>
   resumable_parameter_lines(dealii::ParameterHandler &prm,

@@ -81,6 +81,13 @@ namespace tribodyn
   /// Format a double for messages with enough digits to be unambiguous.
   std::string
   format_number(const double value);
+
+  /// @p value with the fewest significant digits that read back to it
+  /// exactly, as one writes a number by hand (0.9, 0.028, 500, 5e5, 2.5e-4,
+  /// 1.1e-9): the default of a bound parameter (parameter_binding.h), the
+  /// one spelling of a number in a checkpoint's parameter lines.
+  std::string
+  exact_number(const double value);
 } // namespace tribodyn
 
 #endif

@@ -1,0 +1,198 @@
+// Entries of a subsection written once: declared, read and range-checked
+// from one list (parameter_binding.h).
+
+#include <string>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/parameter_binding.h>
+
+namespace tribodyn
+{
+
+
+  ParameterBinding::ParameterBinding(const std::string &subsection)
+  {
+    std::string part;
+    for (const char c : subsection + "/")
+      if (c == '/')
+        {
+          if (!part.empty())
+            subsections.push_back(part);
+          part.clear();
+        }
+      else
+        part += c;
+  }
+
+
+  ParameterBinding &
+  ParameterBinding::add_entry(
+    const std::string                              &name,
+    const std::string                              &default_value,
+    const std::string                              &documentation,
+    const dealii::Patterns::PatternBase            &pattern,
+    std::function<void(dealii::ParameterHandler &)> read,
+    std::function<void()>                           check)
+  {
+    entries.push_back({name,
+                       default_value,
+                       documentation,
+                       std::shared_ptr<dealii::Patterns::PatternBase>(
+                         pattern.clone().release()),
+                       std::move(read),
+                       std::move(check)});
+    return *this;
+  }
+
+
+  ParameterBinding &
+  ParameterBinding::add(const std::string                   &name,
+                        double                              &value,
+                        const std::string                   &documentation,
+                        const dealii::Patterns::PatternBase &pattern,
+                        const std::optional<Interval>       &range)
+  {
+    std::function<void()> check;
+    if (range)
+      check = [&value, range, where = path(name)]() {
+        check_parameter_range(where,
+                              value,
+                              range->lower,
+                              range->upper,
+                              range->lower_open,
+                              range->upper_open,
+                              range->hint);
+      };
+    return add_entry(
+      name,
+      exact_number(value),
+      documentation,
+      pattern,
+      [&value, name](dealii::ParameterHandler &prm) {
+        value = prm.get_double(name);
+      },
+      check);
+  }
+
+
+  ParameterBinding &
+  ParameterBinding::add(const std::string                   &name,
+                        unsigned int                        &value,
+                        const std::string                   &documentation,
+                        const dealii::Patterns::PatternBase &pattern)
+  {
+    return add_entry(name,
+                     std::to_string(value),
+                     documentation,
+                     pattern,
+                     [&value, name](dealii::ParameterHandler &prm) {
+                       value = prm.get_integer(name);
+                     },
+                     {});
+  }
+
+
+  ParameterBinding &
+  ParameterBinding::add(const std::string &name,
+                        bool              &value,
+                        const std::string &documentation)
+  {
+    return add_entry(name,
+                     value ? "true" : "false",
+                     documentation,
+                     dealii::Patterns::Bool(),
+                     [&value, name](dealii::ParameterHandler &prm) {
+                       value = prm.get_bool(name);
+                     },
+                     {});
+  }
+
+
+  ParameterBinding &
+  ParameterBinding::add(const std::string                   &name,
+                        std::string                         &value,
+                        const std::string                   &documentation,
+                        const dealii::Patterns::PatternBase &pattern)
+  {
+    return add_entry(name,
+                     value,
+                     documentation,
+                     pattern,
+                     [&value, name](dealii::ParameterHandler &prm) {
+                       value = prm.get(name);
+                     },
+                     {});
+  }
+
+
+  ParameterBinding &
+  ParameterBinding::add(const std::string                   &name,
+                        const std::string                   &default_value,
+                        const std::string                   &documentation,
+                        const dealii::Patterns::PatternBase &pattern,
+                        const std::function<void(const std::string &)> &read)
+  {
+    return add_entry(name,
+                     default_value,
+                     documentation,
+                     pattern,
+                     [read, name](dealii::ParameterHandler &prm) {
+                       read(prm.get(name));
+                     },
+                     {});
+  }
+
+
+  template <typename Action>
+  void
+  ParameterBinding::inside(dealii::ParameterHandler &prm,
+                           const Action             &action) const
+  {
+    for (const std::string &s : subsections)
+      prm.enter_subsection(s);
+    try
+      {
+        action();
+      }
+    catch (...)
+      {
+        for (std::size_t k = 0; k < subsections.size(); ++k)
+          prm.leave_subsection();
+        throw;
+      }
+    for (std::size_t k = 0; k < subsections.size(); ++k)
+      prm.leave_subsection();
+  }
+
+
+  void
+  ParameterBinding::declare(dealii::ParameterHandler &prm) const
+  {
+    inside(prm, [&]() {
+      for (const Entry &e : entries)
+        prm.declare_entry(e.name, e.default_value, *e.pattern, e.documentation);
+    });
+  }
+
+
+  void
+  ParameterBinding::parse(dealii::ParameterHandler &prm) const
+  {
+    inside(prm, [&]() {
+      for (const Entry &e : entries)
+        e.read(prm);
+    });
+    for (const Entry &e : entries)
+      if (e.check)
+        e.check();
+  }
+
+
+  std::string
+  ParameterBinding::path(const std::string &name) const
+  {
+    std::string p;
+    for (const std::string &s : subsections)
+      p += s + "/";
+    return p + name;
+  }
+} // namespace tribodyn
