@@ -93,7 +93,9 @@ namespace tribodyn
                       exponent ? "%.*e" : "%.*g",
                       exponent ? digits - 1 : digits,
                       value);
-        if (std::stod(text) == value)
+        // fixed notation below 1e5: "%.1g" writes 10 as 1e+01
+        if (std::stod(text) == value
+            && (exponent || std::string(text).find('e') == std::string::npos))
           break;
       }
     std::string out = text;

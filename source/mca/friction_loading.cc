@@ -9,6 +9,7 @@
 #include <deal.II/base/patterns.h>
 #include <limits>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/mca/automaton_system.h>
 #include <tribodyn/mca/parameters.h>
 
@@ -21,91 +22,82 @@ namespace tribodyn
     using dealii::Patterns::Double;
     using dealii::Patterns::Integer;
 
+    ParameterBinding
+    FrictionLoadingParameters::binding()
+    {
+      ParameterBinding b("Friction loading");
+      b.add("Enabled",
+            enabled,
+            "The staged loading of seed 000 Sec. 2.2 for a rough interface "
+            "(Geometry/Rough interface, periodic in x and y): the bodies "
+            "start in full contact, are separated along z and shifted along "
+            "y (at the packing), approach at -+Approach velocity until they "
+            "touch, then the top and bottom loading layers carry the "
+            "Pressure and slide at +-Sliding velocity (symmetric), ramped "
+            "over Boundary conditions/Ramp time from the contact, damped "
+            "along z. It adds the boundary groups top, top_load, "
+            "top_damping, bottom, bottom_load, bottom_damping (use "
+            "'Analysis/Loaded group = top').");
+      b.add("Separation",
+            separation,
+            "Gap along z between the bodies before the approach (m), >= 0; "
+            "0 = the largest rise of the lower surface over the shifted "
+            "upper one plus 1.25 d (no pair in contact range at the start).",
+            Double(),
+            Interval{0, inf, false, true});
+      b.add("Shift",
+            shift_fraction,
+            "Shift of the upper body along y, as a fraction of the box width "
+            "(seed: one half), in [0, 1).",
+            Double(),
+            Interval{0, 1});
+      b.add("Loading layer thickness",
+            layer_layers,
+            "Automaton layers (spacing a/2 = d/sqrt 2) of the top and bottom "
+            "loading layers.",
+            Integer(1));
+      b.add("Approach velocity",
+            approach_velocity,
+            "Velocity V_z of each loading layer during the approach (m/s), > "
+            "0.",
+            Double(),
+            Interval{0, inf, true, true});
+      b.add("Pressure",
+            pressure,
+            "Nominal normal pressure on the loading layers after contact "
+            "(Pa), > 0: a force Pressure x (box area in x, y) on each layer.",
+            Double(),
+            Interval{0, inf, true, true});
+      b.add("Sliding velocity",
+            sliding_velocity,
+            "Sliding velocity V_y of each loading layer after contact (m/s; "
+            "top +V_y, bottom -V_y), >= 0.",
+            Double(),
+            Interval{0, inf, false, true});
+      b.add("Damping",
+            damping,
+            "Viscous damping coefficient along z of the loading layers (1/s, "
+            "force -c m v_z), >= 0; 0 = the seed's criterion c = c_p / (2 h) "
+            "with h the layer thickness (a longitudinal wave is damped by e "
+            "in amplitude after travelling twice the specimen height; "
+            "doc/theory/mca.md).",
+            Double(),
+            Interval{0, inf, false, true});
+      return b;
+    }
+
+
     void
     FrictionLoadingParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
-      prm.enter_subsection("Friction loading");
-      prm.declare_entry(
-        "Enabled",
-        "false",
-        Bool(),
-        "The staged loading of seed 000 Sec. 2.2 for a rough interface "
-        "(Geometry/Rough interface, periodic in x and y): the bodies start "
-        "in full contact, are separated along z and shifted along y (at "
-        "the packing), approach at -+Approach velocity until they touch, "
-        "then the top and bottom loading layers carry the Pressure and "
-        "slide at +-Sliding velocity (symmetric), ramped over Boundary "
-        "conditions/Ramp time from the contact, damped along z. It adds "
-        "the boundary groups top, top_load, top_damping, bottom, "
-        "bottom_load, bottom_damping (use 'Analysis/Loaded group = top').");
-      prm.declare_entry("Separation",
-                        "0",
-                        Double(),
-                        "Gap along z between the bodies before the approach "
-                        "(m), >= 0; 0 = the largest rise of the lower "
-                        "surface over the shifted upper one plus 1.25 d "
-                        "(no pair in contact range at the start).");
-      prm.declare_entry("Shift",
-                        "0.5",
-                        Double(),
-                        "Shift of the upper body along y, as a fraction of "
-                        "the box width (seed: one half), in [0, 1).");
-      prm.declare_entry("Loading layer thickness",
-                        "2",
-                        Integer(1),
-                        "Automaton layers (spacing a/2 = d/sqrt 2) of the "
-                        "top and bottom loading layers.");
-      prm.declare_entry("Approach velocity",
-                        "5",
-                        Double(),
-                        "Velocity V_z of each loading layer during the "
-                        "approach (m/s), > 0.");
-      prm.declare_entry("Pressure",
-                        "300e6",
-                        Double(),
-                        "Nominal normal pressure on the loading layers after "
-                        "contact (Pa), > 0: a force Pressure x (box area in "
-                        "x, y) on each layer.");
-      prm.declare_entry("Sliding velocity",
-                        "10",
-                        Double(),
-                        "Sliding velocity V_y of each loading layer after "
-                        "contact (m/s; top +V_y, bottom -V_y), >= 0.");
-      prm.declare_entry("Damping",
-                        "0",
-                        Double(),
-                        "Viscous damping coefficient along z of the "
-                        "loading layers (1/s, force -c m v_z), >= 0; 0 = "
-                        "the seed's criterion c = c_p / (2 h) with h the "
-                        "layer thickness (a longitudinal wave is damped by "
-                        "e in amplitude after travelling twice the specimen "
-                        "height; doc/theory/mca.md).");
-      prm.leave_subsection();
+      FrictionLoadingParameters().binding().declare(prm);
     }
 
 
     void
     FrictionLoadingParameters::parse_parameters(dealii::ParameterHandler &prm)
     {
-      const std::string s = "Friction loading/";
-      prm.enter_subsection("Friction loading");
-      enabled           = prm.get_bool("Enabled");
-      separation        = prm.get_double("Separation");
-      shift_fraction    = prm.get_double("Shift");
-      layer_layers      = prm.get_integer("Loading layer thickness");
-      approach_velocity = prm.get_double("Approach velocity");
-      pressure          = prm.get_double("Pressure");
-      sliding_velocity  = prm.get_double("Sliding velocity");
-      damping           = prm.get_double("Damping");
-      prm.leave_subsection();
-      check_parameter_range(s + "Separation", separation, 0, inf, false, true);
-      check_parameter_range(s + "Shift", shift_fraction, 0, 1, false, false);
-      check_parameter_range(
-        s + "Approach velocity", approach_velocity, 0, inf, true, true);
-      check_parameter_range(s + "Pressure", pressure, 0, inf, true, true);
-      check_parameter_range(
-        s + "Sliding velocity", sliding_velocity, 0, inf, false, true);
-      check_parameter_range(s + "Damping", damping, 0, inf, false, true);
+      binding().parse(prm);
     }
 
 

@@ -7,6 +7,7 @@
 #include <deal.II/base/point.h>
 #include <memory>
 #include <string>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/mca/bond_laws.h>
 #include <tribodyn/mca/friction_laws.h>
 #include <tribodyn/mca/moment_laws.h>
@@ -390,6 +391,10 @@ namespace tribodyn
       /// Damping along z in the loading layers (1/s); 0 = seed criterion.
       double damping = 0;
 
+      /// The entries of the subsection, each bound to its member
+      /// (core/parameter_binding.h).
+      ParameterBinding
+      binding();
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
@@ -423,6 +428,10 @@ namespace tribodyn
       /// Largest accepted dt / (d_min / c_p,max).
       static constexpr double max_courant = 0.5;
 
+      /// The entries of the subsection, each bound to its member
+      /// (core/parameter_binding.h).
+      ParameterBinding
+      binding();
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
