@@ -124,81 +124,61 @@ namespace tribodyn
     // ------------------------------------------------------------------
     // ------------------------------------------------------------------
     // ------------------------------------------------------------------
+    ParameterBinding
+    McaOutputParameters::binding()
+    {
+      ParameterBinding b("Output");
+      b.add("Output interval",
+            output_interval,
+            "Simulated time between particle outputs (s); 0 writes the "
+            "first and last state only.",
+            Double(),
+            Interval{0, inf, false, true});
+      b.add("Series interval",
+            series_interval,
+            "Simulated time between rows of series.csv (s); 0 means every "
+            "100 steps.",
+            Double(),
+            Interval{0, inf, false, true});
+      b.add("Write particles",
+            write_particles,
+            "Write the automata as particles (VTU/PVTU, particles.pvd).");
+      b.add("Write stress",
+            write_stress,
+            "Include the stress tensor, pressure and von Mises stress in the "
+            "particle output (costs a stress recovery at output steps).");
+      b.add("Cross section",
+            cross_section,
+            "Also write the automata of a slab (cross_section.pvd), as in "
+            "seed Fig. 3 and 4.");
+      b.add("Cross section axis",
+            cross_section_axis,
+            "Normal of the cross-section slab.",
+            axis_table);
+      b.add("Cross section position",
+            cross_section_position,
+            "Centre of the slab along its normal (m).");
+      b.add("Cross section thickness",
+            cross_section_thickness,
+            "Thickness of the slab (m); 0 means 7 automaton layers as in the "
+            "seed.",
+            Double(),
+            Interval{0, inf, false, true});
+      return b;
+    }
+
+
     void
     McaOutputParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Output");
-      {
-        prm.declare_entry("Output interval",
-                          "0",
-                          Double(),
-                          "Simulated time between particle outputs (s); 0 "
-                          "writes the first and last state only.");
-        prm.declare_entry("Series interval",
-                          "0",
-                          Double(),
-                          "Simulated time between rows of series.csv (s); "
-                          "0 means every 100 steps.");
-        prm.declare_entry("Write particles",
-                          "true",
-                          Bool(),
-                          "Write the automata as particles (VTU/PVTU, "
-                          "particles.pvd).");
-        prm.declare_entry("Write stress",
-                          "true",
-                          Bool(),
-                          "Include the stress tensor, pressure and von "
-                          "Mises stress in the particle output (costs a "
-                          "stress recovery at output steps).");
-        prm.declare_entry("Cross section",
-                          "false",
-                          Bool(),
-                          "Also write the automata of a slab "
-                          "(cross_section.pvd), as in seed Fig. 3 and 4.");
-        prm.declare_entry("Cross section axis",
-                          "x",
-                          selection_pattern(axis_table),
-                          "Normal of the cross-section slab.");
-        prm.declare_entry("Cross section position",
-                          "0",
-                          Double(),
-                          "Centre of the slab along its normal (m).");
-        prm.declare_entry("Cross section thickness",
-                          "0",
-                          Double(),
-                          "Thickness of the slab (m); 0 means 7 automaton "
-                          "layers as in the seed.");
-      }
-      prm.leave_subsection();
+      McaOutputParameters().binding().declare(prm);
     }
 
 
     void
     McaOutputParameters::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Output");
-      {
-        output_interval = prm.get_double("Output interval");
-        series_interval = prm.get_double("Series interval");
-        write_particles = prm.get_bool("Write particles");
-        write_stress    = prm.get_bool("Write stress");
-        cross_section   = prm.get_bool("Cross section");
-        cross_section_axis
-          = get_selection(prm, "Cross section axis", axis_table);
-        cross_section_position  = prm.get_double("Cross section position");
-        cross_section_thickness = prm.get_double("Cross section thickness");
-        check_parameter_range(
-          "Output/Output interval", output_interval, 0, inf, false, true);
-        check_parameter_range(
-          "Output/Series interval", series_interval, 0, inf, false, true);
-        check_parameter_range("Output/Cross section thickness",
-                              cross_section_thickness,
-                              0,
-                              inf,
-                              false,
-                              true);
-      }
-      prm.leave_subsection();
+      binding().parse(prm);
     }
 
 

@@ -11,43 +11,43 @@ namespace tribodyn
 {
   namespace mca
   {
+    ParameterBinding
+    PartitionParameters::binding()
+    {
+      ParameterBinding b("Partition");
+      b.add("Rebalance threshold",
+            rebalance_threshold,
+            "The mesh cells are weighted by the automata they hold at set-up "
+            "(p4est's weighted partition). As the automata move, the work of "
+            "the ranks drifts apart: at a pair-list rebuild where the work "
+            "imbalance (the largest rank's automata over the mean) exceeds "
+            "this value, and has grown by half of (value - 1) since the last "
+            "partition, the cells are weighted and partitioned anew and the "
+            "automata move to their new ranks (results do not change beyond "
+            "round-off). 0 = never; otherwise >= 1. Ignored on one rank.",
+            dealii::Patterns::Double(0));
+      return b;
+    }
+
+
     void
     PartitionParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
-      prm.enter_subsection("Partition");
-      {
-        prm.declare_entry(
-          "Rebalance threshold",
-          "1.1",
-          dealii::Patterns::Double(0),
-          "The mesh cells are weighted by the automata they hold at set-up "
-          "(p4est's weighted partition). As the automata move, the work "
-          "of the ranks drifts apart: at a pair-list rebuild where the "
-          "work imbalance (the largest rank's automata over the mean) "
-          "exceeds this value, and has grown by half of (value - 1) since "
-          "the last partition, the cells are weighted and partitioned "
-          "anew and the automata move to their new ranks (results do not "
-          "change beyond round-off). 0 = never; otherwise >= 1. Ignored "
-          "on one rank.");
-      }
-      prm.leave_subsection();
+      PartitionParameters().binding().declare(prm);
     }
 
 
     void
     PartitionParameters::parse_parameters(dealii::ParameterHandler &prm)
     {
-      prm.enter_subsection("Partition");
-      {
-        rebalance_threshold = prm.get_double("Rebalance threshold");
-        check_parameter(rebalance_threshold == 0 || rebalance_threshold >= 1,
-                        "Partition/Rebalance threshold",
-                        "it is " + format_number(rebalance_threshold)
-                          + ", but an imbalance (max/mean) is never below "
-                            "1. Use 0 (never repartition) or a value >= 1, "
-                            "e.g. 1.1.");
-      }
-      prm.leave_subsection();
+      const ParameterBinding b = binding();
+      b.parse(prm);
+      check_parameter(rebalance_threshold == 0 || rebalance_threshold >= 1,
+                      b.path("Rebalance threshold"),
+                      "it is " + format_number(rebalance_threshold)
+                        + ", but an imbalance (max/mean) is never below 1. "
+                          "Use 0 (never repartition) or a value >= 1, e.g. "
+                          "1.1.");
     }
   } // namespace mca
 } // namespace tribodyn

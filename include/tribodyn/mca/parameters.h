@@ -447,6 +447,10 @@ namespace tribodyn
       /// largest rank's automata over the mean) exceeds this; 0 = never.
       double rebalance_threshold = 1.1;
 
+      /// The entries of the subsection, each bound to its member
+      /// (core/parameter_binding.h).
+      ParameterBinding
+      binding();
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
@@ -466,6 +470,10 @@ namespace tribodyn
       double       cross_section_position  = 0;
       double       cross_section_thickness = 0;
 
+      /// The entries of the subsection, each bound to its member
+      /// (core/parameter_binding.h).
+      ParameterBinding
+      binding();
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
