@@ -33,9 +33,8 @@ namespace tribodyn
       parameters.parse_parameters(prm);
       checkpoint.parse_parameters(prm);
       parameters.check_averaging_window(checkpoint.interval > 0);
-      checkpoint_lines
-        = resumable_parameter_lines(prm, "Time/End time");
-      checkpoints_on = true;
+      checkpoint_lines = resumable_parameter_lines(prm, "Time/End time");
+      checkpoints_on   = true;
     }
 
 

@@ -1,8 +1,10 @@
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <deal.II/base/utilities.h>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -138,6 +140,45 @@ namespace tribodyn
   {
     struct stat info;
     return stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+  }
+
+
+  bool
+  read_csv_columns(const std::string                &path,
+                   const std::vector<std::string>   &names,
+                   std::vector<std::vector<double>> &columns)
+  {
+    columns.assign(names.size(), {});
+    std::ifstream in(path);
+    std::string   line;
+    if (!std::getline(in, line))
+      return false;
+    const auto header = dealii::Utilities::split_string_list(line, ',');
+    std::vector<std::size_t> index;
+    for (const std::string &name : names)
+      {
+        const auto it = std::find(header.begin(), header.end(), name);
+        if (it == header.end())
+          return false;
+        index.push_back(it - header.begin());
+      }
+    while (std::getline(in, line))
+      {
+        const auto fields = dealii::Utilities::split_string_list(line, ',');
+        if (fields.size() != header.size())
+          break; // a partly written last line
+        try
+          {
+            for (std::size_t c = 0; c < index.size(); ++c)
+              columns[c].push_back(std::stod(fields[index[c]]));
+          }
+        catch (const std::exception &)
+          {
+            columns.assign(names.size(), {});
+            return false;
+          }
+      }
+    return true;
   }
 
 

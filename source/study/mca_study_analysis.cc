@@ -83,42 +83,12 @@ namespace tribodyn
                      std::vector<double> &t,
                      std::vector<double> &mu)
       {
-        t.clear();
-        mu.clear();
-        std::ifstream in(join_path(directory, "friction.csv"));
-        std::string   line;
-        if (!std::getline(in, line))
-          return;
-        const auto   names = dealii::Utilities::split_string_list(line, ',');
-        unsigned int it = names.size(), im = names.size();
-        for (unsigned int k = 0; k < names.size(); ++k)
-          {
-            if (names[k] == "time")
-              it = k;
-            if (names[k] == "mu")
-              im = k;
-          }
-        if (it == names.size() || im == names.size())
-          return;
-        while (std::getline(in, line))
-          {
-            const auto fields = dealii::Utilities::split_string_list(line, ',');
-            if (fields.size() != names.size())
-              continue;
-            try
-              {
-                const double tk = std::stod(fields[it]),
-                             mk = std::stod(fields[im]);
-                t.push_back(tk);
-                mu.push_back(mk);
-              }
-            catch (const std::exception &)
-              {
-                t.clear();
-                mu.clear();
-                return;
-              }
-          }
+        std::vector<std::vector<double>> columns;
+        read_csv_columns(join_path(directory, "friction.csv"),
+                         {"time", "mu"},
+                         columns);
+        t  = std::move(columns[0]);
+        mu = std::move(columns[1]);
       }
 
 
@@ -164,10 +134,10 @@ namespace tribodyn
        * spacing from the later averaging start @p from to the earlier end;
        * the bins both runs fill give the series d_k = mu_c,k - mu_r,k,
        * block-averaged (statistics::block_average), relative to the mean
-       * of mu_r,k over the same bins. False when a series is missing or
-       * leaves fewer than 8 common bins.
+       * of mu_r,k over the same bins. @p d's in-time fields stay NaN when
+       * a series is missing or leaves fewer than 8 common bins.
        */
-      bool
+      void
       difference_in_time(const std::string &reference,
                          const std::string &compare,
                          const double       from,
@@ -177,11 +147,11 @@ namespace tribodyn
         read_mu_series(reference, tr, mr);
         read_mu_series(compare, tc, mc);
         if (tr.size() < 2 || tc.size() < 2 || !std::isfinite(from))
-          return false;
+          return;
         const double w  = 2 * std::max(spacing(tr), spacing(tc));
         const double to = std::min(tr.back(), tc.back());
         if (!(w > 0) || !(to > from))
-          return false;
+          return;
         const unsigned int n  = static_cast<unsigned int>((to - from) / w);
         const auto         br = bin_means(tr, mr, from, w, n),
                    bc         = bin_means(tc, mc, from, w, n);
@@ -194,7 +164,7 @@ namespace tribodyn
               reference_sum += br[b];
             }
         if (difference.size() < 8 || !(reference_sum != 0))
-          return false;
+          return;
         const double reference_mean = reference_sum / difference.size();
         const statistics::MeanWithError e
           = statistics::block_average(difference);
@@ -203,7 +173,6 @@ namespace tribodyn
         d.in_time_runs_stderr = d.in_time_stderr;
         d.in_time_from        = from;
         d.in_time_bins        = difference.size();
-        return true;
       }
 
 

@@ -290,28 +290,17 @@ namespace tribodyn
 
         // mu_global column of friction.csv
         const std::string csv_file = join_path(dir, "friction.csv");
-        std::ifstream     csv(csv_file);
-        std::string       line;
-        std::getline(csv, line);
-        const auto header = dealii::Utilities::split_string_list(line, ',');
-        const auto it = std::find(header.begin(), header.end(), "mu_global");
-        if (!csv || header.empty() || header[0] != "time" || it == header.end())
+        std::vector<std::vector<double>> columns;
+        if (!read_csv_columns(csv_file, {"time", "mu_global"}, columns))
           throw InputError("'Study/Reuse finished cases': " + csv_file
                            + " is missing or has no time and mu_global "
                              "columns. Delete that case's directory to run it "
                              "again.");
-        const std::size_t   column = it - header.begin();
-        std::vector<double> mu, times;
-        while (std::getline(csv, line))
-          {
-            const auto fields = dealii::Utilities::split_string_list(line, ',');
-            if (fields.size() != header.size())
-              break; // a partly written last line
-            const double t = std::stod(fields[0]);
-            times.push_back(t);
-            if (t >= t0 && t <= t1)
-              mu.push_back(std::stod(fields[column]));
-          }
+        const std::vector<double> &times = columns[0];
+        std::vector<double>        mu;
+        for (std::size_t k = 0; k < times.size(); ++k)
+          if (times[k] >= t0 && times[k] <= t1)
+            mu.push_back(columns[1][k]);
         const double spacing
           = times.size() > 1 ? times[1] - times[0] : cp.time.time_step;
         return case_statistics(mu, spacing, s);

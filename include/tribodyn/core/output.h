@@ -46,6 +46,19 @@ namespace tribodyn
   join_path(const std::string &directory, const std::string &file);
 
   /**
+   * The columns @p names of the CSV file @p path (a CsvWriter's series: a
+   * header line, then rows of numbers), in that order, into @p columns.
+   * Reading stops at the first row with another number of fields than the
+   * header (a partly written last line). False, with @p columns empty,
+   * when the file cannot be read, lacks one of the columns or holds a
+   * field that is not a number: the caller says what that means.
+   */
+  bool
+  read_csv_columns(const std::string                &path,
+                   const std::vector<std::string>   &names,
+                   std::vector<std::vector<double>> &columns);
+
+  /**
    * A CSV time series: a header line, then one row per record. Rows are kept
    * in memory and the whole file is rewritten atomically by flush(), so the
    * file on disk is always complete (every line whole) even if the run dies.

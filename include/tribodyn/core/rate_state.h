@@ -1,6 +1,6 @@
 // Rate-and-state friction (Dieterich 1979, Ruina 1983), shared by the
-// automata's unbonded pairs (mca, `Interaction/Rate and state friction`) and the contact
-// pin's nodes (contact, `Contact/Rate and state friction`):
+// automata's unbonded pairs (mca, `Interaction/Rate and state friction`) and
+// the contact pin's nodes (contact, `Contact/Rate and state friction`):
 //
 //   mu(V, theta) = mu0 + a ln(V / V0) + b ln(V0 theta / D_c),
 //   aging law:     dtheta/dt = 1 - V theta / D_c,
