@@ -127,8 +127,8 @@ main(int argc, char **argv)
     return o;
   };
   const Outcome base = outcome(common);
-  const Outcome late
-    = outcome(common + "subsection Loading\nset Sliding start time = 5e-6\nend");
+  const Outcome late = outcome(
+    common + "subsection Loading\nset Sliding start time = 5e-6\nend");
   check(base.dissipation_at_5us > 0
           && late.dissipation_at_5us < 0.01 * base.dissipation_at_5us,
         "Sliding start time 5 us: friction dissipation at 5 us "

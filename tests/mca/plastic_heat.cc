@@ -55,7 +55,7 @@ main(int argc, char **argv)
   p.geometry.roughness_amplitude             = 0;
   p.interaction.plasticity                   = true;
   p.interaction.bond_formation.get<PlasticHeatBondFormation>().on = true;
-  p.interaction.friction.get<Coulomb>().mu                = 1.0;
+  p.interaction.friction.get<Coulomb>().mu                        = 1.0;
   const auto     &m = p.materials[0];
   AutomatonSystem system(p, MPI_COMM_WORLD);
   system.setup();

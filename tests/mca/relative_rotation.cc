@@ -79,7 +79,7 @@ namespace
         p.geometry.bodies.push_back(b1);
       }
     p.interaction.moment.get<ElasticMoment>().stiffness = lambda;
-    p.interaction.friction.get<Coulomb>().mu    = 0.3;
+    p.interaction.friction.get<Coulomb>().mu            = 0.3;
     return p;
   }
 

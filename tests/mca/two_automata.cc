@@ -30,7 +30,7 @@ main(int argc, char **argv)
   p.interaction.plasticity                   = true;
   p.interaction.bond_breaking.get<VonMisesBondBreaking>().on      = true;
   p.interaction.bond_formation.get<PlasticHeatBondFormation>().on = true;
-  p.interaction.friction.get<Coulomb>().mu                = 0.3;
+  p.interaction.friction.get<Coulomb>().mu                        = 0.3;
   const auto     &m = p.materials[0];
   AutomatonSystem system(p, MPI_COMM_WORLD);
   system.setup();
@@ -106,8 +106,7 @@ main(int argc, char **argv)
       pv              = move(t, 1e-6 * d);
       const double tn = std::sqrt(pv.tau[0] * pv.tau[0] + pv.tau[1] * pv.tau[1]
                                   + pv.tau[2] * pv.tau[2]);
-      const double limit
-        = p.interaction.friction.get<Coulomb>().mu * -pv.sigma;
+      const double limit = p.interaction.friction.get<Coulomb>().mu * -pv.sigma;
       if (tn >= limit * (1 - 1e-12))
         {
           slid          = true;

@@ -162,8 +162,8 @@ main(int argc, char **argv)
       }
     catch (const InputError &e)
       {
-        refused = std::string(e.what()).find("'Time/Time step'")
-                  != std::string::npos;
+        refused
+          = std::string(e.what()).find("'Time/Time step'") != std::string::npos;
       }
     check(refused, "(c) 1.01 x critical is refused, naming the parameter");
   }
