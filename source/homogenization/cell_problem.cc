@@ -16,6 +16,7 @@
 #include <sstream>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/selection.h>
 #include <tribodyn/homogenization/cell_problem.h>
 
@@ -54,108 +55,107 @@ namespace tribodyn
     }
 
 
+    BoundaryCondition
+    boundary_condition_named(const std::string &name)
+    {
+      return name == "KUBC"   ? BoundaryCondition::kubc
+             : name == "SUBC" ? BoundaryCondition::subc
+                              : BoundaryCondition::periodic;
+    }
+
+
+    ParameterBinding
+    CellProblemParameters::binding()
+    {
+      ParameterBinding b("Cell problem");
+      std::string      conditions;
+      for (const BoundaryCondition bc : boundary_conditions)
+        conditions += (conditions.empty() ? "" : ", ") + to_string(bc);
+      b.add(
+        "Boundary conditions",
+        conditions,
+        "Boundary conditions of the cell problems, a comma-separated list: "
+        "'KUBC' (u = E x on the boundary: apparent stiffness, an upper "
+        "bound), 'SUBC' (t = Sigma n on the boundary: apparent compliance, a "
+        "lower bound), 'periodic' (periodic fluctuation; exact for a "
+        "periodic morphology).",
+        Patterns::MultipleSelection("KUBC|SUBC|periodic"),
+        [this, where = b.path("Boundary conditions")](const std::string &text) {
+          boundary_conditions.clear();
+          for (const auto &name : Utilities::split_string_list(text))
+            {
+              const BoundaryCondition bc = boundary_condition_named(name);
+              if (std::find(boundary_conditions.begin(),
+                            boundary_conditions.end(),
+                            bc)
+                  == boundary_conditions.end())
+                boundary_conditions.push_back(bc);
+            }
+          check_parameter(!boundary_conditions.empty(),
+                          where,
+                          "give at least one of KUBC, SUBC, periodic.");
+        });
+      b.add("Subdivisions per pixel",
+            subdivisions_per_pixel,
+            "Elements per morphology pixel along each axis (coarse mesh).",
+            Patterns::Integer(1));
+      b.add("Global refinements",
+            global_refinements,
+            "Number of global refinements of the coarse mesh; each one halves "
+            "the element size.",
+            Patterns::Integer(0, 12));
+      b.add("Finite element degree",
+            fe_degree,
+            "Polynomial degree of the Lagrange elements.",
+            Patterns::Integer(1, 4));
+      b.add("Solver tolerance",
+            solver_tolerance,
+            "CG stops when the residual is below this fraction of the "
+            "right-hand side's norm; in (0, 1).",
+            Patterns::Double(),
+            Interval{0, 1, true, true});
+      b.add("Max iterations",
+            max_iterations,
+            "Maximum number of CG iterations per load case.",
+            Patterns::Integer(1));
+      b.add("Preconditioner",
+            preconditioner,
+            "Preconditioner of CG: 'multigrid' (geometric multigrid on the "
+            "pixel hierarchy: matrix-free operator, Chebyshev smoothing, the "
+            "coarsest mesh solved directly; its iteration counts do not grow "
+            "as the mesh is refined) or 'AMG' (Trilinos ML on the assembled "
+            "matrix). Multigrid coarsens while the number of elements along "
+            "both axes is even; when the coarsest mesh keeps more than "
+            "50000 DoFs (pixel counts with few factors of 2), AMG is used "
+            "instead and the screen says so.",
+            preconditioner_choices);
+      b.add("Multigrid precision",
+            multigrid_precision,
+            "Floating-point precision of the multigrid V-cycle (levels, "
+            "smoother, transfer; the coarsest level is factorized in double "
+            "and CG always runs in double, so the result is as accurate "
+            "either way): 'single' halves the memory traffic of the "
+            "preconditioner (CG 1.2 times faster on the 1.1e6-DoF bench); "
+            "'double' keeps the "
+            "iteration counts of SUBC constant as the mesh is refined also at "
+            "tolerances below 1e-11, where single precision adds a few "
+            "(doc/theory/homogenization.md, 'Cell problems').",
+            precision_choices);
+      return b;
+    }
+
+
     void
     CellProblemParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Cell problem");
-      {
-        prm.declare_entry(
-          "Boundary conditions",
-          "KUBC, SUBC",
-          Patterns::MultipleSelection("KUBC|SUBC|periodic"),
-          "Boundary conditions of the cell problems, a comma-separated list: "
-          "'KUBC' (u = E x on the boundary: apparent stiffness, an upper "
-          "bound), 'SUBC' (t = Sigma n on the boundary: apparent compliance, a "
-          "lower bound), 'periodic' (periodic fluctuation; exact for a "
-          "periodic morphology).");
-        prm.declare_entry("Subdivisions per pixel",
-                          "1",
-                          Patterns::Integer(1),
-                          "Elements per morphology pixel along each axis "
-                          "(coarse mesh).");
-        prm.declare_entry("Global refinements",
-                          "0",
-                          Patterns::Integer(0, 12),
-                          "Number of global refinements of the coarse mesh; "
-                          "each one halves the element size.");
-        prm.declare_entry("Finite element degree",
-                          "1",
-                          Patterns::Integer(1, 4),
-                          "Polynomial degree of the Lagrange elements.");
-        prm.declare_entry("Solver tolerance",
-                          "1e-10",
-                          Patterns::Double(),
-                          "CG stops when the residual is below this fraction "
-                          "of the right-hand side's norm; in (0, 1).");
-        prm.declare_entry("Max iterations",
-                          "2000",
-                          Patterns::Integer(1),
-                          "Maximum number of CG iterations per load case.");
-        prm.declare_entry(
-          "Preconditioner",
-          selection_text(preconditioner_choices, CellPreconditioner::multigrid),
-          selection_pattern(preconditioner_choices),
-          "Preconditioner of CG: 'multigrid' (geometric multigrid on the "
-          "pixel hierarchy: matrix-free operator, Chebyshev smoothing, the "
-          "coarsest mesh solved directly; its iteration counts do not grow "
-          "as the mesh is refined) or 'AMG' (Trilinos ML on the assembled "
-          "matrix). Multigrid coarsens while the number of elements along "
-          "both axes is even; when the coarsest mesh keeps more than "
-          "50000 DoFs (pixel counts with few factors of 2), AMG is used "
-          "instead and the screen says so.");
-        prm.declare_entry(
-          "Multigrid precision",
-          selection_text(precision_choices, MultigridPrecision::single),
-          selection_pattern(precision_choices),
-          "Floating-point precision of the multigrid V-cycle (levels, "
-          "smoother, transfer; the coarsest level is factorized in double "
-          "and CG always runs in double, so the result is as accurate "
-          "either way): 'single' halves the memory traffic of the "
-          "preconditioner (CG 1.2 times faster on the 1.1e6-DoF bench); "
-          "'double' keeps the "
-          "iteration counts of SUBC constant as the mesh is refined also at "
-          "tolerances below 1e-11, where single precision adds a few "
-          "(doc/theory/homogenization.md, 'Cell problems').");
-      }
-      prm.leave_subsection();
+      CellProblemParameters().binding().declare(prm);
     }
 
 
     void
     CellProblemParameters::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Cell problem");
-      {
-        boundary_conditions.clear();
-        for (const auto &name :
-             Utilities::split_string_list(prm.get("Boundary conditions")))
-          {
-            const BoundaryCondition bc
-              = name == "KUBC"   ? BoundaryCondition::kubc
-                : name == "SUBC" ? BoundaryCondition::subc
-                                 : BoundaryCondition::periodic;
-            if (std::find(boundary_conditions.begin(),
-                          boundary_conditions.end(),
-                          bc)
-                == boundary_conditions.end())
-              boundary_conditions.push_back(bc);
-          }
-        subdivisions_per_pixel = prm.get_integer("Subdivisions per pixel");
-        global_refinements     = prm.get_integer("Global refinements");
-        fe_degree              = prm.get_integer("Finite element degree");
-        solver_tolerance       = prm.get_double("Solver tolerance");
-        max_iterations         = prm.get_integer("Max iterations");
-        preconditioner
-          = get_selection(prm, "Preconditioner", preconditioner_choices);
-        multigrid_precision
-          = get_selection(prm, "Multigrid precision", precision_choices);
-      }
-      prm.leave_subsection();
-      check_parameter(!boundary_conditions.empty(),
-                      "Cell problem/Boundary conditions",
-                      "give at least one of KUBC, SUBC, periodic.");
-      check_parameter_range(
-        "Cell problem/Solver tolerance", solver_tolerance, 0, 1, true, true);
+      binding().parse(prm);
     }
 
 

@@ -62,41 +62,38 @@ namespace tribodyn
     }
 
 
+    ParameterBinding
+    HomogenizationOutputParameters::binding()
+    {
+      ParameterBinding b("Output");
+      b.add("Write fields",
+            write_fields,
+            "Write the displacement, stress and strain fields of every load "
+            "case as VTU (fields_<BC>.pvd).");
+      b.add("Write morphology",
+            write_morphology,
+            "Write the material map (morphology.vtu) and the morphology as a "
+            "grid file (morphology.txt, readable by 'Generator = grid file').");
+      return b;
+    }
+
+
     void
     HomogenizationOutputParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Output");
-      {
-        prm.declare_entry("Write fields",
-                          "true",
-                          dealii::Patterns::Bool(),
-                          "Write the displacement, stress and strain fields "
-                          "of every load case as VTU (fields_<BC>.pvd).");
-        prm.declare_entry("Write morphology",
-                          "true",
-                          dealii::Patterns::Bool(),
-                          "Write the material map (morphology.vtu) and the "
-                          "morphology as a grid file (morphology.txt, "
-                          "readable by 'Generator = grid file').");
-      }
-      prm.leave_subsection();
+      HomogenizationOutputParameters().binding().declare(prm);
     }
 
 
     void
     HomogenizationOutputParameters::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Output");
-      {
-        write_fields     = prm.get_bool("Write fields");
-        write_morphology = prm.get_bool("Write morphology");
-      }
-      prm.leave_subsection();
+      binding().parse(prm);
     }
 
 
     void
-    HomogenizationProblem::declare_parameters(ParameterHandler &prm)
+    HomogenizationParameters::declare_parameters(ParameterHandler &prm)
     {
       MorphologyParameters::declare_parameters(prm);
       MaterialsParameters::declare_parameters(prm);
@@ -105,14 +102,62 @@ namespace tribodyn
     }
 
 
+    void
+    HomogenizationParameters::parse_parameters(ParameterHandler &prm)
+    {
+      morphology.parse_parameters(prm);
+      materials.parse_parameters(prm);
+      cell_problem.parse_parameters(prm);
+      output.parse_parameters(prm);
+    }
+
+
+    HomogenizationParameters
+    HomogenizationParameters::defaults()
+    {
+      ParameterHandler prm;
+      declare_parameters(prm);
+      HomogenizationParameters p;
+      p.parse_parameters(prm);
+      return p;
+    }
+
+
+    void
+    HomogenizationProblem::declare_parameters(ParameterHandler &prm)
+    {
+      HomogenizationParameters::declare_parameters(prm);
+    }
+
+
+    namespace
+    {
+      HomogenizationParameters
+      parsed(ParameterHandler &prm)
+      {
+        HomogenizationParameters p;
+        p.parse_parameters(prm);
+        return p;
+      }
+    } // namespace
+
+
     HomogenizationProblem::HomogenizationProblem(ParameterHandler &prm,
                                                  const RunContext &context)
-        : context(context)
+        : HomogenizationProblem(parsed(prm), context)
     {
-      morphology_parameters.parse_parameters(prm);
-      materials.parse_parameters(prm);
-      cell_problem_parameters.parse_parameters(prm);
-      output_parameters.parse_parameters(prm);
+    }
+
+
+    HomogenizationProblem::HomogenizationProblem(
+      const HomogenizationParameters &parameters,
+      const RunContext               &context)
+        : context(context)
+        , morphology_parameters(parameters.morphology)
+        , materials(parameters.materials)
+        , cell_problem_parameters(parameters.cell_problem)
+        , output_parameters(parameters.output)
+    {
       // A map read from a file (image or grid) may hold other phases than
       // those named: refuse it now, with the other parameter errors.
       if (morphology_parameters.generator

@@ -38,9 +38,9 @@ namespace tribodyn
       base.parse_parameters(prm);
       base.check_averaging_window(false);
       parameters.parse_parameters(prm);
-      std::ostringstream text;
-      prm.print_parameters(text, ParameterHandler::ShortPRM);
-      prm_text = text.str();
+      parameters_of_homogenization
+        = homogenization::HomogenizationParameters::defaults();
+      parameters_of_homogenization.morphology = base.morphology;
 
       // The same mesh for every model: the morphology's pixel grid times
       // the subdivisions, which must be square.
@@ -123,41 +123,24 @@ namespace tribodyn
             continue;
           if (parameters.reuse_cases && file_exists(summaries.back()))
             continue;
-          // The homogenization problem on the study's morphology parameters
-          // (and the two phases of 'Materials/Matrix', 'Heterogeneity').
-          ParameterHandler hprm;
-          homogenization::HomogenizationProblem::declare_parameters(hprm);
-          hprm.parse_input_from_string(prm_text, "", true);
-          hprm.enter_subsection("Morphology");
-          hprm.set("Seed", std::to_string(seed));
-          hprm.leave_subsection();
-          hprm.enter_subsection("Materials");
-          for (const auto &[name, phase] :
-               {std::make_pair(std::string("Matrix"),
-                               base.material.composite.matrix),
-                std::make_pair(std::string("Heterogeneity"),
-                               base.material.composite.heterogeneity)})
-            {
-              hprm.enter_subsection(name);
-              hprm.set("Young modulus", format_number(phase.youngs_modulus));
-              hprm.set("Poisson ratio", format_number(phase.poisson_ratio));
-              hprm.set("Density", format_number(phase.density));
-              hprm.leave_subsection();
-            }
-          hprm.leave_subsection();
-          hprm.enter_subsection("Cell problem");
-          hprm.set("Boundary conditions", parameters.boundary_condition);
-          hprm.set("Subdivisions per pixel",
-                   std::to_string(base.geometry.subdivisions_per_pixel));
-          hprm.leave_subsection();
-          hprm.enter_subsection("Output");
-          hprm.set("Write fields", false);
-          hprm.leave_subsection();
-          RunContext hc       = context;
-          hc.mpi_communicator = group;
-          hc.output_directory = dir;
-          hc.parameters_text  = nullptr;
-          homogenization::HomogenizationProblem problem(hprm, hc);
+          // The homogenization problem on the study's morphology (its seed
+          // set per run) and the two phases of 'Materials/Matrix',
+          // 'Heterogeneity'; its other parameters at their defaults.
+          auto hp                    = parameters_of_homogenization;
+          hp.morphology.random_seed  = seed;
+          hp.materials.matrix        = base.material.composite.matrix;
+          hp.materials.heterogeneity = base.material.composite.heterogeneity;
+          hp.cell_problem.boundary_conditions
+            = {homogenization::boundary_condition_named(
+              parameters.boundary_condition)};
+          hp.cell_problem.subdivisions_per_pixel
+            = base.geometry.subdivisions_per_pixel;
+          hp.output.write_fields = false;
+          RunContext hc          = context;
+          hc.mpi_communicator    = group;
+          hc.output_directory    = dir;
+          hc.parameters_text     = nullptr;
+          homogenization::HomogenizationProblem problem(hp, hc);
           problem.run();
         }
       MPI_Barrier(world);

@@ -19,6 +19,7 @@
 #include <string>
 #include <tribodyn/core/material.h>
 #include <tribodyn/core/morphology.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/homogenization/effective_properties.h>
 #include <vector>
 
@@ -42,6 +43,11 @@ namespace tribodyn
     /// "KUBC", "SUBC", "periodic": the names used in prm files and outputs.
     std::string
     to_string(const BoundaryCondition bc);
+
+    /// The condition named @p name ("KUBC", "SUBC" or "periodic", as
+    /// to_string() writes it; the caller's pattern has checked it).
+    BoundaryCondition
+    boundary_condition_named(const std::string &name);
 
     /// Preconditioners of the cell problems' CG.
     enum class CellPreconditioner
@@ -75,6 +81,11 @@ namespace tribodyn
       unsigned int       max_iterations      = 2000;
       CellPreconditioner preconditioner      = CellPreconditioner::multigrid;
       MultigridPrecision multigrid_precision = MultigridPrecision::single;
+
+      /// The entries of "Cell problem", bound to the members above (their
+      /// initial values are the defaults).
+      ParameterBinding
+      binding();
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -6,6 +6,7 @@
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/material.h>
 #include <tribodyn/core/morphology.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/phase_materials.h>
 #include <tribodyn/core/problem.h>
 #include <tribodyn/homogenization/cell_problem.h>
@@ -49,10 +50,35 @@ namespace tribodyn
       /// Write the material map (VTU) and the morphology grid (text).
       bool write_morphology = true;
 
+      /// The entries of "Output", bound to the members above.
+      ParameterBinding
+      binding();
+
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
       parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /**
+     * All the parameters of a homogenization run: what a study sets
+     * member by member to run one (study_problem.cc), what a parameter
+     * file gives through parse_parameters().
+     */
+    struct HomogenizationParameters
+    {
+      MorphologyParameters           morphology;
+      MaterialsParameters            materials;
+      CellProblemParameters          cell_problem;
+      HomogenizationOutputParameters output;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+      /// Every entry at its declared default.
+      static HomogenizationParameters
+      defaults();
     };
 
     /**
@@ -69,6 +95,8 @@ namespace tribodyn
 
       HomogenizationProblem(dealii::ParameterHandler &prm,
                             const RunContext         &context);
+      HomogenizationProblem(const HomogenizationParameters &parameters,
+                            const RunContext               &context);
 
       void
       run() override;

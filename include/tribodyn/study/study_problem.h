@@ -5,6 +5,7 @@
 #include <string>
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/core/problem.h>
+#include <tribodyn/homogenization/homogenization_problem.h>
 #include <vector>
 
 namespace tribodyn
@@ -117,9 +118,11 @@ namespace tribodyn
       RunContext                 context;
       StudyParameters            parameters;
       contact::ContactParameters base;
-      /// The study's parameter file as text (fed to the homogenization runs).
-      std::string            prm_text;
-      std::vector<StudyCase> study_cases;
+      /// The homogenization runs' parameters: the study's morphology, the
+      /// rest at their defaults (homogenize() sets the seed, the phases,
+      /// the boundary condition and the mesh of each run).
+      homogenization::HomogenizationParameters parameters_of_homogenization;
+      std::vector<StudyCase>                   study_cases;
       /// The homogenized pin: stiffness, out-of-plane row, density.
       contact::VoigtStiffness homogenized_C;
       dealii::Tensor<1, 3>    homogenized_c_z;
