@@ -92,6 +92,23 @@ namespace tribodyn
 
 
   ParameterBinding &
+  ParameterBinding::add(const std::string                   &name,
+                        std::uint64_t                       &value,
+                        const std::string                   &documentation,
+                        const dealii::Patterns::PatternBase &pattern)
+  {
+    return add_entry(name,
+                     std::to_string(value),
+                     documentation,
+                     pattern,
+                     [&value, name](dealii::ParameterHandler &prm) {
+                       value = prm.get_integer(name);
+                     },
+                     {});
+  }
+
+
+  ParameterBinding &
   ParameterBinding::add(const std::string &name,
                         bool              &value,
                         const std::string &documentation)

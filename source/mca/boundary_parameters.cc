@@ -23,61 +23,66 @@ namespace tribodyn
 
     using namespace parameter_tools;
 
+    ParameterBinding
+    BoundaryParameters::binding()
+    {
+      ParameterBinding b("Boundary conditions");
+      b.add(
+        "Groups",
+        "",
+        "Groups of automata with a boundary condition, separated by ';': "
+        "'NAME TYPE x0 y0 z0 x1 y1 z1 [v1 v2 v3] [then T w1 w2 w3]'. "
+        "Automata whose centre lies in the box belong to the group (an "
+        "automaton may belong to several). TYPE: fixed (velocity zero), "
+        "velocity (prescribed velocity components v, '*' leaves one "
+        "free), force (total force v on the group; the group moves as a "
+        "rigid loading plate under it and its reaction), damping (F = -v_k m "
+        "u_k per component, coefficients in 1/s). "
+        "'then T w' switches to the value w at time T (ramped smoothly "
+        "over the ramp time); 'then contact w' switches when the two "
+        "bodies first touch (an unbonded pair in contact). A component "
+        "given before 'then' may be '*' after it: it is released at the "
+        "switch.",
+        Patterns::Anything(),
+        [this, p = b.path("Groups")](const std::string &text) {
+          parse_groups(text, p);
+        });
+      b.add("Ramp time",
+            ramp_time,
+            "Prescribed velocities and forces rise smoothly (C1, 3s^2 - 2s^3) "
+            "from zero over this time (s).",
+            Double(),
+            Interval{0, inf, false, true});
+      b.add("Global damping",
+            global_damping,
+            "Viscous damping of every automaton, F = -c m v (1/s), >= 0.",
+            Double(),
+            Interval{0, inf, false, true});
+      return b;
+    }
+
+
     void
     BoundaryParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Boundary conditions");
-      {
-        prm.declare_entry(
-          "Groups",
-          "",
-          Patterns::Anything(),
-          "Groups of automata with a boundary condition, separated by ';': "
-          "'NAME TYPE x0 y0 z0 x1 y1 z1 [v1 v2 v3] [then T w1 w2 w3]'. "
-          "Automata whose centre lies in the box belong to the group (an "
-          "automaton may belong to several). TYPE: fixed (velocity zero), "
-          "velocity (prescribed velocity components v, '*' leaves one "
-          "free), force (total force v on the group; the group moves as a "
-          "rigid loading plate under it and its reaction), damping (F = -v_k m "
-          "u_k per component, coefficients in 1/s). "
-          "'then T w' switches to the value w at time T (ramped smoothly "
-          "over the ramp time); 'then contact w' switches when the two "
-          "bodies first touch (an unbonded pair in contact). A component "
-          "given before 'then' may be '*' after it: it is released at the "
-          "switch.");
-        prm.declare_entry("Ramp time",
-                          "0",
-                          Double(),
-                          "Prescribed velocities and forces rise smoothly "
-                          "(C1, 3s^2 - 2s^3) from zero over this time (s).");
-        prm.declare_entry("Global damping",
-                          "0",
-                          Double(),
-                          "Viscous damping of every automaton, "
-                          "F = -c m v (1/s), >= 0.");
-      }
-      prm.leave_subsection();
+      BoundaryParameters().binding().declare(prm);
     }
 
 
     void
     BoundaryParameters::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Boundary conditions");
+      binding().parse(prm);
+    }
+
+
+    void
+    BoundaryParameters::parse_groups(const std::string &text,
+                                     const std::string &p)
+    {
       {
-        ramp_time      = prm.get_double("Ramp time");
-        global_damping = prm.get_double("Global damping");
-        check_parameter_range(
-          "Boundary conditions/Ramp time", ramp_time, 0, inf, false, true);
-        check_parameter_range("Boundary conditions/Global damping",
-                              global_damping,
-                              0,
-                              inf,
-                              false,
-                              true);
         groups.clear();
-        const std::string p = "Boundary conditions/Groups";
-        for (const std::string &entry : split(prm.get("Groups"), ';'))
+        for (const std::string &entry : split(text, ';'))
           {
             const auto    t = tokens(entry);
             BoundaryGroup g;
@@ -153,7 +158,6 @@ namespace tribodyn
           }
         check_parameter(groups.size() <= 32, p, "at most 32 groups.");
       }
-      prm.leave_subsection();
     }
 
 

@@ -192,9 +192,9 @@ namespace tribodyn
                             "Initial gap: body 1 is shifted up by it (m).");
         }
         prm.leave_subsection();
-        declare_inclusion_parameters(prm);
       }
       prm.leave_subsection();
+      InclusionPackingParameters().binding().declare(prm);
     }
 
 
@@ -441,10 +441,9 @@ namespace tribodyn
                            : material_index(material_names, t.back(), p);
             regions.push_back(r);
           }
-
-        parse_inclusion_parameters(prm, material_names, inclusions);
       }
       prm.leave_subsection();
+      inclusions.parse_parameters(prm, material_names);
       generate_inclusion_layout();
     }
 

@@ -5,6 +5,7 @@
 
 #include <deal.II/base/patterns.h>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/mca/inclusions.h>
 #include <tribodyn/mca/parameters.h>
 
@@ -19,103 +20,81 @@ namespace tribodyn
     using dealii::Patterns::Selection;
     namespace Patterns = dealii::Patterns;
 
-    namespace parameter_tools
+    ParameterBinding
+    InclusionPackingParameters::binding(const std::vector<std::string> &names)
     {
-      void
-      declare_inclusion_parameters(dealii::ParameterHandler &prm)
-      {
-        prm.enter_subsection("Inclusions");
-        prm.declare_entry(
-          "Enabled",
-          "false",
-          Bool(),
-          "Place non-overlapping cylinders of the inclusion material (and "
-          "optionally spherical voids) at random in the contacting part of "
-          "each body of the rough interface, respecting the periodic "
-          "images. Needs Geometry/Rough interface/Enabled. The achieved "
-          "fraction is printed and written to summary.json "
-          "(inclusion_volume_fraction: automata of the inclusion material / "
-          "automata of the contacting parts).");
-        prm.declare_entry("Material",
-                          "carbon",
-                          Patterns::Anything(),
-                          "Material of the cylinders.");
-        prm.declare_entry("Contacting part thickness",
-                          "0",
-                          Double(),
-                          "Thickness of each contacting part (m): z in "
-                          "[Height - t, Height] below and [Height, Height + "
-                          "t] above the mean interface height, > 0 when "
-                          "enabled.");
-        prm.declare_entry("Cylinder radius",
-                          "10e-9",
-                          Double(),
-                          "Cylinder radius (m; seed: 10 nm).");
-        prm.declare_entry("Cylinder length",
-                          "70e-9",
-                          Double(),
-                          "Cylinder length (m; seed: 70 nm).");
-        prm.declare_entry("Orientation",
-                          "isotropic",
-                          Selection("isotropic|x|y|z"),
-                          "Cylinder axes: uniformly random on the sphere, or "
-                          "aligned with an axis.");
-        prm.declare_entry("Volume fraction",
-                          "0.02",
-                          Double(),
-                          "Target volume fraction of cylinders in each "
-                          "contacting part (seed: about 2 %); the number of "
-                          "cylinders is the nearest whole number.");
-        prm.declare_entry("Void radius", "20e-9", Double(), "Void radius (m).");
-        prm.declare_entry("Void volume fraction",
-                          "0",
-                          Double(),
-                          "Target volume fraction of spherical voids in "
-                          "each contacting part (seed Fig. 2b: voids for "
-                          "better stirring); 0 = none.");
-        prm.declare_entry("Gap",
-                          "0",
-                          Double(),
-                          "Minimum clearance between the surfaces of any "
-                          "two shapes (m), >= 0; e.g. one automaton size so "
-                          "that inclusions are separated by matrix.");
-        prm.declare_entry("Seed",
-                          "1",
-                          Integer(0),
-                          "Seed of the generator (same seed: same shapes "
-                          "on every platform and rank count).");
-        prm.leave_subsection();
-      }
+      ParameterBinding b("Geometry/Inclusions");
+      b.add("Enabled",
+            enabled,
+            "Place non-overlapping cylinders of the inclusion material (and "
+            "optionally spherical voids) at random in the contacting part of "
+            "each body of the rough interface, respecting the periodic "
+            "images. Needs Geometry/Rough interface/Enabled. The achieved "
+            "fraction is printed and written to summary.json "
+            "(inclusion_volume_fraction: automata of the inclusion material / "
+            "automata of the contacting parts).");
+      b.add("Material",
+            "carbon",
+            "Material of the cylinders.",
+            Patterns::Anything(),
+            [this, &names, where = b.path("Material")](const std::string &m) {
+              material = material_index(names, m, where);
+            });
+      b.add("Contacting part thickness",
+            part_thickness,
+            "Thickness of each contacting part (m): z in [Height - t, Height] "
+            "below and [Height, Height + t] above the mean interface height, "
+            "> 0 when enabled.");
+      b.add("Cylinder radius",
+            cylinder_radius,
+            "Cylinder radius (m; seed: 10 nm).");
+      b.add("Cylinder length",
+            cylinder_length,
+            "Cylinder length (m; seed: 70 nm).");
+      b.add("Orientation",
+            orientation,
+            "Cylinder axes: uniformly random on the sphere, or aligned with "
+            "an axis.",
+            Selection("isotropic|x|y|z"));
+      b.add("Volume fraction",
+            volume_fraction,
+            "Target volume fraction of cylinders in each contacting part "
+            "(seed: about 2 %); the number of cylinders is the nearest whole "
+            "number.");
+      b.add("Void radius", void_radius, "Void radius (m).");
+      b.add("Void volume fraction",
+            void_fraction,
+            "Target volume fraction of spherical voids in each contacting part "
+            "(seed Fig. 2b: voids for better stirring); 0 = none.");
+      b.add("Gap",
+            gap,
+            "Minimum clearance between the surfaces of any two shapes (m), >= "
+            "0; e.g. one automaton size so that inclusions are separated by "
+            "matrix.");
+      b.add("Seed",
+            seed,
+            "Seed of the generator (same seed: same shapes on every platform "
+            "and rank count).",
+            Integer(0));
+      return b;
+    }
 
 
-      void
-      parse_inclusion_parameters(dealii::ParameterHandler       &prm,
-                                 const std::vector<std::string> &names,
-                                 InclusionPackingParameters     &p)
-      {
-        const std::string s = "Geometry/Inclusions/";
-        prm.enter_subsection("Inclusions");
-        p.enabled  = prm.get_bool("Enabled");
-        p.material = material_index(names, prm.get("Material"), s + "Material");
-        p.part_thickness  = prm.get_double("Contacting part thickness");
-        p.cylinder_radius = prm.get_double("Cylinder radius");
-        p.cylinder_length = prm.get_double("Cylinder length");
-        p.orientation     = prm.get("Orientation");
-        p.volume_fraction = prm.get_double("Volume fraction");
-        p.void_radius     = prm.get_double("Void radius");
-        p.void_fraction   = prm.get_double("Void volume fraction");
-        p.gap             = prm.get_double("Gap");
-        p.seed            = prm.get_integer("Seed");
-        prm.leave_subsection();
-        if (p.enabled)
-          check_parameter_range(s + "Contacting part thickness",
-                                p.part_thickness,
-                                0,
-                                inf,
-                                true,
-                                true);
-      }
-    } // namespace parameter_tools
+    void
+    InclusionPackingParameters::parse_parameters(
+      dealii::ParameterHandler       &prm,
+      const std::vector<std::string> &names)
+    {
+      ParameterBinding b = binding(names);
+      b.parse(prm);
+      if (enabled)
+        check_parameter_range(b.path("Contacting part thickness"),
+                              part_thickness,
+                              0,
+                              inf,
+                              true,
+                              true);
+    }
 
 
     bool

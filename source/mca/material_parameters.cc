@@ -109,64 +109,61 @@ namespace tribodyn
     }
 
 
-    void
-    MaterialParameters::declare_parameters(ParameterHandler         &prm,
-                                           const MaterialParameters &d)
+    ParameterBinding
+    MaterialParameters::binding(const std::string &section)
     {
-      prm.declare_entry("Density",
-                        format_number(d.density),
-                        Double(),
-                        "Mass density rho (kg/m^3), > 0.");
-      prm.declare_entry("Young modulus",
-                        format_number(d.youngs_modulus),
-                        Double(),
-                        "Young's modulus E (Pa), > 0.");
-      prm.declare_entry("Poisson ratio",
-                        format_number(d.poisson_ratio),
-                        Double(),
-                        "Poisson's ratio nu, in (-1, 0.5). The pair law "
-                        "reproduces Hooke's law with these E and nu.");
-      prm.declare_entry(
-        "Hardening",
-        selection_text(hardening_table, d.hardening),
-        selection_pattern(hardening_table),
-        "Response beyond the elastic range: elastic (no plasticity), "
-        "linear (sigma_y = Yield stress + Hardening modulus * eps_p) or "
-        "bilinear (slope Second hardening modulus beyond Second hardening "
-        "onset). Von Mises plasticity, Wilkins radial return.");
-      prm.declare_entry("Yield stress",
-                        format_number(d.yield_stress),
-                        Double(),
-                        "Initial yield stress sigma_y0 (Pa), > 0.");
-      prm.declare_entry("Hardening modulus",
-                        format_number(d.hardening_modulus),
-                        Double(),
-                        "Plastic hardening modulus H1 = dsigma_y/deps_p "
-                        "(Pa), >= 0. The uniaxial tangent modulus is "
-                        "E H1 / (E + H1).");
-      prm.declare_entry("Second hardening modulus",
-                        format_number(d.second_hardening_modulus),
-                        Double(),
-                        "Bilinear hardening: H2 = dsigma_y/deps_p beyond "
-                        "the onset (Pa), >= 0.");
-      prm.declare_entry("Second hardening onset",
-                        format_number(d.second_hardening_onset),
-                        Double(),
-                        "Bilinear hardening: plastic strain where the "
-                        "second branch starts, > 0.");
-      prm.declare_entry("Bond breaking stress",
-                        format_number(d.bond_breaking_stress),
-                        Double(),
-                        "A bonded pair breaks when the von Mises stress of "
-                        "its stress state reaches this value (Pa), > 0 "
-                        "(the smaller value of the two materials applies).");
-      prm.declare_entry("Bond energy density",
-                        format_number(d.bond_energy_density),
-                        Double(),
-                        "Energy to break a bond per unit volume of the pair "
-                        "(J/m^3): the bond energy of pair ij is this times "
-                        "S_ij (d_i + d_j)/2. The default is sigma_b^2/(2E) "
-                        "with sigma_b the bond breaking stress.");
+      ParameterBinding b(section);
+      b.add("Density", density, "Mass density rho (kg/m^3), > 0.");
+      b.add("Young modulus", youngs_modulus, "Young's modulus E (Pa), > 0.");
+      b.add("Poisson ratio",
+            poisson_ratio,
+            "Poisson's ratio nu, in (-1, 0.5). The pair law reproduces "
+            "Hooke's law with these E and nu.");
+      b.add("Hardening",
+            hardening,
+            "Response beyond the elastic range: elastic (no plasticity), "
+            "linear (sigma_y = Yield stress + Hardening modulus * eps_p) or "
+            "bilinear (slope Second hardening modulus beyond Second hardening "
+            "onset). Von Mises plasticity, Wilkins radial return.",
+            hardening_table);
+      b.add("Yield stress",
+            yield_stress,
+            "Initial yield stress sigma_y0 (Pa), > 0.",
+            Double(),
+            Interval{0, inf, true, true});
+      b.add("Hardening modulus",
+            hardening_modulus,
+            "Plastic hardening modulus H1 = dsigma_y/deps_p (Pa), >= 0. The "
+            "uniaxial tangent modulus is E H1 / (E + H1).",
+            Double(),
+            Interval{0, inf, false, true});
+      b.add("Second hardening modulus",
+            second_hardening_modulus,
+            "Bilinear hardening: H2 = dsigma_y/deps_p beyond the onset (Pa), "
+            ">= 0.",
+            Double(),
+            Interval{0, inf, false, true});
+      b.add("Second hardening onset",
+            second_hardening_onset,
+            "Bilinear hardening: plastic strain where the second branch "
+            "starts, > 0.",
+            Double(),
+            Interval{0, inf, true, true});
+      b.add("Bond breaking stress",
+            bond_breaking_stress,
+            "A bonded pair breaks when the von Mises stress of its stress "
+            "state reaches this value (Pa), > 0 (the smaller value of the two "
+            "materials applies).",
+            Double(),
+            Interval{0, inf, true, true});
+      b.add("Bond energy density",
+            bond_energy_density,
+            "Energy to break a bond per unit volume of the pair (J/m^3): the "
+            "bond energy of pair ij is this times S_ij (d_i + d_j)/2. The "
+            "default is sigma_b^2/(2E) with sigma_b the bond breaking stress.",
+            Double(),
+            Interval{0, inf, false, true});
+      return b;
     }
 
 
@@ -174,49 +171,11 @@ namespace tribodyn
     MaterialParameters::parse_parameters(ParameterHandler  &prm,
                                          const std::string &section)
     {
-      density           = prm.get_double("Density");
-      youngs_modulus    = prm.get_double("Young modulus");
-      poisson_ratio     = prm.get_double("Poisson ratio");
-      hardening         = get_selection(prm, "Hardening", hardening_table);
-      yield_stress      = prm.get_double("Yield stress");
-      hardening_modulus = prm.get_double("Hardening modulus");
-      second_hardening_modulus = prm.get_double("Second hardening modulus");
-      second_hardening_onset   = prm.get_double("Second hardening onset");
-      bond_breaking_stress     = prm.get_double("Bond breaking stress");
-      bond_energy_density      = prm.get_double("Bond energy density");
-
+      binding(section).parse(prm);
       check_isotropic_elastic_constants(section,
                                         youngs_modulus,
                                         poisson_ratio,
                                         density);
-      check_parameter_range(
-        section + "/Yield stress", yield_stress, 0, inf, true, true);
-      check_parameter_range(
-        section + "/Hardening modulus", hardening_modulus, 0, inf, false, true);
-      check_parameter_range(section + "/Second hardening modulus",
-                            second_hardening_modulus,
-                            0,
-                            inf,
-                            false,
-                            true);
-      check_parameter_range(section + "/Second hardening onset",
-                            second_hardening_onset,
-                            0,
-                            inf,
-                            true,
-                            true);
-      check_parameter_range(section + "/Bond breaking stress",
-                            bond_breaking_stress,
-                            0,
-                            inf,
-                            true,
-                            true);
-      check_parameter_range(section + "/Bond energy density",
-                            bond_energy_density,
-                            0,
-                            inf,
-                            false,
-                            true);
     }
 
 
@@ -296,16 +255,13 @@ namespace tribodyn
       // each named material's subsection (declared again for a name that
       // already has one: same entries, same defaults)
       prm.enter_subsection("Materials");
-      for (const auto &name :
-           dealii::Utilities::split_string_list(prm.get("Names")))
-        if (!name.empty())
-          {
-            prm.enter_subsection(material_subsection(name));
-            MaterialParameters::declare_parameters(prm,
-                                                   material_defaults(name));
-            prm.leave_subsection();
-          }
+      const auto names = dealii::Utilities::split_string_list(prm.get("Names"));
       prm.leave_subsection();
+      for (const auto &name : names)
+        if (!name.empty())
+          material_defaults(name)
+            .binding("Materials/" + material_subsection(name))
+            .declare(prm);
     }
 
 
@@ -314,16 +270,13 @@ namespace tribodyn
     {
       std::vector<MaterialParameters> list;
       const std::vector<std::string>  names = material_names(prm);
-      prm.enter_subsection("Materials");
       for (const auto &name : names)
         {
-          const std::string section = material_subsection(name);
-          prm.enter_subsection(section);
           list.push_back(material_defaults(name));
-          list.back().parse_parameters(prm, "Materials/" + section);
-          prm.leave_subsection();
+          list.back().parse_parameters(prm,
+                                       "Materials/"
+                                         + material_subsection(name));
         }
-      prm.leave_subsection();
       return list;
     }
   } // namespace mca

@@ -110,13 +110,6 @@ namespace tribodyn
         return s;
       }
 
-      /// Subsection Geometry/Inclusions (inclusion_packing.cc).
-      void
-      declare_inclusion_parameters(dealii::ParameterHandler &prm);
-      void
-      parse_inclusion_parameters(dealii::ParameterHandler       &prm,
-                                 const std::vector<std::string> &names,
-                                 InclusionPackingParameters     &p);
     } // namespace parameter_tools
   }   // namespace mca
 } // namespace tribodyn

@@ -42,49 +42,67 @@ namespace tribodyn
 
 
     // ------------------------------------------------------------------
+    ParameterBinding
+    InteractionParameters::binding()
+    {
+      ParameterBinding b("Interaction");
+      b.add("Rotations",
+            rotations,
+            "Integrate the rotation of automata (Euler's equation). Without "
+            "rotations the tangential increments use translations only.");
+      b.add("Plasticity",
+            plasticity,
+            "Von Mises plasticity (Wilkins radial return adapted to MCA) for "
+            "materials whose Hardening is not 'elastic'. Skipped when every "
+            "material is elastic.");
+      b.add("Skin",
+            skin,
+            "Pair-list skin as a fraction of the automaton size: the list "
+            "holds pairs closer than (d_i + d_j)/2 + skin d and is rebuilt "
+            "when an automaton has moved more than skin d / 2. In (0, 1].",
+            Double(),
+            Interval{0, 1, true, false});
+      b.add("Elastic regions",
+            "",
+            "Boxes 'x0 y0 z0 x1 y1 z1' (m), separated by ';', whose automata "
+            "(by their initial positions, with periodic images) are declared "
+            "elastic: they skip the plastic return, and their pairs with "
+            "other elastic automata skip the bond breaking and formation "
+            "checks. For the parts of a scene far from the friction zone "
+            "(the seed's bases), where nothing yields or breaks: they then "
+            "cost what an elastic block costs. Empty: none.",
+            Patterns::Anything(),
+            [this, where = b.path("Elastic regions")](const std::string &text) {
+              elastic_regions.clear();
+              for (const std::string &entry : split(text, ';'))
+                {
+                  const auto t = tokens(entry);
+                  if (t.size() != 6)
+                    throw InputError(
+                      "Parameter '" + where + "': the entry '" + entry
+                      + "' must read 'x0 y0 z0 x1 y1 z1' (a box, "
+                        "m).");
+                  Region r;
+                  r.shape = Region::Shape::box;
+                  r.a     = read_point(t, 0, where, entry);
+                  r.b     = read_point(t, 3, where, entry);
+                  elastic_regions.push_back(r);
+                }
+            });
+      return b;
+    }
+
+
     void
     InteractionParameters::declare_parameters(ParameterHandler &prm)
     {
+      InteractionParameters().binding().declare(prm);
+      // the pair-law policies' own entries (pair_law.h)
       prm.enter_subsection("Interaction");
-      {
-        prm.declare_entry("Rotations",
-                          "true",
-                          Bool(),
-                          "Integrate the rotation of automata (Euler's "
-                          "equation). Without rotations the tangential "
-                          "increments use translations only.");
-        prm.declare_entry("Plasticity",
-                          "true",
-                          Bool(),
-                          "Von Mises plasticity (Wilkins radial return "
-                          "adapted to MCA) for materials whose Hardening "
-                          "is not 'elastic'. Skipped when every material "
-                          "is elastic.");
-        // the pair-law policies' own entries (pair_law.h)
-        FrictionLaws::Parameters::declare_parameters(prm);
-        MomentLaws::Parameters::declare_parameters(prm);
-        BondBreakingLaws::Parameters::declare_parameters(prm);
-        BondFormationLaws::Parameters::declare_parameters(prm);
-        prm.declare_entry("Skin",
-                          "0.2",
-                          Double(),
-                          "Pair-list skin as a fraction of the automaton "
-                          "size: the list holds pairs closer than "
-                          "(d_i + d_j)/2 + skin d and is rebuilt when an "
-                          "automaton has moved more than skin d / 2. In "
-                          "(0, 1].");
-        prm.declare_entry(
-          "Elastic regions",
-          "",
-          Patterns::Anything(),
-          "Boxes 'x0 y0 z0 x1 y1 z1' (m), separated by ';', whose automata "
-          "(by their initial positions, with periodic images) are declared "
-          "elastic: they skip the plastic return, and their pairs with "
-          "other elastic automata skip the bond breaking and formation "
-          "checks. For the parts of a scene far from the friction zone "
-          "(the seed's bases), where nothing yields or breaks: they then "
-          "cost what an elastic block costs. Empty: none.");
-      }
+      FrictionLaws::Parameters::declare_parameters(prm);
+      MomentLaws::Parameters::declare_parameters(prm);
+      BondBreakingLaws::Parameters::declare_parameters(prm);
+      BondFormationLaws::Parameters::declare_parameters(prm);
       prm.leave_subsection();
     }
 
@@ -92,31 +110,12 @@ namespace tribodyn
     void
     InteractionParameters::parse_parameters(ParameterHandler &prm)
     {
+      binding().parse(prm);
       prm.enter_subsection("Interaction");
-      {
-        rotations  = prm.get_bool("Rotations");
-        plasticity = prm.get_bool("Plasticity");
-        friction.parse_parameters(prm);
-        moment.parse_parameters(prm);
-        bond_breaking.parse_parameters(prm);
-        bond_formation.parse_parameters(prm);
-        skin = prm.get_double("Skin");
-        elastic_regions.clear();
-        for (const std::string &entry : split(prm.get("Elastic regions"), ';'))
-          {
-            const auto t = tokens(entry);
-            if (t.size() != 6)
-              throw InputError(
-                "Parameter 'Interaction/Elastic regions': the entry '" + entry
-                + "' must read 'x0 y0 z0 x1 y1 z1' (a box, m).");
-            Region r;
-            r.shape = Region::Shape::box;
-            r.a     = read_point(t, 0, "Interaction/Elastic regions", entry);
-            r.b     = read_point(t, 3, "Interaction/Elastic regions", entry);
-            elastic_regions.push_back(r);
-          }
-        check_parameter_range("Interaction/Skin", skin, 0, 1, true, false);
-      }
+      friction.parse_parameters(prm);
+      moment.parse_parameters(prm);
+      bond_breaking.parse_parameters(prm);
+      bond_formation.parse_parameters(prm);
       prm.leave_subsection();
     }
 
@@ -183,112 +182,83 @@ namespace tribodyn
 
 
     // ------------------------------------------------------------------
+    ParameterBinding
+    AnalysisParameters::binding()
+    {
+      ParameterBinding b("Analysis");
+      b.add("Type",
+            type,
+            "Headline figures: uniaxial (E, nu, sigma_y and hardening slope "
+            "from the reaction of the loaded group and the lateral "
+            "contraction), pulse (wave speed from the arrival times at two "
+            "probe planes), friction (mu = tangential / normal force on the "
+            "loaded group).",
+            analysis_table);
+      b.add("Axis",
+            axis,
+            "Loading axis (uniaxial), propagation axis (pulse), normal axis "
+            "(friction).",
+            axis_table);
+      b.add("Loaded group", loaded_group, "Name of the loaded boundary group.");
+      b.add("Support group",
+            support_group,
+            "Name of the supporting boundary group.");
+      b.add("Elastic fit fraction",
+            elastic_fit_fraction,
+            "uniaxial: E and nu are fitted on stresses below this fraction of "
+            "the first yield, in (0, 1).",
+            Double(),
+            Interval{0, 1, true, true});
+      b.add("Probe 1",
+            probe_1,
+            "pulse: coordinate of the first probe plane (m).");
+      b.add("Probe 2",
+            probe_2,
+            "pulse: coordinate of the second probe plane (m).");
+      b.add("Averaging start",
+            averaging_start,
+            "friction: the mean mu is taken from this time on (s).");
+      b.add("Smoothing window",
+            smoothing_window,
+            "friction: width of the centred moving average of mu giving "
+            "mu_smoothed (s); 0 = a tenth of the End time.",
+            Double(0));
+      b.add("Steady band",
+            steady_band,
+            "friction: the quasi-steady regime starts when the smoothed mu "
+            "stays within this fraction of its later mean for the rest of the "
+            "run (and for at least a fifth of it); its mu is block-averaged "
+            "from there, with a standard error.",
+            Double(0, 1));
+      b.add("Layer bin width",
+            layer_bin_width,
+            "friction: bin width along the normal axis of the quasi-fluid "
+            "layer profile (unbonded contacts per automaton and plastic "
+            "strain against z, written to layer.csv at every series sample) "
+            "(m); 0 = the automaton size.",
+            Double(0));
+      b.add("Layer threshold",
+            layer_threshold,
+            "friction: the quasi-fluid layer is the z-range around the peak "
+            "of the profile where it exceeds this fraction of the peak (0.5: "
+            "full width at half maximum).",
+            Double(0, 1),
+            Interval{0, 1, true, false});
+      return b;
+    }
+
+
     void
     AnalysisParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Analysis");
-      {
-        prm.declare_entry(
-          "Type",
-          "none",
-          selection_pattern(analysis_table),
-          "Headline figures: uniaxial (E, nu, sigma_y and hardening slope "
-          "from the reaction of the loaded group and the lateral "
-          "contraction), pulse (wave speed from the arrival times at two "
-          "probe planes), friction (mu = tangential / normal force on the "
-          "loaded group).");
-        prm.declare_entry("Axis",
-                          "z",
-                          selection_pattern(axis_table),
-                          "Loading axis (uniaxial), propagation axis "
-                          "(pulse), normal axis (friction).");
-        prm.declare_entry("Loaded group",
-                          "top",
-                          Patterns::Anything(),
-                          "Name of the loaded boundary group.");
-        prm.declare_entry("Support group",
-                          "bottom",
-                          Patterns::Anything(),
-                          "Name of the supporting boundary group.");
-        prm.declare_entry("Elastic fit fraction",
-                          "0.5",
-                          Double(),
-                          "uniaxial: E and nu are fitted on stresses below "
-                          "this fraction of the first yield, in (0, 1).");
-        prm.declare_entry("Probe 1",
-                          "0",
-                          Double(),
-                          "pulse: coordinate of the first probe plane (m).");
-        prm.declare_entry("Probe 2",
-                          "0",
-                          Double(),
-                          "pulse: coordinate of the second probe plane (m).");
-        prm.declare_entry("Averaging start",
-                          "0",
-                          Double(),
-                          "friction: the mean mu is taken from this time "
-                          "on (s).");
-        prm.declare_entry(
-          "Smoothing window",
-          "0",
-          Double(0),
-          "friction: width of the centred moving average of mu giving "
-          "mu_smoothed (s); 0 = a tenth of the End time.");
-        prm.declare_entry(
-          "Steady band",
-          "0.05",
-          Double(0, 1),
-          "friction: the quasi-steady regime starts when the smoothed mu stays "
-          "within this fraction of its later mean for the rest of the run "
-          "(and for at least a fifth of it); its mu is block-averaged from "
-          "there, with a standard error.");
-        prm.declare_entry(
-          "Layer bin width",
-          "0",
-          Double(0),
-          "friction: bin width along the normal axis of the quasi-fluid "
-          "layer profile (unbonded contacts per automaton and plastic "
-          "strain against z, written to layer.csv at every series sample) "
-          "(m); 0 = the automaton size.");
-        prm.declare_entry(
-          "Layer threshold",
-          "0.5",
-          Double(0, 1),
-          "friction: the quasi-fluid layer is the z-range around the peak "
-          "of the profile where it exceeds this fraction of the peak (0.5: "
-          "full width at half maximum).");
-      }
-      prm.leave_subsection();
+      AnalysisParameters().binding().declare(prm);
     }
 
 
     void
     AnalysisParameters::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Analysis");
-      {
-        type                 = get_selection(prm, "Type", analysis_table);
-        axis                 = get_selection(prm, "Axis", axis_table);
-        loaded_group         = prm.get("Loaded group");
-        support_group        = prm.get("Support group");
-        elastic_fit_fraction = prm.get_double("Elastic fit fraction");
-        probe_1              = prm.get_double("Probe 1");
-        probe_2              = prm.get_double("Probe 2");
-        averaging_start      = prm.get_double("Averaging start");
-        smoothing_window     = prm.get_double("Smoothing window");
-        steady_band          = prm.get_double("Steady band");
-        layer_bin_width      = prm.get_double("Layer bin width");
-        layer_threshold      = prm.get_double("Layer threshold");
-        check_parameter_range(
-          "Analysis/Layer threshold", layer_threshold, 0, 1, true, false);
-        check_parameter_range("Analysis/Elastic fit fraction",
-                              elastic_fit_fraction,
-                              0,
-                              1,
-                              true,
-                              true);
-      }
-      prm.leave_subsection();
+      binding().parse(prm);
     }
 
 

@@ -6,6 +6,7 @@
 #include <set>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/study/mca_study.h>
 #include <vector>
 
@@ -78,106 +79,119 @@ namespace tribodyn
     } // namespace
 
 
-    void
-    McaStudyParameters::declare_parameters(ParameterHandler &prm)
+    ParameterBinding
+    McaStudyParameters::time_binding()
     {
-      prm.enter_subsection("Time");
-      prm.declare_entry("End time",
-                        "0",
-                        Patterns::Double(0.),
-                        "Simulated time of every scene (s), replacing the "
-                        "base files' 'Time/End time'; 0 keeps each base's "
-                        "own. Raising it later continues the finished "
-                        "scenes from their last checkpoint (runs in legs).");
-      prm.leave_subsection();
+      ParameterBinding b("Time");
+      b.add("End time",
+            end_time,
+            "Simulated time of every scene (s), replacing the base files' "
+            "'Time/End time'; 0 keeps each base's own. Raising it later "
+            "continues the finished scenes from their last checkpoint (runs "
+            "in legs).",
+            Patterns::Double(0.));
+      return b;
+    }
 
-      prm.enter_subsection("Study");
-      prm.declare_entry(
-        "Bases",
-        "steel: ../mca/friction_steel.prm, composite: "
-        "../mca/friction_composite.prm",
-        Patterns::Anything(),
-        "The base scenes, 'name: file' separated by commas: parameter "
-        "files of 'set Problem = mca' (their Output directory is replaced "
-        "by the scene's). Relative paths are relative to the directory of "
-        "the study's parameter file. Names are letters, digits, '-' and "
-        "'_'.");
-      prm.declare_entry("Reference base",
-                        "",
-                        Patterns::Anything(),
-                        "The base the others are compared with, scene by "
-                        "scene on the same seeds and factor levels: "
-                        "(mu_base - mu_reference) / mu_reference. Empty: "
-                        "the first base.");
-      prm.declare_entry("Roughness seeds",
-                        "1",
-                        Patterns::Anything(),
-                        "Comma-separated seeds of the rough interface "
-                        "(Geometry/Rough interface/Seed): every base runs "
-                        "on each, and the differences are paired per seed. "
-                        "Add seeds until the mean difference's standard "
-                        "error is small enough.");
-      prm.declare_entry("Inclusion seeds",
-                        "",
-                        Patterns::Anything(),
-                        "Comma-separated seeds of the inclusions "
-                        "(Geometry/Inclusions/Seed), one per roughness "
-                        "seed, paired with it; empty: each equal to its "
-                        "roughness seed.");
-      prm.declare_entry(
-        "Factors",
-        "",
-        Patterns::Anything(),
-        "Further factors, 'Subsection/Name = value, value, ...' separated "
-        "by ';' (any parameter of the scenes by its path, e.g. 'Friction "
-        "loading/Pressure = 150e6, 300e6, 600e6'): the scenes are the "
-        "bases x seeds x every combination of the factors' values.");
-      prm.declare_entry("Settings",
-                        "",
-                        Patterns::Anything(),
-                        "'Subsection/Name = value' separated by ';', set in "
-                        "every scene (e.g. 'Output/Write particles = "
-                        "false').");
-      prm.declare_entry("Checkpoint interval",
-                        "1e-9",
-                        Patterns::Double(0.),
-                        "Simulated time between two checkpoints of a scene "
-                        "(s), replacing the bases' 'Checkpoint/Interval': a "
-                        "study killed at any moment loses at most this much "
-                        "of each running scene. 0 keeps the bases' own.");
-      prm.declare_entry("Ranks per scene",
-                        "1",
-                        Patterns::Integer(1),
-                        "MPI ranks of each scene: the ranks form groups of "
-                        "this many (the remainder joins the last group), "
-                        "and the groups run scenes side by side.");
-      prm.declare_entry("Plot script",
-                        "auto",
-                        Patterns::Anything(),
-                        "Python script making the plots at the end: 'auto' "
-                        "looks for scripts/plot_mca_study next to the build "
-                        "directory (skipped when python3 or matplotlib is "
-                        "missing), 'none' makes no plots, or a path.");
-      prm.leave_subsection();
+
+    ParameterBinding
+    McaStudyParameters::study_binding(const std::string &directory)
+    {
+      ParameterBinding b("Study");
+      b.add("Bases",
+            "steel: ../mca/friction_steel.prm, composite: "
+            "../mca/friction_composite.prm",
+            "The base scenes, 'name: file' separated by commas: parameter "
+            "files of 'set Problem = mca' (their Output directory is replaced "
+            "by the scene's). Relative paths are relative to the directory of "
+            "the study's parameter file. Names are letters, digits, '-' and "
+            "'_'.",
+            Patterns::Anything(),
+            [this, directory](const std::string &text) {
+              read_bases(text, directory);
+            });
+      b.add("Reference base",
+            reference,
+            "The base the others are compared with, scene by scene on the "
+            "same seeds and factor levels: (mu_base - mu_reference) / "
+            "mu_reference. Empty: the first base.");
+      b.add("Roughness seeds",
+            "1",
+            "Comma-separated seeds of the rough interface (Geometry/Rough "
+            "interface/Seed): every base runs on each, and the differences "
+            "are paired per seed. Add seeds until the mean difference's "
+            "standard error is small enough.",
+            Patterns::Anything(),
+            [this, where = b.path("Roughness seeds")](const std::string &text) {
+              roughness_seeds = seed_list(text, where);
+            });
+      b.add("Inclusion seeds",
+            "",
+            "Comma-separated seeds of the inclusions "
+            "(Geometry/Inclusions/Seed), one per roughness seed, paired with "
+            "it; empty: each equal to its roughness seed.",
+            Patterns::Anything(),
+            [this, where = b.path("Inclusion seeds")](const std::string &text) {
+              inclusion_seeds = seed_list(text, where);
+            });
+      b.add("Factors",
+            "",
+            "Further factors, 'Subsection/Name = value, value, ...' "
+            "separated by ';' (any parameter of the scenes by its path, e.g. "
+            "'Friction loading/Pressure = 150e6, 300e6, 600e6'): the scenes "
+            "are the bases x seeds x every combination of the factors' "
+            "values.",
+            Patterns::Anything(),
+            [this, where = b.path("Factors")](const std::string &text) {
+              read_factors(text, where);
+            });
+      b.add("Settings",
+            "",
+            "'Subsection/Name = value' separated by ';', set in every scene "
+            "(e.g. 'Output/Write particles = false').",
+            Patterns::Anything(),
+            [this, where = b.path("Settings")](const std::string &text) {
+              settings = path_assignments(text, where);
+            });
+      b.add("Checkpoint interval",
+            checkpoint_interval,
+            "Simulated time between two checkpoints of a scene (s), replacing "
+            "the bases' 'Checkpoint/Interval': a study killed at any moment "
+            "loses at most this much of each running scene. 0 keeps the "
+            "bases' own.",
+            Patterns::Double(0.));
+      b.add("Ranks per scene",
+            ranks_per_scene,
+            "MPI ranks of each scene: the ranks form groups of this many (the "
+            "remainder joins the last group), and the groups run scenes side "
+            "by side.",
+            Patterns::Integer(1));
+      b.add("Plot script",
+            plot_script,
+            "Python script making the plots at the end: 'auto' looks for "
+            "scripts/plot_mca_study next to the build directory (skipped when "
+            "python3 or matplotlib is missing), 'none' makes no plots, or a "
+            "path.");
+      return b;
     }
 
 
     void
-    McaStudyParameters::parse_parameters(ParameterHandler  &prm,
-                                         const std::string &study_file)
+    McaStudyParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Time");
-      end_time = prm.get_double("End time");
-      prm.leave_subsection();
+      McaStudyParameters defaults;
+      defaults.time_binding().declare(prm);
+      defaults.study_binding(".").declare(prm);
+    }
 
-      prm.enter_subsection("Study");
-      const std::string directory
-        = study_file.find('/') == std::string::npos
-            ? std::string(".")
-            : study_file.substr(0, study_file.find_last_of('/'));
+
+    void
+    McaStudyParameters::read_bases(const std::string &text,
+                                   const std::string &directory)
+    {
       bases.clear();
       for (const std::string &item :
-           dealii::Utilities::split_string_list(prm.get("Bases"), ','))
+           dealii::Utilities::split_string_list(text, ','))
         {
           const auto  colon = item.find(':');
           Base        base;
@@ -216,42 +230,15 @@ namespace tribodyn
       if (bases.empty())
         throw InputError("'Study/Bases' is empty: name at least one base "
                          "scene, e.g. 'steel: ../mca/friction_steel.prm'.");
-      reference = trim(prm.get("Reference base"));
-      if (reference.empty())
-        reference = bases.front().name;
-      if (std::none_of(bases.begin(), bases.end(), [&](const Base &b) {
-            return b.name == reference;
-          }))
-        throw InputError("'Study/Reference base' = '" + reference
-                         + "' is not one of the bases named in "
-                           "'Study/Bases'. Give one of their names, or "
-                           "leave it empty for the first.");
+    }
 
-      roughness_seeds
-        = seed_list(prm.get("Roughness seeds"), "Study/Roughness seeds");
-      if (roughness_seeds.empty())
-        throw InputError("'Study/Roughness seeds' is empty: give at least "
-                         "one seed, e.g. '1, 2, 3, 4'.");
-      if (std::set<unsigned int>(roughness_seeds.begin(), roughness_seeds.end())
-            .size()
-          != roughness_seeds.size())
-        throw InputError("'Study/Roughness seeds' names a seed twice: each "
-                         "seed is one pairing of the bases; list it once.");
-      inclusion_seeds
-        = seed_list(prm.get("Inclusion seeds"), "Study/Inclusion seeds");
-      if (inclusion_seeds.empty())
-        inclusion_seeds = roughness_seeds;
-      if (inclusion_seeds.size() != roughness_seeds.size())
-        throw InputError("'Study/Inclusion seeds' has "
-                         + std::to_string(inclusion_seeds.size())
-                         + " seeds, 'Study/Roughness seeds' "
-                         + std::to_string(roughness_seeds.size())
-                         + ": give one inclusion seed per roughness seed, or "
-                           "none (then each equals its roughness seed).");
 
+    void
+    McaStudyParameters::read_factors(const std::string &text,
+                                     const std::string &where)
+    {
       factors.clear();
-      for (const auto &[path, values] :
-           path_assignments(prm.get("Factors"), "Study/Factors"))
+      for (const auto &[path, values] : path_assignments(text, where))
         {
           if (path == McaStudyParameters::roughness_seed_path
               || path == McaStudyParameters::inclusion_seed_path)
@@ -279,11 +266,48 @@ namespace tribodyn
                                + "' twice. List all its values once.");
           factors.push_back(f);
         }
-      settings = path_assignments(prm.get("Settings"), "Study/Settings");
-      checkpoint_interval = prm.get_double("Checkpoint interval");
-      ranks_per_scene     = prm.get_integer("Ranks per scene");
-      plot_script         = prm.get("Plot script");
-      prm.leave_subsection();
+    }
+
+
+    void
+    McaStudyParameters::parse_parameters(ParameterHandler  &prm,
+                                         const std::string &study_file)
+    {
+      time_binding().parse(prm);
+      const std::string directory
+        = study_file.find('/') == std::string::npos
+            ? std::string(".")
+            : study_file.substr(0, study_file.find_last_of('/'));
+      study_binding(directory).parse(prm);
+
+      // What relates two entries.
+      reference = trim(reference);
+      if (reference.empty())
+        reference = bases.front().name;
+      if (std::none_of(bases.begin(), bases.end(), [&](const Base &b) {
+            return b.name == reference;
+          }))
+        throw InputError("'Study/Reference base' = '" + reference
+                         + "' is not one of the bases named in "
+                           "'Study/Bases'. Give one of their names, or "
+                           "leave it empty for the first.");
+      if (roughness_seeds.empty())
+        throw InputError("'Study/Roughness seeds' is empty: give at least "
+                         "one seed, e.g. '1, 2, 3, 4'.");
+      if (std::set<unsigned int>(roughness_seeds.begin(), roughness_seeds.end())
+            .size()
+          != roughness_seeds.size())
+        throw InputError("'Study/Roughness seeds' names a seed twice: each "
+                         "seed is one pairing of the bases; list it once.");
+      if (inclusion_seeds.empty())
+        inclusion_seeds = roughness_seeds;
+      if (inclusion_seeds.size() != roughness_seeds.size())
+        throw InputError("'Study/Inclusion seeds' has "
+                         + std::to_string(inclusion_seeds.size())
+                         + " seeds, 'Study/Roughness seeds' "
+                         + std::to_string(roughness_seeds.size())
+                         + ": give one inclusion seed per roughness seed, or "
+                           "none (then each equals its roughness seed).");
     }
   } // namespace study
 } // namespace tribodyn

@@ -1,6 +1,7 @@
 #ifndef tribodyn_core_parameter_binding_h
 #define tribodyn_core_parameter_binding_h
 
+#include <cstdint>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/patterns.h>
 #include <functional>
@@ -76,6 +77,13 @@ namespace tribodyn
     ParameterBinding &
     add(const std::string                   &name,
         unsigned int                        &value,
+        const std::string                   &documentation,
+        const dealii::Patterns::PatternBase &pattern);
+
+    /// A whole number of 64 bits (a seed).
+    ParameterBinding &
+    add(const std::string                   &name,
+        std::uint64_t                       &value,
         const std::string                   &documentation,
         const dealii::Patterns::PatternBase &pattern);
 

@@ -54,9 +54,11 @@ namespace tribodyn
       /// Energy per unit volume of a pair (S_ij r_ij) to break a bond.
       double bond_energy_density = 3.5e6;
 
-      static void
-      declare_parameters(dealii::ParameterHandler &prm,
-                         const MaterialParameters &defaults);
+      /// The entries of subsection @p section ("Materials/Steel"), bound to
+      /// these members (their values the defaults: steel's, carbon's).
+      ParameterBinding
+      binding(const std::string &section);
+      /// Parse subsection @p section (from the top level) into these.
       void
       parse_parameters(dealii::ParameterHandler &prm,
                        const std::string        &section);
@@ -151,6 +153,15 @@ namespace tribodyn
       double        void_fraction   = 0;
       double        gap             = 0;
       std::uint64_t seed            = 1;
+
+      /// The entries of "Geometry/Inclusions" (@p names: the materials,
+      /// for 'Material'; none are needed to declare).
+      ParameterBinding
+      binding(const std::vector<std::string> &names = {});
+      /// Parse them (from the top level).
+      void
+      parse_parameters(dealii::ParameterHandler       &prm,
+                       const std::vector<std::string> &names);
     };
 
 
@@ -325,6 +336,9 @@ namespace tribodyn
       /// bond switching between two of them).
       std::vector<Region> elastic_regions;
 
+      /// Its own entries (those of the pair laws are the laws').
+      ParameterBinding
+      binding();
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
@@ -411,10 +425,17 @@ namespace tribodyn
       /// Viscous damping of every automaton, F = -c m v (1/s).
       double global_damping = 0;
 
+      ParameterBinding
+      binding();
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
       parse_parameters(dealii::ParameterHandler &prm);
+
+    private:
+      /// Read 'Groups' (@p text; @p p its path, for messages).
+      void
+      parse_groups(const std::string &text, const std::string &p);
     };
 
 
@@ -515,6 +536,8 @@ namespace tribodyn
       /// its peak (0.5: full width at half maximum).
       double layer_threshold = 0.5;
 
+      ParameterBinding
+      binding();
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void

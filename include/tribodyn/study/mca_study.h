@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <string>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/problem.h>
 #include <utility>
 #include <vector>
@@ -54,6 +55,14 @@ namespace tribodyn
       unsigned int ranks_per_scene     = 1;
       std::string  plot_script         = "auto";
 
+      /// The study-wide 'Time/End time'.
+      ParameterBinding
+      time_binding();
+      /// The entries of "Study"; relative base files are read from
+      /// @p directory (that of the study's parameter file).
+      ParameterBinding
+      study_binding(const std::string &directory);
+
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       /// @p study_file: the study's parameter file, whose directory
@@ -61,6 +70,12 @@ namespace tribodyn
       void
       parse_parameters(dealii::ParameterHandler &prm,
                        const std::string        &study_file);
+
+    private:
+      void
+      read_bases(const std::string &text, const std::string &directory);
+      void
+      read_factors(const std::string &text, const std::string &where);
     };
 
 
