@@ -157,9 +157,7 @@ namespace tribodyn
   MorphologyParameters::declare_parameters(dealii::ParameterHandler &prm)
   {
     MorphologyParameters().binding().declare(prm);
-    prm.enter_subsection("Morphology");
     ImageParameters::declare_parameters(prm);
-    prm.leave_subsection();
   }
 
 
@@ -170,11 +168,7 @@ namespace tribodyn
     const ParameterBinding b   = binding();
     b.parse(prm);
     if (generator == Generator::image)
-      {
-        prm.enter_subsection("Morphology");
-        image.parse_parameters(prm);
-        prm.leave_subsection();
-      }
+      image.parse_parameters(prm);
 
     // Width and Height stay checked here, not by ranges of the binding:
     // their checks come after the image's (as the refusals always have).
