@@ -5,9 +5,12 @@
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <fstream>
+#include <string>
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/selection.h>
+#include <vector>
 
 namespace tribodyn
 {
@@ -35,74 +38,114 @@ namespace tribodyn
     using dealii::Patterns::List;
     using dealii::Patterns::Selection;
 
+    ParameterBinding
+    ContactMaterialParameters::binding()
+    {
+      ParameterBinding b("Materials");
+      b.add("Type",
+            type,
+            "Constitutive model of the pin. 'isotropic': subsection "
+            "Isotropic. 'anisotropic': the plane-strain stiffness of "
+            "subsection Anisotropic. 'engineering constants': transversely "
+            "isotropic with axis L = x (subsection Engineering constants, "
+            "defaults = seed Table 1 homogenized values). 'homogenization "
+            "summary': the apparent stiffness C of a homogenization run's "
+            "summary.json. 'morphology': a heterogeneous (meso) pin from "
+            "subsection Morphology with the phases of subsections Matrix and "
+            "Heterogeneity.",
+            type_choices);
+      b.add("Kinematics",
+            kinematics,
+            "'small strain': linear elasticity. 'large deformation': total "
+            "Lagrangian, St Venant-Kirchhoff (S = C:E with the Green-Lagrange "
+            "strain E).",
+            kinematics_choices);
+      b.add("Density",
+            density,
+            "Density (kg/m^3) of the homogeneous anisotropic materials (types "
+            "anisotropic, engineering constants, homogenization summary).",
+            Double(),
+            Interval{0, 1e6, true, false});
+      return b;
+    }
+
+
+    std::vector<ParameterBinding>
+    ContactMaterialParameters::subsection_bindings()
+    {
+      // Numbers read as ParameterHandler::get_double() reads them, for the
+      // defaults the reference spells as exact_number() would not (31.9e9,
+      // not 3.19e10): the text beside the member, equal to its initializer.
+      const auto number = [](double &value) {
+        return [&value](const std::string &text) {
+          value = dealii::Utilities::string_to_double(text);
+        };
+      };
+
+      ParameterBinding anisotropic("Materials/Anisotropic");
+      anisotropic.add(
+        "Stiffness",
+        "33.33e9, 8.33e9, 0, 8.33e9, 33.33e9, 0, 0, 0, 12.5e9",
+        "Plane-strain stiffness C (Pa), 9 numbers row by row, Voigt order "
+        "(xx, yy, xy) with the engineering shear strain: sigma = C (eps_xx, "
+        "eps_yy, gamma_xy).",
+        List(Double(), 9, 9, ","),
+        [this, path = anisotropic.path("Stiffness")](const std::string &text) {
+          const auto c = internal::parse_numbers(text, 9, path);
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              anisotropic_stiffness[i][j] = c[3 * i + j];
+        });
+      anisotropic.add(
+        "Out-of-plane stiffness",
+        "8.33e9, 8.33e9, 0",
+        "Row c_z with sigma_zz = c_z . (eps_xx, eps_yy, gamma_xy) (Pa); used "
+        "only for the von Mises output.",
+        List(Double(), 3, 3, ","),
+        [this, path = anisotropic.path("Out-of-plane stiffness")](
+          const std::string &text) {
+          const auto z = internal::parse_numbers(text, 3, path);
+          for (unsigned int i = 0; i < 3; ++i)
+            anisotropic_c_z[i] = z[i];
+        });
+
+      ParameterBinding constants("Materials/Engineering constants");
+      constants.add(
+        "E_L", "31.9e9", "Young modulus along x (Pa).", Double(), number(E_L));
+      constants.add(
+        "E_T", "34e9", "Young modulus along y, z (Pa).", Double(), number(E_T));
+      constants.add("nu_LT", nu_LT, "Poisson ratio nu_LT.");
+      constants.add("nu_TT", nu_TT, "Poisson ratio nu_TT'.");
+      constants.add(
+        "G_LT", "13.3e9", "Shear modulus G_LT (Pa).", Double(), number(G_LT));
+
+      ParameterBinding summary("Materials/Homogenization summary");
+      summary.add("File",
+                  summary_file,
+                  "summary.json written by a 'set Problem = homogenization' "
+                  "run.");
+      summary.add("Boundary condition",
+                  summary_key,
+                  "Which apparent stiffness of the file to use.",
+                  Selection("KUBC|SUBC|periodic"));
+
+      return {anisotropic, constants, summary};
+    }
+
+
     void
     ContactMaterialParameters::declare_parameters(ParameterHandler &prm)
     {
+      ContactMaterialParameters p;
+      p.binding().declare(prm);
       prm.enter_subsection("Materials");
-      prm.declare_entry(
-        "Type",
-        "isotropic",
-        selection_pattern(type_choices),
-        "Constitutive model of the pin. 'isotropic': subsection Isotropic. "
-        "'anisotropic': the plane-strain stiffness of subsection "
-        "Anisotropic. 'engineering constants': transversely isotropic with "
-        "axis L = x (subsection Engineering constants, defaults = seed "
-        "Table 1 homogenized values). 'homogenization summary': the apparent "
-        "stiffness C of a homogenization run's summary.json. 'morphology': a "
-        "heterogeneous (meso) pin from subsection Morphology with the phases "
-        "of subsections Matrix and Heterogeneity.");
-      prm.declare_entry("Kinematics",
-                        "small strain",
-                        selection_pattern(kinematics_choices),
-                        "'small strain': linear elasticity. 'large "
-                        "deformation': total Lagrangian, St Venant-Kirchhoff "
-                        "(S = C:E with the Green-Lagrange strain E).");
-      prm.declare_entry("Density",
-                        "1770",
-                        Double(),
-                        "Density (kg/m^3) of the homogeneous anisotropic "
-                        "materials (types anisotropic, engineering constants, "
-                        "homogenization summary).");
       prm.enter_subsection("Isotropic");
       IsotropicElasticMaterial::declare_parameters(prm, 30e9, 0.2, 1770.);
       prm.leave_subsection();
-      prm.enter_subsection("Anisotropic");
-      prm.declare_entry("Stiffness",
-                        "33.33e9, 8.33e9, 0, 8.33e9, 33.33e9, 0, 0, 0, 12.5e9",
-                        List(Double(), 9, 9, ","),
-                        "Plane-strain stiffness C (Pa), 9 numbers row by row, "
-                        "Voigt order (xx, yy, xy) with the engineering shear "
-                        "strain: sigma = C (eps_xx, eps_yy, gamma_xy).");
-      prm.declare_entry("Out-of-plane stiffness",
-                        "8.33e9, 8.33e9, 0",
-                        List(Double(), 3, 3, ","),
-                        "Row c_z with sigma_zz = c_z . (eps_xx, eps_yy, "
-                        "gamma_xy) (Pa); used only for the von Mises output.");
       prm.leave_subsection();
-      prm.enter_subsection("Engineering constants");
-      prm.declare_entry("E_L",
-                        "31.9e9",
-                        Double(),
-                        "Young modulus along x (Pa).");
-      prm.declare_entry("E_T",
-                        "34e9",
-                        Double(),
-                        "Young modulus along y, z (Pa).");
-      prm.declare_entry("nu_LT", "0.2", Double(), "Poisson ratio nu_LT.");
-      prm.declare_entry("nu_TT", "0.2", Double(), "Poisson ratio nu_TT'.");
-      prm.declare_entry("G_LT", "13.3e9", Double(), "Shear modulus G_LT (Pa).");
-      prm.leave_subsection();
-      prm.enter_subsection("Homogenization summary");
-      prm.declare_entry("File",
-                        "",
-                        dealii::Patterns::Anything(),
-                        "summary.json written by a 'set Problem = "
-                        "homogenization' run.");
-      prm.declare_entry("Boundary condition",
-                        "KUBC",
-                        Selection("KUBC|SUBC|periodic"),
-                        "Which apparent stiffness of the file to use.");
-      prm.leave_subsection();
+      for (const ParameterBinding &b : p.subsection_bindings())
+        b.declare(prm);
+      prm.enter_subsection("Materials");
       TwoPhaseMaterials::declare_parameters(prm);
       prm.leave_subsection();
     }
@@ -111,58 +154,38 @@ namespace tribodyn
     void
     ContactMaterialParameters::parse_parameters(ParameterHandler &prm)
     {
+      const ParameterBinding b = binding();
+      b.parse(prm);
       prm.enter_subsection("Materials");
-      type       = get_selection(prm, "Type", type_choices);
-      kinematics = get_selection(prm, "Kinematics", kinematics_choices);
-      density    = prm.get_double("Density");
-      check_parameter_range("Materials/Density", density, 0, 1e6, true, false);
       prm.enter_subsection("Isotropic");
       isotropic.parse_parameters(prm, "Materials/Isotropic");
       prm.leave_subsection();
-      prm.enter_subsection("Anisotropic");
-      {
-        const auto c
-          = internal::parse_numbers(prm.get("Stiffness"),
-                                    9,
-                                    "Materials/Anisotropic/Stiffness");
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = 0; j < 3; ++j)
-            anisotropic_stiffness[i][j] = c[3 * i + j];
-        const auto z
-          = internal::parse_numbers(prm.get("Out-of-plane stiffness"),
-                                    3,
-                                    "Materials/Anisotropic/Out-of-plane "
-                                    "stiffness");
-        for (unsigned int i = 0; i < 3; ++i)
-          anisotropic_c_z[i] = z[i];
-      }
       prm.leave_subsection();
-      prm.enter_subsection("Engineering constants");
-      E_L   = prm.get_double("E_L");
-      E_T   = prm.get_double("E_T");
-      nu_LT = prm.get_double("nu_LT");
-      nu_TT = prm.get_double("nu_TT");
-      G_LT  = prm.get_double("G_LT");
-      prm.leave_subsection();
-      prm.enter_subsection("Homogenization summary");
-      summary_file = prm.get("File");
-      summary_key  = prm.get("Boundary condition");
-      prm.leave_subsection();
+      const std::vector<ParameterBinding> subsections = subsection_bindings();
+      for (const ParameterBinding &s : subsections)
+        s.parse(prm);
+      prm.enter_subsection("Materials");
       composite.parse_parameters(prm, "Materials");
       prm.leave_subsection();
 
+      const ParameterBinding &constants = subsections[1];
+      const ParameterBinding &summary   = subsections[2];
       if (type == Type::engineering_constants)
         {
-          const std::string s = "Materials/Engineering constants/";
-          check_parameter_range(s + "E_L", E_L, 0, 1e15, true, false);
-          check_parameter_range(s + "E_T", E_T, 0, 1e15, true, false);
-          check_parameter_range(s + "G_LT", G_LT, 0, 1e15, true, false);
-          check_parameter_range(s + "nu_TT", nu_TT, -1, 1, true, true);
-          check_parameter_range(s + "nu_LT", nu_LT, -1, 1, true, true);
+          check_parameter_range(
+            constants.path("E_L"), E_L, 0, 1e15, true, false);
+          check_parameter_range(
+            constants.path("E_T"), E_T, 0, 1e15, true, false);
+          check_parameter_range(
+            constants.path("G_LT"), G_LT, 0, 1e15, true, false);
+          check_parameter_range(
+            constants.path("nu_TT"), nu_TT, -1, 1, true, true);
+          check_parameter_range(
+            constants.path("nu_LT"), nu_LT, -1, 1, true, true);
         }
       if (type == Type::homogenization_summary)
         check_parameter(!summary_file.empty(),
-                        "Materials/Homogenization summary/File",
+                        summary.path("File"),
                         "the path of a homogenization summary.json when "
                         "'Materials/Type = homogenization summary'");
     }

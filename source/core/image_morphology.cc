@@ -9,6 +9,7 @@
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/image_morphology.h>
 #include <tribodyn/core/number_list.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/selection.h>
 
 namespace tribodyn
@@ -25,136 +26,128 @@ namespace tribodyn
   } // namespace
 
 
+  ParameterBinding
+  ImageParameters::binding()
+  {
+    using dealii::Patterns::Anything;
+    ParameterBinding b("Morphology/Image");
+    b.add("File",
+          file,
+          "PNG or TIFF micrograph ('Generator = image'): 8- or 16-bit grey, "
+          "indexed (palette) or RGB; alpha is ignored; a TIFF must be in "
+          "strips (not tiles). Each image pixel is one pixel of the "
+          "morphology; the top row of the image is the top of the rectangle.");
+    b.add("Pixel size",
+          pixel_size,
+          "Size of an image pixel in m; 0 takes it from the image's "
+          "resolution tag (TIFF XResolution/YResolution with ResolutionUnit "
+          "inch or cm, PNG pHYs in pixels per metre). Sets the rectangle's "
+          "size: 'Width' and 'Height' are not used.",
+          dealii::Patterns::Double(0));
+    b.add("Segmentation",
+          segmentation,
+          "How pixels become phases (material ids 0, 1, ...): 'thresholds' "
+          "(grey-level thresholds, see 'Thresholds'), 'Otsu' (thresholds by "
+          "Otsu's method, see 'Otsu phases'), 'colour table' (one colour per "
+          "phase, see 'Colour table'). RGB and indexed pixels are thresholded "
+          "on their luma 0.299 R + 0.587 G + 0.114 B.",
+          segmentation_choices);
+    b.add("Thresholds",
+          "",
+          "Increasing grey levels t1, t2, ... (in the image's levels: 0-255 "
+          "for 8 bits, 0-65535 for 16 bits): phase 0 is below t1, phase 1 in "
+          "[t1, t2), ..., the last phase at or above the last threshold.",
+          Anything(),
+          [this, path = b.path("Thresholds")](const std::string &text) {
+            thresholds = parse_number_list(text, path);
+          });
+    b.add("Otsu phases",
+          n_otsu_phases,
+          "Number of phases Otsu's method separates (2 to 4), darkest first.",
+          dealii::Patterns::Integer(2, 4));
+    b.add("Colour table",
+          "",
+          "Colours of phases 0, 1, ... separated by ';': one number (grey "
+          "level of a grey image, palette index of an indexed one, or the "
+          "grey R = G = B of an RGB one) or three (red green blue). Example: "
+          "'0 0 0; 128 128 128; 255 255 255'. A pixel of another colour is an "
+          "error.",
+          Anything(),
+          [this, path = b.path("Colour table")](const std::string &text) {
+            colour_table.clear();
+            for (const std::string &entry :
+                 dealii::Utilities::split_string_list(text, ';'))
+              {
+                const std::vector<double> c = parse_number_list(entry, path);
+                check_parameter(
+                  (c.size() == 1 || c.size() == 3)
+                    && std::all_of(c.begin(),
+                                   c.end(),
+                                   [](const double v) {
+                                     return v >= 0 && v <= 65535
+                                            && v == std::floor(v);
+                                   }),
+                  path,
+                  "the entry '" + entry
+                    + "' is not a colour: give one whole number (grey level "
+                      "or palette index) or three (red green blue) per "
+                      "phase, entries separated by ';'.");
+                colour_table.emplace_back(c.begin(), c.end());
+              }
+          });
+    b.add("Crop",
+          "",
+          "Optional window of the image, in pixels: left column, top row "
+          "(from the image's top-left corner), width, height. Empty: the "
+          "whole image.",
+          Anything(),
+          [this, path = b.path("Crop")](const std::string &text) {
+            const std::vector<double> c = parse_number_list(text, path);
+            check_parameter(c.empty()
+                              || (c.size() == 4 && c[0] >= 0 && c[1] >= 0
+                                  && c[2] >= 1 && c[3] >= 1),
+                            path,
+                            "give four whole numbers (left column, top row, "
+                            "width >= 1, height >= 1) or nothing for the "
+                            "whole image.");
+            crop = {{0, 0, 0, 0}};
+            for (unsigned int k = 0; k < c.size(); ++k)
+              crop[k] = static_cast<unsigned int>(c[k]);
+          });
+    return b;
+  }
+
+
   void
   ImageParameters::declare_parameters(dealii::ParameterHandler &prm)
   {
-    using dealii::Patterns::Anything;
-    prm.enter_subsection("Image");
-    {
-      prm.declare_entry("File",
-                        "",
-                        Anything(),
-                        "PNG or TIFF micrograph ('Generator = image'): 8- or "
-                        "16-bit grey, indexed (palette) or RGB; alpha is "
-                        "ignored; a TIFF must be in strips (not tiles). "
-                        "Each image pixel is one pixel of the morphology; "
-                        "the top row of the image is the top of the "
-                        "rectangle.");
-      prm.declare_entry("Pixel size",
-                        "0",
-                        dealii::Patterns::Double(0),
-                        "Size of an image pixel in m; 0 takes it from the "
-                        "image's resolution tag (TIFF XResolution/"
-                        "YResolution with ResolutionUnit inch or cm, PNG "
-                        "pHYs in pixels per metre). Sets the rectangle's "
-                        "size: 'Width' and 'Height' are not used.");
-      prm.declare_entry("Segmentation",
-                        "Otsu",
-                        selection_pattern(segmentation_choices),
-                        "How pixels become phases (material ids 0, 1, ...): "
-                        "'thresholds' (grey-level thresholds, see "
-                        "'Thresholds'), 'Otsu' (thresholds by Otsu's "
-                        "method, see 'Otsu phases'), 'colour table' (one "
-                        "colour per phase, see 'Colour table'). RGB and "
-                        "indexed pixels are thresholded on their luma "
-                        "0.299 R + 0.587 G + 0.114 B.");
-      prm.declare_entry("Thresholds",
-                        "",
-                        Anything(),
-                        "Increasing grey levels t1, t2, ... (in the image's "
-                        "levels: 0-255 for 8 bits, 0-65535 for 16 bits): "
-                        "phase 0 is below t1, phase 1 in [t1, t2), ..., the "
-                        "last phase at or above the last threshold.");
-      prm.declare_entry("Otsu phases",
-                        "2",
-                        dealii::Patterns::Integer(2, 4),
-                        "Number of phases Otsu's method separates (2 to 4), "
-                        "darkest first.");
-      prm.declare_entry("Colour table",
-                        "",
-                        Anything(),
-                        "Colours of phases 0, 1, ... separated by ';': one "
-                        "number (grey level of a grey image, palette index "
-                        "of an indexed one, or the grey R = G = B of an RGB "
-                        "one) or three (red green blue). Example: '0 0 0; "
-                        "128 128 128; 255 255 255'. A pixel of another "
-                        "colour is an error.");
-      prm.declare_entry("Crop",
-                        "",
-                        Anything(),
-                        "Optional window of the image, in pixels: left "
-                        "column, top row (from the image's top-left "
-                        "corner), width, height. Empty: the whole image.");
-    }
-    prm.leave_subsection();
+    ImageParameters().binding().declare(prm);
   }
 
 
   void
   ImageParameters::parse_parameters(dealii::ParameterHandler &prm)
   {
-    prm.enter_subsection("Image");
-    {
-      file         = prm.get("File");
-      pixel_size   = prm.get_double("Pixel size");
-      segmentation = get_selection(prm, "Segmentation", segmentation_choices);
-      thresholds
-        = parse_number_list(prm.get("Thresholds"), section + "Thresholds");
-      n_otsu_phases = prm.get_integer("Otsu phases");
-      colour_table.clear();
-      for (const std::string &entry :
-           dealii::Utilities::split_string_list(prm.get("Colour table"), ';'))
-        {
-          const std::vector<double> c
-            = parse_number_list(entry, section + "Colour table");
-          check_parameter(
-            (c.size() == 1 || c.size() == 3)
-              && std::all_of(c.begin(),
-                             c.end(),
-                             [](const double v) {
-                               return v >= 0 && v <= 65535
-                                      && v == std::floor(v);
-                             }),
-            section + "Colour table",
-            "the entry '" + entry
-              + "' is not a colour: give one whole number (grey level or "
-                "palette index) or three (red green blue) per phase, "
-                "entries separated by ';'.");
-          colour_table.emplace_back(c.begin(), c.end());
-        }
-      const std::vector<double> c
-        = parse_number_list(prm.get("Crop"), section + "Crop");
-      check_parameter(c.empty()
-                        || (c.size() == 4 && c[0] >= 0 && c[1] >= 0 && c[2] >= 1
-                            && c[3] >= 1),
-                      section + "Crop",
-                      "give four whole numbers (left column, top row, "
-                      "width >= 1, height >= 1) or nothing for the whole "
-                      "image.");
-      crop = {{0, 0, 0, 0}};
-      for (unsigned int k = 0; k < c.size(); ++k)
-        crop[k] = static_cast<unsigned int>(c[k]);
-    }
-    prm.leave_subsection();
-
+    const ParameterBinding b = binding();
+    b.parse(prm);
     check_parameter(!file.empty(),
-                    section + "File",
+                    b.path("File"),
                     "'Generator = image' needs the path of a PNG or TIFF "
                     "file.");
     if (segmentation == Segmentation::thresholds)
       {
         check_parameter(!thresholds.empty(),
-                        section + "Thresholds",
+                        b.path("Thresholds"),
                         "'Segmentation = thresholds' needs at least one "
                         "grey level (two phases).");
         for (unsigned int k = 1; k < thresholds.size(); ++k)
           check_parameter(thresholds[k] > thresholds[k - 1],
-                          section + "Thresholds",
+                          b.path("Thresholds"),
                           "the thresholds must increase.");
       }
     if (segmentation == Segmentation::colour_table)
       check_parameter(colour_table.size() >= 2,
-                      section + "Colour table",
+                      b.path("Colour table"),
                       "'Segmentation = colour table' needs the colours of at "
                       "least two phases, separated by ';'.");
   }

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
 #include <fstream>
 #include <limits>
@@ -8,6 +9,7 @@
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/morphology.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/selection.h>
 
 namespace tribodyn
@@ -62,123 +64,119 @@ namespace tribodyn
   }
 
 
-  void
-  MorphologyParameters::declare_parameters(dealii::ParameterHandler &prm)
+  ParameterBinding
+  MorphologyParameters::binding()
   {
     using dealii::Patterns::Double;
     using dealii::Patterns::Integer;
-    using dealii::Patterns::Selection;
-    prm.enter_subsection("Morphology");
-    {
-      prm.declare_entry(
-        "Generator",
-        "random vertical",
-        selection_pattern(generator_choices),
-        "How the material map is made: 'homogeneous' (matrix only), "
-        "'random vertical' (random non-overlapping vertical heterogeneities, "
-        "seed 001 Fig. 1), 'laminate' (layers through the whole rectangle), "
-        "'grid file' (plain-text grid of material ids, see 'Grid file'), "
-        "'image' (a segmented PNG or TIFF micrograph, any number of phases, "
-        "see the subsection 'Image').");
-      prm.declare_entry("Width",
-                        "0.028",
-                        Double(),
-                        "Size of the rectangle along x (the sliding "
-                        "direction), in m.");
-      prm.declare_entry("Height",
-                        "0.008",
-                        Double(),
-                        "Size of the rectangle along y, in m.");
-      prm.declare_entry("Pixels in x",
-                        "280",
-                        Integer(1),
-                        "Number of pixels of the material map along x "
-                        "(generators only; a grid file sets its own).");
-      prm.declare_entry("Pixels in y",
-                        "80",
-                        Integer(1),
-                        "Number of pixels of the material map along y.");
-      prm.declare_entry("Volume fraction",
-                        "0.1",
-                        Double(),
-                        "Target area fraction of heterogeneities, in (0, 1) "
-                        "('random vertical' and 'laminate').");
-      prm.declare_entry("Heterogeneity width",
-                        "0.0001",
-                        Double(),
-                        "Width (along x) of each random vertical "
-                        "heterogeneity, in m; a multiple of the pixel "
-                        "width.");
-      prm.declare_entry("Heterogeneity min height",
-                        "0.0012",
-                        Double(),
-                        "Smallest height of a random vertical "
-                        "heterogeneity, in m (rounded up to whole pixels).");
-      prm.declare_entry("Heterogeneity max height",
-                        "0.0036",
-                        Double(),
-                        "Largest height of a random vertical heterogeneity, "
-                        "in m (rounded down to whole pixels).");
-      prm.declare_entry("Seed",
-                        "1",
-                        Integer(0),
-                        "Seed of the random number generator: each seed "
-                        "gives one random morphology (the seed 001 study "
-                        "used six: seeds 1 to 6).");
-      prm.declare_entry("Laminate normal",
-                        "x",
-                        selection_pattern(laminate_normal_choices),
-                        "Stacking direction of a laminate: 'x' gives "
-                        "vertical layers, 'y' horizontal ones.");
-      prm.declare_entry("Laminate periods",
-                        "4",
-                        Integer(1),
-                        "Number of (matrix, heterogeneity) layer pairs of a "
-                        "laminate.");
-      prm.declare_entry("Grid file",
-                        "",
-                        dealii::Patterns::Anything(),
-                        "Plain-text grid of material ids (0 matrix, 1 "
-                        "heterogeneity; or 0 to N-1 for the N phases of "
-                        "'Materials/Phases'), one row of pixels per line, "
-                        "top row first; '#' starts a comment line. The grid "
-                        "is stretched over Width x Height.");
-      ImageParameters::declare_parameters(prm);
-    }
-    prm.leave_subsection();
+    ParameterBinding b("Morphology");
+    // The reference spells the defaults of Height and of the
+    // heterogeneities' sizes 0.008, 0.0001, ..., where exact_number()
+    // would write 8e-3, 1e-4: they are written by format_number() from the
+    // members and read as ParameterHandler::get_double() reads.
+    const auto number = [](double &value) {
+      return [&value](const std::string &text) {
+        value = dealii::Utilities::string_to_double(text);
+      };
+    };
+    b.add("Generator",
+          generator,
+          "How the material map is made: 'homogeneous' (matrix only), "
+          "'random vertical' (random non-overlapping vertical heterogeneities, "
+          "seed 001 Fig. 1), 'laminate' (layers through the whole rectangle), "
+          "'grid file' (plain-text grid of material ids, see 'Grid file'), "
+          "'image' (a segmented PNG or TIFF micrograph, any number of phases, "
+          "see the subsection 'Image').",
+          generator_choices);
+    b.add("Width",
+          width,
+          "Size of the rectangle along x (the sliding direction), in m.",
+          Double());
+    b.add("Height",
+          format_number(height),
+          "Size of the rectangle along y, in m.",
+          Double(),
+          number(height));
+    b.add("Pixels in x",
+          n_pixels_x,
+          "Number of pixels of the material map along x (generators only; a "
+          "grid file sets its own).",
+          Integer(1));
+    b.add("Pixels in y",
+          n_pixels_y,
+          "Number of pixels of the material map along y.",
+          Integer(1));
+    b.add("Volume fraction",
+          volume_fraction,
+          "Target area fraction of heterogeneities, in (0, 1) ('random "
+          "vertical' and 'laminate').",
+          Double());
+    b.add("Heterogeneity width",
+          format_number(inclusion_width),
+          "Width (along x) of each random vertical heterogeneity, in m; a "
+          "multiple of the pixel width.",
+          Double(),
+          number(inclusion_width));
+    b.add("Heterogeneity min height",
+          format_number(inclusion_min_height),
+          "Smallest height of a random vertical heterogeneity, in m (rounded "
+          "up to whole pixels).",
+          Double(),
+          number(inclusion_min_height));
+    b.add("Heterogeneity max height",
+          format_number(inclusion_max_height),
+          "Largest height of a random vertical heterogeneity, in m (rounded "
+          "down to whole pixels).",
+          Double(),
+          number(inclusion_max_height));
+    b.add("Seed",
+          random_seed,
+          "Seed of the random number generator: each seed gives one random "
+          "morphology (the seed 001 study used six: seeds 1 to 6).",
+          Integer(0));
+    b.add("Laminate normal",
+          laminate_normal,
+          "Stacking direction of a laminate: 'x' gives vertical layers, 'y' "
+          "horizontal ones.",
+          laminate_normal_choices);
+    b.add("Laminate periods",
+          n_laminate_periods,
+          "Number of (matrix, heterogeneity) layer pairs of a laminate.",
+          Integer(1));
+    b.add("Grid file",
+          grid_file,
+          "Plain-text grid of material ids (0 matrix, 1 heterogeneity; or 0 "
+          "to N-1 for the N phases of 'Materials/Phases'), one row of pixels "
+          "per line, top row first; '#' starts a comment line. The grid is "
+          "stretched over Width x Height.");
+    return b;
+  }
+
+
+  void
+  MorphologyParameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    MorphologyParameters().binding().declare(prm);
+    ImageParameters::declare_parameters(prm);
   }
 
 
   void
   MorphologyParameters::parse_parameters(dealii::ParameterHandler &prm)
   {
-    const double inf = std::numeric_limits<double>::max();
-    prm.enter_subsection("Morphology");
-    {
-      generator            = get_selection(prm, "Generator", generator_choices);
-      width                = prm.get_double("Width");
-      height               = prm.get_double("Height");
-      n_pixels_x           = prm.get_integer("Pixels in x");
-      n_pixels_y           = prm.get_integer("Pixels in y");
-      volume_fraction      = prm.get_double("Volume fraction");
-      inclusion_width      = prm.get_double("Heterogeneity width");
-      inclusion_min_height = prm.get_double("Heterogeneity min height");
-      inclusion_max_height = prm.get_double("Heterogeneity max height");
-      random_seed          = prm.get_integer("Seed");
-      laminate_normal
-        = get_selection(prm, "Laminate normal", laminate_normal_choices);
-      n_laminate_periods = prm.get_integer("Laminate periods");
-      grid_file          = prm.get("Grid file");
-      if (generator == Generator::image)
-        image.parse_parameters(prm);
-    }
-    prm.leave_subsection();
+    const double           inf = std::numeric_limits<double>::max();
+    const ParameterBinding b   = binding();
+    b.parse(prm);
+    if (generator == Generator::image)
+      image.parse_parameters(prm);
 
-    check_parameter_range("Morphology/Width", width, 0, inf, true, true);
-    check_parameter_range("Morphology/Height", height, 0, inf, true, true);
+    // Width and Height stay checked here, not by ranges of the binding:
+    // their checks come after the image's (as the refusals always have).
+    check_parameter_range(b.path("Width"), width, 0, inf, true, true);
+    check_parameter_range(b.path("Height"), height, 0, inf, true, true);
     if (generator == Generator::random_vertical
         || generator == Generator::laminate)
-      check_parameter_range("Morphology/Volume fraction",
+      check_parameter_range(b.path("Volume fraction"),
                             volume_fraction,
                             0,
                             1,
@@ -188,19 +186,19 @@ namespace tribodyn
                             "'Generator = homogeneous' for a single phase.");
     if (generator == Generator::random_vertical)
       {
-        check_parameter_range("Morphology/Heterogeneity width",
+        check_parameter_range(b.path("Heterogeneity width"),
                               inclusion_width,
                               0,
                               width,
                               true,
                               false);
-        check_parameter_range("Morphology/Heterogeneity min height",
+        check_parameter_range(b.path("Heterogeneity min height"),
                               inclusion_min_height,
                               0,
                               height,
                               true,
                               false);
-        check_parameter_range("Morphology/Heterogeneity max height",
+        check_parameter_range(b.path("Heterogeneity max height"),
                               inclusion_max_height,
                               inclusion_min_height,
                               height,
@@ -212,7 +210,7 @@ namespace tribodyn
     if (generator == Generator::grid_file)
       {
         check_parameter(!grid_file.empty(),
-                        "Morphology/Grid file",
+                        b.path("Grid file"),
                         "'Generator = grid file' needs the path of the grid "
                         "file.");
         // The pixels are the file's: record them (parameters.prm then

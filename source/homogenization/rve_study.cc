@@ -15,6 +15,7 @@
 #include <sstream>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/number_list.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/progress.h>
 #include <tribodyn/core/selection.h>
 #include <tribodyn/homogenization/rve_study.h>
@@ -91,134 +92,143 @@ namespace tribodyn
     }
 
 
-    void
-    RveStudyParameters::declare_parameters(ParameterHandler &prm)
+    ParameterBinding
+    RveStudyParameters::binding()
     {
       using dealii::Patterns::Anything;
       using dealii::Patterns::Double;
       using dealii::Patterns::Integer;
-      prm.enter_subsection("RVE study");
-      {
-        prm.declare_entry(
-          "Window sizes",
-          "70x20, 140x40, 280x80",
-          Anything(),
-          "Sizes of the windows in pixels of the morphology, WIDTHxHEIGHT "
-          "(along x and y) or one number for a square, separated by commas, "
-          "at least two, of increasing area. Keep the aspect ratio of the "
-          "cell you want to judge (the seed's cell is 280x80).");
-        prm.declare_entry(
-          "Windows per size",
-          "8",
-          Anything(),
-          "Number n of windows of each size: one number for all sizes, or "
-          "one per size (at least 3 each; the standard deviation of a size "
-          "is known to about 1/sqrt(2 (n - 1)) relative).");
-        prm.declare_entry(
-          "Source",
-          "crops",
-          selection_pattern(source_choices),
-          "'crops': windows cut at uniformly random positions from the "
-          "morphology of the subsection 'Morphology' (with 'random "
-          "vertical', a new realisation of it for every window, seed "
-          "'Morphology/Seed' + window number, so that windows are "
-          "independent; with an image, a grid file or a laminate, the one "
-          "map). 'realisations': the generator ('random vertical') run at "
-          "each window's size, one seed per window (pixel size = "
-          "'Morphology/Width' / 'Pixels in x'); heterogeneities then never "
-          "cut the window's edges, as in the seed's cells.");
-        prm.declare_entry("Seed",
-                          "1",
-                          Integer(0),
-                          "Seed of the random window positions ('crops').");
-        prm.declare_entry("Relative error",
-                          "0.01",
-                          Double(),
-                          "Relative error eps_rel of the mean for which the "
-                          "RVE size is reported, in (0, 1): the mean of n "
-                          "windows of that size is within eps_rel of the "
-                          "mean with ~95 % confidence (two standard errors).");
-        prm.declare_entry(
-          "Realisations",
-          "1, 6",
-          Anything(),
-          "Numbers n of realisations averaged, for which the RVE size "
-          "V(eps_rel, n) is reported (the seed averages six morphologies).");
-        prm.declare_entry(
-          "Ranks per window",
-          "1",
-          Integer(1),
-          "MPI ranks that solve one window together. The ranks form "
-          "n_ranks / (Ranks per window) groups; windows go round-robin to "
-          "the groups.");
-        prm.declare_entry(
-          "Solve cell problems",
-          "true",
-          dealii::Patterns::Bool(),
-          "false: measure only the phase fractions of the windows (no cell "
-          "problems; the morphology's own integral range, e.g. to choose the "
-          "window sizes before paying for cell problems).");
-        prm.declare_entry("Plot script",
-                          "auto",
-                          Anything(),
-                          "Python script drawing rve.png at the end: 'auto' "
-                          "looks for scripts/plot_rve next to the build "
-                          "directory (skipped when python3 or matplotlib is "
-                          "missing), 'none' draws nothing, or a path.");
-      }
-      prm.leave_subsection();
+      // The defaults of the lists, written from the members: "70x20,
+      // 140x40, 280x80", one number of windows when all sizes have the
+      // same ("8"), "1, 6".
+      std::string sizes_text, per_size_text, realisations_text;
+      for (const auto &size : window_sizes)
+        sizes_text += (sizes_text.empty() ? "" : ", ") + std::to_string(size[0])
+                      + "x" + std::to_string(size[1]);
+      const bool same_per_size = std::all_of(windows_per_size.begin(),
+                                             windows_per_size.end(),
+                                             [this](const unsigned int n) {
+                                               return n == windows_per_size[0];
+                                             });
+      for (const unsigned int n : windows_per_size)
+        if (!same_per_size || per_size_text.empty())
+          per_size_text
+            += (per_size_text.empty() ? "" : ", ") + std::to_string(n);
+      for (const unsigned int n : realisations)
+        realisations_text
+          += (realisations_text.empty() ? "" : ", ") + std::to_string(n);
+
+      ParameterBinding b("RVE study");
+      b.add("Window sizes",
+            sizes_text,
+            "Sizes of the windows in pixels of the morphology, WIDTHxHEIGHT "
+            "(along x and y) or one number for a square, separated by commas, "
+            "at least two, of increasing area. Keep the aspect ratio of the "
+            "cell you want to judge (the seed's cell is 280x80).",
+            Anything(),
+            [this](const std::string &value) {
+              std::string text = value;
+              std::replace(text.begin(), text.end(), ',', ' ');
+              std::istringstream in(text);
+              window_sizes.clear();
+              for (std::string word; in >> word;)
+                window_sizes.push_back(parse_window_size(word));
+            });
+      b.add("Windows per size",
+            per_size_text,
+            "Number n of windows of each size: one number for all sizes, or "
+            "one per size (at least 3 each; the standard deviation of a size "
+            "is known to about 1/sqrt(2 (n - 1)) relative).",
+            Anything(),
+            [this, path = b.path("Windows per size")](const std::string &text) {
+              const std::vector<double> n = parse_number_list(text, path);
+              windows_per_size.clear();
+              for (const double v : n)
+                {
+                  check_parameter(v >= 3 && v == std::floor(v) && v < 1e6,
+                                  path,
+                                  "'" + format_number(v)
+                                    + "' is not a whole number of at least 3 "
+                                      "(a variance from fewer windows is too "
+                                      "uncertain to fit).");
+                  windows_per_size.push_back(static_cast<unsigned int>(v));
+                }
+            });
+      b.add("Source",
+            source,
+            "'crops': windows cut at uniformly random positions from the "
+            "morphology of the subsection 'Morphology' (with 'random "
+            "vertical', a new realisation of it for every window, seed "
+            "'Morphology/Seed' + window number, so that windows are "
+            "independent; with an image, a grid file or a laminate, the one "
+            "map). 'realisations': the generator ('random vertical') run at "
+            "each window's size, one seed per window (pixel size = "
+            "'Morphology/Width' / 'Pixels in x'); heterogeneities then never "
+            "cut the window's edges, as in the seed's cells.",
+            source_choices);
+      b.add("Seed",
+            random_seed,
+            "Seed of the random window positions ('crops').",
+            Integer(0));
+      b.add("Relative error",
+            relative_error,
+            "Relative error eps_rel of the mean for which the RVE size is "
+            "reported, in (0, 1): the mean of n windows of that size is within "
+            "eps_rel of the mean with ~95 % confidence (two standard errors).",
+            Double());
+      b.add("Realisations",
+            realisations_text,
+            "Numbers n of realisations averaged, for which the RVE size "
+            "V(eps_rel, n) is reported (the seed averages six morphologies).",
+            Anything(),
+            [this, path = b.path("Realisations")](const std::string &text) {
+              realisations.clear();
+              for (const double v : parse_number_list(text, path))
+                {
+                  check_parameter(v >= 1 && v == std::floor(v) && v < 1e9,
+                                  path,
+                                  "'" + format_number(v)
+                                    + "' is not a whole number of at least "
+                                      "1.");
+                  realisations.push_back(static_cast<unsigned int>(v));
+                }
+            });
+      b.add("Ranks per window",
+            ranks_per_window,
+            "MPI ranks that solve one window together. The ranks form n_ranks "
+            "/ (Ranks per window) groups; windows go round-robin to the "
+            "groups.",
+            Integer(1));
+      b.add("Solve cell problems",
+            solve_cell_problems,
+            "false: measure only the phase fractions of the windows (no cell "
+            "problems; the morphology's own integral range, e.g. to choose the "
+            "window sizes before paying for cell problems).");
+      b.add("Plot script",
+            plot_script,
+            "Python script drawing rve.png at the end: 'auto' looks for "
+            "scripts/plot_rve next to the build directory (skipped when "
+            "python3 or matplotlib is missing), 'none' draws nothing, or a "
+            "path.");
+      return b;
+    }
+
+
+    void
+    RveStudyParameters::declare_parameters(ParameterHandler &prm)
+    {
+      RveStudyParameters().binding().declare(prm);
     }
 
 
     void
     RveStudyParameters::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("RVE study");
-      {
-        std::string text = prm.get("Window sizes");
-        std::replace(text.begin(), text.end(), ',', ' ');
-        std::istringstream in(text);
-        window_sizes.clear();
-        for (std::string word; in >> word;)
-          window_sizes.push_back(parse_window_size(word));
-
-        const std::vector<double> n
-          = parse_number_list(prm.get("Windows per size"),
-                              "RVE study/Windows per size");
-        windows_per_size.clear();
-        for (const double v : n)
-          {
-            check_parameter(v >= 3 && v == std::floor(v) && v < 1e6,
-                            "RVE study/Windows per size",
-                            "'" + format_number(v)
-                              + "' is not a whole number of at least 3 (a "
-                                "variance from fewer windows is too "
-                                "uncertain to fit).");
-            windows_per_size.push_back(static_cast<unsigned int>(v));
-          }
-
-        source         = get_selection(prm, "Source", source_choices);
-        random_seed    = prm.get_integer("Seed");
-        relative_error = prm.get_double("Relative error");
-
-        realisations.clear();
-        for (const double v : parse_number_list(prm.get("Realisations"),
-                                                "RVE study/Realisations"))
-          {
-            check_parameter(v >= 1 && v == std::floor(v) && v < 1e9,
-                            "RVE study/Realisations",
-                            "'" + format_number(v)
-                              + "' is not a whole number of at least 1.");
-            realisations.push_back(static_cast<unsigned int>(v));
-          }
-        ranks_per_window    = prm.get_integer("Ranks per window");
-        solve_cell_problems = prm.get_bool("Solve cell problems");
-        plot_script         = prm.get("Plot script");
-      }
-      prm.leave_subsection();
+      const ParameterBinding b = binding();
+      b.parse(prm);
 
       check_parameter(window_sizes.size() >= 2,
-                      sizes_name,
+                      b.path("Window sizes"),
                       "give at least two window sizes (the variance law is "
                       "fitted over the sizes), e.g. '70x20, 140x40, "
                       "280x80'.");
@@ -226,7 +236,7 @@ namespace tribodyn
         check_parameter(1. * window_sizes[i][0] * window_sizes[i][1]
                           > 1. * window_sizes[i - 1][0]
                               * window_sizes[i - 1][1],
-                        sizes_name,
+                        b.path("Window sizes"),
                         "the sizes must have increasing areas, but "
                           + std::to_string(window_sizes[i][0]) + "x"
                           + std::to_string(window_sizes[i][1]) + " follows "
@@ -237,16 +247,19 @@ namespace tribodyn
       check_parameter(!windows_per_size.empty()
                         && (windows_per_size.size() == 1
                             || windows_per_size.size() == window_sizes.size()),
-                      "RVE study/Windows per size",
+                      b.path("Windows per size"),
                       "give one number for all sizes or one per size ("
                         + std::to_string(window_sizes.size())
-                        + " sizes are given in '" + sizes_name + "').");
+                        + " sizes are given in '" + b.path("Window sizes")
+                        + "').");
       if (windows_per_size.size() == 1)
         windows_per_size.assign(window_sizes.size(), windows_per_size[0]);
+      // A range of one entry, but checked here, after the lists: the
+      // refusals keep their order.
       check_parameter_range(
-        "RVE study/Relative error", relative_error, 0, 1, true, true);
+        b.path("Relative error"), relative_error, 0, 1, true, true);
       check_parameter(!realisations.empty(),
-                      "RVE study/Realisations",
+                      b.path("Realisations"),
                       "give at least one number of realisations, e.g. '1'.");
     }
 

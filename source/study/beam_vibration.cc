@@ -7,13 +7,16 @@
 #include <cmath>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <string>
 #include <tribodyn/contact/contact_solver.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/study/beam_vibration.h>
 
 namespace tribodyn
@@ -114,90 +117,97 @@ namespace tribodyn
     }
 
 
+    ParameterBinding
+    BeamParameters::binding()
+    {
+      // Numbers read as ParameterHandler::get_double() reads them, for the
+      // defaults the reference spells as exact_number() would not (40e-3,
+      // not 0.04): the text beside the member, equal to its initializer.
+      const auto number = [](double &value) {
+        return [&value](const std::string &text) {
+          value = dealii::Utilities::string_to_double(text);
+        };
+      };
+      ParameterBinding b("Beam");
+      b.add("Length",
+            "40e-3",
+            "Length L (m).",
+            Patterns::Double(0),
+            number(length));
+      b.add("Height", height, "Height H (m).", Patterns::Double(0));
+      b.add("Young modulus",
+            "30e9",
+            "E (Pa).",
+            Patterns::Double(0),
+            number(youngs_modulus));
+      b.add("Poisson ratio",
+            poisson_ratio,
+            "nu (plane strain).",
+            Patterns::Double(-1, 0.5));
+      b.add("Density", density, "rho (kg/m^3).", Patterns::Double(0));
+      b.add("Mesh size",
+            "0.25e-3",
+            "Element size h (m); L/h and H/h are rounded.",
+            Patterns::Double(0),
+            number(mesh_size));
+      b.add("Damping coefficient",
+            damping,
+            "beta of C = beta K (s); the first mode's damping ratio is beta "
+            "omega / 2.",
+            Patterns::Double(0));
+      b.add("Amplitude",
+            amplitude,
+            "Peak initial transverse velocity (m/s).",
+            Patterns::Double(0));
+      b.add("Periods",
+            periods,
+            "Simulated time in periods of the reference frequency.",
+            Patterns::Double(1));
+      b.add("Safety factor",
+            safety_factor,
+            "Time step as a fraction of the critical one.",
+            Patterns::Double(0, 1));
+      b.add("Shear coefficient",
+            shear_coefficient,
+            "kappa of the Timoshenko reference (5/6 for a rectangular "
+            "section).",
+            Patterns::Double(0, 1));
+      return b;
+    }
+
+
     void
     BeamParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Beam");
-      prm.declare_entry("Length",
-                        "40e-3",
-                        Patterns::Double(0),
-                        "Length L (m).");
-      prm.declare_entry("Height", "4e-3", Patterns::Double(0), "Height H (m).");
-      prm.declare_entry("Young modulus",
-                        "30e9",
-                        Patterns::Double(0),
-                        "E (Pa).");
-      prm.declare_entry("Poisson ratio",
-                        "0.2",
-                        Patterns::Double(-1, 0.5),
-                        "nu (plane strain).");
-      prm.declare_entry("Density",
-                        "1770",
-                        Patterns::Double(0),
-                        "rho (kg/m^3).");
-      prm.declare_entry("Mesh size",
-                        "0.25e-3",
-                        Patterns::Double(0),
-                        "Element size h (m); L/h and H/h are rounded.");
-      prm.declare_entry("Damping coefficient",
-                        "1.5e-7",
-                        Patterns::Double(0),
-                        "beta of C = beta K (s); the first mode's damping "
-                        "ratio is beta omega / 2.");
-      prm.declare_entry("Amplitude",
-                        "0.01",
-                        Patterns::Double(0),
-                        "Peak initial transverse velocity (m/s).");
-      prm.declare_entry("Periods",
-                        "8",
-                        Patterns::Double(1),
-                        "Simulated time in periods of the reference "
-                        "frequency.");
-      prm.declare_entry("Safety factor",
-                        "0.9",
-                        Patterns::Double(0, 1),
-                        "Time step as a fraction of the critical one.");
-      prm.declare_entry("Shear coefficient",
-                        "0.8333333333333334",
-                        Patterns::Double(0, 1),
-                        "kappa of the Timoshenko reference (5/6 for a "
-                        "rectangular section).");
-      prm.leave_subsection();
+      BeamParameters().binding().declare(prm);
     }
 
 
     void
     BeamParameters::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Beam");
-      length            = prm.get_double("Length");
-      height            = prm.get_double("Height");
-      youngs_modulus    = prm.get_double("Young modulus");
-      poisson_ratio     = prm.get_double("Poisson ratio");
-      density           = prm.get_double("Density");
-      mesh_size         = prm.get_double("Mesh size");
-      damping           = prm.get_double("Damping coefficient");
-      amplitude         = prm.get_double("Amplitude");
-      periods           = prm.get_double("Periods");
-      safety_factor     = prm.get_double("Safety factor");
-      shear_coefficient = prm.get_double("Shear coefficient");
-      prm.leave_subsection();
+      const ParameterBinding b = binding();
+      b.parse(prm);
+      // The ranges of Amplitude, Damping coefficient and Periods are checked
+      // here, after the checks relating the sizes, not by the binding: the
+      // refusals keep their order.
       check_parameter(length > 4 * height,
-                      "Beam/Length",
+                      b.path("Length"),
                       "a beam: at least 4 times 'Beam/Height'");
       check_parameter(height >= 2 * mesh_size,
-                      "Beam/Mesh size",
+                      b.path("Mesh size"),
                       "at most half of 'Beam/Height'");
       // (the fuzzer's 1e-300 gave a mesh of no cells: an internal error)
       check_parameter(mesh_size >= height / 1000,
-                      "Beam/Mesh size",
+                      b.path("Mesh size"),
                       "at least 'Beam/Height' / 1000 (a finer mesh of a "
                       "beam is beyond this verification)");
-      check_parameter_range("Beam/Amplitude", amplitude, 0, 1e3, true, false);
+      check_parameter_range(
+        b.path("Amplitude"), amplitude, 0, 1e3, true, false);
       // Found by the parameter fuzzer (doc/stability.md): an absurd damping
       // made the critical step vanish and the run blow up at step 0; an
       // absurd number of periods ran into a wrong "too few zero crossings".
-      check_parameter_range("Beam/Damping coefficient",
+      check_parameter_range(b.path("Damping coefficient"),
                             damping,
                             0,
                             1e-3,
@@ -206,7 +216,7 @@ namespace tribodyn
                             "It is the stiffness-proportional damping beta "
                             "(s); the critical time step shrinks as "
                             "1 / (beta omega_max^2).");
-      check_parameter_range("Beam/Periods", periods, 1, 1e4, false, false);
+      check_parameter_range(b.path("Periods"), periods, 1, 1e4, false, false);
     }
 
 

@@ -3,7 +3,9 @@
 
 #include <cmath>
 #include <deal.II/base/utilities.h>
+#include <string>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/study/study_problem.h>
 
 namespace tribodyn
@@ -28,139 +30,133 @@ namespace tribodyn
     }
 
 
+    ParameterBinding
+    StudyParameters::binding()
+    {
+      ParameterBinding b("Study");
+      b.add("Pressures",
+            "0.5e6, 2.5e6, 5e6",
+            "Pressures P of the sweep (Pa), comma-separated. Replaces "
+            "'Loading/Pressure'. The seed's Table 2 uses 0.5e6, 2.5e6, 5e6.",
+            Patterns::Anything(),
+            [this, path = b.path("Pressures")](const std::string &text) {
+              pressures.clear();
+              for (const auto &item :
+                   dealii::Utilities::split_string_list(text, ','))
+                {
+                  double value = 0;
+                  try
+                    {
+                      value = dealii::Utilities::string_to_double(item);
+                    }
+                  catch (...)
+                    {
+                      throw InputError("Parameter '" + path
+                                       + "' must be a list of comma-separated "
+                                         "pressures in Pa; got '"
+                                       + text + "'.");
+                    }
+                  check_parameter_range(path, value, 0, 1e11, true, false);
+                  pressures.push_back(value);
+                }
+              check_parameter(!pressures.empty(),
+                              path,
+                              "at least one pressure");
+            });
+      std::string model_names;
+      for (const PinModel model : models)
+        model_names += (model_names.empty() ? "" : ", ") + to_string(model);
+      b.add("Models",
+            model_names,
+            "Pin models: 'homogeneous matrix' (isotropic, 'Materials/Matrix'), "
+            "'homogenized' (anisotropic, the apparent stiffness averaged over "
+            "homogenization runs on the study's morphologies, chained "
+            "automatically), 'meso' (the heterogeneous pin, one run per "
+            "morphology). 'Materials/Type' is ignored.",
+            Patterns::MultipleSelection("homogeneous matrix|homogenized|meso"),
+            [this, path = b.path("Models")](const std::string &text) {
+              models.clear();
+              for (const auto &item :
+                   dealii::Utilities::split_string_list(text, ','))
+                models.push_back(item == "homogeneous matrix"
+                                   ? PinModel::homogeneous_matrix
+                                 : item == "homogenized" ? PinModel::homogenized
+                                                         : PinModel::meso);
+              check_parameter(!models.empty(), path, "at least one model");
+            });
+      b.add("Number of morphologies",
+            n_morphologies,
+            "Morphologies (random seeds First seed, +1, ...) of the meso pin "
+            "and of the homogenization runs. The seed uses six.",
+            Patterns::Integer(1, 1000));
+      b.add("First seed",
+            first_seed,
+            "Seed of the first morphology; replaces 'Morphology/Seed'.",
+            Patterns::Integer(0));
+      b.add("Repeats",
+            repeats,
+            "Runs per (pressure, model, morphology): repeat r > 0 adds a "
+            "random initial velocity of amplitude 'Perturbation amplitude' "
+            "(seed r), sampling the chaotic sliding dynamics.",
+            Patterns::Integer(1, 1000));
+      b.add("Perturbation amplitude",
+            perturbation,
+            "Amplitude of the random initial velocity of the repeats (m/s).",
+            Patterns::Double(0));
+      b.add("Homogenization boundary condition",
+            boundary_condition,
+            "Which apparent stiffness of the homogenization runs the "
+            "homogenized pin uses.",
+            Patterns::Selection("KUBC|SUBC|periodic"));
+      b.add("MPI ranks per case",
+            ranks_per_case,
+            "Ranks of one case. With more ranks than this, MPI_COMM_WORLD is "
+            "split into groups of this many ranks that run different cases at "
+            "the same time.",
+            Patterns::Integer(1));
+      b.add("Write case fields",
+            write_case_fields,
+            "Write the VTU fields of every case (at 'Output/Field interval'); "
+            "false: none.");
+      b.add("Reuse finished cases",
+            reuse_cases,
+            "Take every case (and homogenization run) that already finished "
+            "in this output directory from its files "
+            "(OUTPUT/cases/NAME/summary.json and friction.csv) instead of "
+            "running it again, and recompute its statistics (block-averaged "
+            "error, tables, plots) with this version of tribodyn. A finished "
+            "case must have the same pressure, time step, end time and "
+            "averaging window as the study asks (else it is an error); cases "
+            "without a summary.json run. For re-analysing a study, or for "
+            "finishing one that was interrupted.");
+      b.add("Plot script",
+            plot_script,
+            "Python script making the plots at the end: 'auto' looks for "
+            "scripts/plot_study next to the build directory (skipped when "
+            "python3 or matplotlib is missing), 'none' makes no plots, or a "
+            "path.");
+      return b;
+    }
+
+
     void
     StudyParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Study");
-      prm.declare_entry("Pressures",
-                        "0.5e6, 2.5e6, 5e6",
-                        Patterns::Anything(),
-                        "Pressures P of the sweep (Pa), comma-separated. "
-                        "Replaces 'Loading/Pressure'. The seed's Table 2 "
-                        "uses 0.5e6, 2.5e6, 5e6.");
-      prm.declare_entry("Models",
-                        "homogeneous matrix, homogenized, meso",
-                        Patterns::MultipleSelection(
-                          "homogeneous matrix|homogenized|meso"),
-                        "Pin models: 'homogeneous matrix' (isotropic, "
-                        "'Materials/Matrix'), 'homogenized' (anisotropic, "
-                        "the apparent stiffness averaged over homogenization "
-                        "runs on the study's morphologies, chained "
-                        "automatically), 'meso' (the heterogeneous pin, one "
-                        "run per morphology). 'Materials/Type' is ignored.");
-      prm.declare_entry("Number of morphologies",
-                        "6",
-                        Patterns::Integer(1, 1000),
-                        "Morphologies (random seeds First seed, +1, "
-                        "...) of the meso pin and of the homogenization "
-                        "runs. The seed uses six.");
-      prm.declare_entry("First seed",
-                        "1",
-                        Patterns::Integer(0),
-                        "Seed of the first morphology; replaces "
-                        "'Morphology/Seed'.");
-      prm.declare_entry("Repeats",
-                        "1",
-                        Patterns::Integer(1, 1000),
-                        "Runs per (pressure, model, morphology): repeat r > "
-                        "0 adds a random initial velocity of amplitude "
-                        "'Perturbation amplitude' (seed r), sampling the "
-                        "chaotic sliding dynamics.");
-      prm.declare_entry("Perturbation amplitude",
-                        "1e-6",
-                        Patterns::Double(0),
-                        "Amplitude of the random initial velocity of the "
-                        "repeats (m/s).");
-      prm.declare_entry("Homogenization boundary condition",
-                        "KUBC",
-                        Patterns::Selection("KUBC|SUBC|periodic"),
-                        "Which apparent stiffness of the homogenization runs "
-                        "the homogenized pin uses.");
-      prm.declare_entry("MPI ranks per case",
-                        "1",
-                        Patterns::Integer(1),
-                        "Ranks of one case. With more ranks than this, "
-                        "MPI_COMM_WORLD is split into groups of this many "
-                        "ranks that run different cases at the same time.");
-      prm.declare_entry("Write case fields",
-                        "false",
-                        Patterns::Bool(),
-                        "Write the VTU fields of every case (at "
-                        "'Output/Field interval'); false: none.");
-      prm.declare_entry("Reuse finished cases",
-                        "false",
-                        Patterns::Bool(),
-                        "Take every case (and homogenization run) that "
-                        "already finished in this output directory from its "
-                        "files (OUTPUT/cases/NAME/summary.json and "
-                        "friction.csv) instead of running it again, and "
-                        "recompute its statistics (block-averaged error, "
-                        "tables, plots) with this version of tribodyn. A "
-                        "finished case must have the same pressure, time "
-                        "step, end time and averaging window as the study "
-                        "asks (else it is an error); cases without a "
-                        "summary.json run. For re-analysing a study, or for "
-                        "finishing one that was interrupted.");
-      prm.declare_entry("Plot script",
-                        "auto",
-                        Patterns::Anything(),
-                        "Python script making the plots at the end: 'auto' "
-                        "looks for scripts/plot_study next to the build "
-                        "directory (skipped when python3 or matplotlib is "
-                        "missing), 'none' makes no plots, or a path.");
-      prm.leave_subsection();
+      StudyParameters().binding().declare(prm);
     }
 
 
     void
     StudyParameters::parse_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Study");
-      const std::string text = prm.get("Pressures");
-      pressures.clear();
-      for (const auto &item : dealii::Utilities::split_string_list(text, ','))
-        {
-          double value = 0;
-          try
-            {
-              value = dealii::Utilities::string_to_double(item);
-            }
-          catch (...)
-            {
-              throw InputError("Parameter 'Study/Pressures' must be a list of "
-                               "comma-separated pressures in Pa; got '"
-                               + text + "'.");
-            }
-          check_parameter_range("Study/Pressures", value, 0, 1e11, true, false);
-          pressures.push_back(value);
-        }
-      check_parameter(!pressures.empty(),
-                      "Study/Pressures",
-                      "at least one pressure");
-      models.clear();
-      for (const auto &item :
-           dealii::Utilities::split_string_list(prm.get("Models"), ','))
-        models.push_back(item == "homogeneous matrix"
-                           ? PinModel::homogeneous_matrix
-                         : item == "homogenized" ? PinModel::homogenized
-                                                 : PinModel::meso);
-      check_parameter(!models.empty(), "Study/Models", "at least one model");
-      n_morphologies     = prm.get_integer("Number of morphologies");
-      first_seed         = prm.get_integer("First seed");
-      repeats            = prm.get_integer("Repeats");
-      perturbation       = prm.get_double("Perturbation amplitude");
-      boundary_condition = prm.get("Homogenization boundary condition");
-      ranks_per_case     = prm.get_integer("MPI ranks per case");
-      write_case_fields  = prm.get_bool("Write case fields");
-      plot_script        = prm.get("Plot script");
-      reuse_cases        = prm.get_bool("Reuse finished cases");
-      prm.leave_subsection();
+      const ParameterBinding b = binding();
+      b.parse(prm);
       if (repeats > 1)
         check_parameter(perturbation > 0,
-                        "Study/Perturbation amplitude",
-                        "a positive amplitude when 'Study/Repeats' > 1 (the "
-                        "solver is deterministic: unperturbed repeats would "
-                        "be identical)");
+                        b.path("Perturbation amplitude"),
+                        "a positive amplitude when '" + b.path("Repeats")
+                          + "' > 1 (the solver is deterministic: unperturbed "
+                            "repeats would be identical)");
     }
 
 

@@ -66,8 +66,9 @@ namespace tribodyn
 
       /// Type = anisotropic: the 2D stiffness and the out-of-plane row
       /// (sigma_zz = c_z . eps, used only for the von Mises output).
-      VoigtStiffness       anisotropic_stiffness;
-      dealii::Tensor<1, 3> anisotropic_c_z;
+      VoigtStiffness anisotropic_stiffness{
+        {{33.33e9, 8.33e9, 0}, {8.33e9, 33.33e9, 0}, {0, 0, 12.5e9}}};
+      dealii::Tensor<1, 3> anisotropic_c_z{{8.33e9, 8.33e9, 0}};
 
       /// Type = engineering constants: transversely isotropic, axis L = x.
       double E_L = 31.9e9, E_T = 34e9, nu_LT = 0.2, nu_TT = 0.2, G_LT = 13.3e9;
@@ -78,6 +79,16 @@ namespace tribodyn
 
       /// Type = morphology: the two phases.
       TwoPhaseMaterials composite;
+
+      /// The entries of "Materials" (Type, Kinematics, Density), bound to
+      /// the members above (their initial values are the defaults).
+      ParameterBinding
+      binding();
+      /// Those of its subsections "Anisotropic", "Engineering constants"
+      /// and "Homogenization summary", in this order ("Isotropic", "Matrix"
+      /// and "Heterogeneity" are IsotropicElasticMaterial's).
+      std::vector<ParameterBinding>
+      subsection_bindings();
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <deal.II/base/parameter_handler.h>
 #include <string>
+#include <tribodyn/core/parameter_binding.h>
 #include <vector>
 
 namespace tribodyn
@@ -46,10 +47,15 @@ namespace tribodyn
     /// top-left corner), width, height; all zero: the whole image.
     std::array<unsigned int, 4> crop = {{0, 0, 0, 0}};
 
-    /// Declare the subsection "Image" in the current subsection.
+    /// The entries of "Morphology/Image", bound to the members above
+    /// (their initial values are the defaults).
+    ParameterBinding
+    binding();
+
+    /// Declare the subsection "Morphology/Image" (@p prm at the top level).
     static void
     declare_parameters(dealii::ParameterHandler &prm);
-    /// Parse it (the current subsection must be "Morphology").
+    /// Parse and check it (@p prm at the top level).
     void
     parse_parameters(dealii::ParameterHandler &prm);
   };

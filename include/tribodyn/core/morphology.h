@@ -7,6 +7,7 @@
 #include <string>
 #include <tribodyn/core/image_morphology.h>
 #include <tribodyn/core/material.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <vector>
 
 namespace tribodyn
@@ -89,6 +90,12 @@ namespace tribodyn
 
     /// Image: file, pixel size, segmentation, crop (subsection "Image").
     ImageParameters image;
+
+    /// The entries of "Morphology", bound to the members above (their
+    /// initial values are the defaults); the subsection "Image" is
+    /// ImageParameters'.
+    ParameterBinding
+    binding();
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <tribodyn/core/morphology.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/problem.h>
 #include <tribodyn/homogenization/cell_problem.h>
 #include <tribodyn/homogenization/homogenization_problem.h>
@@ -33,22 +34,28 @@ namespace tribodyn
       };
 
       /// Window sizes in pixels (x, y), increasing.
-      std::vector<std::array<unsigned int, 2>> window_sizes;
+      std::vector<std::array<unsigned int, 2>> window_sizes
+        = {{{70, 20}}, {{140, 40}}, {{280, 80}}};
       /// Windows of each size (one per size).
-      std::vector<unsigned int> windows_per_size;
-      Source                    source = Source::crops;
+      std::vector<unsigned int> windows_per_size = {8, 8, 8};
+      Source                    source           = Source::crops;
       /// Seed of the window positions (crops).
       unsigned int random_seed = 1;
       /// Wanted relative error of the mean (e.g. 0.01).
       double relative_error = 0.01;
       /// Numbers of realisations n for which the RVE size is reported.
-      std::vector<unsigned int> realisations = {1};
+      std::vector<unsigned int> realisations = {1, 6};
       /// MPI ranks per window (the group size).
       unsigned int ranks_per_window = 1;
       /// Solve the cell problems (false: only the phase fractions).
       bool solve_cell_problems = true;
       /// Python script drawing rve.png ("auto", "none" or a path).
       std::string plot_script = "auto";
+
+      /// The entries of "RVE study", bound to the members above (their
+      /// initial values are the defaults).
+      ParameterBinding
+      binding();
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

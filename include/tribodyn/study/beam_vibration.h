@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <string>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/problem.h>
 #include <vector>
 
@@ -46,6 +47,11 @@ namespace tribodyn
       double safety_factor = 0.9;
       /// Shear coefficient kappa of the Timoshenko reference.
       double shear_coefficient = 5. / 6.;
+
+      /// The entries of "Beam", bound to the members above (their initial
+      /// values are the defaults).
+      ParameterBinding
+      binding();
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <string>
 #include <tribodyn/contact/contact_parameters.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/problem.h>
 #include <tribodyn/homogenization/homogenization_problem.h>
 #include <vector>
@@ -40,6 +41,11 @@ namespace tribodyn
       std::string  plot_script        = "auto";
       /// Take finished cases from their files (see the parameter).
       bool reuse_cases = false;
+
+      /// The entries of "Study", bound to the members above (their initial
+      /// values are the defaults).
+      ParameterBinding
+      binding();
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
