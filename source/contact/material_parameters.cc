@@ -73,15 +73,8 @@ namespace tribodyn
     std::vector<ParameterBinding>
     ContactMaterialParameters::subsection_bindings()
     {
-      // Numbers read as ParameterHandler::get_double() reads them, for the
-      // defaults the reference spells as exact_number() would not (31.9e9,
-      // not 3.19e10): the text beside the member, equal to its initializer.
-      const auto number = [](double &value) {
-        return [&value](const std::string &text) {
-          value = dealii::Utilities::string_to_double(text);
-        };
-      };
-
+      // (three defaults spelled as the reference writes them: 31.9e9, not
+      // the 3.19e10 of exact_number())
       ParameterBinding anisotropic("Materials/Anisotropic");
       anisotropic.add(
         "Stiffness",
@@ -110,14 +103,17 @@ namespace tribodyn
         });
 
       ParameterBinding constants("Materials/Engineering constants");
-      constants.add(
-        "E_L", "31.9e9", "Young modulus along x (Pa).", Double(), number(E_L));
-      constants.add(
-        "E_T", "34e9", "Young modulus along y, z (Pa).", Double(), number(E_T));
+      constants.add_spelled("E_L",
+                            E_L,
+                            "31.9e9",
+                            "Young modulus along x (Pa).");
+      constants.add_spelled("E_T",
+                            E_T,
+                            "34e9",
+                            "Young modulus along y, z (Pa).");
       constants.add("nu_LT", nu_LT, "Poisson ratio nu_LT.");
       constants.add("nu_TT", nu_TT, "Poisson ratio nu_TT'.");
-      constants.add(
-        "G_LT", "13.3e9", "Shear modulus G_LT (Pa).", Double(), number(G_LT));
+      constants.add_spelled("G_LT", G_LT, "13.3e9", "Shear modulus G_LT (Pa).");
 
       ParameterBinding summary("Materials/Homogenization summary");
       summary.add("File",

@@ -1,6 +1,8 @@
 // Entries of a subsection written once: declared, read and range-checked
 // from one list (parameter_binding.h).
 
+#include <deal.II/base/utilities.h>
+#include <stdexcept>
 #include <string>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/parameter_binding.h>
@@ -71,6 +73,27 @@ namespace tribodyn
         value = prm.get_double(name);
       },
       check);
+  }
+
+
+  ParameterBinding &
+  ParameterBinding::add_spelled(const std::string &name,
+                                double            &value,
+                                const std::string &spelling,
+                                const std::string &documentation,
+                                const dealii::Patterns::PatternBase &pattern,
+                                const std::optional<Interval>       &range)
+  {
+    add(name, value, documentation, pattern, range);
+    Entry &e        = entries.back();
+    e.default_value = spelling;
+    e.on_declare    = [&value, spelling, where = path(name)]() {
+      if (dealii::Utilities::string_to_double(spelling) != value)
+        throw std::logic_error("The default of '" + where + "' is spelled '"
+                               + spelling + "' but its member holds "
+                               + exact_number(value) + ": make the two equal.");
+    };
+    return *this;
   }
 
 
@@ -186,7 +209,14 @@ namespace tribodyn
   {
     inside(prm, [&]() {
       for (const Entry &e : entries)
-        prm.declare_entry(e.name, e.default_value, *e.pattern, e.documentation);
+        {
+          if (e.on_declare)
+            e.on_declare();
+          prm.declare_entry(e.name,
+                            e.default_value,
+                            *e.pattern,
+                            e.documentation);
+        }
     });
   }
 

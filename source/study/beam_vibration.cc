@@ -120,36 +120,27 @@ namespace tribodyn
     ParameterBinding
     BeamParameters::binding()
     {
-      // Numbers read as ParameterHandler::get_double() reads them, for the
-      // defaults the reference spells as exact_number() would not (40e-3,
-      // not 0.04): the text beside the member, equal to its initializer.
-      const auto number = [](double &value) {
-        return [&value](const std::string &text) {
-          value = dealii::Utilities::string_to_double(text);
-        };
-      };
+      // (three defaults spelled as the reference writes them: 40e-3, not
+      // the 0.04 of exact_number())
       ParameterBinding b("Beam");
-      b.add("Length",
-            "40e-3",
-            "Length L (m).",
-            Patterns::Double(0),
-            number(length));
+      b.add_spelled(
+        "Length", length, "40e-3", "Length L (m).", Patterns::Double(0));
       b.add("Height", height, "Height H (m).", Patterns::Double(0));
-      b.add("Young modulus",
-            "30e9",
-            "E (Pa).",
-            Patterns::Double(0),
-            number(youngs_modulus));
+      b.add_spelled("Young modulus",
+                    youngs_modulus,
+                    "30e9",
+                    "E (Pa).",
+                    Patterns::Double(0));
       b.add("Poisson ratio",
             poisson_ratio,
             "nu (plane strain).",
             Patterns::Double(-1, 0.5));
       b.add("Density", density, "rho (kg/m^3).", Patterns::Double(0));
-      b.add("Mesh size",
-            "0.25e-3",
-            "Element size h (m); L/h and H/h are rounded.",
-            Patterns::Double(0),
-            number(mesh_size));
+      b.add_spelled("Mesh size",
+                    mesh_size,
+                    "0.25e-3",
+                    "Element size h (m); L/h and H/h are rounded.",
+                    Patterns::Double(0));
       b.add("Damping coefficient",
             damping,
             "beta of C = beta K (s); the first mode's damping ratio is beta "

@@ -1,8 +1,9 @@
 // Parameters declared once (core/parameter_binding.h, issue #52 item 3):
 // a struct's binding declares its entries with the members' initial values
 // as defaults, and parses a file into the members; a value out of range is
-// refused with the entry's full path. exact_number(), which writes those
-// defaults and the numbers of a checkpoint's parameter lines, reads back
+// refused with the entry's full path; a default spelled by hand
+// (add_spelled) must read back to its member. exact_number(), which writes
+// those defaults and the numbers of a checkpoint's parameter lines, reads back
 // to the same double (an exact identity) for 2e5 random doubles over 600
 // decades and for the hand-written defaults it replaces.
 #include "../test_utilities.h"
@@ -10,6 +11,7 @@
 #include <deal.II/base/mpi.h>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/parameter_binding.h>
@@ -36,6 +38,7 @@ namespace
     Colour       colour  = Colour::green;
     double       speed   = -2;
     double       initial = 0;
+    double       modulus = 31.9e9;
 
     ParameterBinding
     binding()
@@ -51,6 +54,7 @@ namespace
       b.add("Name", name, "A name.");
       b.add("Colour", colour, "A colour.", colours);
       b.add("Speed", speed, "A speed (m/s).");
+      b.add_spelled("Modulus", modulus, "31.9e9", "A modulus (Pa).");
       b.add("Pair",
             "1, 2",
             "Two numbers.",
@@ -77,7 +81,7 @@ main(int argc, char **argv)
   check(prm.get("Length") == "5e5" && prm.get("Count") == "7"
           && prm.get("On") == "true" && prm.get("Name") == "pin"
           && prm.get("Colour") == "green" && prm.get("Speed") == "-2"
-          && prm.get("Pair") == "1, 2",
+          && prm.get("Pair") == "1, 2" && prm.get("Modulus") == "31.9e9",
         "defaults are the members' initial values: Length = "
           + prm.get("Length") + ", Colour = " + prm.get("Colour"));
   prm.leave_subsection();
@@ -111,7 +115,26 @@ main(int argc, char **argv)
   check(message.find("'Outer/Inner/Length'") != std::string::npos,
         "Length = 0 refused naming 'Outer/Inner/Length': " + message);
 
-  // 4. exact_number reads back exactly
+  // 4. a default given in another spelling than exact_number's must read
+  // back to the member: one that drifted from it is refused on declaring
+  Toy drifted;
+  drifted.modulus = 32e9;
+  std::string drift;
+  try
+    {
+      dealii::ParameterHandler other;
+      drifted.binding().declare(other);
+    }
+  catch (const std::logic_error &e)
+    {
+      drift = e.what();
+    }
+  check(drift.find("'Outer/Inner/Modulus'") != std::string::npos,
+        "a spelled default that does not read back to its member (31.9e9 "
+        "against 32e9) refused: "
+          + drift);
+
+  // 5. exact_number reads back exactly
   std::mt19937_64                        random(2026);
   std::uniform_real_distribution<double> mantissa(-1, 1);
   std::uniform_int_distribution<int>     power(-300, 300);

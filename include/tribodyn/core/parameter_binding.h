@@ -73,6 +73,19 @@ namespace tribodyn
         = dealii::Patterns::Double(),
         const std::optional<Interval> &range = std::nullopt);
 
+    /// A number whose default the reference spells as @p spelling (e.g.
+    /// "40e-3", where exact_number() would write 0.04). Declaring refuses
+    /// (std::logic_error) a spelling that does not read back to @p value's
+    /// current value: the default written twice cannot drift.
+    ParameterBinding &
+    add_spelled(const std::string                   &name,
+                double                              &value,
+                const std::string                   &spelling,
+                const std::string                   &documentation,
+                const dealii::Patterns::PatternBase &pattern
+                = dealii::Patterns::Double(),
+                const std::optional<Interval> &range = std::nullopt);
+
     /// A whole number (@p pattern an Integer pattern with its bounds).
     ParameterBinding &
     add(const std::string                   &name,
@@ -149,6 +162,9 @@ namespace tribodyn
       std::shared_ptr<dealii::Patterns::PatternBase>  pattern;
       std::function<void(dealii::ParameterHandler &)> read;
       std::function<void()>                           check;
+      /// Run when the entry is declared (add_spelled(): the spelling
+      /// against the member).
+      std::function<void()> on_declare = {};
     };
 
     ParameterBinding &
