@@ -37,7 +37,7 @@ namespace tribodyn
             "carbon",
             "Material of the cylinders.",
             Patterns::Anything(),
-            [this, &names, where = b.path("Material")](const std::string &m) {
+            [this, names, where = b.path("Material")](const std::string &m) {
               material = material_index(names, m, where);
             });
       b.add("Contacting part thickness",
