@@ -97,6 +97,20 @@ namespace tribodyn
   }
 
 
+  namespace
+  {
+    /// The reader of a whole number of type @p Integer.
+    template <typename Integer>
+    std::function<void(dealii::ParameterHandler &)>
+    integer_reader(Integer &value, const std::string &name)
+    {
+      return [&value, name](dealii::ParameterHandler &prm) {
+        value = prm.get_integer(name);
+      };
+    }
+  } // namespace
+
+
   ParameterBinding &
   ParameterBinding::add(const std::string                   &name,
                         unsigned int                        &value,
@@ -107,9 +121,7 @@ namespace tribodyn
                      std::to_string(value),
                      documentation,
                      pattern,
-                     [&value, name](dealii::ParameterHandler &prm) {
-                       value = prm.get_integer(name);
-                     },
+                     integer_reader(value, name),
                      {});
   }
 
@@ -124,9 +136,7 @@ namespace tribodyn
                      std::to_string(value),
                      documentation,
                      pattern,
-                     [&value, name](dealii::ParameterHandler &prm) {
-                       value = prm.get_integer(name);
-                     },
+                     integer_reader(value, name),
                      {});
   }
 
