@@ -15,10 +15,7 @@ namespace tribodyn
   namespace mca
   {
     using dealii::ParameterHandler;
-    using dealii::Patterns::Bool;
     using dealii::Patterns::Double;
-    using dealii::Patterns::Integer;
-    using dealii::Patterns::Selection;
     namespace Patterns = dealii::Patterns;
 
     using namespace parameter_tools;

@@ -14,7 +14,6 @@ namespace tribodyn
   namespace mca
   {
     using namespace parameter_tools;
-    using dealii::Patterns::Bool;
     using dealii::Patterns::Double;
     using dealii::Patterns::Integer;
     using dealii::Patterns::Selection;
