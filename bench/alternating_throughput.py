@@ -6,13 +6,14 @@
         [--old-lib DIR] [--only CASE]
 
 Cases: the pin of prm/contact/homogeneous_matrix.prm cut to 100 us (1 rank;
-dof_steps_per_second), prm/mca/two_body_friction.prm and the 10^5
-elastic block of bench/mca/make_block.py 29 30 elastic 300
-(automaton_steps_per_second); REPEATS runs each (default 5), the order
+dof_steps_per_second), prm/mca/two_body_friction.prm, the 10^5
+elastic block of bench/mca/make_block.py 29 30 elastic 300 and the first
+0.2 ns of prm/mca/friction_seed_heights_steel.prm (automaton_steps_per_second); REPEATS runs each (default 5), the order
 of old and new swapped every repeat; prints each pair and the medians with
 new / old. --old-lib: LD_LIBRARY_PATH for the old binary (a copied build
 needs its libtribodyn.so). --only: one case ("contact pin",
-"two_body_friction", "10^5 block"). Outputs in bench-output/alternating/.
+"two_body_friction", "10^5 block", "seed heights steel"; repeated for
+several). Outputs in bench-output/alternating/.
 
 --by-wall: compare 1 / wall_time_s of the whole run (set-up included)
 instead of the throughput figure, for binaries whose figures are defined
@@ -42,7 +43,7 @@ def main():
     parser.add_argument("new")
     parser.add_argument("repeats", type=int, nargs="?", default=5)
     parser.add_argument("--old-lib", default="")
-    parser.add_argument("--only", default="")
+    parser.add_argument("--only", action="append", default=[])
     parser.add_argument("--concurrent", action="store_true")
     parser.add_argument("--by-wall", action="store_true")
     args = parser.parse_args()
@@ -62,9 +63,15 @@ def main():
                                            "prm/mca/two_body_friction.prm"),
                               "", "automaton_steps_per_second"),
         "10^5 block": (block, "", "automaton_steps_per_second"),
+        # the automata study's scene at the seed's heights (graded, K_ij,
+        # plasticity, bonds), its first 0.2 ns
+        "seed heights steel": (os.path.join(
+            ROOT, "prm/mca/friction_seed_heights_steel.prm"),
+            "subsection Time\nset End time = 0.2e-9\nend\n",
+            "automaton_steps_per_second"),
     }
     if args.only:
-        cases = {args.only: cases[args.only]}
+        cases = {c: cases[c] for c in args.only}
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
                OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     results = {c: {"old": [], "new": []} for c in cases}

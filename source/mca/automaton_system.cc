@@ -126,7 +126,7 @@ namespace tribodyn
                        1,
                        {&tau_scale_i, &tau_scale_j},
                        nullptr,
-                       {},
+                       [this] { return shear_factors; },
                        {}});
       // the moment law's state (the moment K_ij), if it has one
       moment_laws.register_pair_fields(pair_fields);
@@ -606,8 +606,8 @@ namespace tribodyn
           pv.bonded = bonded[p];
           pv.sigma  = 0.5 * (sig_i[p] + sig_j[p]);
           for (unsigned int c = 0; c < 3; ++c)
-            pv.tau[c]
-              = 0.5 * (tau_scale_i[p] + tau_scale_j[p]) * tau.component[c][p];
+            pv.tau[c] = 0.5 * (shear_factor(p, 0) + shear_factor(p, 1))
+                        * tau.component[c][p];
           pv.heat     = heat.empty() ? 0. : heat[p];
           pv.distance = pair_distance(p);
           moment_laws.with_selected(

@@ -63,7 +63,7 @@ namespace tribodyn
               const double r  = nblock.r[b];
               const Vec3   n  = nblock.normal(b);
               const double sn = 0.5 * (sig_i[p] + sig_j[p]);
-              const double am = 0.5 * (tau_scale_i[p] + tau_scale_j[p]);
+              const double am = 0.5 * (shear_factor(p, 0) + shear_factor(p, 1));
               if (bonded[p])
                 {
                   if constexpr (Breaking::active)

@@ -166,6 +166,15 @@ namespace tribodyn
       MCA_CHECKPOINT_PAIRS(MCA_GET)
       pair_fields.for_each_array([&](auto &a) { get(ar, a); },
                                  [&](auto &a) { get(ar, a); });
+      // (stored shear factors: the saved rank had them; once stored they
+      // stay, also over the files a rank absorbs: all 1 where not saved)
+      if (!tau_scale_i.empty())
+        shear_factors = true;
+      else if (shear_factors)
+        {
+          tau_scale_i.assign(pi.size(), 1.);
+          tau_scale_j.assign(pi.size(), 1.);
+        }
       MCA_CHECKPOINT_PAIR_LISTS(MCA_GET)
 #undef MCA_GET
       sync_many_body_shapes();

@@ -35,7 +35,7 @@ namespace tribodyn
           for (const unsigned int s : {0u, 1u})
             if (owned(s ? j : i))
               {
-                const double alpha = (s ? tau_scale_j : tau_scale_i)[p];
+                const double alpha = shear_factor(p, s);
                 energy += pair_energy::side(area_of(p),
                                             side_compliance(p, s),
                                             (s ? sig_j : sig_i)[p],
@@ -194,7 +194,7 @@ namespace tribodyn
           if (!owned(a))
             continue;
           const double sigma = side ? sig_j[p] : sig_i[p];
-          const double alpha = side ? tau_scale_j[p] : tau_scale_i[p];
+          const double alpha = shear_factor(p, side);
           const double m     = side_many_body(p, side);
           work[switching_work] += pair_energy::side(Sp,
                                                     side_compliance(p, side),

@@ -173,6 +173,10 @@ namespace tribodyn
       const unsigned int n_pairs = step.n_pairs, n_ahead = step.n_ahead;
       const bool         keep_normals = step.keep_normals;
       const double       step_dt      = step.dt;
+      // (the shear factors: all 1 and not stored until the scene can have
+      // an event, allocate_shear_factors(); plastic kernels always store
+      // them and read them as before)
+      const bool factors = plastic || shear_factors;
       // Contact and bond changes of this step mark both automata.
       auto mark = [&](const unsigned int p) {
         changed[pi[p]] = 1;
@@ -225,8 +229,9 @@ namespace tribodyn
                                   tau.component[0],
                                   tau.component[1],
                                   tau.component[2]);
-              prefetch_streams<0>(
-                p, n_ahead, tau_scale_i, tau_scale_j, beta_i, beta_j);
+              if (factors)
+                prefetch_streams<0>(p, n_ahead, tau_scale_i, tau_scale_j);
+              prefetch_streams<0>(p, n_ahead, beta_i, beta_j);
               if constexpr (rot)
                 prefetch_ahead(pj.data(), p, n_ahead, x, v, w);
               else
@@ -344,7 +349,8 @@ namespace tribodyn
                       in_contact[p] = 0;
                       sig_i[p] = sig_j[p] = 0;
                       tau.set(p, {{0, 0, 0}});
-                      if (tau_scale_i[p] != 1 || tau_scale_j[p] != 1)
+                      if (factors
+                          && (tau_scale_i[p] != 1 || tau_scale_j[p] != 1))
                         tau_scale_i[p] = tau_scale_j[p] = 1;
                       q_i[p] = r / 2;
                       if constexpr (Moment::active)
@@ -439,7 +445,8 @@ namespace tribodyn
                 // series springs of the two halves: one shear stress
                 // (kj tau_i + ki tau_j + ki kj du) / (ki + kj)
                 const double inv = inv_sum;
-                const double ai = tau_scale_i[p], aj = tau_scale_j[p];
+                const double ai  = factors ? tau_scale_i[p] : 1.,
+                             aj  = factors ? tau_scale_j[p] : 1.;
                 const double mix = kj * ai + ki * aj;
                 Vec3         tn;
                 for (unsigned int c = 0; c < 3; ++c)
@@ -658,6 +665,7 @@ namespace tribodyn
                 events_out_of_line(p, t, ai, aj);
               if (ai != 1 || aj != 1)
                 {
+                  Assert(shear_factors, dealii::ExcInternalError());
                   tau_scale_i[p] = ai;
                   tau_scale_j[p] = aj;
                 }

@@ -506,7 +506,10 @@ namespace tribodyn
       std::vector<unsigned char>().swap(old_flags);
 
       // Every persistent pair field, from its source (pair_fields: the one
-      // list of them and of their relabelling rules).
+      // list of them and of their relabelling rules); the shear factors
+      // carried once any rank stores them (the old pairs' factors, all 1
+      // where this rank did not).
+      allocate_shear_factors(bonded.size(), false);
       pair_fields.remap(source, swap, kept_states, [this](const unsigned p) {
         return pair_distance(p);
       });
@@ -531,6 +534,27 @@ namespace tribodyn
             setup_graded_geometry();
           drop_inert_pairs();
         }
+      allocate_shear_factors(pi.size(), true);
+    }
+
+
+    void
+    AutomatonSystem::allocate_shear_factors(const std::size_t n_pairs,
+                                            const bool        check_pairs)
+    {
+      // (sticky: once stored, factors other than 1 may exist)
+      bool needed = shear_factors || plastic_scene || bond_scene;
+      if (!needed && check_pairs)
+        for (unsigned int p = 0; p < pi.size() && !needed; ++p)
+          needed = !bonded[p] || mat[pi[p]] != mat[pj[p]];
+      if (n_ranks > 1)
+        needed = dealii::Utilities::MPI::max(static_cast<int>(needed), comm);
+      if (needed && !shear_factors)
+        {
+          tau_scale_i.assign(n_pairs, 1.);
+          tau_scale_j.assign(n_pairs, 1.);
+        }
+      shear_factors = needed;
     }
   } // namespace mca
 } // namespace tribodyn

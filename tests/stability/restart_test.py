@@ -36,7 +36,10 @@ ranks change order, so a quantity that vanishes is judged at the scale of
 its kind, not of its round-off), the summary's numbers to TOLERANCE
 relative to the larger of the two (lists: to their largest component),
 except round-off errors (..._error) and n_rebalances (the partitions of
-each part's own ranks).
+each part's own ranks); a summary figure that is also a column of a
+compared series (an energy, a work) is judged as that column is, at its
+family's scale (a work that is round-off, 1e-30 J beside energies of
+1e-13 J, cannot agree to its own digits when the sums change order).
 """
 import json
 import math
@@ -148,6 +151,10 @@ def compare_csv(name, path_a, path_b, tolerance):
 # scale of their largest component (a force component that vanishes by
 # symmetry is round-off noise).
 VECTOR_SCALE = False
+# Restart on another number of ranks: the largest magnitude of each column
+# family of the uninterrupted run's series (compare_csv_scaled()), by
+# column name, for the summary's figures of the same name.
+COLUMN_SCALE = {}
 
 
 def compare_json(a, b, tolerance, where="summary.json"):
@@ -175,7 +182,13 @@ def compare_json(a, b, tolerance, where="summary.json"):
         for k, (x, y) in enumerate(zip(a, b)):
             errors += compare_json(x, y, tolerance, f"{where}[{k}]")
     elif isinstance(a, (int, float)) and not isinstance(a, bool):
-        if not (isinstance(b, (int, float)) and close(a, b, tolerance)):
+        key = where.split("/", 1)[-1]
+        if key in COLUMN_SCALE and isinstance(b, (int, float)):
+            if abs(a - b) > tolerance * max(abs(a), abs(b), COLUMN_SCALE[key]):
+                errors.append(f"{where}: {a!r} uninterrupted, {b!r} "
+                              f"restarted (column family scale "
+                              f"{COLUMN_SCALE[key]:.3g})")
+        elif not (isinstance(b, (int, float)) and close(a, b, tolerance)):
             errors.append(f"{where}: {a!r} uninterrupted, {b!r} restarted")
     elif a != b:
         errors.append(f"{where}: {a!r} uninterrupted, {b!r} restarted")
@@ -206,6 +219,8 @@ def compare_csv_scaled(name, path_a, path_b, tolerance):
     for c, h in enumerate(header):
         m = max((abs(x) for x in columns_a[c]), default=0.0)
         scale[family(h)] = max(scale.get(family(h), 0.0), m)
+    for h in header:
+        COLUMN_SCALE[h] = max(COLUMN_SCALE.get(h, 0.0), scale[family(h)])
     worst, column = 0.0, ""
     for c, h in enumerate(header):
         if h.endswith("error"):

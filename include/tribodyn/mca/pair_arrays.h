@@ -55,8 +55,14 @@ namespace tribodyn
       /// springs set them equal; the plastic correction and the Coulomb
       /// limit of each side only scale them), so one vector (odd under
       /// i <-> j) and two factors hold both: 40 instead of 48 bytes.
+      /// Only an event (a plastic return, a Coulomb limit, a release) sets
+      /// a factor other than 1: until a scene can have one, the factors
+      /// are all 1 and their arrays stay empty (shear_factors false; 16
+      /// bytes per pair saved and not streamed: an elastic bulk of one
+      /// material, all bonded; AutomatonSystem::allocate_shear_factors()).
       VectorArray         tau;
       std::vector<double> tau_scale_i, tau_scale_j;
+      bool                shear_factors = false;
       /// Graded scenes: contact area S_ij and half rest length of each pair
       /// (empty otherwise: S and r0).
       std::vector<double> pair_area, pair_half_rest;
@@ -94,11 +100,19 @@ namespace tribodyn
       /// Per old pair: 1 = its i had the larger id.
       std::vector<unsigned char> old_flags;
 
+      /// Shear factor of side @p side (0: i, 1: j) of pair @p p.
+      double
+      shear_factor(const unsigned int p, const unsigned int side) const
+      {
+        if (!shear_factors)
+          return 1.;
+        return side == 0 ? tau_scale_i[p] : tau_scale_j[p];
+      }
       /// Shear stress of side @p side (0: i, 1: j) of pair @p p.
       Vec3
       side_shear(const unsigned int p, const unsigned int side) const
       {
-        const double a = side == 0 ? tau_scale_i[p] : tau_scale_j[p];
+        const double a = shear_factor(p, side);
         return {{a * tau.component[0][p],
                  a * tau.component[1][p],
                  a * tau.component[2][p]}};
