@@ -8,7 +8,8 @@
 Cases: the pin of prm/contact/homogeneous_matrix.prm cut to 100 us (1 rank;
 dof_steps_per_second), prm/mca/two_body_friction.prm, the 10^5
 elastic block of bench/mca/make_block.py 29 30 elastic 300 and the first
-0.2 ns of prm/mca/friction_seed_heights_steel.prm (automaton_steps_per_second); REPEATS runs each (default 5), the order
+0.2 ns of prm/mca/friction_seed_heights_steel.prm
+(automaton_steps_per_second); REPEATS runs each (default 5), the order
 of old and new swapped every repeat; prints each pair and the medians with
 new / old. --old-lib: LD_LIBRARY_PATH for the old binary (a copied build
 needs its libtribodyn.so). --only: one case ("contact pin",
