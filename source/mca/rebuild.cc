@@ -542,13 +542,20 @@ namespace tribodyn
     AutomatonSystem::allocate_shear_factors(const std::size_t n_pairs,
                                             const bool        check_pairs)
     {
-      // (sticky: once stored, factors other than 1 may exist)
-      bool needed = shear_factors || plastic_scene || bond_scene;
-      if (!needed && check_pairs)
-        for (unsigned int p = 0; p < pi.size() && !needed; ++p)
-          needed = !bonded[p] || mat[pi[p]] != mat[pj[p]];
-      if (n_ranks > 1)
-        needed = dealii::Utilities::MPI::max(static_cast<int>(needed), comm);
+      // Plastic and bond scenes store them from the start, on every rank
+      // alike (no message at their rebuilds); otherwise the ranks agree
+      // (sticky: once stored, factors other than 1 may exist).
+      bool needed = plastic_scene || bond_scene;
+      if (!needed)
+        {
+          needed = shear_factors;
+          if (check_pairs)
+            for (unsigned int p = 0; p < pi.size() && !needed; ++p)
+              needed = !bonded[p] || mat[pi[p]] != mat[pj[p]];
+          if (n_ranks > 1)
+            needed
+              = dealii::Utilities::MPI::max(static_cast<int>(needed), comm);
+        }
       if (needed && !shear_factors)
         {
           tau_scale_i.assign(n_pairs, 1.);
