@@ -127,10 +127,11 @@ def label_of(directory):
 
 
 def read_vtu(path):
-    """The point data and points of one .vtu piece, ASCII or deal.II's
+    """The point data and points of a .vtu file, ASCII or deal.II's
     binary (zlib-compressed, base64) format: {name: list of values} (a
     tuple per point for fields of several components), with the points
-    under "points" and the piece's cell data under their names too."""
+    under "points" and the cell data under their names too; the pieces of
+    a file written by several ranks follow one another."""
     import base64
     import re
     import struct
@@ -177,6 +178,7 @@ def read_vtu(path):
         key = name.group(1) if name else "points"
         if key in ("connectivity", "offsets", "types"):
             continue
-        result[key] = [tuple(values[i:i + n]) if n > 1 else values[i]
-                       for i in range(0, len(values), n)]
+        result.setdefault(key, []).extend(
+            tuple(values[i:i + n]) if n > 1 else values[i]
+            for i in range(0, len(values), n))
     return result

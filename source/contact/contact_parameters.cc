@@ -538,32 +538,14 @@ namespace tribodyn
       geometry.parse_parameters(prm);
       material.parse_parameters(prm);
       morphology.parse_parameters(prm);
+      // (a generator's map has the two ids the two phases name)
       if (material.type == ContactMaterialParameters::Type::morphology
           && (morphology.generator == MorphologyParameters::Generator::image
               || morphology.generator
                    == MorphologyParameters::Generator::grid_file))
-        {
-          // The meso pin has the two phases of Materials/Matrix and
-          // Materials/Heterogeneity: refuse a map of more.
-          const bool image
-            = morphology.generator == MorphologyParameters::Generator::image;
-          const unsigned int n = Morphology::create(morphology).n_phases();
-          check_parameter(
-            n <= 2,
-            image ? "Morphology/Image/Segmentation" : "Morphology/Grid file",
-            "the meso pin ('Materials/Type = morphology') has two phases "
-            "(material id 0: 'Materials/Matrix', 1: "
-            "'Materials/Heterogeneity'), but the "
-              + (image
-                   ? "image '" + morphology.image.file + "' is segmented into "
-                   : "grid file '" + morphology.grid_file + "' holds ")
-              + std::to_string(n) + " phases. "
-              + (image ? "Segment it into two (one threshold, 'Otsu phases "
-                         "= 2' or two colours), or homogenize"
-                       : "Use ids 0 and 1 only, or homogenize")
-              + " the map with 'set Problem = homogenization' and use its "
-                "constants with 'Materials/Type = homogenization summary'.");
-        }
+        material.composite.check(Morphology::create(morphology),
+                                 morphology.generator
+                                   == MorphologyParameters::Generator::image);
       loading.parse_parameters(prm);
       time.parse_parameters(prm);
       contact.parse_parameters(prm);

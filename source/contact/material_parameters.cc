@@ -52,7 +52,10 @@ namespace tribodyn
             "summary': the apparent stiffness C of a homogenization run's "
             "summary.json. 'morphology': a heterogeneous (meso) pin from "
             "subsection Morphology with the phases of subsections Matrix and "
-            "Heterogeneity.",
+            "Heterogeneity, or of the named list Phases (any number, "
+            "transversely isotropic ones and pores: a pore's pixels are cut "
+            "out of the pin, and so is a fragment they detach from the top "
+            "face).",
             type_choices);
       b.add("Kinematics",
             kinematics,
@@ -141,9 +144,7 @@ namespace tribodyn
       prm.leave_subsection();
       for (const ParameterBinding &b : p.subsection_bindings())
         b.declare(prm);
-      prm.enter_subsection("Materials");
-      TwoPhaseMaterials::declare_parameters(prm);
-      prm.leave_subsection();
+      MorphologyMaterials::declare_parameters(prm);
     }
 
 
@@ -160,9 +161,7 @@ namespace tribodyn
       const std::vector<ParameterBinding> subsections = subsection_bindings();
       for (const ParameterBinding &s : subsections)
         s.parse(prm);
-      prm.enter_subsection("Materials");
-      composite.parse_parameters(prm, "Materials");
-      prm.leave_subsection();
+      composite.parse_parameters(prm);
 
       const ParameterBinding &constants = subsections[1];
       const ParameterBinding &summary   = subsections[2];

@@ -139,6 +139,16 @@ namespace tribodyn
     }
 
 
+    double
+    ContactSolver::contact_face_length() const
+    {
+      double length = 0;
+      for (const ContactNode &node : contact_nodes)
+        length += node.length;
+      return Utilities::MPI::sum(length, comm);
+    }
+
+
     void
     ContactSolver::setup()
     {
@@ -213,8 +223,10 @@ namespace tribodyn
               break;
             }
           case Type::morphology:
-            // in material-id order (matrix, heterogeneity)
-            for (const IsotropicElasticMaterial &phase : m.composite.phases())
+            // in material-id order (matrix, heterogeneity, or the named
+            // list); a pore's entry stays unused: make_mesh() cuts its
+            // pixels out
+            for (const ElasticPhase &phase : m.composite.phases())
               add_phase(phase);
             text << "meso";
             break;
@@ -229,10 +241,15 @@ namespace tribodyn
       if (prm.material.type == ContactMaterialParameters::Type::morphology)
         {
           const Morphology morphology = Morphology::create(prm.morphology);
-          create_morphology_mesh(morphology,
-                                 prm.geometry.subdivisions_per_pixel,
-                                 triangulation);
           material_text += ": " + morphology.description();
+          pin_width                     = morphology.width();
+          const std::vector<bool> pores = prm.material.composite.pores();
+          if (std::find(pores.begin(), pores.end(), true) == pores.end())
+            create_morphology_mesh(morphology,
+                                   prm.geometry.subdivisions_per_pixel,
+                                   triangulation);
+          else
+            make_porous_mesh(morphology, pores);
         }
       else
         {
@@ -249,7 +266,53 @@ namespace tribodyn
             /*colorize = */ true);
           for (const auto &cell : triangulation.cell_iterators_on_level(0))
             cell->set_material_id(0);
+          pin_width = prm.geometry.width;
         }
+    }
+
+
+    void
+    ContactSolver::make_porous_mesh(const Morphology        &morphology,
+                                    const std::vector<bool> &pores)
+    {
+      const std::vector<bool> kept = morphology.held_from_top(pores);
+      const unsigned int      n_x  = morphology.n_pixels_x(),
+                         n_y       = morphology.n_pixels_y();
+      unsigned int n_pore = 0, n_loose = 0, n_bottom = 0;
+      for (unsigned int j = 0; j < n_y; ++j)
+        for (unsigned int i = 0; i < n_x; ++i)
+          {
+            const unsigned int id   = morphology.pixel(i, j);
+            const bool         pore = id < pores.size() && pores[id];
+            const bool keep = kept[static_cast<std::size_t>(j) * n_x + i];
+            n_pore += pore;
+            n_loose += !pore && !keep;
+            n_bottom += (j == 0 && keep);
+          }
+      check_parameter(n_bottom > 0,
+                      "Materials/Phases/Young moduli",
+                      "with the pores (Young modulus 0) cut out of the meso "
+                      "pin, no solid pixel of its bottom row is tied to the "
+                      "top face through solid pixels: the pin has no contact "
+                      "face. Crop another window ('Morphology/Image/Crop') "
+                      "or make fewer phases pores.");
+      create_morphology_mesh(morphology,
+                             prm.geometry.subdivisions_per_pixel,
+                             kept,
+                             triangulation);
+      std::ostringstream text;
+      text << std::setprecision(4) << ", pores cut out (" << n_pore
+           << " pixels, " << 100. * n_pore / (n_x * n_y) << " %)";
+      if (n_loose > 0)
+        text << ", and " << n_loose
+             << " solid pixels they detach from the top face";
+      material_text += text.str();
+      if (n_loose > 0 && Utilities::MPI::this_mpi_process(comm) == 0)
+        std::cout
+          << ("Warning: meso pin: " + std::to_string(n_loose)
+              + " solid pixels are tied to the top face by no chain of solid "
+                "pixels sharing an edge once the pores are cut out; they would "
+                "be loose bodies in the pin and are cut out too.\n");
     }
 
 
@@ -380,10 +443,16 @@ namespace tribodyn
                     scratch_result.local_element(l) -= cell_hx / 2.;
                   }
           }
-      single_material
-        = Utilities::MPI::max(static_cast<unsigned int>(material_set.size()),
-                              comm)
-          <= 1;
+      std::vector<unsigned int> in_mesh(stiffness.size(), 0);
+      for (const unsigned int mat : material_set)
+        in_mesh[mat] = 1;
+      Utilities::MPI::max(in_mesh, comm, in_mesh);
+      material_in_mesh.assign(in_mesh.begin(), in_mesh.end());
+      // (the one-material kernels take material 0's stiffness: a pin of
+      // another single phase, or ranks each with one phase, take the
+      // general path)
+      single_material = std::count(in_mesh.begin(), in_mesh.end(), 1u) == 1
+                        && in_mesh[0] == 1;
       r.compress(VectorOperation::add);
       scratch_result.compress(VectorOperation::add);
       mass.resize(n_owned);
@@ -429,22 +498,34 @@ namespace tribodyn
                     else if (face->boundary_id() == 2)
                       {
                         ContactNode node;
-                        node.ix = lx;
-                        node.iy = ly;
-                        node.m  = mass[ly];
-                        node.x  = face->vertex(v)[0];
-                        // half of each adjacent bottom face (the cells
-                        // are identical rectangles): half at the corners
-                        const double x = node.x;
-                        node.length
-                          = (x > 0.5 * cell_hx
-                             && x < prm.geometry.width - 0.5 * cell_hx)
-                              ? cell_hx
-                              : 0.5 * cell_hx;
-                        bottom[ly] = node;
+                        node.ix     = lx;
+                        node.iy     = ly;
+                        node.m      = mass[ly];
+                        node.x      = face->vertex(v)[0];
+                        node.length = 0; // below
+                        bottom[ly]  = node;
                       }
                   }
               }
+      // Tributary length of each node: half of each bottom face it bounds,
+      // the faces of cells owned or ghost (all the cells around an owned
+      // node): a whole cell inside, half at the corners and at a void.
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() || cell->is_ghost())
+          for (const unsigned int f : GeometryInfo<2>::face_indices())
+            if (cell->face(f)->at_boundary()
+                && cell->face(f)->boundary_id() == 2)
+              for (unsigned int v = 0; v < 2; ++v)
+                {
+                  const types::global_dof_index gy
+                    = cell->face(f)->vertex_dof_index(v, 1);
+                  const auto node
+                    = locally_owned.is_element(gy)
+                        ? bottom.find(partitioner.global_to_local(gy))
+                        : bottom.end();
+                  if (node != bottom.end())
+                    node->second.length += 0.5 * cell_hx;
+                }
       top_x_dofs.assign(top_x.begin(), top_x.end());
       top_y_dofs.assign(top_y.begin(), top_y.end());
       contact_nodes.clear();
@@ -461,18 +542,9 @@ namespace tribodyn
 
       // Point M: the contact node closest to the middle of the bottom face
       // (the smaller x on a tie).
-      const double width
-        = prm.material.type == ContactMaterialParameters::Type::morphology
-            ? prm.morphology.width
-            : cell_hx * std::round(prm.geometry.width / cell_hx);
-      // Tributary length of each node: half of each adjacent bottom face
-      // (the cells are identical rectangles), half a cell at the corners.
-      for (ContactNode &node : contact_nodes)
-        node.length = (node.x > 0.5 * cell_hx && node.x < width - 0.5 * cell_hx)
-                        ? cell_hx
-                        : 0.5 * cell_hx;
-      double best       = std::numeric_limits<double>::max();
-      int    best_index = -1;
+      const double width      = pin_width;
+      double       best       = std::numeric_limits<double>::max();
+      int          best_index = -1;
       for (unsigned int k = 0; k < contact_nodes.size(); ++k)
         {
           const double d = std::abs(contact_nodes[k].x - 0.5 * width);
@@ -502,19 +574,20 @@ namespace tribodyn
       omega_maximum = 0;
       double c_max  = 0;
       for (unsigned int mat = 0; mat < stiffness.size(); ++mat)
-        {
-          const double        m_node = density[mat] * cell_hx * cell_hy / 4.;
-          std::vector<double> A(64);
-          for (unsigned int k = 0; k < 64; ++k)
-            A[k] = element_stiffness[mat][k] / m_node;
-          omega_maximum
-            = std::max(omega_maximum,
-                       std::sqrt(largest_symmetric_eigenvalue(A, 8)));
-          c_max = std::max(c_max,
-                           std::sqrt(std::max(stiffness[mat][0][0],
-                                              stiffness[mat][1][1])
-                                     / density[mat]));
-        }
+        if (material_in_mesh[mat])
+          {
+            const double        m_node = density[mat] * cell_hx * cell_hy / 4.;
+            std::vector<double> A(64);
+            for (unsigned int k = 0; k < 64; ++k)
+              A[k] = element_stiffness[mat][k] / m_node;
+            omega_maximum
+              = std::max(omega_maximum,
+                         std::sqrt(largest_symmetric_eigenvalue(A, 8)));
+            c_max = std::max(c_max,
+                             std::sqrt(std::max(stiffness[mat][0][0],
+                                                stiffness[mat][1][1])
+                                       / density[mat]));
+          }
       dt_cfl          = std::min(cell_hx, cell_hy) / c_max;
       c_maximum       = c_max;
       const double b2 = prm.time.beta2;

@@ -2,7 +2,9 @@
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <random>
 #include <sstream>
@@ -452,45 +454,75 @@ namespace tribodyn
   }
 
 
+  void
+  Morphology::flood_fill(std::vector<bool>                      &seen,
+                         std::vector<std::size_t>                stack,
+                         const std::function<bool(std::size_t)> &accept) const
+  {
+    // 4-connectivity: two pixels touching at a corner only are not
+    // connected (two fibres, or a pin's two grains held by one node).
+    while (!stack.empty())
+      {
+        const std::size_t  k = stack.back();
+        const unsigned int i = k % n_x, j = k / n_x;
+        stack.pop_back();
+        const auto visit = [&](const std::size_t q) {
+          if (!seen[q] && accept(q))
+            {
+              seen[q] = true;
+              stack.push_back(q);
+            }
+        };
+        if (i > 0)
+          visit(k - 1);
+        if (i + 1 < n_x)
+          visit(k + 1);
+        if (j > 0)
+          visit(k - n_x);
+        if (j + 1 < n_y)
+          visit(k + n_x);
+      }
+  }
+
+
   unsigned int
   Morphology::count_connected_heterogeneities() const
   {
-    // Flood fill over edge-sharing heterogeneity pixels (4-connectivity: two
-    // pixels touching at a corner only are two heterogeneities, as two
-    // fibres would be).
-    std::vector<bool>        seen(ids.size(), false);
-    std::vector<std::size_t> stack;
-    unsigned int             count = 0;
+    const auto heterogeneity = [&](const std::size_t q) {
+      return ids[q] == material_id::heterogeneity;
+    };
+    std::vector<bool> seen(ids.size(), false);
+    unsigned int      count = 0;
     for (std::size_t start = 0; start < ids.size(); ++start)
+      if (!seen[start] && heterogeneity(start))
+        {
+          ++count;
+          seen[start] = true;
+          flood_fill(seen, {start}, heterogeneity);
+        }
+    return count;
+  }
+
+
+  std::vector<bool>
+  Morphology::held_from_top(const std::vector<bool> &void_phase) const
+  {
+    const auto solid = [&](const std::size_t q) {
+      return ids[q] >= void_phase.size() || !void_phase[ids[q]];
+    };
+    std::vector<bool>        held(ids.size(), false);
+    std::vector<std::size_t> top;
+    for (unsigned int i = 0; i < n_x; ++i)
       {
-        if (seen[start] || ids[start] != material_id::heterogeneity)
-          continue;
-        ++count;
-        seen[start] = true;
-        stack.push_back(start);
-        while (!stack.empty())
+        const std::size_t q = static_cast<std::size_t>(n_y - 1) * n_x + i;
+        if (solid(q))
           {
-            const std::size_t  k = stack.back();
-            const unsigned int i = k % n_x, j = k / n_x;
-            stack.pop_back();
-            const auto visit = [&](const std::size_t q) {
-              if (!seen[q] && ids[q] == material_id::heterogeneity)
-                {
-                  seen[q] = true;
-                  stack.push_back(q);
-                }
-            };
-            if (i > 0)
-              visit(k - 1);
-            if (i + 1 < n_x)
-              visit(k + 1);
-            if (j > 0)
-              visit(k - n_x);
-            if (j + 1 < n_y)
-              visit(k + n_x);
+            held[q] = true;
+            top.push_back(q);
           }
       }
-    return count;
+    flood_fill(held, top, solid);
+    return held;
   }
 
 
@@ -655,5 +687,64 @@ namespace tribodyn
     // triangulation) gets its id, so that all ranks agree.
     for (const auto &cell : triangulation.cell_iterators_on_level(0))
       cell->set_material_id(morphology.material_at(cell->center()));
+  }
+
+
+  void
+  create_morphology_mesh(const Morphology         &morphology,
+                         const unsigned int        subdivisions_per_pixel,
+                         const std::vector<bool>  &kept,
+                         dealii::Triangulation<2> &triangulation)
+  {
+    const unsigned int s  = subdivisions_per_pixel;
+    const unsigned int nx = morphology.n_pixels_x() * s,
+                       ny = morphology.n_pixels_y() * s;
+    const double dx = morphology.width() / nx, dy = morphology.height() / ny;
+    AssertThrow(kept.size()
+                  == static_cast<std::size_t>(morphology.n_pixels_x())
+                       * morphology.n_pixels_y(),
+                dealii::ExcInternalError());
+
+    // The vertices of the full grid, the cells of the kept pixels (in
+    // deal.II's vertex order); vertices of voids only are dropped after.
+    std::vector<dealii::Point<2>> vertices;
+    vertices.reserve(static_cast<std::size_t>(nx + 1) * (ny + 1));
+    for (unsigned int j = 0; j <= ny; ++j)
+      for (unsigned int i = 0; i <= nx; ++i)
+        vertices.emplace_back(i * dx, j * dy);
+    std::vector<dealii::CellData<2>> cells;
+    for (unsigned int j = 0; j < ny; ++j)
+      for (unsigned int i = 0; i < nx; ++i)
+        {
+          const std::size_t pixel
+            = static_cast<std::size_t>(j / s) * morphology.n_pixels_x() + i / s;
+          if (!kept[pixel])
+            continue;
+          dealii::CellData<2> cell;
+          const unsigned int  v = j * (nx + 1) + i;
+          cell.vertices         = {v, v + 1, v + nx + 1, v + nx + 2};
+          cell.material_id      = morphology.pixel(i / s, j / s);
+          cells.push_back(cell);
+        }
+    AssertThrow(!cells.empty(), dealii::ExcInternalError());
+    dealii::SubCellData no_subcells;
+    dealii::GridTools::delete_unused_vertices(vertices, cells, no_subcells);
+    triangulation.create_triangulation(vertices, cells, no_subcells);
+
+    // Boundary ids by position: the rectangle's sides, else a void's face.
+    const double tolerance = 1e-6 * std::min(dx, dy);
+    for (const auto &cell : triangulation.cell_iterators_on_level(0))
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            const dealii::Point<2> c  = cell->face(f)->center();
+            const unsigned int     id = c[0] < tolerance ? 0
+                                        : c[0] > morphology.width() - tolerance ? 1
+                                        : c[1] < tolerance ? 2
+                                        : c[1] > morphology.height() - tolerance
+                                          ? 3
+                                          : 4;
+            cell->face(f)->set_boundary_id(id);
+          }
   }
 } // namespace tribodyn

@@ -337,4 +337,93 @@ namespace tribodyn
         p.emplace_back(materials[k]);
     return p;
   }
+
+
+  void
+  MorphologyMaterials::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Materials");
+    TwoPhaseMaterials::declare_parameters(prm);
+    PhaseMaterials::declare_parameters(prm);
+    prm.leave_subsection();
+  }
+
+
+  void
+  MorphologyMaterials::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Materials");
+    TwoPhaseMaterials::parse_parameters(prm, "Materials");
+    named.parse_parameters(prm, "Materials");
+    prm.leave_subsection();
+  }
+
+
+  std::vector<ElasticPhase>
+  MorphologyMaterials::phases() const
+  {
+    if (named.given())
+      return named.phases();
+    const auto two = TwoPhaseMaterials::phases();
+    return {two.begin(), two.end()};
+  }
+
+
+  std::vector<IsotropicElasticMaterial>
+  MorphologyMaterials::given() const
+  {
+    return named.given() ? named.materials : TwoPhaseMaterials::phases();
+  }
+
+
+  std::vector<std::string>
+  MorphologyMaterials::names() const
+  {
+    return named.given() ? named.names
+                         : std::vector<std::string>{"matrix", "heterogeneity"};
+  }
+
+
+  std::vector<bool>
+  MorphologyMaterials::pores() const
+  {
+    return named.given() ? named.pore : std::vector<bool>(2, false);
+  }
+
+
+  void
+  MorphologyMaterials::check(const Morphology &morphology,
+                             const bool        image) const
+  {
+    const unsigned int n_given = names().size();
+    if (!named.given())
+      check_parameter(morphology.n_phases() <= 2,
+                      "Materials/Phases/Names",
+                      "the morphology has "
+                        + std::to_string(morphology.n_phases())
+                        + " phases (material ids 0 to "
+                        + std::to_string(morphology.n_phases() - 1)
+                        + ") but only two are given ('Materials/Matrix' and "
+                          "'Materials/Heterogeneity'). Name every phase in "
+                          "'Materials/Phases' (Names, Young moduli, Poisson "
+                          "ratios, Densities), in the order of the "
+                          "segmentation.");
+    else if (image)
+      check_parameter(morphology.n_phases() == n_given,
+                      "Materials/Phases/Names",
+                      "the image is segmented into "
+                        + std::to_string(morphology.n_phases())
+                        + " phases by 'Morphology/Image/Segmentation', but "
+                        + std::to_string(n_given)
+                        + " phases are named. Give as many names (and "
+                          "constants) as the segmentation has phases, or "
+                          "change the segmentation.");
+    else
+      check_parameter(morphology.n_phases() <= n_given,
+                      "Materials/Phases/Names",
+                      "the morphology has material ids up to "
+                        + std::to_string(morphology.n_phases() - 1)
+                        + " but only " + std::to_string(n_given)
+                        + " phases are named.");
+  }
 } // namespace tribodyn

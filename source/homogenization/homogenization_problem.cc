@@ -16,52 +16,6 @@ namespace tribodyn
   {
     using dealii::ParameterHandler;
 
-    void
-    MaterialsParameters::declare_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Materials");
-      TwoPhaseMaterials::declare_parameters(prm);
-      PhaseMaterials::declare_parameters(prm);
-      prm.leave_subsection();
-    }
-
-
-    void
-    MaterialsParameters::parse_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Materials");
-      TwoPhaseMaterials::parse_parameters(prm, "Materials");
-      named.parse_parameters(prm, "Materials");
-      prm.leave_subsection();
-    }
-
-
-    std::vector<ElasticPhase>
-    MaterialsParameters::phases() const
-    {
-      if (named.given())
-        return named.phases();
-      const auto two = TwoPhaseMaterials::phases();
-      return {two.begin(), two.end()};
-    }
-
-
-    std::vector<std::string>
-    MaterialsParameters::names() const
-    {
-      return named.given()
-               ? named.names
-               : std::vector<std::string>{"matrix", "heterogeneity"};
-    }
-
-
-    std::vector<bool>
-    MaterialsParameters::pores() const
-    {
-      return named.given() ? named.pore : std::vector<bool>(2, false);
-    }
-
-
     ParameterBinding
     HomogenizationOutputParameters::binding()
     {
@@ -164,7 +118,9 @@ namespace tribodyn
             == MorphologyParameters::Generator::image
           || morphology_parameters.generator
                == MorphologyParameters::Generator::grid_file)
-        check_phases(Morphology::create(morphology_parameters));
+        materials.check(Morphology::create(morphology_parameters),
+                        morphology_parameters.generator
+                          == MorphologyParameters::Generator::image);
     }
 
 
@@ -231,53 +187,13 @@ namespace tribodyn
     } // namespace
 
 
-    void
-    HomogenizationProblem::check_phases(const Morphology &morphology) const
-    {
-      const unsigned int n_given = materials.names().size();
-      const bool         image   = morphology_parameters.generator
-                         == MorphologyParameters::Generator::image;
-      if (!materials.named.given())
-        check_parameter(morphology.n_phases() <= 2,
-                        "Materials/Phases/Names",
-                        "the morphology has "
-                          + std::to_string(morphology.n_phases())
-                          + " phases (material ids 0 to "
-                          + std::to_string(morphology.n_phases() - 1)
-                          + ") but only two are given ('Materials/Matrix' and "
-                            "'Materials/Heterogeneity'). Name every phase in "
-                            "'Materials/Phases' (Names, Young moduli, Poisson "
-                            "ratios, Densities), in the order of the "
-                            "segmentation.");
-      else if (image)
-        check_parameter(morphology.n_phases() == n_given,
-                        "Materials/Phases/Names",
-                        "the image is segmented into "
-                          + std::to_string(morphology.n_phases())
-                          + " phases by 'Morphology/Image/Segmentation', but "
-                          + std::to_string(n_given)
-                          + " phases are named. Give as many names (and "
-                            "constants) as the segmentation has phases, or "
-                            "change the segmentation.");
-      else
-        check_parameter(morphology.n_phases() <= n_given,
-                        "Materials/Phases/Names",
-                        "the morphology has material ids up to "
-                          + std::to_string(morphology.n_phases() - 1)
-                          + " but only " + std::to_string(n_given)
-                          + " phases are named.");
-    }
-
-
     JsonValue
     HomogenizationProblem::phases_to_json(
       const std::vector<double> &fractions) const
     {
       const auto names = materials.names();
       const auto pores = materials.pores();
-      const auto given = materials.named.given()
-                           ? materials.named.materials
-                           : materials.TwoPhaseMaterials::phases();
+      const auto given = materials.given();
       const auto used  = materials.phases();
       JsonValue  list  = JsonValue::array();
       for (unsigned int k = 0; k < names.size(); ++k)
@@ -394,7 +310,9 @@ namespace tribodyn
       const Morphology morphology = Morphology::create(morphology_parameters);
       pcout << "Morphology: " << morphology.description() << std::endl;
       const std::vector<ElasticPhase> phases = materials.phases();
-      check_phases(morphology);
+      materials.check(morphology,
+                      morphology_parameters.generator
+                        == MorphologyParameters::Generator::image);
 
       CellProblem cell_problem(
         comm, morphology, phases, cell_problem_parameters, timer);

@@ -37,6 +37,16 @@ namespace tribodyn
     {
       base.parse_parameters(prm);
       base.check_averaging_window(false);
+      // The study's three pin models (homogeneous matrix, homogenized,
+      // meso) are those of the seed's two phases.
+      check_parameter(!base.material.composite.named.given(),
+                      "Materials/Phases/Names",
+                      "empty for 'set Problem = study': its pin models "
+                      "are built from the two phases 'Materials/Matrix' and "
+                      "'Materials/Heterogeneity' (the homogeneous pin is the "
+                      "matrix). For a map of more phases, run its meso pin "
+                      "('set Problem = contact', 'Materials/Type = "
+                      "morphology') and its homogenization one by one");
       parameters.parse_parameters(prm);
       parameters_of_homogenization
         = homogenization::HomogenizationParameters::defaults();

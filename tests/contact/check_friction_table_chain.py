@@ -86,9 +86,10 @@ subprocess.run([tribodyn, prm], check=True, env=env,
 with open(os.path.join(pin_dir, "summary.json")) as f:
     s = json.load(f)
 check(s["friction_law"] == "tabulated", "pin: friction_law = tabulated")
-check("tabulated_friction_clamped" in s,
-      "pin: clamped evaluations counted (%s)"
-      % s.get("tabulated_friction_clamped"))
+share = s.get("tabulated_clamped_fraction")
+check(share is not None and 0 <= share <= 1 and s["tabulated_contact_node_steps"] > 0,
+      "pin: share of the node-steps read outside the table reported (%s of %s)"
+      % (share, s.get("tabulated_contact_node_steps")))
 mu = s["mu_contact_mean"]
 check(mu is not None and math.isfinite(mu) and 0 <= abs(mu) <= mu_max * (1 + 1e-9),
       "pin: contact mu %r within [0, largest mu of the table %r]"

@@ -20,13 +20,24 @@
 // (e) Speed: with `Speed = plane speed` and mu(v) = 0.1 + 0.05 v/(m/s), the
 //     block sliding at |V| = 2 m/s has |sum lambda_T| = 0.2 sum lambda_N to
 //     round-off (1e-12) once every node slips.
+// (f) The clamped share (summary.json), once per node-step in contact and
+//     by cause: a table of pressures 0-5 MPa on the held block (pressures
+//     about 5 MPa) clamps a share above (0 < share < 1) and nothing below
+//     or in speed, and the projected Gauss-Seidel path, which evaluates the
+//     law in each of its sweeps, reports the same node-steps and shares as
+//     the node-wise one (exact); a table of 1-2 GPa clamps every node-step
+//     below, one of 10-100 m/s at the plane speed 2 m/s every node-step in
+//     speed (exact: 1); a warning is printed above 1 % and not for the
+//     constant table of (c), which clamps nothing.
 
 #include "contact_test_tools.h"
 
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <nlohmann/json.hpp>
 #include <random>
+#include <sstream>
 #include <tribodyn/contact/friction_table.h>
 #include <tribodyn/core/errors.h>
 
@@ -229,6 +240,70 @@ main(int argc, char **argv)
           "mu(v) at the plane speed 2 m/s: |sum lambda_T| = 0.2 sum "
           "lambda_N ("
             + std::to_string(worst) + ")");
+  }
+  // (f)
+  {
+    const auto clamped = [&](const std::string &file,
+                             const std::string &algorithm,
+                             std::string       *figures = nullptr) {
+      ContactRun run(held_block + R"(
+        subsection Contact
+          set Algorithm = )"
+                     + algorithm + R"(
+          set Friction law = tabulated
+          subsection Tabulated friction
+            set File = )"
+                     + file + R"(
+            set Speed = plane speed
+          end
+        end)");
+      run.run();
+      JsonValue          summary = JsonValue::object();
+      std::ostringstream text;
+      run.solver->report_friction_law(summary, text);
+      if (figures)
+        *figures = text.str();
+      return nlohmann::json::parse(summary.dump());
+    };
+    write("narrow.csv",
+          "pressure,speed,mu\n0,0,0.25\n0,100,0.25\n5e6,0,0.25\n"
+          "5e6,100,0.25\n");
+    write("high.csv",
+          "pressure,speed,mu\n1e9,0,0.25\n1e9,100,0.25\n2e9,0,0.25\n"
+          "2e9,100,0.25\n");
+    write("slow.csv",
+          "pressure,speed,mu\n0,10,0.25\n0,100,0.25\n1e9,10,0.25\n"
+          "1e9,100,0.25\n");
+    std::string warning, none;
+    const auto  wise   = clamped("narrow.csv", "node-wise", &warning),
+               gs      = clamped("narrow.csv", "projected Gauss-Seidel");
+    const double above = wise["tabulated_clamped_pressure_above_fraction"];
+    check(above > 0.01 && above < 1
+            && wise["tabulated_clamped_pressure_below_fraction"] == 0.
+            && wise["tabulated_clamped_speed_fraction"] == 0.
+            && wise["tabulated_clamped_fraction"] == above,
+          "0-5 MPa table: a share " + std::to_string(above)
+            + " of the node-steps clamped above, none below or in speed");
+    check(gs == wise,
+          "Gauss-Seidel reports what node-wise does, once per node-step ("
+            + std::to_string(static_cast<unsigned long long>(
+              gs["tabulated_contact_node_steps"]))
+            + " node-steps)");
+    const auto high = clamped("high.csv", "node-wise"),
+               slow = clamped("slow.csv", "projected Gauss-Seidel");
+    check(high["tabulated_clamped_pressure_below_fraction"] == 1.
+            && high["tabulated_clamped_fraction"] == 1.
+            && high["tabulated_clamped_speed_fraction"] == 0.,
+          "1-2 GPa table: every node-step clamped below");
+    check(slow["tabulated_clamped_speed_fraction"] == 1.
+            && slow["tabulated_clamped_fraction"] == 1.
+            && slow["tabulated_clamped_pressure_below_fraction"] == 0.
+            && slow["tabulated_clamped_pressure_above_fraction"] == 0.,
+          "10-100 m/s table at 2 m/s: every node-step clamped in speed");
+    clamped("constant.csv", "node-wise", &none);
+    check(warning.find("Warning") != std::string::npos
+            && none.find("Warning") == std::string::npos,
+          "a warning above 1 % only: " + warning);
   }
   return result();
 }

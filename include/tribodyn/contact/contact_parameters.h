@@ -8,6 +8,7 @@
 #include <tribodyn/core/material.h>
 #include <tribodyn/core/morphology.h>
 #include <tribodyn/core/parameter_binding.h>
+#include <tribodyn/core/phase_materials.h>
 #include <vector>
 
 namespace tribodyn
@@ -77,16 +78,18 @@ namespace tribodyn
       std::string summary_file;
       std::string summary_key = "KUBC";
 
-      /// Type = morphology: the two phases.
-      TwoPhaseMaterials composite;
+      /// Type = morphology: the phases of the morphology, by material id
+      /// (Matrix and Heterogeneity, or the named list Phases).
+      MorphologyMaterials composite;
 
       /// The entries of "Materials" (Type, Kinematics, Density), bound to
       /// the members above (their initial values are the defaults).
       ParameterBinding
       binding();
       /// Those of its subsections "Anisotropic", "Engineering constants"
-      /// and "Homogenization summary", in this order ("Isotropic", "Matrix"
-      /// and "Heterogeneity" are IsotropicElasticMaterial's).
+      /// and "Homogenization summary", in this order ("Isotropic" is
+      /// IsotropicElasticMaterial's; "Matrix", "Heterogeneity" and "Phases"
+      /// are MorphologyMaterials').
       std::vector<ParameterBinding>
       subsection_bindings();
 

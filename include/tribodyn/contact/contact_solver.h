@@ -252,6 +252,10 @@ namespace tribodyn
       {
         return mass_total;
       }
+      /// Length of the contact face: the nodes' tributary lengths summed
+      /// over all ranks (the bottom face less its voids).
+      double
+      contact_face_length() const;
       /// Area fraction of the cells with material index 1 (meso pins:
       /// the heterogeneities), over all ranks.
       double
@@ -315,6 +319,11 @@ namespace tribodyn
 
       void
       make_mesh();
+      /// The meso pin's mesh with the pores of @p pores (by material id)
+      /// cut out, and the solid fragments they detach from the top face.
+      void
+      make_porous_mesh(const Morphology        &morphology,
+                       const std::vector<bool> &pores);
       void
       setup_materials();
       void
@@ -400,7 +409,12 @@ namespace tribodyn
       // pre-multiplied by JxW for the force (large-deformation loop).
       double grad_x[4][8], grad_y[4][8], grad_x_w[4][8], grad_y_w[4][8];
       double cell_hx = 0, cell_hy = 0;
+      /// Width of the pin's rectangle (its bottom face with the voids).
+      double pin_width       = 0;
       bool   single_material = true;
+      /// Whether any cell of the mesh (on any rank) has material k: the
+      /// materials of the time step bound (a pore's is cut out).
+      std::vector<bool> material_in_mesh;
 
       // Contact nodes (owned; include/tribodyn/contact/friction_law.h).
       /// Plane height under a node at x (current position) when the plane

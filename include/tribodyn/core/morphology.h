@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
+#include <functional>
 #include <string>
 #include <tribodyn/core/image_morphology.h>
 #include <tribodyn/core/material.h>
@@ -183,6 +184,16 @@ namespace tribodyn
     unsigned int
     count_connected_heterogeneities() const;
 
+    /**
+     * The pixels a pin keeps when the phases flagged in @p void_phase (by
+     * material id; ids past its end are solid) are cut out of it: the solid
+     * pixels connected to the top row through shared edges. A solid
+     * fragment that no chain of solid pixels ties to the loaded top face
+     * would be a loose body in the pin; it is cut too.
+     */
+    std::vector<bool>
+    held_from_top(const std::vector<bool> &void_phase) const;
+
     /// One-line description for the screen and summary.json.
     std::string
     description() const;
@@ -206,6 +217,14 @@ namespace tribodyn
            const unsigned int window_ny) const;
 
   private:
+    /// Mark (in @p seen) every pixel that @p accept takes and that is
+    /// connected through shared edges to a pixel of @p stack (already
+    /// marked).
+    void
+    flood_fill(std::vector<bool>                      &seen,
+               std::vector<std::size_t>                stack,
+               const std::function<bool(std::size_t)> &accept) const;
+
     double                    rectangle_width;
     double                    rectangle_height;
     unsigned int              n_x;
@@ -226,6 +245,18 @@ namespace tribodyn
   void
   create_morphology_mesh(const Morphology         &morphology,
                          const unsigned int        subdivisions_per_pixel,
+                         dealii::Triangulation<2> &triangulation);
+
+  /**
+   * The same mesh with only the pixels flagged in @p kept (one flag per
+   * pixel, row-major from the bottom, as Morphology::held_from_top() gives
+   * them): the others are voids. Boundary ids as above on the rectangle's
+   * sides; the faces of the voids get boundary id 4.
+   */
+  void
+  create_morphology_mesh(const Morphology         &morphology,
+                         const unsigned int        subdivisions_per_pixel,
+                         const std::vector<bool>  &kept,
                          dealii::Triangulation<2> &triangulation);
 } // namespace tribodyn
 

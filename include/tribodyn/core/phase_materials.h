@@ -6,6 +6,7 @@
 #include <string>
 #include <tribodyn/core/elastic_phase.h>
 #include <tribodyn/core/material.h>
+#include <tribodyn/core/morphology.h>
 #include <vector>
 
 namespace tribodyn
@@ -90,6 +91,48 @@ namespace tribodyn
     void
     set_transversely_isotropic(const TransverseLists &lists,
                                const std::string     &section);
+  };
+
+  /**
+   * The phases of a morphology as every engine reads them (the subsection
+   * "Materials" of the homogenization and of the meso contact pin): the
+   * named list "Phases" when it is given, else the two phases "Matrix"
+   * (material id 0) and "Heterogeneity" (id 1).
+   */
+  struct MorphologyMaterials : TwoPhaseMaterials
+  {
+    PhaseMaterials named;
+
+    /// Declare "Materials/Matrix", "Materials/Heterogeneity" and
+    /// "Materials/Phases" (@p prm at the top level).
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    /// Parse them (@p prm at the top level).
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /// The phases, indexed by material id (pores with their ersatz
+    /// stiffness: engines that cut pores out of the mesh ignore it).
+    std::vector<ElasticPhase>
+    phases() const;
+    /// The phases as given (a pore with its zero Young modulus).
+    std::vector<IsotropicElasticMaterial>
+    given() const;
+    /// Name of each phase ("matrix", "heterogeneity" for two).
+    std::vector<std::string>
+    names() const;
+    /// Whether each phase is a pore.
+    std::vector<bool>
+    pores() const;
+
+    /**
+     * Refuse (InputError naming 'Materials/Phases/Names') a morphology
+     * with more phases than are given; an image's segmentation must give
+     * exactly as many phases as are named (@p image: the morphology is a
+     * segmented image).
+     */
+    void
+    check(const Morphology &morphology, const bool image) const;
   };
 } // namespace tribodyn
 

@@ -21,26 +21,8 @@ namespace tribodyn
      * and "Heterogeneity", or any number of named phases in "Phases"
      * (which then takes over).
      */
-    struct MaterialsParameters : TwoPhaseMaterials
-    {
-      PhaseMaterials named;
-
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
-      void
-      parse_parameters(dealii::ParameterHandler &prm);
-
-      /// The phases the cell problems use, indexed by material id (pores
-      /// with their ersatz stiffness).
-      std::vector<ElasticPhase>
-      phases() const;
-      /// Name of each phase ("matrix", "heterogeneity" for two).
-      std::vector<std::string>
-      names() const;
-      /// Whether each phase is a pore.
-      std::vector<bool>
-      pores() const;
-    };
+    /// The subsection "Materials": the phases of the morphology.
+    using MaterialsParameters = MorphologyMaterials;
 
     /// Parameters of the subsection "Output" of the homogenization problem.
     struct HomogenizationOutputParameters
@@ -102,10 +84,6 @@ namespace tribodyn
       run() override;
 
     private:
-      /// Refuse a morphology whose material ids have no phase, or an image
-      /// segmented into another number of phases than 'Materials/Phases'.
-      void
-      check_phases(const Morphology &morphology) const;
       /// Name, constants and area fraction of each phase (summary.json).
       JsonValue
       phases_to_json(const std::vector<double> &fractions) const;

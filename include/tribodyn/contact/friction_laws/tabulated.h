@@ -1,15 +1,17 @@
 // Contact friction law "tabulated": Coulomb's law with a coefficient
 // mu(p, v) read from a CSV table of contact pressure and slip speed
 // (subsection `Contact/Tabulated friction`; FrictionTable: bilinear,
-// clamped outside the table with a warning). The table may come from the
-// automata (`scripts/mca_friction_table`): the bridge between the
+// clamped outside the table; the share of the node-steps in contact read
+// outside, by cause, in summary.json, with a warning above 1 %). The table may
+// come from the automata (`scripts/mca_friction_table`): the bridge between the
 // scales (doc/user_guide/contact.md).
 #ifndef tribodyn_contact_friction_laws_tabulated_h
 #define tribodyn_contact_friction_laws_tabulated_h
 
+#include <array>
 #include <deal.II/base/mpi.h>
 #include <iostream>
-#include <sstream>
+#include <string>
 #include <tribodyn/contact/friction_law.h>
 #include <tribodyn/contact/friction_table.h>
 #include <tribodyn/core/errors.h>
@@ -51,8 +53,10 @@ namespace tribodyn
             "CSV table of mu for 'Friction law = tabulated': a header line "
             "naming the columns pressure (Pa), speed (m/s) and mu (others "
             "ignored), one row per point of a full grid (at least 2 x 2). "
-            "mu is bilinear between the points and clamped, with a warning, "
-            "outside. Relative paths: from the working directory.");
+            "mu is bilinear between the points and clamped outside (the "
+            "share of the node-steps in contact read outside is "
+            "summary.json's tabulated_clamped_fraction; a warning above "
+            "1 %). Relative paths: from the working directory.");
           prm.declare_entry("Speed",
                             "local slip rate",
                             selection_pattern(speed_choices),
@@ -130,63 +134,104 @@ namespace tribodyn
           = speed == Speed::slip_rate ? before.slip_rate : plane_speed;
         const double mu
           = table(pressure_scale * lambda_n / before.length, speed_scale * v);
-        if (!warned && clamped.earlier == 0 && table.clamped() > 0)
-          warn_clamped(pressure_scale * lambda_n / before.length,
-                       speed_scale * v);
         return coulomb_tangential(trial, mu * lambda_n, status);
       }
 
+      /// Count, once per node and step in contact, whether the table was
+      /// read outside its grid, and why (the contact loops may evaluate
+      /// tangential() several times per step: the Gauss-Seidel sweeps).
+      /// law_state[0] keeps the slip rate the next step reads mu at.
+      void
+      end_step(ContactNode &node, const double) const
+      {
+        const double v
+          = speed == Speed::slip_rate ? node.law_state[0] : plane_speed;
+        node.law_state[0] = node.slip_rate;
+        if (node.status == separated)
+          return;
+        const double p = pressure_scale * node.lambda_n / node.length;
+        const std::vector<double> &P = table.pressure_axis(),
+                                  &V = table.speed_axis();
+        const bool below             = p<P.front(), above = p> P.back(),
+                   fast_or_slow
+                   = speed_scale * v < V.front() || speed_scale * v > V.back();
+        ++counts[contact_steps].leg;
+        counts[pressure_below].leg += below;
+        counts[pressure_above].leg += above;
+        counts[speed_outside].leg += fast_or_slow;
+        counts[any_outside].leg += below || above || fast_or_slow;
+      }
+
+      /// summary.json: the share of the node-steps in contact whose mu was
+      /// read outside the table, in all and by cause; a warning above 1 %.
       void
       report(JsonValue     &summary,
              std::ostream  &figures,
              const MPI_Comm comm) const
       {
-        clamped.leg                           = table.clamped();
-        const unsigned long long n            = clamped.total(comm);
-        summary["tabulated_friction_clamped"] = n;
-        figures << "Tabulated friction: " << n
-                << " evaluation(s) outside the table (clamped to its edges)"
-                << std::endl;
+        std::array<unsigned long long, n_counts> n;
+        for (unsigned int k = 0; k < n_counts; ++k)
+          n[k] = counts[k].total(comm);
+        const auto share = [&](const unsigned int k) {
+          return n[contact_steps] > 0 ? double(n[k]) / n[contact_steps] : 0.;
+        };
+        summary[count_names[contact_steps]] = n[contact_steps];
+        for (unsigned int k = 1; k < n_counts; ++k)
+          summary[std::string(count_names[k]) + "_fraction"] = share(k);
+        figures << "Tabulated friction: mu read outside the table in "
+                << 100 * share(any_outside) << " % of the " << n[contact_steps]
+                << " node-steps in contact (pressure below "
+                << 100 * share(pressure_below) << " %, above "
+                << 100 * share(pressure_above) << " %; speed "
+                << 100 * share(speed_outside) << " %)" << std::endl;
+        if (share(any_outside) > 0.01)
+          figures << "Warning: 'Contact/Tabulated friction/File': "
+                  << 100 * share(any_outside)
+                  << " % of the pin's friction evaluations fell outside the "
+                     "table and took its edge values (the table covers "
+                  << table.pressure_axis().front() << " to "
+                  << table.pressure_axis().back() << " Pa and "
+                  << table.speed_axis().front() << " to "
+                  << table.speed_axis().back()
+                  << " m/s, read at Pressure scale x lambda_n / length and "
+                     "Speed scale x speed): extend the table over the pin's "
+                     "operating range, or change the scales."
+                  << std::endl;
       }
 
-      /// f("tabulated_friction_clamped", count of evaluations outside the
-      /// table).
+      /// f(name, count) for the counts above (checkpointed by name).
       template <class F>
       void
       for_each_counter(const F &f) const
       {
-        clamped.leg = table.clamped();
-        f("tabulated_friction_clamped", clamped);
+        for (unsigned int k = 0; k < n_counts; ++k)
+          f(count_names[k], counts[k]);
       }
 
       FrictionTable table;
 
     private:
-      void
-      warn_clamped(const double p, const double v) const
+      enum Count : unsigned int
       {
-        warned = true;
-        // one write of the whole line, so that the ranks' warnings do not
-        // interleave
-        std::ostringstream m;
-        m << "Warning (rank " << rank
-          << "): 'Contact/Tabulated friction/File': mu read outside the "
-             "table (pressure "
-          << p << " Pa, speed " << v << " m/s; the table covers "
-          << table.pressure_axis().front() << " to "
-          << table.pressure_axis().back() << " Pa and "
-          << table.speed_axis().front() << " to " << table.speed_axis().back()
-          << " m/s): clamped to its edges (this warning once per rank and "
-             "run; the count is in summary.json).\n";
-        std::cerr << m.str() << std::flush;
-      }
+        contact_steps,
+        any_outside,
+        pressure_below,
+        pressure_above,
+        speed_outside,
+        n_counts
+      };
+      /// The counts' names (checkpoints; summary.json: the count of
+      /// node-steps, the others as "<name>_fraction" of it).
+      static constexpr const char *count_names[n_counts]
+        = {"tabulated_contact_node_steps",
+           "tabulated_clamped",
+           "tabulated_clamped_pressure_below",
+           "tabulated_clamped_pressure_above",
+           "tabulated_clamped_speed"};
 
-      Speed        speed;
-      double       pressure_scale, speed_scale, plane_speed = 0;
-      unsigned int rank
-        = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-      mutable bool       warned = false;
-      mutable RunCounter clamped;
+      Speed  speed;
+      double pressure_scale, speed_scale, plane_speed = 0;
+      mutable std::array<RunCounter, n_counts> counts;
     };
   } // namespace contact
 } // namespace tribodyn
