@@ -6,6 +6,7 @@
 #include <string>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/parameter_binding.h>
+#include <tribodyn/core/selection.h>
 #include <tribodyn/study/study_problem.h>
 
 namespace tribodyn
@@ -14,6 +15,14 @@ namespace tribodyn
   {
     using dealii::ParameterHandler;
     namespace Patterns = dealii::Patterns;
+
+    namespace
+    {
+      using HomogenizedPin = StudyParameters::HomogenizedPin;
+      constexpr SelectionTable<HomogenizedPin, 2> homogenized_pin_choices{
+        {{"mean of the morphologies", HomogenizedPin::mean_of_morphologies},
+         {"each morphology", HomogenizedPin::each_morphology}}};
+    } // namespace
 
     std::string
     to_string(const PinModel model)
@@ -86,9 +95,55 @@ namespace tribodyn
             });
       b.add("Number of morphologies",
             n_morphologies,
-            "Morphologies (random seeds First seed, +1, ...) of the meso pin "
-            "and of the homogenization runs. The seed uses six.",
+            "Morphologies of the meso pin and of the homogenization runs: "
+            "random seeds First seed, +1, ... of the generator (the seed "
+            "uses six), or windows of a map ('Window size').",
             Patterns::Integer(1, 1000));
+      b.add("Window size",
+            "",
+            "For a map ('Morphology/Generator = image' or 'grid file'): the "
+            "morphologies are windows of it, WIDTHxHEIGHT pixels (e.g. "
+            "40x30), cut side by side from its top-left corner, row by row "
+            "(non-overlapping, so that they are independent samples), from "
+            "the map segmented once as a whole; each window is a pin and a "
+            "homogenization cell of its own. Empty: the whole map is the one "
+            "morphology.",
+            Patterns::Anything(),
+            [this, path = b.path("Window size")](const std::string &text) {
+              window_size         = {{0, 0}};
+              const std::string t = dealii::Utilities::trim(text);
+              if (t.empty())
+                return;
+              const auto x = t.find('x');
+              try
+                {
+                  if (x == std::string::npos)
+                    throw 0;
+                  const int w
+                    = dealii::Utilities::string_to_int(t.substr(0, x)),
+                    h = dealii::Utilities::string_to_int(t.substr(x + 1));
+                  if (w < 1 || h < 1)
+                    throw 0;
+                  window_size = {{static_cast<unsigned int>(w),
+                                  static_cast<unsigned int>(h)}};
+                }
+              catch (...)
+                {
+                  throw InputError("Parameter '" + path + "': '" + text
+                                   + "' is not a window size. Give it in "
+                                     "pixels as WIDTHxHEIGHT, e.g. 40x30, or "
+                                     "leave it empty for the whole map.");
+                }
+            });
+      b.add("Homogenized pin",
+            homogenized_pin,
+            "'mean of the morphologies': one homogenized pin with the mean "
+            "apparent stiffness of the morphologies' homogenization runs "
+            "(the seed's Table 2). 'each morphology': one homogenized pin per "
+            "morphology with its own constants, paired with its meso pin: the "
+            "tables then also give meso - homogenized per morphology, with "
+            "the morphology-to-morphology scatter.",
+            homogenized_pin_choices);
       b.add("First seed",
             first_seed,
             "Seed of the first morphology; replaces 'Morphology/Seed'.",

@@ -37,20 +37,41 @@ namespace tribodyn
     {
       base.parse_parameters(prm);
       base.check_averaging_window(false);
-      // The study's three pin models (homogeneous matrix, homogenized,
-      // meso) are those of the seed's two phases.
-      check_parameter(!base.material.composite.named.given(),
-                      "Materials/Phases/Names",
-                      "empty for 'set Problem = study': its pin models "
-                      "are built from the two phases 'Materials/Matrix' and "
-                      "'Materials/Heterogeneity' (the homogeneous pin is the "
-                      "matrix). For a map of more phases, run its meso pin "
-                      "('set Problem = contact', 'Materials/Type = "
-                      "morphology') and its homogenization one by one");
       parameters.parse_parameters(prm);
       parameters_of_homogenization
         = homogenization::HomogenizationParameters::defaults();
       parameters_of_homogenization.morphology = base.morphology;
+      const bool named = base.material.composite.named.given();
+      check_parameter(!named
+                        || std::find(parameters.models.begin(),
+                                     parameters.models.end(),
+                                     PinModel::homogeneous_matrix)
+                             == parameters.models.end(),
+                      "Study/Models",
+                      "no 'homogeneous matrix' when the phases are named in "
+                      "'Materials/Phases': that model is the pin of "
+                      "'Materials/Matrix' alone. Leave it out, or give an "
+                      "isotropic pin of the phase you mean its own run "
+                      "('set Problem = contact')");
+      const bool is_map
+        = base.morphology.generator == MorphologyParameters::Generator::image
+          || base.morphology.generator
+               == MorphologyParameters::Generator::grid_file;
+      if (parameters.window_size[0] > 0)
+        {
+          check_parameter(is_map,
+                          "Study/Window size",
+                          "empty unless 'Morphology/Generator' is 'image' or "
+                          "'grid file': windows are cut from a map, a "
+                          "generator's morphologies are its seeds");
+          cut_windows();
+        }
+      else if (is_map)
+        check_parameter(parameters.n_morphologies == 1,
+                        "Study/Number of morphologies",
+                        "1 for a map without windows (the map is one "
+                        "morphology): give 'Study/Window size' to cut "
+                        "windows from it");
 
       // The same mesh for every model: the morphology's pixel grid times
       // the subdivisions, which must be square.
@@ -71,6 +92,13 @@ namespace tribodyn
       base.geometry.width     = m.width;
       base.geometry.height    = m.height;
       base.geometry.mesh_size = hx;
+      if (whole_map)
+        {
+          base.geometry.width
+            = parameters.window_size[0] * whole_map->pixel_width();
+          base.geometry.height
+            = parameters.window_size[1] * whole_map->pixel_height();
+        }
       if (!parameters.write_case_fields)
         base.output.field_interval = 0;
 
@@ -78,23 +106,28 @@ namespace tribodyn
       for (unsigned int p = 0; p < parameters.pressures.size(); ++p)
         for (const PinModel model : parameters.models)
           {
+            const bool per_morphology
+              = model == PinModel::meso
+                || (model == PinModel::homogenized
+                    && parameters.homogenized_pin
+                         == StudyParameters::HomogenizedPin::each_morphology);
             const unsigned int n_seeds
-              = model == PinModel::meso ? parameters.n_morphologies : 1;
+              = per_morphology ? parameters.n_morphologies : 1;
             for (unsigned int k = 0; k < n_seeds; ++k)
               for (unsigned int r = 0; r < parameters.repeats; ++r)
                 {
                   StudyCase c;
                   c.pressure_index = p;
                   c.model          = model;
-                  c.seed           = parameters.first_seed + k;
+                  c.seed           = first_morphology() + k;
                   c.repeat         = r;
                   std::ostringstream name;
                   name << "P" << parameters.pressures[p] / 1e6 << "MPa_"
                        << (model == PinModel::homogeneous_matrix ? "matrix"
                            : model == PinModel::homogenized      ? "homogenized"
                                                                  : "meso");
-                  if (model == PinModel::meso)
-                    name << "_seed" << c.seed;
+                  if (per_morphology)
+                    name << "_" << morphology_name(c.seed);
                   if (parameters.repeats > 1)
                     name << "_r" << r;
                   c.name = name.str();
@@ -125,21 +158,19 @@ namespace tribodyn
       std::vector<std::string> summaries;
       for (unsigned int k = 0; k < parameters.n_morphologies; ++k)
         {
-          const unsigned int seed = parameters.first_seed + k;
-          const std::string  dir
-            = join_path(root_dir, "seed" + std::to_string(seed));
+          const unsigned int seed = first_morphology() + k;
+          const std::string  dir  = join_path(root_dir, morphology_name(seed));
           summaries.push_back(join_path(dir, "summary.json"));
           if (k % n_groups != std::min(color, n_groups - 1))
             continue;
           if (parameters.reuse_cases && file_exists(summaries.back()))
             continue;
           // The homogenization problem on the study's morphology (its seed
-          // set per run) and the two phases of 'Materials/Matrix',
-          // 'Heterogeneity'; its other parameters at their defaults.
-          auto hp                    = parameters_of_homogenization;
-          hp.morphology.random_seed  = seed;
-          hp.materials.matrix        = base.material.composite.matrix;
-          hp.materials.heterogeneity = base.material.composite.heterogeneity;
+          // or its window) and the study's phases; its other parameters at
+          // their defaults.
+          auto hp       = parameters_of_homogenization;
+          hp.morphology = morphology_parameters(seed);
+          hp.materials  = base.material.composite;
           hp.cell_problem.boundary_conditions
             = {homogenization::boundary_condition_named(
               parameters.boundary_condition)};
@@ -155,26 +186,40 @@ namespace tribodyn
         }
       MPI_Barrier(world);
 
-      // Average of the apparent stiffnesses and of the densities.
+      // Each morphology's apparent stiffness and density (the phases'
+      // densities by their area fractions), and their averages.
       homogenized_C       = 0;
       homogenized_c_z     = 0;
       homogenized_density = 0;
+      morphology_C.clear();
+      morphology_c_z.clear();
+      morphology_density.clear();
       nlohmann::ordered_json record;
       record["boundary_condition"] = parameters.boundary_condition;
       for (const std::string &file : summaries)
         {
           dealii::Tensor<1, 3> cz;
-          homogenized_C += contact::read_homogenization_stiffness(
-            file, parameters.boundary_condition, cz);
+          morphology_C.push_back(contact::read_homogenization_stiffness(
+            file, parameters.boundary_condition, cz));
+          morphology_c_z.push_back(cz);
+          homogenized_C += morphology_C.back();
           homogenized_c_z += cz;
           std::ifstream        in(file);
-          const nlohmann::json j = nlohmann::json::parse(in);
-          const double         f = j.at("volume_fraction").get<double>();
-          homogenized_density
-            += (1. - f) * base.material.composite.matrix.density
-               + f * base.material.composite.heterogeneity.density;
+          const nlohmann::json j       = nlohmann::json::parse(in);
+          const double         f       = j.at("volume_fraction").get<double>();
+          double               density = 0;
+          if (base.material.composite.named.given())
+            for (const auto &phase : j.at("phases"))
+              density += phase.at("fraction").get<double>()
+                         * phase.at("density").get<double>();
+          else
+            density = (1. - f) * base.material.composite.matrix.density
+                      + f * base.material.composite.heterogeneity.density;
+          morphology_density.push_back(density);
+          homogenized_density += density;
           record["summaries"].push_back(file);
           record["volume_fractions"].push_back(f);
+          record["densities"].push_back(density);
         }
       const double n = summaries.size();
       homogenized_C /= n;
@@ -314,14 +359,11 @@ namespace tribodyn
             p.material.isotropic = base.material.composite.matrix;
             break;
           case PinModel::homogenized:
-            p.material.type                  = Type::anisotropic;
-            p.material.anisotropic_stiffness = homogenized_C;
-            p.material.anisotropic_c_z       = homogenized_c_z;
-            p.material.density               = homogenized_density;
+            set_homogenized_material(p, c.seed);
             break;
           case PinModel::meso:
-            p.material.type          = Type::morphology;
-            p.morphology.random_seed = c.seed;
+            p.material.type = Type::morphology;
+            p.morphology    = morphology_parameters(c.seed);
             break;
         }
       if (c.repeat > 0)
@@ -330,6 +372,127 @@ namespace tribodyn
           p.loading.perturbation_seed     = c.repeat;
         }
       return p;
+    }
+
+
+    void
+    StudyProblem::set_homogenized_material(contact::ContactParameters &p,
+                                           const unsigned int seed) const
+    {
+      p.material.type = contact::ContactMaterialParameters::Type::anisotropic;
+      if (parameters.homogenized_pin
+          == StudyParameters::HomogenizedPin::each_morphology)
+        {
+          const unsigned int k             = seed - first_morphology();
+          p.material.anisotropic_stiffness = morphology_C.at(k);
+          p.material.anisotropic_c_z       = morphology_c_z.at(k);
+          p.material.density               = morphology_density.at(k);
+        }
+      else
+        {
+          p.material.anisotropic_stiffness = homogenized_C;
+          p.material.anisotropic_c_z       = homogenized_c_z;
+          p.material.density               = homogenized_density;
+        }
+    }
+
+
+    unsigned int
+    StudyProblem::first_morphology() const
+    {
+      return whole_map ? 1 : parameters.first_seed;
+    }
+
+
+    std::string
+    StudyProblem::morphology_name(const unsigned int seed) const
+    {
+      return (whole_map ? "window" : "seed") + std::to_string(seed);
+    }
+
+
+    void
+    StudyProblem::cut_windows()
+    {
+      whole_map
+        = std::make_unique<Morphology>(Morphology::create(base.morphology));
+      const unsigned int wx      = parameters.window_size[0],
+                         wy      = parameters.window_size[1];
+      const unsigned int nx      = whole_map->n_pixels_x(),
+                         ny      = whole_map->n_pixels_y();
+      const unsigned int columns = nx / wx, rows = ny / wy;
+      check_parameter(
+        columns * rows >= parameters.n_morphologies,
+        "Study/Window size",
+        "windows that fit the map " + std::to_string(parameters.n_morphologies)
+          + " times ('Study/Number of morphologies'), but the map of "
+          + std::to_string(nx) + " x " + std::to_string(ny)
+          + " pixels holds only " + std::to_string(columns * rows)
+          + " windows of " + std::to_string(wx) + "x" + std::to_string(wy)
+          + " side by side. Give smaller windows or fewer morphologies");
+      window_origins.clear();
+      for (unsigned int k = 0; k < parameters.n_morphologies; ++k)
+        {
+          // columns left to right, rows from the top; origins from the
+          // bottom-left pixel, as Morphology counts them
+          const unsigned int c = k % columns, r = k / columns;
+          window_origins.push_back({{c * wx, ny - (r + 1) * wy}});
+        }
+    }
+
+
+    MorphologyParameters
+    StudyProblem::morphology_parameters(const unsigned int seed) const
+    {
+      MorphologyParameters m = base.morphology;
+      if (!whole_map)
+        {
+          m.random_seed = seed;
+          return m;
+        }
+      m.generator  = MorphologyParameters::Generator::grid_file;
+      m.grid_file  = join_path(join_path(context.output_directory, "windows"),
+                              morphology_name(seed) + ".txt");
+      m.n_pixels_x = parameters.window_size[0];
+      m.n_pixels_y = parameters.window_size[1];
+      m.width      = m.n_pixels_x * whole_map->pixel_width();
+      m.height     = m.n_pixels_y * whole_map->pixel_height();
+      return m;
+    }
+
+
+    void
+    StudyProblem::write_windows() const
+    {
+      if (!whole_map
+          || dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator)
+               != 0)
+        return;
+      const std::string  dir = join_path(context.output_directory, "windows");
+      std::ostringstream csv;
+      csv << "window,first_column,first_row_from_top,width_px,height_px";
+      for (unsigned int k = 0; k < whole_map->n_phases(); ++k)
+        csv << ",fraction_" << base.material.composite.names().at(k);
+      csv << "\n" << std::setprecision(8);
+      create_output_directory(dir);
+      for (unsigned int k = 0; k < window_origins.size(); ++k)
+        {
+          const auto [i0, j0] = window_origins[k];
+          const Morphology w  = whole_map->window(i0,
+                                                 j0,
+                                                 parameters.window_size[0],
+                                                 parameters.window_size[1]);
+          w.write_grid_file(
+            join_path(dir, morphology_name(first_morphology() + k) + ".txt"));
+          csv << first_morphology() + k << "," << i0 << ","
+              << whole_map->n_pixels_y() - j0 - parameters.window_size[1] << ","
+              << parameters.window_size[0] << "," << parameters.window_size[1];
+          const std::vector<double> f = w.phase_fractions();
+          for (unsigned int p = 0; p < whole_map->n_phases(); ++p)
+            csv << "," << (p < f.size() ? f[p] : 0.);
+          csv << "\n";
+        }
+      write_file_atomically(join_path(dir, "windows.csv"), csv.str());
     }
 
 
@@ -356,6 +519,8 @@ namespace tribodyn
       // their own directories (and a study that reuses finished cases
       // finds them in place).
       context.claim_output(OutputClaim::fresh, {"cases", "homogenization"});
+      write_windows();
+      MPI_Barrier(world);
 
       bool needs_homogenization = false;
       for (const PinModel m : parameters.models)

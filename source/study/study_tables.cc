@@ -54,6 +54,110 @@ namespace tribodyn
     } // namespace
 
 
+    JsonValue
+    StudyProblem::write_paired_differences(
+      const std::vector<CaseResult> &results,
+      std::ostream                  &md) const
+    {
+      const auto has = [&](const PinModel m) {
+        return std::find(parameters.models.begin(), parameters.models.end(), m)
+               != parameters.models.end();
+      };
+      if (parameters.homogenized_pin
+            != StudyParameters::HomogenizedPin::each_morphology
+          || !has(PinModel::meso) || !has(PinModel::homogenized))
+        return JsonValue();
+
+      // Per pressure: d_k = (meso - homogenized) of morphology k, each the
+      // mean of its repeats; the mean of the d_k and its standard error as
+      // in Table 2 (the spread between morphologies, or the runs' blocking
+      // errors when larger).
+      const double       threshold = base.output.regime_threshold;
+      std::ostringstream csv;
+      csv << "pressure,n_morphologies,mu_meso_minus_homogenized,"
+             "mu_stderr,regimes_agree\n"
+          << std::setprecision(6);
+      md << "\n## Meso - homogenized, paired by morphology\n\n"
+         << "Each morphology's meso pin against the homogenized pin of its "
+            "own constants (Homogenized pin = each morphology): the mean of "
+            "the differences of their mu_mean, its standard error over the "
+            "morphologies (or the runs' blocking errors when larger), and "
+            "the morphologies whose two pins have the same regime (contact "
+            "face).\n\n"
+         << "| P (MPa) | morphologies | mu(meso) - mu(homogenized) ± stderr | "
+            "same regime |\n|---|---|---|---|\n";
+      JsonValue          list = JsonValue::array();
+      const unsigned int n    = parameters.n_morphologies;
+      for (unsigned int p = 0; p < parameters.pressures.size(); ++p)
+        {
+          std::vector<double> d(n, 0.), var(n, 0.);
+          unsigned int        agree = 0;
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              double fr[2][3] = {{0, 0, 0}, {0, 0, 0}};
+              for (const PinModel model :
+                   {PinModel::meso, PinModel::homogenized})
+                {
+                  const double sign = model == PinModel::meso ? 1. : -1.;
+                  const int    m    = model == PinModel::meso ? 0 : 1;
+                  const double r    = parameters.repeats;
+                  for (unsigned int i = 0; i < study_cases.size(); ++i)
+                    {
+                      const StudyCase &c = study_cases[i];
+                      if (c.pressure_index != p || c.model != model
+                          || c.seed != first_morphology() + k)
+                        continue;
+                      d[k] += sign * results[i].mu_mean / r;
+                      var[k] += results[i].mu_stderr * results[i].mu_stderr
+                                / (r * r);
+                      fr[m][0] += results[i].stick / r;
+                      fr[m][1] += results[i].slip / r;
+                      fr[m][2] += results[i].separation / r;
+                    }
+                }
+              agree += contact::classify_regime(fr[0][0],
+                                                fr[0][1],
+                                                fr[0][2],
+                                                threshold)
+                       == contact::classify_regime(fr[1][0],
+                                                   fr[1][1],
+                                                   fr[1][2],
+                                                   threshold);
+            }
+          double mean = 0, within = 0, between = 0;
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              mean += d[k] / n;
+              within += var[k] / (1. * n * n);
+            }
+          if (n > 1)
+            {
+              for (unsigned int k = 0; k < n; ++k)
+                between += (d[k] - mean) * (d[k] - mean);
+              between /= (n - 1.) * n;
+            }
+          const double se = std::sqrt(std::max(between, within));
+          const double P  = parameters.pressures[p];
+          csv << P << "," << n << "," << mean << "," << se << "," << agree
+              << "\n";
+          md << std::fixed << std::setprecision(3) << "| " << P / 1e6 << " | "
+             << n << " | " << std::showpos << mean << std::noshowpos << " ± "
+             << std::setprecision(4) << se << " | " << agree << " of " << n
+             << " |\n";
+          JsonValue entry                    = JsonValue::object();
+          entry["pressure"]                  = P;
+          entry["n_morphologies"]            = n;
+          entry["mu_meso_minus_homogenized"] = mean;
+          entry["mu_stderr"]                 = se;
+          entry["regimes_agree"]             = agree;
+          list.push_back(entry);
+        }
+      write_file_atomically(join_path(context.output_directory, "paired.csv"),
+                            csv.str());
+      return list;
+    }
+
+
     void
     StudyProblem::write_tables(const std::vector<CaseResult> &results,
                                const double                   wall_time) const
@@ -88,13 +192,15 @@ namespace tribodyn
 
       // Table 2: per pressure and model. The mean over the n runs (equal
       // windows) of the runs' time averages; its standard error combines
-      // the spread between runs (morphologies, repeats) and the blocking
-      // error of each run's time average:
-      //   se^2 = max(s_between^2 / n, sum_i se_i^2 / n^2),
-      // s_between the sample standard deviation of the run means (n >= 2).
+      // the spread between runs and the blocking error of each run's time
+      // average:
+      //   se^2 = max(s_between^2 / g, sum_i se_i^2 / n^2),
+      // s_between the sample standard deviation of the g morphologies'
+      // means (each the mean of its repeats; with one morphology, of the
+      // n repeats' means, g = n).
       std::ostringstream csv, md;
       csv << "pressure,model,n_runs,mu_mean,mu_stderr,stick_fraction,"
-             "slip_fraction,separation_fraction,regime\n"
+             "slip_fraction,separation_fraction,regime,dominant_frequency_hz\n"
           << std::setprecision(6);
       md
         << "# Table 2 (seed 001): time-averaged global friction coefficient\n\n"
@@ -103,23 +209,32 @@ namespace tribodyn
            "node-samples (threshold "
         << threshold << "). Seed values in the last columns.\n\n"
         << "| P (MPa) | model | runs | mu_mean ± stderr | stick / slip / "
-           "separation | regime (contact face) | regime (point M) | seed "
-           "mu | seed regime |\n"
-        << "|---|---|---|---|---|---|---|---|---|\n";
+           "separation | regime (contact face) | regime (point M) | spectrum "
+           "peak (kHz) | seed mu | seed regime |\n"
+        << "|---|---|---|---|---|---|---|---|---|---|\n";
       JsonValue table = JsonValue::array();
       for (unsigned int p = 0; p < parameters.pressures.size(); ++p)
         for (const PinModel model : parameters.models)
           {
             std::vector<const CaseResult *> runs;
+            // the runs' mean per morphology (its repeats averaged)
+            std::map<unsigned int, std::pair<double, double>> per_morphology;
             for (unsigned int i = 0; i < study_cases.size(); ++i)
               if (study_cases[i].pressure_index == p
                   && study_cases[i].model == model)
-                runs.push_back(&results[i]);
+                {
+                  runs.push_back(&results[i]);
+                  auto &m = per_morphology[study_cases[i].seed];
+                  m.first += results[i].mu_mean;
+                  m.second += 1;
+                }
             const double n = runs.size();
             double mean = 0, fr[3] = {0, 0, 0}, M[3] = {0, 0, 0}, within = 0;
+            double peak = 0;
             for (const CaseResult *r : runs)
               {
                 mean += r->mu_mean / n;
+                peak += r->dominant_frequency_hz / n;
                 fr[0] += r->stick / n;
                 fr[1] += r->slip / n;
                 fr[2] += r->separation / n;
@@ -128,8 +243,22 @@ namespace tribodyn
                 M[2] += r->M_separation / n;
                 within += r->mu_stderr * r->mu_stderr / (n * n);
               }
+            // The spread between the morphologies' means (their repeats
+            // averaged first: repeats of one morphology are not independent
+            // samples of the material), or between the repeats of the one
+            // morphology.
             double between = 0;
-            if (runs.size() > 1)
+            if (per_morphology.size() > 1)
+              {
+                const double g = per_morphology.size();
+                for (const auto &[seed, sum] : per_morphology)
+                  {
+                    const double m = sum.first / sum.second;
+                    between += (m - mean) * (m - mean);
+                  }
+                between /= (g - 1.) * g;
+              }
+            else if (runs.size() > 1)
               {
                 for (const CaseResult *r : runs)
                   between += (r->mu_mean - mean) * (r->mu_mean - mean);
@@ -143,7 +272,7 @@ namespace tribodyn
             const double P = parameters.pressures[p];
             csv << P << "," << to_string(model) << "," << runs.size() << ","
                 << mean << "," << se << "," << fr[0] << "," << fr[1] << ","
-                << fr[2] << "," << regime << "\n";
+                << fr[2] << "," << regime << "," << peak << "\n";
             const double seed = seed_mu(P, model);
             // a run whose blocking curve found no plateau gives a lower
             // bound of its error bar: marked, and said below the table
@@ -156,24 +285,26 @@ namespace tribodyn
                 << mean << " ± " << std::setprecision(4) << se
                 << (lower_bound ? " *" : "") << " | " << std::setprecision(3)
                 << fr[0] << " / " << fr[1] << " / " << fr[2] << " | " << regime
-                << " | " << regime_M << " | ";
+                << " | " << regime_M << " | " << std::setprecision(1)
+                << peak / 1e3 << " | " << std::setprecision(3);
             if (std::isnan(seed))
               row << "– | – |";
             else
               row << seed << " | " << seed_regime(P) << " |";
             md << row.str() << "\n";
-            JsonValue entry              = JsonValue::object();
-            entry["pressure"]            = P;
-            entry["model"]               = to_string(model);
-            entry["n_runs"]              = runs.size();
-            entry["mu_mean"]             = mean;
-            entry["mu_stderr"]           = se;
-            entry["stick_fraction"]      = fr[0];
-            entry["slip_fraction"]       = fr[1];
-            entry["separation_fraction"] = fr[2];
-            entry["regime"]              = regime;
-            entry["regime_point_M"]      = regime_M;
-            entry["seed_mu"]             = seed;
+            JsonValue entry                = JsonValue::object();
+            entry["pressure"]              = P;
+            entry["model"]                 = to_string(model);
+            entry["n_runs"]                = runs.size();
+            entry["mu_mean"]               = mean;
+            entry["mu_stderr"]             = se;
+            entry["stick_fraction"]        = fr[0];
+            entry["slip_fraction"]         = fr[1];
+            entry["separation_fraction"]   = fr[2];
+            entry["regime"]                = regime;
+            entry["regime_point_M"]        = regime_M;
+            entry["dominant_frequency_hz"] = peak;
+            entry["seed_mu"]               = seed;
             table.push_back(entry);
           }
       unsigned int n_without_plateau = 0;
@@ -187,6 +318,7 @@ namespace tribodyn
               "longer window ('Output/Averaging start time' earlier or a "
               "later 'Time/End time') gives a plateau.\n";
       write_file_atomically(join_path(dir, "table2.csv"), csv.str());
+      const JsonValue paired = write_paired_differences(results, md);
       write_file_atomically(join_path(dir, "table2.md"), md.str());
 
       JsonValue summary = summary_header("study", context.mpi_communicator);
@@ -202,7 +334,9 @@ namespace tribodyn
                                                   : base.output.average_end});
       summary["regime_threshold"] = threshold;
       summary["table2"]           = table;
-      double case_time            = 0;
+      if (paired.type() == JsonValue::Type::array)
+        summary["paired_meso_minus_homogenized"] = paired;
+      double case_time = 0;
       for (const CaseResult &r : results)
         case_time += r.wall_time_s;
       summary["sum_of_case_wall_times_s"] = case_time;

@@ -90,6 +90,21 @@ prm/contact/meso_micrograph.prm (1 ms -> 20 us, averages over 12-20 us; 2
   behind a pressure that varies more than the seed pin's: 18 % of the face
   separated at 20 us).
 
+prm/study/micrograph_pins.prm (1 ms -> 0.2 ms, averages over 0.1-0.2 ms;
+  2 ranks, ~40 s): the six windows are the tiles of 60 x 30 pixels from the
+  micrograph's top-left corner, row by row (windows.csv), and each window's
+  map (windows/windowK.txt) is the crop of the whole micrograph's
+  segmentation, as the homogenization run above writes it (exact: one
+  segmentation, not one per window); each window's homogenization has that
+  crop's phase fractions (1e-12); each meso pin has 2 DoFs per vertex of its
+  window's solid pixels (exact: pores cut). cases.csv has the 36 cases (2
+  models x 6 windows x 3 repeats), table2.csv 2 rows of 18 runs, and
+  paired.csv's meso - homogenized and its standard error are recomputed
+  from cases.csv's 8-digit values (1e-6 absolute; the error to 1e-5
+  relative, paired.csv's 6 digits): the mean over the windows of the
+  difference of the two models' repeat means, the error max(between-window
+  spread / sqrt(6), the runs' blocking errors). The three plots are PNGs.
+
 prm/homogenization/rve_seed_cell.prm (sizes 140x40 x 3 and 280x80 x 6
   instead of four sizes, 64/64/24/8 windows, from Seed 62: a window's
   cell has the seed Seed + window number, so these are the last
@@ -417,6 +432,66 @@ def check_meso_micrograph():
            "10 % of it (measured 0.2438: the 1.5 us lag behind the varying pressure)")
 
 
+def check_micrograph_pins():
+    image = os.path.join(source, "prm/homogenization/micrograph.png")
+    out = run("prm/study/micrograph_pins.prm", "micrograph_pins",
+              f"subsection Morphology\n  subsection Image\n    set File = {image}\n"
+              "  end\nend\nsubsection Time\n  set End time = 0.2e-3\nend\n"
+              "subsection Output\n  set Averaging start time = 0.1e-3\nend\n", ranks=2)
+    whole = os.path.join(scratch, "micrograph_map", "morphology.txt")
+    if not out or not os.path.exists(whole):
+        return
+    pixels = read_morphology(whole)  # top row first
+    windows = rows_of(os.path.join(out, "windows", "windows.csv"))
+    report(len(windows) == 6, f"  micrograph_pins: {len(windows)} windows (prm: 6)")
+    for w in windows:
+        k, c0, r0 = int(w["window"]), int(w["first_column"]), int(w["first_row_from_top"])
+        report((c0, r0) == (((k - 1) % 2) * 60, ((k - 1) // 2) * 30),
+               f"  micrograph_pins window {k}: at column {c0}, row {r0} (tiles of 60x30 "
+               "from the top-left, row by row)")
+        mine = read_morphology(os.path.join(out, "windows", f"window{k}.txt"))
+        crop = [row[c0:c0 + 60] for row in pixels[r0:r0 + 30]]
+        report(mine == crop, f"  micrograph_pins window {k}: its map is the whole "
+               "micrograph's segmentation cropped (exact)")
+        h = summary(os.path.join(out, "homogenization", f"window{k}"))
+        counts = [sum(row.count(p) for row in crop) / (60 * 30) for p in range(3)]
+        fractions = [ph["fraction"] for ph in h["phases"]]
+        report(max(abs(a - b) for a, b in zip(counts, fractions)) < 1e-12,
+               f"  micrograph_pins window {k}: homogenized on its map (phase fractions "
+               f"{', '.join(f'{f:.4f}' for f in fractions)})")
+        # the meso pin: the window's solid pixels (pores cut; no fragment of
+        # these windows is detached), two DoFs per vertex
+        vertices = {(i + a, j + b) for j, row in enumerate(crop) for i, v in enumerate(row)
+                    if v != 0 for a in (0, 1) for b in (0, 1)}
+        meso = summary(os.path.join(out, "cases", f"P0.5MPa_meso_window{k}_r0"))
+        report(meso["n_dofs"] == 2 * len(vertices),
+               f"  micrograph_pins window {k}: meso pin {meso['n_dofs']} DoFs = 2 x the "
+               f"{len(vertices)} vertices of its solid pixels")
+    cases = rows_of(os.path.join(out, "cases.csv"))
+    report(len(cases) == 36, f"  micrograph_pins: {len(cases)} cases (2 models x 6 "
+           "windows x 3 repeats)")
+    table = rows_of(os.path.join(out, "table2.csv"))
+    report(len(table) == 2 and all(int(r["n_runs"]) == 18 for r in table),
+           "  micrograph_pins: table2.csv has 2 rows of 18 runs")
+    for r in rows_of(os.path.join(out, "paired.csv")):
+        P = float(r["pressure"])
+        d, var = [], []
+        for k in range(1, 7):
+            runs = [c for c in cases if float(c["pressure"]) == P and int(c["seed"]) == k]
+            sign = {"meso": 1, "homogenized": -1}
+            d.append(sum(sign[c["model"]] * float(c["mu_mean"]) for c in runs) / 3)
+            var.append(sum(float(c["mu_stderr_blocking"]) ** 2 for c in runs) / 9)
+        mean = sum(d) / 6
+        se = math.sqrt(max(sum((x - mean) ** 2 for x in d) / 30, sum(var) / 36))
+        report(abs(mean - float(r["mu_meso_minus_homogenized"])) < 1e-6
+               and abs(se - float(r["mu_stderr"])) <= 1e-5 * se + 1e-12,
+               f"  micrograph_pins: paired meso - homogenized at {P / 1e6:g} MPa "
+               f"{float(r['mu_meso_minus_homogenized']):+.5f} ± {float(r['mu_stderr']):.5f} "
+               f"= recomputed from cases.csv ({mean:+.5f} ± {se:.5f})")
+    for png in ("table2.png", "mu_global.png", "phase_M.png"):
+        report(is_png(os.path.join(out, png)), f"  micrograph_pins: {png} written (a PNG)")
+
+
 def check_meso(seed1_morphology):
     out = run("prm/contact/meso.prm", "meso",
               "subsection Time\n  set End time = 20e-6\nend\n"
@@ -684,6 +759,7 @@ seed1 = check_study("table2_quick", 12, 2, plots=True)
 check_study("table2", 24, 6, plots=False)
 check_meso(seed1)
 check_meso_micrograph()
+check_micrograph_pins()
 check_rve_seed_cell()
 check_rve_crops()
 check_rve_study()

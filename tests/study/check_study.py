@@ -5,7 +5,7 @@ n_runs is 1 for the homogeneous pins and 'Number of morphologies' for the
 meso pin; every error bar is positive and finite; the fractions add up to
 1 (1e-5: 6 significant digits in the file); the regime names agree with the fractions and the
 documented threshold; each row's mean, error bar and fractions are computed
-again here from cases.csv (the documented se^2 = max(s_between^2/n,
+again here from cases.csv (the documented se^2 = max(s_between^2/g,
 sum se_i^2/n^2)); the contact-face friction ratio of every case is the law's
 alpha*mu = 0.25 within 2 % (measured: 0.45 % at most; the pins slip on 98 % of
 the node-samples, and the regularized law relaxes to alpha*mu in 1.5 us of the
@@ -48,7 +48,7 @@ def regime(st, sl, se, thr):
 with open(os.path.join(out, "table2.csv")) as f:
     rows = list(csv.DictReader(f))
 cols = ["pressure", "model", "n_runs", "mu_mean", "mu_stderr", "stick_fraction",
-        "slip_fraction", "separation_fraction", "regime"]
+        "slip_fraction", "separation_fraction", "regime", "dominant_frequency_hz"]
 check(list(rows[0].keys()) == cols, "table2.csv columns " + ",".join(cols))
 check(len(rows) == 6, "6 rows (2 pressures x 3 models)")
 for r in rows:
@@ -87,7 +87,8 @@ for r in rows:
           % (r["model"], r["mu_mean"], mean))
     check(close(se, float(r["mu_stderr"])), "%s mu_stderr %s = combined error %.6g"
           % (r["model"], r["mu_stderr"], se))
-    for k in ["stick_fraction", "slip_fraction", "separation_fraction"]:
+    for k in ["stick_fraction", "slip_fraction", "separation_fraction",
+              "dominant_frequency_hz"]:
         check(close(sum(float(c[k]) for c in runs) / n, float(r[k])),
               "%s %s = mean of its cases" % (r["model"], k))
     check(abs(float(r["mu_mean"]) - mu_law) < 3 * se,

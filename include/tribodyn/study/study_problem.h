@@ -1,9 +1,12 @@
 #ifndef tribodyn_study_study_problem_h
 #define tribodyn_study_study_problem_h
 
+#include <array>
 #include <deal.II/base/parameter_handler.h>
+#include <memory>
 #include <string>
 #include <tribodyn/contact/contact_parameters.h>
+#include <tribodyn/core/json.h>
 #include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/problem.h>
 #include <tribodyn/homogenization/homogenization_problem.h>
@@ -41,6 +44,17 @@ namespace tribodyn
       std::string  plot_script        = "auto";
       /// Take finished cases from their files (see the parameter).
       bool reuse_cases = false;
+      /// Windows of a map (an image or a grid file): their size in pixels
+      /// (x, y); {0, 0}: the morphologies are the generator's seeds.
+      std::array<unsigned int, 2> window_size = {{0, 0}};
+      /// One homogenized pin of the morphologies' mean stiffness, or one
+      /// per morphology (paired with its meso pin).
+      enum class HomogenizedPin
+      {
+        mean_of_morphologies,
+        each_morphology
+      };
+      HomogenizedPin homogenized_pin = HomogenizedPin::mean_of_morphologies;
 
       /// The entries of "Study", bound to the members above (their initial
       /// values are the defaults).
@@ -58,8 +72,10 @@ namespace tribodyn
     {
       unsigned int pressure_index = 0;
       PinModel     model          = PinModel::meso;
-      unsigned int seed           = 1; ///< morphology seed (meso)
-      unsigned int repeat         = 0; ///< 0: unperturbed
+      /// The morphology (meso, and homogenized per morphology): its seed,
+      /// or the window's number (from 1) for windows of a map.
+      unsigned int seed   = 1;
+      unsigned int repeat = 0; ///< 0: unperturbed
       std::string  name;
     };
 
@@ -117,9 +133,41 @@ namespace tribodyn
       homogenize(const MPI_Comm group, const unsigned int n_groups);
       contact::ContactParameters
       case_parameters(const StudyCase &c) const;
+      /// Cut the windows of the map (windows of a map only): their lower-
+      /// left pixels, tiles of 'Study/Window size' from the map's top-left
+      /// corner, row by row.
+      void
+      cut_windows();
+      /// Write each window's map (OUTPUT/windows/windowK.txt, the grid
+      /// files its pin and its homogenization read) and windows.csv.
+      void
+      write_windows() const;
+      /// The morphology number @p seed (StudyCase::seed): the generator
+      /// with that seed, or the window's grid file.
+      MorphologyParameters
+      morphology_parameters(const unsigned int seed) const;
+      /// The pin models' material for morphology number @p seed: the
+      /// homogenized stiffness of that morphology, or the mean one.
+      void
+      set_homogenized_material(contact::ContactParameters &p,
+                               const unsigned int          seed) const;
+      /// The morphologies' numbers: seeds First seed, +1, ..., or windows
+      /// 1, 2, ...
+      unsigned int
+      first_morphology() const;
+      /// "seed3" or "window3": the morphology's directory and case suffix.
+      std::string
+      morphology_name(const unsigned int seed) const;
       void
       write_tables(const std::vector<CaseResult> &results,
                    const double                   wall_time) const;
+      /// With a homogenized pin per morphology next to the meso pins:
+      /// paired.csv and a section of table2.md (@p md) with meso -
+      /// homogenized per pressure; its rows for summary.json (a null value
+      /// otherwise).
+      JsonValue
+      write_paired_differences(const std::vector<CaseResult> &results,
+                               std::ostream                  &md) const;
 
       RunContext                 context;
       StudyParameters            parameters;
@@ -133,6 +181,13 @@ namespace tribodyn
       contact::VoigtStiffness homogenized_C;
       dealii::Tensor<1, 3>    homogenized_c_z;
       double                  homogenized_density = 0;
+      /// The same of each morphology (Homogenized pin = each morphology).
+      std::vector<contact::VoigtStiffness> morphology_C;
+      std::vector<dealii::Tensor<1, 3>>    morphology_c_z;
+      std::vector<double>                  morphology_density;
+      /// Windows of a map: the whole map and each window's lower-left pixel.
+      std::unique_ptr<Morphology>              whole_map;
+      std::vector<std::array<unsigned int, 2>> window_origins;
     };
   } // namespace study
 } // namespace tribodyn
