@@ -114,6 +114,17 @@ namespace tribodyn
             for (unsigned int k = 0; k < c.size(); ++k)
               crop[k] = static_cast<unsigned int>(c[k]);
           });
+    b.add("Rotation",
+          "0",
+          "Placement of the (cropped) image on the rectangle: turned by this "
+          "many degrees counter-clockwise (0, 90, 180 or 270) before it "
+          "becomes the map, so that any side of a micrograph can face the "
+          "sliding plane (a pin's bottom row; x is the sliding direction). "
+          "90 and 270 swap the map's width and height.",
+          dealii::Patterns::Selection("0|90|180|270"),
+          [this](const std::string &text) {
+            rotation = static_cast<unsigned int>(std::stoi(text));
+          });
     return b;
   }
 
@@ -367,14 +378,35 @@ namespace tribodyn
           + std::to_string(*std::max_element(grey.begin(), grey.end()))
           + ") so that every phase has pixels.");
 
+    // Turned counter-clockwise by 'Rotation' (pixel (i, r) of the window,
+    // r from the top, goes to (i', r') of the turned one), then stored from
+    // the bottom row up.
+    const bool quarter = p.rotation == 90 || p.rotation == 270;
+    s.n_x              = quarter ? ny : nx;
+    s.n_y              = quarter ? nx : ny;
+    if (quarter)
+      std::swap(s.pixel_width, s.pixel_height);
     s.ids.resize(ids.size());
     for (unsigned int r = 0; r < ny; ++r)
       for (unsigned int i = 0; i < nx; ++i)
-        s.ids[std::size_t(ny - 1 - r) * nx + i] = ids[std::size_t(r) * nx + i];
+        {
+          const unsigned int i_turned = p.rotation == 90    ? r
+                                        : p.rotation == 180 ? nx - 1 - i
+                                        : p.rotation == 270 ? ny - 1 - r
+                                                            : i;
+          const unsigned int r_turned = p.rotation == 90    ? nx - 1 - i
+                                        : p.rotation == 180 ? ny - 1 - r
+                                        : p.rotation == 270 ? i
+                                                            : r;
+          s.ids[std::size_t(s.n_y - 1 - r_turned) * s.n_x + i_turned]
+            = ids[std::size_t(r) * nx + i];
+        }
     std::ostringstream d;
     d << "image " << p.file << " (" << image.description();
     if (p.crop[2] > 0)
       d << ", crop " << x0 << " " << y0 << " " << nx << " " << ny;
+    if (p.rotation != 0)
+      d << ", turned " << p.rotation << " degrees counter-clockwise";
     d << "; " << how.str() << ")";
     s.description = d.str();
     return s;

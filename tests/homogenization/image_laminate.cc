@@ -7,7 +7,8 @@
 // three solid phases and with the darkest layer a pore (ersatz stiffness
 // 1e-6 of the softest solid). The segmentation itself is checked: Otsu's
 // thresholds fall between the levels, thresholds and a colour table give
-// the same map, and so does the TIFF of the same laminate.
+// the same map, and so does the TIFF of the same laminate; 'Rotation' turns
+// the map counter-clockwise (pixel by pixel, exact).
 
 #include "image_test_tools.h"
 
@@ -59,6 +60,32 @@ main(int argc, char **argv)
   table.image.segmentation   = ImageParameters::Segmentation::colour_table;
   table.image.colour_table   = {{0}, {128}, {255, 255, 255}};
   same_map(table, "colour table '0; 128; 255 255 255'");
+
+  // Placement: turned counter-clockwise by 90, 180 and 270 degrees, pixel
+  // (i, j) of the map (j from the bottom) goes to (n_y-1-j, i), (n_x-1-i,
+  // n_y-1-j) and (j, n_x-1-i); 90 and 270 swap width and height (exact).
+  for (const unsigned int degrees : {90u, 180u, 270u})
+    {
+      MorphologyParameters turned = otsu;
+      turned.image.rotation       = degrees;
+      const Morphology   m        = Morphology::create(turned);
+      const unsigned int nx       = morphology.n_pixels_x(),
+                         ny       = morphology.n_pixels_y();
+      const bool quarter          = degrees != 180;
+      bool       equal
+        = m.n_pixels_x() == (quarter ? ny : nx)
+          && m.n_pixels_y() == (quarter ? nx : ny)
+          && m.width() == (quarter ? morphology.height() : morphology.width());
+      for (unsigned int j = 0; equal && j < ny; ++j)
+        for (unsigned int i = 0; equal && i < nx; ++i)
+          equal = morphology.pixel(i, j)
+                  == (degrees == 90    ? m.pixel(ny - 1 - j, i)
+                      : degrees == 180 ? m.pixel(nx - 1 - i, ny - 1 - j)
+                                       : m.pixel(j, nx - 1 - i));
+      check(equal,
+            "Rotation = " + std::to_string(degrees)
+              + ": the map turned counter-clockwise");
+    }
   MorphologyParameters tiff = otsu;
   tiff.image.file           = image_path("laminate3.tif");
   same_map(tiff, "laminate3.tif");

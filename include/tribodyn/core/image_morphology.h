@@ -46,6 +46,9 @@ namespace tribodyn
     /// Crop window in image pixels: left column, top row (from the image's
     /// top-left corner), width, height; all zero: the whole image.
     std::array<unsigned int, 4> crop = {{0, 0, 0, 0}};
+    /// Placement: the cropped image turned by 0, 90, 180 or 270 degrees
+    /// counter-clockwise before it becomes the map.
+    unsigned int rotation = 0;
 
     /// The entries of "Morphology/Image", bound to the members above
     /// (their initial values are the defaults).
