@@ -8,9 +8,9 @@ Each example runs from a wrapper prm in SCRATCH: the shipped text, untouched,
 followed by an appended override block (ParameterHandler: a later 'set' of
 the same entry wins), as a user continues a prm; the block shortens the run
 and sets 'Output directory = SCRATCH/<name>' (its previous contents are
-removed first, so nothing stale is read). Of the files, only the two that
-read the shipped micrograph name an input file, which the appended block
-makes absolute; in the others the only path is the output directory, which the engine takes relative to the working directory
+removed first, so nothing stale is read). Of the files, only the three that
+read the shipped micrograph or the shipped friction table name an input
+file, which the appended block makes absolute; in the others the only path is the output directory, which the engine takes relative to the working directory
 (source/core/global_parameters.cc) and the wrapper makes absolute; the runs
 start in SCRATCH. The plot scripts ('Plot script = auto') are found next to
 the build directory, whatever the working directory. The figures quoted
@@ -104,6 +104,12 @@ prm/study/micrograph_pins.prm (1 ms -> 0.2 ms, averages over 0.1-0.2 ms;
   relative, paired.csv's 6 digits): the mean over the windows of the
   difference of the two models' repeat means, the error max(between-window
   spread / sqrt(6), the runs' blocking errors). The three plots are PNGs.
+
+prm/contact/tabulated_from_automata.prm (1 ms -> 20 us; 1 rank, ~2 s) with
+  the table its header names, data/automata_friction_table/mu_table.csv
+  (made absolute): it runs out of the box, summary.json reports the share
+  of the node-steps read outside the table, and the table's grid is the
+  header's 5 pressures x 2 speeds (exact).
 
 prm/homogenization/rve_seed_cell.prm (sizes 140x40 x 3 and 280x80 x 6
   instead of four sizes, 64/64/24/8 windows, from Seed 62: a window's
@@ -430,6 +436,30 @@ def check_meso_micrograph():
            f"  meso_micrograph: sum|F_t|/sum F_n over 12-20 us = {ratio:.4f}: at most the "
            "prm's mu = 0.25 (the regularized force never exceeds mu lambda_N), and within "
            "10 % of it (measured 0.2438: the 1.5 us lag behind the varying pressure)")
+
+
+def check_tabulated_from_automata():
+    table = os.path.join(source, "data/automata_friction_table/mu_table.csv")
+    out = run("prm/contact/tabulated_from_automata.prm", "tabulated_from_automata",
+              "subsection Contact\n  subsection Tabulated friction\n"
+              f"    set File = {table}\n  end\nend\n"
+              "subsection Time\n  set End time = 20e-6\nend\n"
+              "subsection Output\n  set Averaging start time = 12e-6\n"
+              "  set Field interval = 0\nend\n")
+    if not out:
+        return
+    s = summary(out)
+    share = s.get("tabulated_clamped_fraction")
+    report(share is not None and 0 <= share <= 1 and s["tabulated_contact_node_steps"] > 0,
+           f"  tabulated_from_automata: the table shipped in data/ is read; "
+           f"{share} of {s.get('tabulated_contact_node_steps')} node-steps outside it")
+    with open(table) as f:   # (its first line is a '#' comment)
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    pressures = sorted({float(r["pressure"]) for r in rows})
+    speeds = sorted({float(r["speed"]) for r in rows})
+    report(pressures == [0.3e6, 4e6, 50e6, 300e6, 1.7e9] and speeds == [8.0, 12.0],
+           f"  tabulated_from_automata: the table's grid {pressures} Pa x {speeds} m/s is "
+           "the header's")
 
 
 def check_micrograph_pins():
@@ -760,6 +790,7 @@ check_study("table2", 24, 6, plots=False)
 check_meso(seed1)
 check_meso_micrograph()
 check_micrograph_pins()
+check_tabulated_from_automata()
 check_rve_seed_cell()
 check_rve_crops()
 check_rve_study()
