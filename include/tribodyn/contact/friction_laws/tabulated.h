@@ -152,9 +152,10 @@ namespace tribodyn
         const double p = pressure_scale * node.lambda_n / node.length;
         const std::vector<double> &P = table.pressure_axis(),
                                   &V = table.speed_axis();
-        const bool below             = p<P.front(), above = p> P.back(),
-                   fast_or_slow
-                   = speed_scale * v < V.front() || speed_scale * v > V.back();
+        const bool below             = p < P.front();
+        const bool above             = p > P.back();
+        const bool fast_or_slow
+          = speed_scale * v < V.front() || speed_scale * v > V.back();
         ++counts[contact_steps].leg;
         counts[pressure_below].leg += below;
         counts[pressure_above].leg += above;
