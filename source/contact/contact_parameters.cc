@@ -538,14 +538,8 @@ namespace tribodyn
       geometry.parse_parameters(prm);
       material.parse_parameters(prm);
       morphology.parse_parameters(prm);
-      // (a generator's map has the two ids the two phases name)
-      if (material.type == ContactMaterialParameters::Type::morphology
-          && (morphology.generator == MorphologyParameters::Generator::image
-              || morphology.generator
-                   == MorphologyParameters::Generator::grid_file))
-        material.composite.check(Morphology::create(morphology),
-                                 morphology.generator
-                                   == MorphologyParameters::Generator::image);
+      if (material.type == ContactMaterialParameters::Type::morphology)
+        material.composite.check(morphology);
       loading.parse_parameters(prm);
       time.parse_parameters(prm);
       contact.parse_parameters(prm);

@@ -244,6 +244,13 @@ namespace tribodyn
   }
 
 
+  bool
+  MorphologyParameters::is_map() const
+  {
+    return generator == Generator::image || generator == Generator::grid_file;
+  }
+
+
   Morphology::Morphology(const double                     width,
                          const double                     height,
                          const unsigned int               n_x,

@@ -426,4 +426,13 @@ namespace tribodyn
                         + " but only " + std::to_string(n_given)
                         + " phases are named.");
   }
+
+
+  void
+  MorphologyMaterials::check(const MorphologyParameters &parameters) const
+  {
+    if (parameters.is_map())
+      check(Morphology::create(parameters),
+            parameters.generator == MorphologyParameters::Generator::image);
+  }
 } // namespace tribodyn

@@ -114,13 +114,7 @@ namespace tribodyn
     {
       // A map read from a file (image or grid) may hold other phases than
       // those named: refuse it now, with the other parameter errors.
-      if (morphology_parameters.generator
-            == MorphologyParameters::Generator::image
-          || morphology_parameters.generator
-               == MorphologyParameters::Generator::grid_file)
-        materials.check(Morphology::create(morphology_parameters),
-                        morphology_parameters.generator
-                          == MorphologyParameters::Generator::image);
+      materials.check(morphology_parameters);
     }
 
 

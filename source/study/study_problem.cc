@@ -53,10 +53,7 @@ namespace tribodyn
                       "'Materials/Matrix' alone. Leave it out, or give an "
                       "isotropic pin of the phase you mean its own run "
                       "('set Problem = contact')");
-      const bool is_map
-        = base.morphology.generator == MorphologyParameters::Generator::image
-          || base.morphology.generator
-               == MorphologyParameters::Generator::grid_file;
+      const bool is_map = base.morphology.is_map();
       if (parameters.window_size[0] > 0)
         {
           check_parameter(is_map,

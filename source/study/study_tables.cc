@@ -12,6 +12,7 @@
 #include <tribodyn/contact/contact_solver.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/core/statistics.h>
 #include <tribodyn/study/study_problem.h>
 
 namespace tribodyn
@@ -51,6 +52,34 @@ namespace tribodyn
       }
 
 
+      /// A run's time average of mu_global and its blocking error.
+      statistics::MeanWithError
+      run_mean(const CaseResult &r)
+      {
+        statistics::MeanWithError m;
+        m.mean           = r.mu_mean;
+        m.standard_error = r.mu_stderr;
+        m.plateau_found  = r.plateau_found > 0;
+        return m;
+      }
+
+
+      /// The repeats of one morphology as one sample of the material: their
+      /// mean, with the error of their blocking errors, sqrt(sum e_r^2) / r
+      /// (their spread is not an independent sample's).
+      statistics::MeanWithError
+      repeats_mean(const std::vector<statistics::MeanWithError> &repeats)
+      {
+        statistics::MeanWithError m;
+        double                    variance = 0;
+        for (const auto &r : repeats)
+          {
+            m.mean += r.mean / repeats.size();
+            variance += r.standard_error * r.standard_error;
+          }
+        m.standard_error = std::sqrt(variance) / repeats.size();
+        return m;
+      }
     } // namespace
 
 
@@ -90,31 +119,36 @@ namespace tribodyn
       const unsigned int n    = parameters.n_morphologies;
       for (unsigned int p = 0; p < parameters.pressures.size(); ++p)
         {
-          std::vector<double> d(n, 0.), var(n, 0.);
-          unsigned int        agree = 0;
+          // per morphology: meso - homogenized, each its repeats' mean
+          std::vector<statistics::MeanWithError> differences(n);
+          unsigned int                           agree = 0;
           for (unsigned int k = 0; k < n; ++k)
             {
+              std::vector<statistics::MeanWithError> runs[2];
               double fr[2][3] = {{0, 0, 0}, {0, 0, 0}};
               for (const PinModel model :
                    {PinModel::meso, PinModel::homogenized})
                 {
-                  const double sign = model == PinModel::meso ? 1. : -1.;
-                  const int    m    = model == PinModel::meso ? 0 : 1;
-                  const double r    = parameters.repeats;
+                  const int    m = model == PinModel::meso ? 0 : 1;
+                  const double r = parameters.repeats;
                   for (unsigned int i = 0; i < study_cases.size(); ++i)
                     {
                       const StudyCase &c = study_cases[i];
                       if (c.pressure_index != p || c.model != model
                           || c.seed != first_morphology() + k)
                         continue;
-                      d[k] += sign * results[i].mu_mean / r;
-                      var[k] += results[i].mu_stderr * results[i].mu_stderr
-                                / (r * r);
+                      runs[m].push_back(run_mean(results[i]));
                       fr[m][0] += results[i].stick / r;
                       fr[m][1] += results[i].slip / r;
                       fr[m][2] += results[i].separation / r;
                     }
                 }
+              const statistics::MeanWithError meso = repeats_mean(runs[0]),
+                                              homogenized
+                                              = repeats_mean(runs[1]);
+              differences[k].mean = meso.mean - homogenized.mean;
+              differences[k].standard_error
+                = std::hypot(meso.standard_error, homogenized.standard_error);
               agree += contact::classify_regime(fr[0][0],
                                                 fr[0][1],
                                                 fr[0][2],
@@ -124,20 +158,10 @@ namespace tribodyn
                                                    fr[1][2],
                                                    threshold);
             }
-          double mean = 0, within = 0, between = 0;
-          for (unsigned int k = 0; k < n; ++k)
-            {
-              mean += d[k] / n;
-              within += var[k] / (1. * n * n);
-            }
-          if (n > 1)
-            {
-              for (unsigned int k = 0; k < n; ++k)
-                between += (d[k] - mean) * (d[k] - mean);
-              between /= (n - 1.) * n;
-            }
-          const double se = std::sqrt(std::max(between, within));
-          const double P  = parameters.pressures[p];
+          const statistics::MeanWithError d
+            = statistics::mean_of_means(differences);
+          const double mean = d.mean, se = d.standard_error;
+          const double P = parameters.pressures[p];
           csv << P << "," << n << "," << mean << "," << se << "," << agree
               << "\n";
           md << std::fixed << std::setprecision(3) << "| " << P / 1e6 << " | "
@@ -217,23 +241,23 @@ namespace tribodyn
         for (const PinModel model : parameters.models)
           {
             std::vector<const CaseResult *> runs;
-            // the runs' mean per morphology (its repeats averaged)
-            std::map<unsigned int, std::pair<double, double>> per_morphology;
+            // the runs, and per morphology its repeats
+            std::vector<statistics::MeanWithError> run_means;
+            std::map<unsigned int, std::vector<statistics::MeanWithError>>
+              per_morphology;
             for (unsigned int i = 0; i < study_cases.size(); ++i)
               if (study_cases[i].pressure_index == p
                   && study_cases[i].model == model)
                 {
                   runs.push_back(&results[i]);
-                  auto &m = per_morphology[study_cases[i].seed];
-                  m.first += results[i].mu_mean;
-                  m.second += 1;
+                  run_means.push_back(run_mean(results[i]));
+                  per_morphology[study_cases[i].seed].push_back(
+                    run_means.back());
                 }
-            const double n = runs.size();
-            double mean = 0, fr[3] = {0, 0, 0}, M[3] = {0, 0, 0}, within = 0;
-            double peak = 0;
+            const double n     = runs.size();
+            double       fr[3] = {0, 0, 0}, M[3] = {0, 0, 0}, peak = 0;
             for (const CaseResult *r : runs)
               {
-                mean += r->mu_mean / n;
                 peak += r->dominant_frequency_hz / n;
                 fr[0] += r->stick / n;
                 fr[1] += r->slip / n;
@@ -241,30 +265,21 @@ namespace tribodyn
                 M[0] += r->M_stick / n;
                 M[1] += r->M_slip / n;
                 M[2] += r->M_separation / n;
-                within += r->mu_stderr * r->mu_stderr / (n * n);
               }
             // The spread between the morphologies' means (their repeats
             // averaged first: repeats of one morphology are not independent
             // samples of the material), or between the repeats of the one
-            // morphology.
-            double between = 0;
+            // morphology; or the runs' blocking errors when larger.
+            std::vector<statistics::MeanWithError> samples = run_means;
             if (per_morphology.size() > 1)
               {
-                const double g = per_morphology.size();
-                for (const auto &[seed, sum] : per_morphology)
-                  {
-                    const double m = sum.first / sum.second;
-                    between += (m - mean) * (m - mean);
-                  }
-                between /= (g - 1.) * g;
+                samples.clear();
+                for (const auto &[seed, repeats] : per_morphology)
+                  samples.push_back(repeats_mean(repeats));
               }
-            else if (runs.size() > 1)
-              {
-                for (const CaseResult *r : runs)
-                  between += (r->mu_mean - mean) * (r->mu_mean - mean);
-                between /= (n - 1.) * n;
-              }
-            const double      se = std::sqrt(std::max(between, within));
+            const statistics::MeanWithError mu
+              = statistics::mean_of_means(samples);
+            const double      mean = mu.mean, se = mu.standard_error;
             const std::string regime
               = contact::classify_regime(fr[0], fr[1], fr[2], threshold);
             const std::string regime_M

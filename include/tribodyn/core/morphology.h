@@ -102,6 +102,11 @@ namespace tribodyn
     declare_parameters(dealii::ParameterHandler &prm);
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Whether the map is read from a file (an image or a grid file),
+    /// rather than generated: it may hold any number of phases.
+    bool
+    is_map() const;
   };
 
   /**

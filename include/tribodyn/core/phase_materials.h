@@ -133,6 +133,11 @@ namespace tribodyn
      */
     void
     check(const Morphology &morphology, const bool image) const;
+    /// The same at parse time for the morphology @p parameters describe,
+    /// when it is a map read from a file (a generator's map has the two
+    /// ids the two phases name): the map is read to count its phases.
+    void
+    check(const MorphologyParameters &parameters) const;
   };
 } // namespace tribodyn
 

@@ -144,10 +144,10 @@ namespace tribodyn
           std::ostringstream          csv;
           csv << "quantity,node_steps_in_contact,p0.25,p50,p99.75\n"
               << std::setprecision(4);
-          for (const auto &[name, h] :
-               {std::pair<const char *, const LogHistogram *>{
-                  "contact_pressure_Pa", &pressure},
-                {"slip_rate_m_per_s", &slip_rate}})
+          const std::array<std::pair<const char *, const LogHistogram *>, 2>
+            quantities{{{"contact_pressure_Pa", &pressure},
+                        {"slip_rate_m_per_s", &slip_rate}}};
+          for (const auto &[name, h] : quantities)
             {
               csv << name << "," << n;
               for (const double f : q)
@@ -158,10 +158,7 @@ namespace tribodyn
                                 csv.str());
           std::ostringstream bins;
           bins << "quantity,bin_low,bin_high,count\n" << std::setprecision(6);
-          for (const auto &[name, h] :
-               {std::pair<const char *, const LogHistogram *>{
-                  "contact_pressure_Pa", &pressure},
-                {"slip_rate_m_per_s", &slip_rate}})
+          for (const auto &[name, h] : quantities)
             for (std::size_t k = 0; k < h->counts.size(); ++k)
               if (h->counts[k] > 0)
                 bins << name << "," << h->edge(k) << ","
