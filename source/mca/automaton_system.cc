@@ -35,6 +35,7 @@ namespace tribodyn
         , cells(parameters.geometry,
                 parameters.geometry.largest_pair_distance()
                   * (1 + parameters.interaction.skin),
+                parameters.partition.mesh_cells_per_rank,
                 communicator)
         , friction_laws(parameters.interaction.friction)
         , moment_laws(parameters.interaction.moment)
@@ -104,9 +105,15 @@ namespace tribodyn
       pair_fields.add({"bonded", Relabel::even, 0, {}, &bonded, {}, {}});
       pair_fields.add(
         {"in_contact", Relabel::even, 0, {}, &in_contact, {}, {}});
-      // q_i of a new pair: half the distance
-      pair_fields.add(
-        {"q_i", Relabel::complement, 0.5, {&q_i}, nullptr, {}, {}});
+      // q_i of a new pair: half the distance (stored where the halves can
+      // differ in stiffness, PairArrays::q_stored)
+      pair_fields.add({"q_i",
+                       Relabel::complement,
+                       0.5,
+                       {&q_i},
+                       nullptr,
+                       [this] { return q_stored; },
+                       {}});
       pair_fields.add(
         {"sigma", Relabel::sides, 0, {&sig_i, &sig_j}, nullptr, {}, {}});
       pair_fields.add({"heat",
@@ -309,6 +316,7 @@ namespace tribodyn
       });
       pack_owned_cells();
       n_global = dealii::Utilities::MPI::sum<unsigned long long>(n_owned, comm);
+
       partition_imbalance = work_imbalance();
       if (n_global == 0)
         throw InputError(
@@ -318,19 +326,28 @@ namespace tribodyn
           "removed by a void region). Check the boxes and the automaton "
           "size.");
 
-      // Which features does the scene need? (materials used anywhere)
+      // Which features does the scene need? (materials used anywhere; the
+      // same on every rank, and on a resume, which packs the same scene
+      // first.) The moment arms are stored only where a pair's two halves
+      // can differ in stiffness: materials of other shear moduli
+      // (PairArrays::q_stored).
       std::vector<unsigned int> used(prm.materials.size(), 0);
       for (unsigned int k = 0; k < n_owned; ++k)
         used[mat[k]] = 1;
       dealii::Utilities::MPI::max(used, comm, used);
-      double c_max  = 0;
-      plastic_scene = false;
+      double       c_max = 0;
+      unsigned int first = n_materials;
+      plastic_scene      = false;
+      q_stored           = false;
       for (unsigned int m = 0; m < prm.materials.size(); ++m)
         if (used[m])
           {
             c_max = std::max(c_max, prm.materials[m].p_wave_speed());
             if (prm.interaction.plasticity && prm.materials[m].is_plastic())
               plastic_scene = true;
+            if (first == n_materials)
+              first = m;
+            q_stored = q_stored || mc[m].two_G != mc[first].two_G;
           }
       bond_scene = prm.interaction.bond_switching_on();
       // current yield stresses: plastic scenes only (otherwise the initial

@@ -30,9 +30,11 @@ namespace tribodyn
 
     Decomposition::Decomposition(const GeometryParameters &geometry,
                                  const double              interaction_range,
+                                 const unsigned int        mesh_cells_per_rank,
                                  const MPI_Comm            communicator)
         : geometry(geometry)
         , range(interaction_range)
+        , mesh_cells_per_rank(mesh_cells_per_rank)
         , comm(communicator)
         , rank(dealii::Utilities::MPI::this_mpi_process(communicator))
         , tria(communicator)
@@ -99,6 +101,20 @@ namespace tribodyn
     }
 
 
+    unsigned int
+    Decomposition::cell_split(const std::array<unsigned int, 3> &trees,
+                              const unsigned int                 level,
+                              const unsigned int                 n_ranks,
+                              const unsigned int mesh_cells_per_rank)
+    {
+      if (level == 0 || mesh_cells_per_rank == 0)
+        return 1;
+      const double mesh_cells
+        = double(trees[0]) * trees[1] * trees[2] * std::pow(8., level - 1);
+      return mesh_cells >= double(mesh_cells_per_rank) * n_ranks ? 2 : 1;
+    }
+
+
     void
     Decomposition::setup(const CellCost &cost)
     {
@@ -131,8 +147,14 @@ namespace tribodyn
             tria, 2 * c, 2 * c + 1, c, faces);
       if (!faces.empty())
         tria.add_periodicity(faces);
-      if (level > 0)
-        tria.refine_global(level);
+      // (the mesh one level coarser than the cells where it can be)
+      split                         = cell_split(trees,
+                         level,
+                         dealii::Utilities::MPI::n_mpi_processes(comm),
+                         mesh_cells_per_rank);
+      const unsigned int mesh_level = split == 2 ? level - 1 : level;
+      if (mesh_level > 0)
+        tria.refine_global(mesh_level);
       for (unsigned int c = 0; c < 3; ++c)
         {
           n_cells[c] = trees[c] << level;
@@ -157,15 +179,20 @@ namespace tribodyn
       const std::function<unsigned int(const std::array<unsigned int, 3> &)>
         &weight)
     {
-      // deal.II's `weight` signal asks for the locally owned cells' weights
-      // (by structured index here); deal.II's ParticleHandlers attached to
-      // the mesh carry their particles to the new owners.
+      // deal.II's `weight` signal asks for the locally owned deal.II
+      // cells' weights: the sums of their cells' (by structured index
+      // here); deal.II's ParticleHandlers attached to the mesh carry their
+      // particles to the new owners.
       using Tria      = dealii::parallel::distributed::Triangulation<3>;
       const auto slot = tria.signals.weight.connect(
         [&](const Tria::cell_iterator &cell, const Tria::CellStatus) {
-          std::array<unsigned int, 3> ijk;
-          structured_cell(cell->center(), ijk);
-          return weight(ijk);
+          const auto   first = first_cell_of(cell);
+          unsigned int sum   = 0;
+          for (unsigned int b = 0; b < split * split * split; ++b)
+            sum += weight({{first[0] + b % split,
+                            first[1] + b / split % split,
+                            first[2] + b / (split * split)}});
+          return sum;
         });
       tria.repartition();
       slot.disconnect();
@@ -212,25 +239,85 @@ namespace tribodyn
     }
 
 
+    std::array<unsigned int, 3>
+    Decomposition::first_cell_of(const CellIterator &cell) const
+    {
+      std::array<unsigned int, 3> ijk;
+      const bool                  inside = structured_cell(cell->center(), ijk);
+      AssertThrow(inside, dealii::ExcInternalError());
+      // (the centre of a split cell is the corner its cells share)
+      for (unsigned int c = 0; c < 3; ++c)
+        ijk[c] -= ijk[c] % split;
+      return ijk;
+    }
+
+
+    dealii::Point<3>
+    Decomposition::reference_point(const unsigned int c, const Point3 &x) const
+    {
+      const dealii::Point<3> lower = cells[c]->vertex(0),
+                             upper = cells[c]->vertex(7);
+      dealii::Point<3> reference;
+      for (unsigned int e = 0; e < 3; ++e)
+        reference[e]
+          = std::clamp((x[e] - lower[e]) / (upper[e] - lower[e]), 0., 1.);
+      return reference;
+    }
+
+
     void
     Decomposition::build_cell_tables()
     {
       // Local cells: the owned ones (along the space-filling curve, for
-      // locality of the automata numbered after them), then the ghosts.
-      std::vector<std::pair<std::uint64_t, CellIterator>> owned, ghost;
+      // locality of the automata numbered after them), then the ghosts:
+      // the cells of ghost deal.II cells next to an owned cell.
+      struct Entry
+      {
+        std::uint64_t               z;
+        std::array<unsigned int, 3> ijk;
+        CellIterator                cell;
+      };
+      std::vector<Entry> owned, candidates, ghost;
+      const unsigned int per_cell = split * split * split;
       for (const auto &cell : tria.active_cell_iterators())
         if (cell->is_locally_owned() || cell->is_ghost())
           {
-            std::array<unsigned int, 3> ijk;
-            const bool inside = structured_cell(cell->center(), ijk);
-            AssertThrow(inside, dealii::ExcInternalError());
-            const std::uint64_t z = spread_bits(ijk[0])
-                                    | spread_bits(ijk[1]) << 1
-                                    | spread_bits(ijk[2]) << 2;
-            (cell->is_locally_owned() ? owned : ghost).emplace_back(z, cell);
+            const auto first = first_cell_of(cell);
+            for (unsigned int b = 0; b < per_cell; ++b)
+              {
+                const std::array<unsigned int, 3> ijk{
+                  {first[0] + b % split,
+                   first[1] + b / split % split,
+                   first[2] + b / (split * split)}};
+                const std::uint64_t z = spread_bits(ijk[0])
+                                        | spread_bits(ijk[1]) << 1
+                                        | spread_bits(ijk[2]) << 2;
+                (cell->is_locally_owned() ? owned : candidates)
+                  .push_back({z, ijk, cell});
+              }
           }
-      auto by_curve
-        = [](const auto &a, const auto &b) { return a.first < b.first; };
+      std::vector<std::uint64_t> owned_keys;
+      owned_keys.reserve(owned.size());
+      for (const Entry &e : owned)
+        owned_keys.push_back(key(e.ijk));
+      std::sort(owned_keys.begin(), owned_keys.end());
+      for (const Entry &e : candidates)
+        for (unsigned int o = 0; o < 27; ++o)
+          {
+            std::array<unsigned int, 3> nb;
+            unsigned char               shift;
+            if (o != no_shift && neighbour_index(e.ijk, o, nb, shift)
+                && std::binary_search(owned_keys.begin(),
+                                      owned_keys.end(),
+                                      key(nb)))
+              {
+                ghost.push_back(e);
+                break;
+              }
+          }
+      std::vector<std::uint64_t>().swap(owned_keys);
+      std::vector<Entry>().swap(candidates);
+      auto by_curve = [](const Entry &a, const Entry &b) { return a.z < b.z; };
       std::sort(owned.begin(), owned.end(), by_curve);
       std::sort(ghost.begin(), ghost.end(), by_curve);
       n_owned = owned.size();
@@ -244,14 +331,12 @@ namespace tribodyn
       cell_owner.reserve(n_local);
       local_of_key.reserve(n_local);
       for (const auto *list : {&owned, &ghost})
-        for (const auto &entry : *list)
+        for (const Entry &entry : *list)
           {
-            std::array<unsigned int, 3> ijk;
-            structured_cell(entry.second->center(), ijk);
-            local_of_key.emplace_back(key(ijk), cells.size());
-            cells.push_back(entry.second);
-            cell_index.push_back(ijk);
-            cell_owner.push_back(entry.second->subdomain_id());
+            local_of_key.emplace_back(key(entry.ijk), cells.size());
+            cells.push_back(entry.cell);
+            cell_index.push_back(entry.ijk);
+            cell_owner.push_back(entry.cell->subdomain_id());
           }
       std::sort(local_of_key.begin(), local_of_key.end());
 
@@ -294,18 +379,18 @@ namespace tribodyn
 
 
     bool
-    Decomposition::neighbour(const unsigned int c,
-                             const unsigned int o,
-                             Neighbour         &nb) const
+    Decomposition::neighbour_index(const std::array<unsigned int, 3> &ijk,
+                                   const unsigned int                 o,
+                                   std::array<unsigned int, 3>       &nb,
+                                   unsigned char &shift) const
     {
-      const int                   offset[3] = {static_cast<int>(o % 3) - 1,
-                                               static_cast<int>(o / 3 % 3) - 1,
-                                               static_cast<int>(o / 9) - 1};
-      std::array<unsigned int, 3> ijk;
-      int                         s[3] = {0, 0, 0};
+      const int offset[3] = {static_cast<int>(o % 3) - 1,
+                             static_cast<int>(o / 3 % 3) - 1,
+                             static_cast<int>(o / 9) - 1};
+      int       s[3]      = {0, 0, 0};
       for (unsigned int d = 0; d < 3; ++d)
         {
-          int v = static_cast<int>(cell_index[c][d]) + offset[d];
+          int v = static_cast<int>(ijk[d]) + offset[d];
           if (v < 0 || v >= static_cast<int>(n_cells[d]))
             {
               if (!periodic_[d])
@@ -313,14 +398,26 @@ namespace tribodyn
               s[d] = v < 0 ? -1 : 1;
               v -= s[d] * static_cast<int>(n_cells[d]);
             }
-          ijk[d] = v;
+          nb[d] = v;
         }
+      shift = (s[0] + 1) + 3 * (s[1] + 1) + 9 * (s[2] + 1);
+      return true;
+    }
+
+
+    bool
+    Decomposition::neighbour(const unsigned int c,
+                             const unsigned int o,
+                             Neighbour         &nb) const
+    {
+      std::array<unsigned int, 3> ijk;
+      if (!neighbour_index(cell_index[c], o, ijk, nb.shift))
+        return false;
       nb.cell = local_cell(ijk);
       if (nb.cell == invalid)
         throw RunError("Internal error: a neighbour cell of an owned cell is "
                        "not in this rank's ghost layer (periodic connectivity "
                        "of the p4est mesh).");
-      nb.shift = (s[0] + 1) + 3 * (s[1] + 1) + 9 * (s[2] + 1);
       return true;
     }
 

@@ -195,7 +195,7 @@ namespace tribodyn
           return;
         double                r;
         const Vec3            n = unit_normal(p, r);
-        const double          q = side ? r - q_i[p] : q_i[p];
+        const double          q = moment_arm(p, r, side);
         const Eigen::Vector3d nv(n[0], n[1], n[2]);
         B.noalias() += (q * area_of(p) / volume[k]) * nv * nv.transpose();
       });
@@ -249,7 +249,7 @@ namespace tribodyn
         const Vec3   n     = unit_normal(p, r);
         const double sg    = is_j ? sig_j[p] : sig_i[p];
         const Vec3   shear = side_shear(p, is_j);
-        const double q     = is_j ? r - q_i[p] : q_i[p];
+        const double q     = moment_arm(p, r, is_j);
         Vec3         traction;
         for (unsigned int c = 0; c < 3; ++c)
           traction[c] = sg * n[c] + shear[c];

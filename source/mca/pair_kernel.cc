@@ -352,7 +352,8 @@ namespace tribodyn
                       if (factors
                           && (tau_scale_i[p] != 1 || tau_scale_j[p] != 1))
                         tau_scale_i[p] = tau_scale_j[p] = 1;
-                      q_i[p] = r / 2;
+                      if (q_stored)
+                        q_i[p] = r / 2;
                       if constexpr (Moment::active)
                         moment.separate(p);
                       continue;
@@ -374,12 +375,14 @@ namespace tribodyn
                           mb_i[p] = -mc[mat[i]].D * mb_mu[i];
                           mb_j[p] = -mc[mat[j]].D * mb_mu[j];
                         }
-                      q_i[p] = touch / 2;
+                      if (q_stored)
+                        q_i[p] = touch / 2;
                       r_prev = touch;
                       dr_p   = r - touch;
                     }
                 }
-              const double qi = q_i[p], qj = r_prev - qi;
+              const double qi = q_stored ? q_i[p] : 0.5 * r_prev,
+                           qj = r_prev - qi;
 
               // Relative-rotation moment K_ij (moment_laws.h): its trial
               // update from this step's kinematics, gathered above; pass C
@@ -483,7 +486,8 @@ namespace tribodyn
               // two sides differ (added once dsm is known) and the force uses
               // the mean of the two sides.
               const double dqi = kj * dr_p * inv_sum;
-              q_i[p]           = qi + dqi;
+              if (q_stored)
+                q_i[p] = qi + dqi;
               sig_i[p] += ki * dqi;
               sig_j[p] += kj * (dr_p - dqi);
               // (and the many-body work of the sides' parts m = D mu + c:
@@ -645,7 +649,7 @@ namespace tribodyn
               const unsigned int i = pi[p], j = pj[p];
               const double       r  = nblock.r[b];
               const Vec3         n  = nblock.normal(b);
-              const double       qi = q_i[p], qj = r - qi;
+              const double       qi = q_stored ? q_i[p] : 0.5 * r, qj = r - qi;
               const double       Sp = geometry.area(p);
               const Vec3         t  = tau[p];
               // (pass A set both shear factors to 1)

@@ -29,7 +29,10 @@ namespace tribodyn
           Vec3 t;
           for (unsigned int c = 0; c < 3; ++c)
             t[c] = sig_i[p] * n[c] + tau_scale_i[p] * tau.component[c][p];
-          add_outer(target[pi[p]], q_i[p] * area_of(p) / volume[pi[p]], n, t);
+          add_outer(target[pi[p]],
+                    moment_arm(p, r, 0) * area_of(p) / volume[pi[p]],
+                    n,
+                    t);
         }
       if (owned(pj[p]) && !(skip_elastic && elastic(pj[p])))
         {
@@ -37,7 +40,7 @@ namespace tribodyn
           for (unsigned int c = 0; c < 3; ++c)
             t[c] = sig_j[p] * n[c] + tau_scale_j[p] * tau.component[c][p];
           add_outer(target[pj[p]],
-                    (r - q_i[p]) * area_of(p) / volume[pj[p]],
+                    moment_arm(p, r, 1) * area_of(p) / volume[pj[p]],
                     n,
                     t);
         }

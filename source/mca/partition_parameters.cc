@@ -26,6 +26,18 @@ namespace tribodyn
             "automata move to their new ranks (results do not change beyond "
             "round-off). 0 = never; otherwise >= 1. Ignored on one rank.",
             dealii::Patterns::Double(0));
+      b.add("Mesh cells per rank",
+            mesh_cells_per_rank,
+            "The automata are searched for in cells one interaction range "
+            "wide; the background mesh (deal.II's cells, ~280 bytes each in "
+            "3D, ~150 bytes per automaton of a uniform scene) holds 2 x 2 x 2 "
+            "of them per cell where every rank still gets at least this many "
+            "mesh cells, one otherwise. The mesh cell is the partition's "
+            "grain: fewer than ~1000 a rank make the ranks' work uneven in "
+            "graded scenes, whose cells weigh up to 64 times more than "
+            "others. Results do not change. 0 = one search cell per mesh "
+            "cell always.",
+            dealii::Patterns::Integer(0));
       return b;
     }
 

@@ -76,14 +76,23 @@ namespace tribodyn
             tree_of[t] = perm[cell->index()];
           }
       }
-      const std::uint64_t per_tree = std::uint64_t(1) << (3 * level);
-      auto                position =
+      // (p4est's cells hold split^3 cells: Decomposition::cell_split())
+      const unsigned int split = Decomposition::cell_split(
+        trees, level, n_ranks, prm.partition.mesh_cells_per_rank);
+      const unsigned int  mesh_level = split == 2 ? level - 1 : level;
+      const std::uint64_t per_tree   = std::uint64_t(1) << (3 * mesh_level);
+      const std::uint64_t n_mesh_cells
+        = n_cells / (std::uint64_t(split) * split * split);
+      auto position =
         [&](const unsigned int i, const unsigned int j, const unsigned int k) {
           const std::array<unsigned int, 3> t{
             {i >> level, j >> level, k >> level}};
-          const unsigned int mask = (1u << level) - 1;
+          const unsigned int mask = (1u << mesh_level) - 1;
           return tree_of.at(t) * per_tree
-                 + interleave(i & mask, j & mask, k & mask, level);
+                 + interleave((i / split) & mask,
+                              (j / split) & mask,
+                              (k / split) & mask,
+                              mesh_level);
         };
       // Automata per cell and the cells' size-level summaries (as
       // cell_level_summaries(): largest level, any near a change of size),
@@ -126,21 +135,21 @@ namespace tribodyn
       // it): the positions along the curve are dense (0 ... N_cells - 1),
       // and rank r owns the cells whose cumulative weight before them lies
       // in [W r / R, W (r + 1) / R), W the total weight.
-      std::vector<std::uint32_t> owner_at(n_cells, 0);
+      std::vector<std::uint32_t> owner_at(n_mesh_cells, 0);
       {
-        std::vector<std::uint64_t> weight_at(n_cells, 0);
+        std::vector<std::uint64_t> weight_at(n_mesh_cells, 0);
         for (unsigned int k = 0; k < n[2]; ++k)
           for (unsigned int j = 0; j < n[1]; ++j)
             for (unsigned int i = 0; i < n[0]; ++i)
               weight_at[position(i, j, k)]
-                = cost_model::cost_per_automaton
-                    * count[(std::uint64_t(k) * n[1] + j) * n[0] + i]
-                  + 1;
+                += cost_model::cost_per_automaton
+                     * count[(std::uint64_t(k) * n[1] + j) * n[0] + i]
+                   + 1;
         std::uint64_t total_weight = 0;
         for (const auto w : weight_at)
           total_weight += w;
         std::uint64_t before = 0;
-        for (std::uint64_t pos = 0; pos < n_cells; ++pos)
+        for (std::uint64_t pos = 0; pos < n_mesh_cells; ++pos)
           {
             owner_at[pos] = static_cast<std::uint32_t>(
               std::min<long double>(n_ranks - 1,

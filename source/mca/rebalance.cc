@@ -70,14 +70,8 @@ namespace tribodyn
                         const std::uint64_t particle_id,
                         const double       *props,
                         const unsigned int  n_props) {
-        Point3 lower, upper;
-        cells.cell_box(cells.cell_coordinates(cell_of[k]), lower, upper);
-        dealii::Point<3> reference;
-        for (unsigned int e = 0; e < 3; ++e)
-          reference[e]
-            = std::clamp((x[k][e] - lower[e]) / (upper[e] - lower[e]), 0., 1.);
         handler.insert_particle(x[k],
-                                reference,
+                                cells.reference_point(cell_of[k], x[k]),
                                 particle_id,
                                 cells.dealii_cell(cell_of[k]),
                                 dealii::ArrayView<const double>(props,

@@ -126,6 +126,10 @@ namespace tribodyn
                    "at the end "
                 << std::setprecision(3) << imbalance_end << std::setprecision(6)
                 << std::endl;
+        // search cells per deal.II cell and direction (1 or 2: Partition/
+        // Mesh cells per rank)
+        summary["mesh_cell_split"]
+          = system.decomposition().cells_per_mesh_cell();
         summary["n_pairs"]               = system.n_global_pairs();
         summary["n_steps"]               = n_steps;
         summary["dt"]                    = system.time_step();

@@ -1,7 +1,9 @@
 """The partition weighted anew during a run (issue #18, item 4).
 
 Arguments: the build folder of tests/mca, the 1-rank test, the rebalanced
-test and their output folder. The rebalanced run (partition/block_lifted.prm:
+test, their output folder and, optionally, the rebalanced run's mesh split
+(summary.json's mesh_cell_split: 2 where the deal.II cells hold 2 x 2 x 2
+search cells, partition/block_lifted_split.prm; default 1). The rebalanced run (partition/block_lifted.prm:
 a block lifted and sheared across the partition's cuts, K_ij on, 3 ranks,
 Partition/Rebalance threshold = 1.0001: a new partition whenever the
 imbalance grew by 5e-5 since the last one) must
@@ -25,6 +27,7 @@ from check_tools import finish, report  # noqa: E402
 from series_compare import largest_relative_difference  # noqa: E402
 
 build, single, rebalanced, folder = sys.argv[1:5]
+split = int(sys.argv[5]) if len(sys.argv) > 5 else 1
 
 
 def load(test):
@@ -48,6 +51,9 @@ report(summary_n["n_rebalances"] >= 2,
                                     summary_n["work_imbalance"],
                                     summary_n["work_imbalance_end"]))
 report(summary_1["n_rebalances"] == 0, "the 1-rank run never repartitions")
+report(summary_n.get("mesh_cell_split") == split,
+       "the rebalanced run's mesh: %s search cells per deal.II cell and "
+       "direction (expected %d)" % (summary_n.get("mesh_cell_split"), split))
 same = len(rows_1) == len(rows_n) and len(rows_1) > 5 and rows_1[0] == rows_n[0]
 report(same, "same rows and columns (%d, %d)" % (len(rows_1), len(rows_n)))
 worst, name = largest_relative_difference(rows_1, rows_n)

@@ -24,7 +24,13 @@ namespace tribodyn
      * partition gives it (cuts in x, y and z) and the automata in them.
      *
      * The cells form a structured grid: cell (i, j, k) of
-     * n_cells[0] x n_cells[1] x n_cells[2]. Every automaton within the
+     * n_cells[0] x n_cells[1] x n_cells[2]. A deal.II cell holds
+     * split^3 of them (cell_split()): where the ranks hold many cells, the
+     * mesh, whose cells cost deal.II ~280 bytes each in 3D, has 8 times
+     * fewer cells than the search grid, while the neighbour search and the
+     * ghost layer keep cells of the interaction range. The partition's
+     * grain is the deal.II cell; of a ghost deal.II cell, only the cells
+     * next to an owned one are local. Every automaton within the
      * interaction range of an automaton in cell C lies in C or in one of its
      * 26 neighbours, possibly across a periodic face (then seen through an
      * image shift of one period). This class lists, for each owned cell,
@@ -58,8 +64,12 @@ namespace tribodyn
 
       static constexpr unsigned int invalid = static_cast<unsigned int>(-1);
 
+      /// Cells of @p interaction_range; deal.II cells of 2 x 2 x 2 of them
+      /// where each rank keeps at least @p mesh_cells_per_rank (0: never;
+      /// cell_split()).
       Decomposition(const GeometryParameters &geometry,
                     const double              interaction_range,
+                    const unsigned int        mesh_cells_per_rank,
                     const MPI_Comm            comm);
 
       /// Choose the cell grid for the box and the interaction range: the
@@ -71,6 +81,19 @@ namespace tribodyn
                   const double                 interaction_range,
                   std::array<unsigned int, 3> &trees,
                   unsigned int                &level);
+      /// Cells per deal.II cell and direction for the grid of @p trees
+      /// refined @p level times (choose_grid()) on @p n_ranks ranks: 2
+      /// (the mesh refined once less) where that leaves at least
+      /// @p mesh_cells_per_rank (Partition/Mesh cells per rank; 0: never)
+      /// deal.II cells a rank, so that the partition's grain stays a small
+      /// part of a rank's work (the cells of a graded scene weigh up to 64
+      /// times more than others: the seed's graded scene on 256 ranks with
+      /// the mesh split has a work imbalance of 1.12, 1.02 not), else 1.
+      static unsigned int
+      cell_split(const std::array<unsigned int, 3> &trees,
+                 const unsigned int                 level,
+                 const unsigned int                 n_ranks,
+                 const unsigned int                 mesh_cells_per_rank);
 
       /**
        * The work held by the cell of structured index @p ijk, the box
@@ -147,6 +170,12 @@ namespace tribodyn
       {
         return h;
       }
+      /// Cells per deal.II cell in each direction (1 or 2: cell_split()).
+      unsigned int
+      cells_per_mesh_cell() const
+      {
+        return split;
+      }
 
       /// Structured index (i, j, k) of local cell @p c.
       const std::array<unsigned int, 3> &
@@ -160,11 +189,16 @@ namespace tribodyn
       {
         return cell_owner[c];
       }
+      /// The deal.II cell holding local cell @p c.
       CellIterator
       dealii_cell(const unsigned int c) const
       {
         return cells[c];
       }
+      /// Reference coordinates of @p x in the deal.II cell of local cell
+      /// @p c (the cells are boxes), clamped to the unit cell.
+      dealii::Point<3>
+      reference_point(const unsigned int c, const Point3 &x) const;
       /// Position of local cell @p c along a space-filling (Morton) curve of
       /// the global cell grid: the same on every partition.
       std::uint64_t
@@ -259,6 +293,18 @@ namespace tribodyn
       neighbour(const unsigned int c,
                 const unsigned int o,
                 Neighbour         &nb) const;
+      /// Structured index of the neighbour @p o of cell @p ijk (wrapped
+      /// across periodic faces) and its shift code; false where a
+      /// non-periodic side has none.
+      bool
+      neighbour_index(const std::array<unsigned int, 3> &ijk,
+                      const unsigned int                 o,
+                      std::array<unsigned int, 3>       &nb,
+                      unsigned char                     &shift) const;
+      /// Structured index of the first (lowest) cell of deal.II cell
+      /// @p cell.
+      std::array<unsigned int, 3>
+      first_cell_of(const CellIterator &cell) const;
 
       std::uint64_t
       key(const std::array<unsigned int, 3> &ijk) const
@@ -270,11 +316,13 @@ namespace tribodyn
 
       const GeometryParameters &geometry;
       const double              range;
+      const unsigned int        mesh_cells_per_rank;
       MPI_Comm                  comm;
       unsigned int              rank;
 
       dealii::parallel::distributed::Triangulation<3> tria;
       std::array<unsigned int, 3>                     n_cells{{0, 0, 0}};
+      unsigned int                                    split = 1;
       std::array<double, 3>                           h{{0, 0, 0}};
       std::array<bool, 3>                             periodic_{{0, 0, 0}};
       std::array<double, 3>                           period_{{0, 0, 0}};

@@ -38,7 +38,15 @@ namespace tribodyn
       std::vector<std::uint32_t> pi, pj;
       std::vector<unsigned char> pshift; ///< image shift code of x_j
       std::vector<unsigned char> bonded, in_contact;
-      std::vector<double>        q_i, sig_i, sig_j, heat;
+      /// Moment arm q_i of side i (q_j = r - q_i): stored only where the
+      /// two halves of a pair can differ in stiffness (materials of other
+      /// shear moduli). Where every pair's halves are equally stiff the
+      /// series springs split each increment in half and q_i = r / 2 at
+      /// all times (a new pair starts at half its distance): q_stored is
+      /// false, the array empty (8 bytes a pair neither kept nor streamed)
+      /// and moment_arm() gives r / 2.
+      std::vector<double> q_i, sig_i, sig_j, heat;
+      bool                q_stored = true;
       /// Many-body part m of each side's normal stress, as its offset from
       /// D mu of the side's automaton (doc/theory/mca.md §8.4).
       std::vector<double> mb_i, mb_j;
@@ -100,6 +108,16 @@ namespace tribodyn
       /// Per old pair: 1 = its i had the larger id.
       std::vector<unsigned char> old_flags;
 
+      /// Moment arm q of side @p side (0: i, 1: j) of pair @p p at distance
+      /// @p r.
+      double
+      moment_arm(const unsigned int p,
+                 const double       r,
+                 const unsigned int side) const
+      {
+        const double qi = q_stored ? q_i[p] : 0.5 * r;
+        return side == 0 ? qi : r - qi;
+      }
       /// Shear factor of side @p side (0: i, 1: j) of pair @p p.
       double
       shear_factor(const unsigned int p, const unsigned int side) const

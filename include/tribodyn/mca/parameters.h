@@ -467,6 +467,9 @@ namespace tribodyn
       /// Repartition at a pair-list rebuild when the work imbalance (the
       /// largest rank's automata over the mean) exceeds this; 0 = never.
       double rebalance_threshold = 1.1;
+      /// Deal.II cells a rank keeps at least where the mesh holds 2 x 2 x 2
+      /// search cells per cell (Decomposition::cell_split()); 0 = never.
+      unsigned int mesh_cells_per_rank = 1000;
 
       /// The entries of the subsection, each bound to its member
       /// (core/parameter_binding.h).
