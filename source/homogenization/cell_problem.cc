@@ -64,11 +64,12 @@ namespace tribodyn
     }
 
 
-    ParameterBinding
-    CellProblemParameters::binding()
+    void
+    add_boundary_conditions_entry(
+      ParameterBinding               &b,
+      std::vector<BoundaryCondition> &boundary_conditions)
     {
-      ParameterBinding b("Cell problem");
-      std::string      conditions;
+      std::string conditions;
       for (const BoundaryCondition bc : boundary_conditions)
         conditions += (conditions.empty() ? "" : ", ") + to_string(bc);
       b.add(
@@ -80,7 +81,8 @@ namespace tribodyn
         "lower bound), 'periodic' (periodic fluctuation; exact for a "
         "periodic morphology).",
         Patterns::MultipleSelection("KUBC|SUBC|periodic"),
-        [this, where = b.path("Boundary conditions")](const std::string &text) {
+        [&boundary_conditions,
+         where = b.path("Boundary conditions")](const std::string &text) {
           boundary_conditions.clear();
           for (const auto &name : Utilities::split_string_list(text))
             {
@@ -95,6 +97,32 @@ namespace tribodyn
                           where,
                           "give at least one of KUBC, SUBC, periodic.");
         });
+    }
+
+
+    void
+    add_cg_entries(ParameterBinding &b,
+                   double           &solver_tolerance,
+                   unsigned int     &max_iterations)
+    {
+      b.add("Solver tolerance",
+            solver_tolerance,
+            "CG stops when the residual is below this fraction of the "
+            "right-hand side's norm; in (0, 1).",
+            Patterns::Double(),
+            Interval{0, 1, true, true});
+      b.add("Max iterations",
+            max_iterations,
+            "Maximum number of CG iterations per load case.",
+            Patterns::Integer(1));
+    }
+
+
+    ParameterBinding
+    CellProblemParameters::binding()
+    {
+      ParameterBinding b("Cell problem");
+      add_boundary_conditions_entry(b, boundary_conditions);
       b.add("Subdivisions per pixel",
             subdivisions_per_pixel,
             "Elements per morphology pixel along each axis (coarse mesh).",
@@ -108,16 +136,7 @@ namespace tribodyn
             fe_degree,
             "Polynomial degree of the Lagrange elements.",
             Patterns::Integer(1, 4));
-      b.add("Solver tolerance",
-            solver_tolerance,
-            "CG stops when the residual is below this fraction of the "
-            "right-hand side's norm; in (0, 1).",
-            Patterns::Double(),
-            Interval{0, 1, true, true});
-      b.add("Max iterations",
-            max_iterations,
-            "Maximum number of CG iterations per load case.",
-            Patterns::Integer(1));
+      add_cg_entries(b, solver_tolerance, max_iterations);
       b.add("Preconditioner",
             preconditioner,
             "Preconditioner of CG: 'multigrid' (geometric multigrid on the "

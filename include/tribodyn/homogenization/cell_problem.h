@@ -64,6 +64,20 @@ namespace tribodyn
       double_ ///< everything in double
     };
 
+    /// Add the entry "Boundary conditions" (a list of KUBC, SUBC,
+    /// periodic) bound to @p boundary_conditions: the 2D and the 3D cell
+    /// problems declare it alike.
+    void
+    add_boundary_conditions_entry(
+      ParameterBinding               &b,
+      std::vector<BoundaryCondition> &boundary_conditions);
+
+    /// Add the entries "Solver tolerance" and "Max iterations" of CG.
+    void
+    add_cg_entries(ParameterBinding &b,
+                   double           &solver_tolerance,
+                   unsigned int     &max_iterations);
+
     /// Parameters of the subsection "Cell problem".
     struct CellProblemParameters
     {

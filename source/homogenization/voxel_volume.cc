@@ -1,0 +1,459 @@
+// Voxel volumes of the 3D cell problems (issue #51): the generators
+// (laminate, random spheres) and the raw files with their header.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <tribodyn/core/errors.h>
+#include <tribodyn/core/selection.h>
+#include <tribodyn/homogenization/voxel_volume.h>
+
+namespace tribodyn
+{
+  namespace homogenization
+  {
+    using dealii::ParameterHandler;
+    namespace Patterns = dealii::Patterns;
+
+    namespace
+    {
+      constexpr SelectionTable<VolumeMorphologyParameters::Generator, 3>
+        generator_choices{
+          {{"laminate", VolumeMorphologyParameters::Generator::laminate},
+           {"spheres", VolumeMorphologyParameters::Generator::spheres},
+           {"raw file", VolumeMorphologyParameters::Generator::raw_file}}};
+      constexpr SelectionTable<unsigned int, 3> axis_choices{
+        {{"x", 0u}, {"y", 1u}, {"z", 2u}}};
+    } // namespace
+
+
+    ParameterBinding
+    VolumeMorphologyParameters::binding()
+    {
+      ParameterBinding b("Morphology");
+      b.add("Generator",
+            generator,
+            "Where the voxels come from: 'laminate' (layers through the "
+            "whole box, normal to 'Laminate normal'), 'spheres' (random "
+            "non-overlapping spheres of the heterogeneity, placed "
+            "periodically), 'raw file' (material ids read from the raw "
+            "volume that 'Raw header' describes).",
+            generator_choices);
+      const char *axes[3] = {"x", "y", "z"};
+      for (unsigned int d = 0; d < 3; ++d)
+        b.add(std::string("Voxels in ") + axes[d],
+              n_voxels[d],
+              std::string("Number of voxels along ") + axes[d]
+                + " (generators; a raw file gives its own size).",
+              Patterns::Integer(2));
+      b.add("Voxel size",
+            voxel_size,
+            "Edge of a cubic voxel of the generators (m); a raw file's "
+            "header gives its own.",
+            Patterns::Double(),
+            Interval{0, 1e3, true, false});
+      b.add("Volume fraction",
+            volume_fraction,
+            "Target volume fraction of the heterogeneity (material id 1) "
+            "of the generators; in [0, 1).",
+            Patterns::Double(),
+            Interval{0, 1, false, true});
+      b.add("Laminate normal",
+            laminate_normal,
+            "Laminate: the axis normal to the layers.",
+            axis_choices);
+      b.add("Laminate periods",
+            laminate_periods,
+            "Laminate: number of (matrix, heterogeneity) periods along the "
+            "normal; it must divide the number of voxels along it.",
+            Patterns::Integer(1));
+      b.add("Sphere radius",
+            sphere_radius,
+            "Spheres: radius in voxels (a voxel belongs to a sphere when its "
+            "centre lies inside).",
+            Patterns::Double(),
+            Interval{0.5, 1e6});
+      b.add("Seed",
+            random_seed,
+            "Spheres: seed of the random placement (same seed, same volume).",
+            Patterns::Integer(0));
+      b.add("Raw header",
+            raw_header,
+            "Raw file: the header file of the volume (lines 'size = nx ny "
+            "nz', 'voxel size = h' or 'hx hy hz' in m, 'type = uint8', "
+            "'file = NAME' relative to the header); the raw file holds one "
+            "material id per voxel, x fastest, then y, then z.",
+            Patterns::FileName());
+      return b;
+    }
+
+
+    void
+    VolumeMorphologyParameters::declare_parameters(ParameterHandler &prm)
+    {
+      VolumeMorphologyParameters().binding().declare(prm);
+    }
+
+
+    void
+    VolumeMorphologyParameters::parse_parameters(ParameterHandler &prm)
+    {
+      const ParameterBinding b = binding();
+      b.parse(prm);
+      if (generator == Generator::raw_file)
+        check_parameter(!raw_header.empty(),
+                        b.path("Raw header"),
+                        "give the header file of the raw volume ('Generator "
+                        "= raw file' reads it).");
+      if (generator == Generator::laminate)
+        check_parameter(n_voxels[laminate_normal] % laminate_periods == 0,
+                        b.path("Laminate periods"),
+                        "it must divide the number of voxels along the "
+                        "normal ("
+                          + std::to_string(n_voxels[laminate_normal])
+                          + "), so that every layer ends on a voxel face.");
+    }
+
+
+    VoxelVolume::VoxelVolume(const std::array<unsigned int, 3> &n_voxels,
+                             const std::array<double, 3>       &voxel_size,
+                             std::vector<std::uint8_t>          ids,
+                             const std::string                 &origin)
+        : n(n_voxels)
+        , h(voxel_size)
+        , ids(std::move(ids))
+        , origin(origin)
+    {
+    }
+
+
+    unsigned int
+    VoxelVolume::n_phases() const
+    {
+      const unsigned int largest
+        = ids.empty() ? 0 : *std::max_element(ids.begin(), ids.end());
+      return std::max(2u, largest + 1);
+    }
+
+
+    std::vector<double>
+    VoxelVolume::phase_fractions() const
+    {
+      std::vector<double> f(n_phases(), 0.);
+      for (const std::uint8_t id : ids)
+        f[id] += 1.;
+      for (double &x : f)
+        x /= ids.size();
+      return f;
+    }
+
+
+    namespace
+    {
+      /// Layers normal to @p axis: in each of @p periods periods, the
+      /// first round(f p) voxels are heterogeneity (id 1).
+      VoxelVolume
+      make_laminate(const VolumeMorphologyParameters &p)
+      {
+        const unsigned int a      = p.laminate_normal;
+        const unsigned int period = p.n_voxels[a] / p.laminate_periods;
+        const unsigned int thick
+          = static_cast<unsigned int>(std::lround(p.volume_fraction * period));
+        std::vector<std::uint8_t> ids(std::size_t(p.n_voxels[0]) * p.n_voxels[1]
+                                      * p.n_voxels[2]);
+        std::size_t               v = 0;
+        for (unsigned int k = 0; k < p.n_voxels[2]; ++k)
+          for (unsigned int j = 0; j < p.n_voxels[1]; ++j)
+            for (unsigned int i = 0; i < p.n_voxels[0]; ++i, ++v)
+              {
+                const unsigned int index[3] = {i, j, k};
+                ids[v] = (index[a] % period) < thick ? 1 : 0;
+              }
+        return VoxelVolume(p.n_voxels,
+                           {{p.voxel_size, p.voxel_size, p.voxel_size}},
+                           std::move(ids),
+                           "laminate normal to " + std::string(1, "xyz"[a])
+                             + ", " + std::to_string(p.laminate_periods)
+                             + " period(s) of " + std::to_string(period)
+                             + " voxels, " + std::to_string(thick)
+                             + " of them heterogeneity");
+      }
+
+
+      /**
+       * Random sequential addition of spheres of radius r (voxels) in the
+       * periodic box: centres uniform, a candidate kept when it is at
+       * least 2 r + 1 voxels (minimum image) from every kept centre, so
+       * that no two spheres share a voxel face, until the spheres' volume
+       * 4/3 pi r^3 per sphere reaches the target fraction. A voxel is
+       * heterogeneity when its centre lies within r of a centre (minimum
+       * image): spheres cut by a face reappear at the opposite one.
+       */
+      VoxelVolume
+      make_spheres(const VolumeMorphologyParameters &p)
+      {
+        const auto        &n        = p.n_voxels;
+        const double       r        = p.sphere_radius;
+        const double       volume   = double(n[0]) * n[1] * n[2];
+        const unsigned int n_target = static_cast<unsigned int>(std::lround(
+          p.volume_fraction * volume / (4. / 3. * M_PI * r * r * r)));
+        for (unsigned int d = 0; d < 3; ++d)
+          check_parameter(2 * r + 1 <= n[d],
+                          "Morphology/Sphere radius",
+                          "a sphere of radius " + format_number(r)
+                            + " voxels must fit in the box (2 r + 1 <= "
+                            + std::to_string(n[d]) + " voxels along "
+                            + std::string(1, "xyz"[d]) + ").");
+        std::mt19937_64                        rng(p.random_seed);
+        std::uniform_real_distribution<double> uniform(0., 1.);
+        std::vector<std::array<double, 3>>     centres;
+        const auto distance2 = [&](const std::array<double, 3> &a,
+                                   const std::array<double, 3> &b) {
+          double s = 0;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              double x = std::fabs(a[d] - b[d]);
+              x        = std::min(x, n[d] - x);
+              s += x * x;
+            }
+          return s;
+        };
+        const double       gap          = 2 * r + 1;
+        const unsigned int max_attempts = 1000 * std::max(n_target, 1u);
+        unsigned int       attempts     = 0;
+        while (centres.size() < n_target && attempts < max_attempts)
+          {
+            ++attempts;
+            std::array<double, 3> c;
+            for (unsigned int d = 0; d < 3; ++d)
+              c[d] = uniform(rng) * n[d];
+            bool free = true;
+            for (const auto &other : centres)
+              if (distance2(c, other) < gap * gap)
+                {
+                  free = false;
+                  break;
+                }
+            if (free)
+              centres.push_back(c);
+          }
+        if (centres.size() < n_target)
+          throw InputError(
+            "Parameter 'Morphology/Volume fraction' = "
+            + format_number(p.volume_fraction) + ": only "
+            + std::to_string(centres.size()) + " of the "
+            + std::to_string(n_target) + " non-overlapping spheres of radius "
+            + format_number(r) + " voxels it needs fit in the box after "
+            + std::to_string(attempts)
+            + " random placements (random sequential addition jams near a "
+              "fraction of 0.38). Lower 'Morphology/Volume fraction' or "
+              "'Morphology/Sphere radius', or enlarge the box.");
+
+        std::vector<std::uint8_t> ids(static_cast<std::size_t>(n[0]) * n[1]
+                                        * n[2],
+                                      0);
+        const int                 reach = static_cast<int>(std::ceil(r));
+        for (const auto &c : centres)
+          for (int dk = -reach - 1; dk <= reach + 1; ++dk)
+            for (int dj = -reach - 1; dj <= reach + 1; ++dj)
+              for (int di = -reach - 1; di <= reach + 1; ++di)
+                {
+                  const int base[3] = {static_cast<int>(std::floor(c[0])),
+                                       static_cast<int>(std::floor(c[1])),
+                                       static_cast<int>(std::floor(c[2]))};
+                  const int idx[3] = {base[0] + di, base[1] + dj, base[2] + dk};
+                  double    s      = 0;
+                  for (unsigned int d = 0; d < 3; ++d)
+                    {
+                      const double x = idx[d] + 0.5 - c[d];
+                      s += x * x;
+                    }
+                  if (s > r * r)
+                    continue;
+                  unsigned int wrapped[3];
+                  for (unsigned int d = 0; d < 3; ++d)
+                    wrapped[d] = static_cast<unsigned int>(
+                      ((idx[d] % int(n[d])) + int(n[d])) % int(n[d]));
+                  ids[(std::size_t(wrapped[2]) * n[1] + wrapped[1]) * n[0]
+                      + wrapped[0]]
+                    = 1;
+                }
+        const double fraction
+          = std::count(ids.begin(), ids.end(), std::uint8_t(1)) / volume;
+        std::ostringstream description;
+        description << centres.size() << " random spheres of radius " << r
+                    << " voxels (seed " << p.random_seed
+                    << "), voxel volume fraction " << fraction;
+        return VoxelVolume(n,
+                           {{p.voxel_size, p.voxel_size, p.voxel_size}},
+                           std::move(ids),
+                           description.str());
+      }
+
+
+      /// The directory part of @p path ("" or ending with '/').
+      std::string
+      directory_of(const std::string &path)
+      {
+        const auto slash = path.find_last_of('/');
+        return slash == std::string::npos ? "" : path.substr(0, slash + 1);
+      }
+    } // namespace
+
+
+    VoxelVolume
+    VoxelVolume::create(const VolumeMorphologyParameters &parameters)
+    {
+      switch (parameters.generator)
+        {
+          case VolumeMorphologyParameters::Generator::laminate:
+            return make_laminate(parameters);
+          case VolumeMorphologyParameters::Generator::spheres:
+            return make_spheres(parameters);
+          case VolumeMorphologyParameters::Generator::raw_file:
+            break;
+        }
+      return read_raw(parameters.raw_header);
+    }
+
+
+    VoxelVolume
+    VoxelVolume::read_raw(const std::string &header_file)
+    {
+      const std::string header = "the raw volume header '" + header_file
+                                 + "' (parameter 'Morphology/Raw header')";
+      const std::string where = "T" + header.substr(1);
+      std::ifstream     in(header_file);
+      if (!in)
+        throw InputError("Cannot read " + header
+                         + ": it does not exist or is not readable. Give the "
+                           "path of an existing header file (relative paths "
+                           "are relative to the directory tribodyn runs in).");
+      std::array<unsigned int, 3> n{};
+      std::array<double, 3>       h{};
+      std::string                 type, file;
+      bool                        has_size = false, has_h = false;
+      std::string                 line;
+      unsigned int                line_number = 0;
+      while (std::getline(in, line))
+        {
+          ++line_number;
+          line = line.substr(0, line.find('#'));
+          if (line.find_first_not_of(" \t\r") == std::string::npos)
+            continue;
+          const auto equal = line.find('=');
+          const auto trim  = [](std::string s) {
+            const auto b = s.find_first_not_of(" \t\r");
+            const auto e = s.find_last_not_of(" \t\r");
+            return b == std::string::npos ? std::string()
+                                           : s.substr(b, e - b + 1);
+          };
+          const std::string key
+            = equal == std::string::npos ? "" : trim(line.substr(0, equal));
+          const std::string value
+            = equal == std::string::npos ? "" : trim(line.substr(equal + 1));
+          const std::string at
+            = where + ", line " + std::to_string(line_number) + ": ";
+          std::istringstream values(value);
+          if (key == "size")
+            {
+              long long   m[3] = {0, 0, 0};
+              std::string rest;
+              if (!(values >> m[0] >> m[1] >> m[2]) || (values >> rest)
+                  || std::min({m[0], m[1], m[2]}) < 2
+                  || std::max({m[0], m[1], m[2]}) > 100000)
+                throw InputError(at + "'size = " + value
+                                 + "' is not three whole numbers of voxels "
+                                   "(nx ny nz), each at least 2. Write e.g. "
+                                   "'size = 64 64 32'.");
+              for (unsigned int d = 0; d < 3; ++d)
+                n[d] = static_cast<unsigned int>(m[d]);
+              has_size = true;
+            }
+          else if (key == "voxel size")
+            {
+              std::vector<double> v;
+              double              x;
+              while (values >> x)
+                v.push_back(x);
+              if (!values.eof() || (v.size() != 1 && v.size() != 3)
+                  || *std::min_element(v.begin(), v.end()) <= 0)
+                throw InputError(at + "'voxel size = " + value
+                                 + "' is not one or three positive lengths "
+                                   "(m). Write e.g. 'voxel size = 1e-5'.");
+              for (unsigned int d = 0; d < 3; ++d)
+                h[d] = v.size() == 1 ? v[0] : v[d];
+              has_h = true;
+            }
+          else if (key == "type")
+            type = value;
+          else if (key == "file")
+            file = value;
+          else
+            throw InputError(at + "'" + trim(line)
+                             + "' is not one of the keys size, voxel size, "
+                               "type, file (lines 'key = value'; '#' starts a "
+                               "comment).");
+        }
+      for (const auto &[present, key] :
+           {std::pair<bool, std::string>{has_size, "size"},
+            {has_h, "voxel size"},
+            {!type.empty(), "type"},
+            {!file.empty(), "file"}})
+        if (!present)
+          throw InputError(where + " has no line '" + key
+                           + " = ...'. A header gives size, voxel size, type "
+                             "and file.");
+      if (type != "uint8")
+        throw InputError(where + ": 'type = " + type
+                         + "' is not supported: tribodyn reads raw volumes of "
+                           "material ids, one byte per voxel ('type = "
+                           "uint8'). Segment the volume into ids 0, 1, ... "
+                           "first.");
+      const std::string path
+        = file.front() == '/' ? file : directory_of(header_file) + file;
+      std::ifstream raw(path, std::ios::binary | std::ios::ate);
+      if (!raw)
+        throw InputError("Cannot read the raw volume '" + path + "' named by "
+                         + header
+                         + ": it does not exist or is not readable. Fix the "
+                           "line 'file = ...' (relative to the header's "
+                           "directory).");
+      const std::size_t expected = std::size_t(n[0]) * n[1] * n[2];
+      const auto        bytes    = static_cast<std::size_t>(raw.tellg());
+      if (bytes != expected)
+        throw InputError("The raw volume '" + path + "' named by " + header
+                         + " holds " + std::to_string(bytes)
+                         + " bytes, but 'size = " + std::to_string(n[0]) + " "
+                         + std::to_string(n[1]) + " " + std::to_string(n[2])
+                         + "' with 'type = uint8' needs "
+                         + std::to_string(expected)
+                         + ". Fix the size in the header or the file.");
+      std::vector<std::uint8_t> ids(expected);
+      raw.seekg(0);
+      raw.read(reinterpret_cast<char *>(ids.data()), expected);
+      return VoxelVolume(n,
+                         h,
+                         std::move(ids),
+                         "raw volume " + path + " (" + std::to_string(n[0])
+                           + " x " + std::to_string(n[1]) + " x "
+                           + std::to_string(n[2]) + " voxels)");
+    }
+
+
+    void
+    VoxelVolume::write_raw(const std::string &header_file,
+                           const std::string &raw_file) const
+    {
+      std::ofstream raw(raw_file, std::ios::binary);
+      raw.write(reinterpret_cast<const char *>(ids.data()), ids.size());
+      std::ofstream header(header_file);
+      header.precision(17);
+      header << "# " << origin << "\nsize = " << n[0] << " " << n[1] << " "
+             << n[2] << "\nvoxel size = " << h[0] << " " << h[1] << " " << h[2]
+             << "\ntype = uint8\nfile = "
+             << raw_file.substr(raw_file.find_last_of('/') + 1) << "\n";
+    }
+  } // namespace homogenization
+} // namespace tribodyn

@@ -1,0 +1,186 @@
+"""Small helpers of the 3D homogenization tests (issue #51): 6x6 linear
+algebra in plain Python (no numpy on the test machines), the isotropic
+stiffness, the exact laminate, raw volumes and runs of tribodyn.
+
+Voigt order (xx, yy, zz, yz, xz, xy), engineering shears, as tribodyn's
+summary.json writes C and S.
+"""
+import json
+import math
+import os
+import subprocess
+
+
+def inverse(A):
+    """Gauss-Jordan with partial pivoting."""
+    n = len(A)
+    a = [list(map(float, row)) + [1.0 if i == j else 0.0 for j in range(n)]
+         for i, row in enumerate(A)]
+    for c in range(n):
+        p = max(range(c, n), key=lambda r: abs(a[r][c]))
+        a[c], a[p] = a[p], a[c]
+        d = a[c][c]
+        a[c] = [x / d for x in a[c]]
+        for r in range(n):
+            if r != c and a[r][c] != 0.0:
+                f = a[r][c]
+                a[r] = [x - f * y for x, y in zip(a[r], a[c])]
+    return [row[n:] for row in a]
+
+
+def mul(A, B):
+    return [[sum(A[i][k] * B[k][j] for k in range(len(B)))
+             for j in range(len(B[0]))] for i in range(len(A))]
+
+
+def sub(A, B):
+    return [[a - b for a, b in zip(ra, rb)] for ra, rb in zip(A, B)]
+
+
+def norm(A):
+    return math.sqrt(sum(x * x for row in A for x in row))
+
+
+def min_eigenvalue(A):
+    """Smallest eigenvalue of the symmetric part of A (cyclic Jacobi)."""
+    n = len(A)
+    a = [[0.5 * (A[i][j] + A[j][i]) for j in range(n)] for i in range(n)]
+    for _ in range(100):
+        off = sum(a[i][j] ** 2 for i in range(n) for j in range(i + 1, n))
+        if off <= 1e-30 * sum(a[i][i] ** 2 for i in range(n)):
+            break
+        for p in range(n):
+            for q in range(p + 1, n):
+                if a[p][q] == 0.0:
+                    continue
+                theta = (a[q][q] - a[p][p]) / (2 * a[p][q])
+                t = math.copysign(1.0, theta) / (abs(theta)
+                                                 + math.sqrt(theta ** 2 + 1))
+                c = 1 / math.sqrt(t * t + 1)
+                s = t * c
+                for k in range(n):
+                    akp, akq = a[k][p], a[k][q]
+                    a[k][p], a[k][q] = c * akp - s * akq, s * akp + c * akq
+                for k in range(n):
+                    apk, aqk = a[p][k], a[q][k]
+                    a[p][k], a[q][k] = c * apk - s * aqk, s * apk + c * aqk
+    return min(a[i][i] for i in range(n))
+
+
+def isotropic_stiffness(E, nu):
+    """Hooke's law: lambda + 2 mu, lambda in the normal block, mu on the
+    engineering shears."""
+    lam = E * nu / ((1 + nu) * (1 - 2 * nu))
+    mu = E / (2 * (1 + nu))
+    C = [[0.0] * 6 for _ in range(6)]
+    for i in range(3):
+        for j in range(3):
+            C[i][j] = lam + (2 * mu if i == j else 0.0)
+        C[3 + i][3 + i] = mu
+    return C
+
+
+def laminate_exact(stiffnesses, fractions, normal):
+    """Exact effective stiffness of layers normal to axis `normal` (0, 1, 2).
+
+    Across the layers the traction sigma.n is continuous, along them the
+    strain is compatible: the components n = (sigma_aa, sigma_ab, sigma_ac)
+    of the traction are uniform, the in-layer strains t = (eps_bb, eps_cc,
+    gamma_bc) are uniform, the other components are constant in each layer.
+    With the blocks C_nn, C_nt, C_tn, C_tt of each phase's stiffness,
+        eps_n^k = C_nn^k^-1 (sigma_n - C_nt^k eps_t),
+        <eps_n> = <C_nn^-1> sigma_n - <C_nn^-1 C_nt> eps_t
+    gives sigma_n from the macroscopic strain, then
+        <sigma_t> = <C_tt - C_tn C_nn^-1 C_nt> eps_t + <C_tn C_nn^-1> sigma_n.
+    """
+    a = normal
+    b, c = (a + 1) % 3, (a + 2) % 3
+    n_idx = [a, 3 + c, 3 + b]   # sigma_aa, and the shears of planes with a
+    t_idx = [b, c, 3 + a]       # eps_bb, eps_cc, gamma_bc
+
+    def block(C, rows, cols):
+        return [[C[i][j] for j in cols] for i in rows]
+
+    def avg(mats):
+        return [[sum(f * M[i][j] for f, M in zip(fractions, mats))
+                 for j in range(len(mats[0][0]))]
+                for i in range(len(mats[0]))]
+
+    inv_nn = [inverse(block(C, n_idx, n_idx)) for C in stiffnesses]
+    A = avg(inv_nn)
+    B = avg([mul(inv_nn[k], block(C, n_idx, t_idx))
+             for k, C in enumerate(stiffnesses)])
+    D = avg([mul(block(C, t_idx, n_idx), inv_nn[k])
+             for k, C in enumerate(stiffnesses)])
+    T = avg([sub(block(C, t_idx, t_idx),
+                 mul(mul(block(C, t_idx, n_idx), inv_nn[k]),
+                     block(C, n_idx, t_idx)))
+             for k, C in enumerate(stiffnesses)])
+    A_inv = inverse(A)
+    C_eff = [[0.0] * 6 for _ in range(6)]
+    for col in range(6):
+        eps = [1.0 if i == col else 0.0 for i in range(6)]
+        e_t = [[eps[i]] for i in t_idx]
+        e_n = [[eps[i]] for i in n_idx]
+        Be = mul(B, e_t)
+        s_n = mul(A_inv, [[e_n[i][0] + Be[i][0]] for i in range(3)])
+        s_t = [[x[0] + y[0]] for x, y in zip(mul(T, e_t), mul(D, s_n))]
+        for i, row in zip(n_idx, s_n):
+            C_eff[i][col] = row[0]
+        for i, row in zip(t_idx, s_t):
+            C_eff[i][col] = row[0]
+    return C_eff
+
+
+def write_raw(directory, name, ids, n, h):
+    """Write ids (a dict or function (i, j, k) -> id, x fastest) as
+    NAME.raw with its header NAME.hdr; returns the header's path."""
+    nx, ny, nz = n
+    data = bytes(ids(i, j, k) for k in range(nz) for j in range(ny)
+                 for i in range(nx))
+    with open(os.path.join(directory, name + ".raw"), "wb") as f:
+        f.write(data)
+    header = os.path.join(directory, name + ".hdr")
+    with open(header, "w") as f:
+        f.write("# written by tests/homogenization/volume_tools.py\n"
+                "size = %d %d %d\nvoxel size = %r\ntype = uint8\n"
+                "file = %s.raw\n" % (nx, ny, nz, h, name))
+    return header
+
+
+def run(tribodyn, directory, prm_text, ranks=1):
+    """Run tribodyn on prm_text in `directory` (fresh output/); returns
+    summary.json."""
+    os.makedirs(directory, exist_ok=True)
+    prm = os.path.join(directory, "run.prm")
+    with open(prm, "w") as f:
+        f.write(prm_text)
+    command = [tribodyn, "run.prm"]
+    if ranks > 1:
+        command = ["mpirun", "-np", str(ranks)] + command
+    out = subprocess.run(command, cwd=directory, capture_output=True,
+                         text=True)
+    print(out.stdout)
+    if out.returncode != 0:
+        print(out.stderr)
+        raise SystemExit("tribodyn failed in %s (exit code %d)"
+                         % (directory, out.returncode))
+    with open(os.path.join(directory, "output", "summary.json")) as f:
+        return json.load(f)
+
+
+class Checks:
+    """PASS/FAIL lines and the exit code."""
+
+    def __init__(self):
+        self.failures = []
+
+    def __call__(self, condition, what):
+        print(("PASS  " if condition else "FAIL  ") + what)
+        if not condition:
+            self.failures.append(what)
+
+    def exit(self):
+        if self.failures:
+            print("%d check(s) failed" % len(self.failures))
+        raise SystemExit(1 if self.failures else 0)
