@@ -1,5 +1,6 @@
 // Voxel volumes of the 3D cell problems (issue #51): the generators
-// (laminate, random spheres) and the raw files with their header.
+// (laminate, random spheres and aligned fibres) and the raw files with
+// their header.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -18,10 +19,11 @@ namespace tribodyn
 
     namespace
     {
-      constexpr SelectionTable<VolumeMorphologyParameters::Generator, 3>
+      constexpr SelectionTable<VolumeMorphologyParameters::Generator, 4>
         generator_choices{
           {{"laminate", VolumeMorphologyParameters::Generator::laminate},
            {"spheres", VolumeMorphologyParameters::Generator::spheres},
+           {"fibres", VolumeMorphologyParameters::Generator::fibres},
            {"raw file", VolumeMorphologyParameters::Generator::raw_file}}};
       constexpr SelectionTable<unsigned int, 3> axis_choices{
         {{"x", 0u}, {"y", 1u}, {"z", 2u}}};
@@ -37,7 +39,8 @@ namespace tribodyn
             "Where the voxels come from: 'laminate' (layers through the "
             "whole box, normal to 'Laminate normal'), 'spheres' (random "
             "non-overlapping spheres of the heterogeneity, placed "
-            "periodically), 'raw file' (material ids read from the raw "
+            "periodically), 'fibres' (the same with short cylinders aligned "
+            "with 'Fibre axis'), 'raw file' (material ids read from the raw "
             "volume that 'Raw header' describes).",
             generator_choices);
       const char *axes[3] = {"x", "y", "z"};
@@ -68,15 +71,25 @@ namespace tribodyn
             "Laminate: number of (matrix, heterogeneity) periods along the "
             "normal; it must divide the number of voxels along it.",
             Patterns::Integer(1));
-      b.add("Sphere radius",
-            sphere_radius,
-            "Spheres: radius in voxels (a voxel belongs to a sphere when its "
-            "centre lies inside).",
+      b.add("Radius",
+            radius,
+            "Spheres and fibres: radius in voxels (a voxel belongs to an "
+            "inclusion when its centre lies inside).",
             Patterns::Double(),
             Interval{0.5, 1e6});
+      b.add("Fibre length",
+            fibre_length,
+            "Fibres: length in voxels (flat-ended cylinders).",
+            Patterns::Double(),
+            Interval{1, 1e6});
+      b.add("Fibre axis",
+            fibre_axis,
+            "Fibres: the axis they are aligned with.",
+            axis_choices);
       b.add("Seed",
             random_seed,
-            "Spheres: seed of the random placement (same seed, same volume).",
+            "Spheres and fibres: seed of the random placement (same seed, "
+            "same volume).",
             Patterns::Integer(0));
       b.add("Raw header",
             raw_header,
@@ -182,40 +195,76 @@ namespace tribodyn
 
 
       /**
-       * Random sequential addition of spheres of radius r (voxels) in the
-       * periodic box: centres uniform, a candidate kept when it is at
-       * least 2 r + 1 voxels (minimum image) from every kept centre, so
-       * that no two spheres share a voxel face, until the spheres' volume
-       * 4/3 pi r^3 per sphere reaches the target fraction. A voxel is
-       * heterogeneity when its centre lies within r of a centre (minimum
-       * image): spheres cut by a face reappear at the opposite one.
+       * Random sequential addition of inclusions in the periodic box:
+       * spheres of radius r, or (fibres) cylinders of radius r and length
+       * l along the axis a, all in voxels. Centres are uniform; a
+       * candidate is kept when its distance to every kept inclusion is at
+       * least 2 r + 1 voxels (minimum image; for fibres the distance of
+       * the axis segments, sqrt(p^2 + max(0, |d_a| - l)^2) with p the
+       * distance across the axis and d_a along it), so that no two share a
+       * voxel face; inclusions are added until their volume, 4/3 pi r^3
+       * or pi r^2 l each, reaches the target fraction. A voxel is
+       * heterogeneity when its centre lies inside one (minimum image):
+       * an inclusion cut by a face reappears at the opposite one.
        */
       VoxelVolume
-      make_spheres(const VolumeMorphologyParameters &p)
+      make_inclusions(const VolumeMorphologyParameters &p)
       {
-        const auto        &n        = p.n_voxels;
-        const double       r        = p.sphere_radius;
-        const double       volume   = double(n[0]) * n[1] * n[2];
-        const unsigned int n_target = static_cast<unsigned int>(std::lround(
-          p.volume_fraction * volume / (4. / 3. * M_PI * r * r * r)));
+        const bool fibres
+          = p.generator == VolumeMorphologyParameters::Generator::fibres;
+        const auto        &n      = p.n_voxels;
+        const double       r      = p.radius;
+        const unsigned int a      = p.fibre_axis;
+        const double       l      = fibres ? p.fibre_length : 0.;
+        const double       volume = double(n[0]) * n[1] * n[2];
+        const double       inclusion_volume
+          = fibres ? M_PI * r * r * l : 4. / 3. * M_PI * r * r * r;
+        const unsigned int n_target = static_cast<unsigned int>(
+          std::lround(p.volume_fraction * volume / inclusion_volume));
+        const std::string what = fibres ? "fibre" : "sphere";
         for (unsigned int d = 0; d < 3; ++d)
           check_parameter(2 * r + 1 <= n[d],
-                          "Morphology/Sphere radius",
-                          "a sphere of radius " + format_number(r)
+                          "Morphology/Radius",
+                          "a " + what + " of radius " + format_number(r)
                             + " voxels must fit in the box (2 r + 1 <= "
                             + std::to_string(n[d]) + " voxels along "
                             + std::string(1, "xyz"[d]) + ").");
+        if (fibres)
+          check_parameter(l + 1 <= n[a],
+                          "Morphology/Fibre length",
+                          "a fibre of " + format_number(l)
+                            + " voxels must be at least one voxel shorter "
+                              "than the box along its axis ("
+                            + std::to_string(n[a]) + " voxels along "
+                            + std::string(1, "xyz"[a])
+                            + "), or it would touch its periodic image.");
         std::mt19937_64                        rng(p.random_seed);
         std::uniform_real_distribution<double> uniform(0., 1.);
         std::vector<std::array<double, 3>>     centres;
-        const auto distance2 = [&](const std::array<double, 3> &a,
-                                   const std::array<double, 3> &b) {
-          double s = 0;
-          for (unsigned int d = 0; d < 3; ++d)
+        // the minimum-image difference y - x
+        const auto difference = [&](const std::array<double, 3> &x,
+                                    const std::array<double, 3> &y) {
+          std::array<double, 3> d;
+          for (unsigned int k = 0; k < 3; ++k)
             {
-              double x = std::fabs(a[d] - b[d]);
-              x        = std::min(x, n[d] - x);
-              s += x * x;
+              d[k] = y[k] - x[k];
+              d[k] -= n[k] * std::round(d[k] / n[k]);
+            }
+          return d;
+        };
+        // the squared distance of two inclusions' centres (spheres) or
+        // axis segments (fibres)
+        const auto distance2 = [&](const std::array<double, 3> &x,
+                                   const std::array<double, 3> &y) {
+          const auto d = difference(x, y);
+          double     s = 0;
+          for (unsigned int k = 0; k < 3; ++k)
+            if (!fibres || k != a)
+              s += d[k] * d[k];
+          if (fibres)
+            {
+              const double g = std::max(0., std::fabs(d[a]) - l);
+              s += g * g;
             }
           return s;
         };
@@ -243,48 +292,59 @@ namespace tribodyn
             "Parameter 'Morphology/Volume fraction' = "
             + format_number(p.volume_fraction) + ": only "
             + std::to_string(centres.size()) + " of the "
-            + std::to_string(n_target) + " non-overlapping spheres of radius "
-            + format_number(r) + " voxels it needs fit in the box after "
+            + std::to_string(n_target) + " non-overlapping " + what
+            + "s of radius " + format_number(r)
+            + " voxels it needs fit in the box after "
             + std::to_string(attempts)
             + " random placements (random sequential addition jams near a "
-              "fraction of 0.38). Lower 'Morphology/Volume fraction' or "
-              "'Morphology/Sphere radius', or enlarge the box.");
+              "fraction of 0.38 for spheres). Lower 'Morphology/Volume "
+              "fraction' or 'Morphology/Radius', or enlarge the box.");
 
         std::vector<std::uint8_t> ids(static_cast<std::size_t>(n[0]) * n[1]
                                         * n[2],
                                       0);
-        const int                 reach = static_cast<int>(std::ceil(r));
         for (const auto &c : centres)
-          for (int dk = -reach - 1; dk <= reach + 1; ++dk)
-            for (int dj = -reach - 1; dj <= reach + 1; ++dj)
-              for (int di = -reach - 1; di <= reach + 1; ++di)
-                {
-                  const int base[3] = {static_cast<int>(std::floor(c[0])),
-                                       static_cast<int>(std::floor(c[1])),
-                                       static_cast<int>(std::floor(c[2]))};
-                  const int idx[3] = {base[0] + di, base[1] + dj, base[2] + dk};
-                  double    s      = 0;
-                  for (unsigned int d = 0; d < 3; ++d)
-                    {
-                      const double x = idx[d] + 0.5 - c[d];
-                      s += x * x;
-                    }
-                  if (s > r * r)
-                    continue;
-                  unsigned int wrapped[3];
-                  for (unsigned int d = 0; d < 3; ++d)
-                    wrapped[d] = static_cast<unsigned int>(
-                      ((idx[d] % int(n[d])) + int(n[d])) % int(n[d]));
-                  ids[(std::size_t(wrapped[2]) * n[1] + wrapped[1]) * n[0]
-                      + wrapped[0]]
-                    = 1;
-                }
+          {
+            // the voxels around the inclusion, wrapped into the box
+            int lower[3], upper[3];
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                const double half = r + (fibres && d == a ? 0.5 * l : 0.);
+                lower[d] = static_cast<int>(std::floor(c[d] - half)) - 1;
+                upper[d] = static_cast<int>(std::ceil(c[d] + half)) + 1;
+              }
+            for (int k = lower[2]; k <= upper[2]; ++k)
+              for (int j = lower[1]; j <= upper[1]; ++j)
+                for (int i = lower[0]; i <= upper[0]; ++i)
+                  {
+                    const int                   idx[3] = {i, j, k};
+                    const std::array<double, 3> x{{i + 0.5, j + 0.5, k + 0.5}};
+                    const auto                  d = difference(c, x);
+                    double                      s = 0;
+                    for (unsigned int e = 0; e < 3; ++e)
+                      if (!fibres || e != a)
+                        s += d[e] * d[e];
+                    if (s > r * r || (fibres && std::fabs(d[a]) > 0.5 * l))
+                      continue;
+                    unsigned int wrapped[3];
+                    for (unsigned int e = 0; e < 3; ++e)
+                      wrapped[e] = static_cast<unsigned int>(
+                        ((idx[e] % int(n[e])) + int(n[e])) % int(n[e]));
+                    ids[(std::size_t(wrapped[2]) * n[1] + wrapped[1]) * n[0]
+                        + wrapped[0]]
+                      = 1;
+                  }
+          }
         const double fraction
           = std::count(ids.begin(), ids.end(), std::uint8_t(1)) / volume;
         std::ostringstream description;
-        description << centres.size() << " random spheres of radius " << r
-                    << " voxels (seed " << p.random_seed
-                    << "), voxel volume fraction " << fraction;
+        description << centres.size() << " random " << what << "s of radius "
+                    << r << " voxels";
+        if (fibres)
+          description << " and length " << l << " voxels along "
+                      << "xyz"[a];
+        description << " (seed " << p.random_seed << "), voxel volume fraction "
+                    << fraction;
         return VoxelVolume(n,
                            {{p.voxel_size, p.voxel_size, p.voxel_size}},
                            std::move(ids),
@@ -310,7 +370,8 @@ namespace tribodyn
           case VolumeMorphologyParameters::Generator::laminate:
             return make_laminate(parameters);
           case VolumeMorphologyParameters::Generator::spheres:
-            return make_spheres(parameters);
+          case VolumeMorphologyParameters::Generator::fibres:
+            return make_inclusions(parameters);
           case VolumeMorphologyParameters::Generator::raw_file:
             break;
         }

@@ -6,12 +6,12 @@ is piecewise affine (uniform traction sigma.e_z and uniform in-layer
 strain), hence in the Q1 space, and it is periodic, so the periodic cell
 problem must give the exact laminate stiffness, derived here
 (volume_tools.laminate_exact) from the phases' E and nu in the run's
-parameters.prm, up to the CG tolerance (1e-12): |C^per - C_exact| / |C_exact| <= 1e-10
-(measured 1.3e-14; the CG tolerance allows ~1e-12). KUBC and SUBC are not exact for a
-laminate (the affine displacement, resp. the uniform traction, on the
-faces cut by the layers is not the laminate's field), but they bracket it
-(Huet): C^KUBC - C_exact and C_exact - C^SUBC positive semi-definite (to
--1e-9 |C|). Some of their load cases are exact: under the in-plane shear
+parameters.prm, up to the CG tolerance (1e-12): |C^per - C_exact| /
+|C_exact| <= 1e-10 (measured 1.3e-14; the CG tolerance allows ~1e-12).
+KUBC and SUBC are not exact for a laminate (the affine displacement,
+resp. the uniform traction, on the faces cut by the layers is not the
+laminate's field), but they bracket it (Huet): C^KUBC - C_exact and
+C_exact - C^SUBC positive semi-definite (to -1e-9 |C|). Some of their load cases are exact: under the in-plane shear
 gamma_xy the uniform strain is the solution (KUBC: C_66 = <mu>, column 6
 diagonal), under the out-of-plane shears sigma_yz, sigma_xz the uniform
 stress is (SUBC: S_44 = S_55 = <1/mu>); tolerance 1e-10 as above

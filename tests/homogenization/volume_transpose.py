@@ -79,6 +79,7 @@ for bc in ("KUBC", "SUBC", "periodic"):
                for i in range(6) for j in range(6)) / v.norm(A)
     check(asym > 1e-4, "%s: C itself changes under the swap (%.2e)"
           % (bc, asym))
-check(a["huet"]["KUBC_minus_SUBC_holds"] and b["huet"]["KUBC_minus_SUBC_holds"],
+check(a["huet"]["KUBC_minus_SUBC_holds"]
+      and b["huet"]["KUBC_minus_SUBC_holds"],
       "Huet's ordering holds for both")
 check.exit()

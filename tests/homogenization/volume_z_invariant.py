@@ -85,7 +85,8 @@ subsection Output
   set Write morphology = false
 end
 """ % (grid, nx * h, ny * h, materials))
-s3 = v.run(tribodyn, os.path.join(work, "3d"), """set Problem = volume_homogenization
+s3 = v.run(tribodyn, os.path.join(work, "3d"), """\
+set Problem = volume_homogenization
 set Output directory = output
 subsection Morphology
   set Generator  = raw file

@@ -15,8 +15,8 @@ namespace tribodyn
     /**
      * Parameters of the subsection "Morphology" of the 3D problem (`set
      * Problem = volume_homogenization`): a box of voxels, generated
-     * (laminate, random spheres) or read from a raw volume described by a
-     * small header file.
+     * (laminate, random spheres or aligned fibres) or read from a raw volume
+     * described by a small header file.
      */
     struct VolumeMorphologyParameters
     {
@@ -24,6 +24,7 @@ namespace tribodyn
       {
         laminate, ///< layers through the whole box, normal to x, y or z
         spheres,  ///< random non-overlapping spheres (periodic placement)
+        fibres,   ///< the same with short aligned cylinders
         raw_file  ///< material ids read from a raw volume with a header
       };
 
@@ -37,9 +38,12 @@ namespace tribodyn
       /// the number of (matrix, heterogeneity) periods along it.
       unsigned int laminate_normal  = 2;
       unsigned int laminate_periods = 1;
-      /// Spheres: radius in voxels and the seed of the placement.
-      double        sphere_radius = 4;
-      std::uint64_t random_seed   = 1;
+      /// Spheres and fibres: radius in voxels and the seed of the
+      /// placement; fibres: length in voxels and axis (0 = x, 1 = y, 2 = z).
+      double        radius       = 4;
+      std::uint64_t random_seed  = 1;
+      double        fibre_length = 16;
+      unsigned int  fibre_axis   = 2;
       /// Raw file: path of the header file.
       std::string raw_header;
 
