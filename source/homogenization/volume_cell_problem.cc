@@ -1,6 +1,8 @@
 // The cell problems of 3D voxel volumes (issue #51): one trilinear
 // hexahedron per voxel, six load cases per boundary condition, CG with ML
 // AMG on the assembled matrix.
+#include "volume_multigrid.h"
+
 #include <Teuchos_ParameterList.hpp>
 #include <chrono>
 #include <cmath>
@@ -27,12 +29,34 @@ namespace tribodyn
   {
     using namespace dealii;
 
+    namespace
+    {
+      constexpr SelectionTable<CellPreconditioner, 2>
+        volume_preconditioner_choices{
+          {{"multigrid", CellPreconditioner::multigrid},
+           {"AMG", CellPreconditioner::amg}}};
+    } // namespace
+
+
     ParameterBinding
     VolumeCellProblemParameters::binding()
     {
       ParameterBinding b("Cell problem");
       add_boundary_conditions_entry(b, boundary_conditions);
       add_cg_entries(b, solver_tolerance, max_iterations);
+      b.add("Preconditioner",
+            preconditioner,
+            "Preconditioner of CG: 'AMG' (Trilinos ML on the assembled "
+            "matrix, the six rigid-body modes as near-null space) or "
+            "'multigrid' (KUBC and SUBC: geometric multigrid on the voxel "
+            "hierarchy, matrix-free, single-precision V-cycle; a first "
+            "version: its KUBC iteration counts do not grow with the "
+            "volume, but it is slower than AMG on the volumes measured and "
+            "its SUBC counts grow, doc/theory/homogenization.md). Periodic "
+            "conditions always use AMG, and so do volumes whose coarsest "
+            "mesh (the voxel counts halved while all three are even) keeps "
+            "more than 50000 DoFs.",
+            volume_preconditioner_choices);
       return b;
     }
 
@@ -63,7 +87,10 @@ namespace tribodyn
         , parameters(parameters)
         , timer(timer)
         , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-        , triangulation(comm)
+        , triangulation(comm,
+                        Triangulation<3>::none,
+                        parallel::distributed::Triangulation<
+                          3>::construct_multigrid_hierarchy)
         , fe(FE_Q<3>(1), 3)
         , dof_handler(triangulation)
     {
@@ -128,6 +155,9 @@ namespace tribodyn
     {
       TimerOutput::Scope scope(timer, "mesh and dofs");
       dof_handler.distribute_dofs(fe);
+      // level DoFs only where multigrid runs (not on the periodic mesh)
+      if (!mesh_is_periodic && uses_multigrid(BoundaryCondition::kubc))
+        dof_handler.distribute_mg_dofs();
       locally_owned_dofs = dof_handler.locally_owned_dofs();
       DoFTools::extract_locally_relevant_dofs(dof_handler,
                                               locally_relevant_dofs);
@@ -145,6 +175,25 @@ namespace tribodyn
     VolumeCellProblem::n_cells() const
     {
       return triangulation.n_global_active_cells();
+    }
+
+
+    unsigned int
+    VolumeCellProblem::n_coarse_dofs() const
+    {
+      return 3 * (n_coarse_cells[0] + 1) * (n_coarse_cells[1] + 1)
+             * (n_coarse_cells[2] + 1);
+    }
+
+
+    bool
+    VolumeCellProblem::uses_multigrid(const BoundaryCondition bc) const
+    {
+      // As in 2D: deal.II 9.4's matrix-free level transfer does not carry
+      // periodicity constraints, so periodic problems keep AMG.
+      return parameters.preconditioner == CellPreconditioner::multigrid
+             && bc != BoundaryCondition::periodic
+             && n_coarse_dofs() <= CellProblem::max_coarse_dofs;
     }
 
 
@@ -228,6 +277,33 @@ namespace tribodyn
     } // namespace
 
 
+    std::vector<std::pair<Point<3>, std::vector<unsigned int>>>
+    VolumeCellProblem::pinned_vertices(const BoundaryCondition bc) const
+    {
+      switch (bc)
+        {
+          case BoundaryCondition::periodic:
+            // w is periodic up to a translation: pin the interior vertex
+            // nearest to the centre (at least 2 voxels along each axis).
+            return {{Point<3>((volume.n_voxels(0) / 2) * volume.voxel_size(0),
+                              (volume.n_voxels(1) / 2) * volume.voxel_size(1),
+                              (volume.n_voxels(2) / 2) * volume.voxel_size(2)),
+                     {0, 1, 2}}};
+          case BoundaryCondition::subc:
+            // Pure traction: remove the six rigid motions at three
+            // corners (vertices of the coarsest mesh, so on every
+            // multigrid level); the load is self-equilibrated, so these
+            // supports carry no force.
+            return {{Point<3>(0, 0, 0), {0, 1, 2}},
+                    {Point<3>(volume.length(0), 0, 0), {1, 2}},
+                    {Point<3>(0, volume.length(1), 0), {2}}};
+          case BoundaryCondition::kubc:
+            break;
+        }
+      return {};
+    }
+
+
     void
     VolumeCellProblem::make_constraints(const BoundaryCondition bc)
     {
@@ -237,10 +313,7 @@ namespace tribodyn
       for (unsigned int d = 1; d < 3; ++d)
         h = std::min(h, volume.voxel_size(d));
       const double tolerance = 1e-3 * h;
-      const double L[3]
-        = {volume.length(0), volume.length(1), volume.length(2)};
 
-      std::vector<std::pair<Point<3>, std::vector<unsigned int>>> pins;
       switch (bc)
         {
           case BoundaryCondition::kubc:
@@ -253,23 +326,11 @@ namespace tribodyn
             for (unsigned int d = 0; d < 3; ++d)
               DoFTools::make_periodicity_constraints(
                 dof_handler, 2 * d, 2 * d + 1, d, constraints);
-            // w is periodic up to a translation: pin the interior vertex
-            // nearest to the centre (at least 2 voxels along each axis).
-            pins.push_back(
-              {Point<3>((volume.n_voxels(0) / 2) * volume.voxel_size(0),
-                        (volume.n_voxels(1) / 2) * volume.voxel_size(1),
-                        (volume.n_voxels(2) / 2) * volume.voxel_size(2)),
-               {0, 1, 2}});
             break;
           case BoundaryCondition::subc:
-            // Pure traction: remove the six rigid motions at three
-            // corners; the load is self-equilibrated, so these supports
-            // carry no force.
-            pins = {{Point<3>(0, 0, 0), {0, 1, 2}},
-                    {Point<3>(L[0], 0, 0), {1, 2}},
-                    {Point<3>(0, L[1], 0), {2}}};
             break;
         }
+      const auto pins = pinned_vertices(bc);
       for (const auto &[point, components] : pins)
         pin_vertex(dof_handler,
                    point,
@@ -435,6 +496,129 @@ namespace tribodyn
     }
 
 
+    namespace
+    {
+      /// Run @p solve (a CG solve), turning Trilinos's and deal.II's
+      /// failures into errors that say what to change.
+      template <typename F>
+      void
+      run_volume_cg(const BoundaryCondition bc,
+                    const unsigned int      load_case,
+                    const double            rhs_norm,
+                    const F                &solve)
+      {
+        const std::string which = "The " + to_string(bc)
+                                  + " cell problem, load case "
+                                  + std::to_string(load_case);
+        try
+          {
+            solve();
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            throw RunError(which + ", did not converge: CG reached "
+                           + std::to_string(e.last_step)
+                           + " iterations with a relative residual of "
+                           + format_number(e.last_residual / rhs_norm)
+                           + ". Raise 'Cell problem/Max iterations' or "
+                             "'Cell problem/Solver tolerance'.");
+          }
+        catch (const ExceptionBase &e)
+          {
+            std::ostringstream info;
+            e.print_info(info);
+            throw RunError(which + ", failed in CG: " + info.str()
+                           + " This happens when 'Cell problem/Solver "
+                             "tolerance' is below what double precision "
+                             "can reach; raise it (1e-10 is ample).");
+          }
+      }
+    } // namespace
+
+
+    void
+    VolumeCellProblem::solve_with_amg(
+      const BoundaryCondition                       bc,
+      std::array<TrilinosWrappers::MPI::Vector, 6> &solutions,
+      VolumeCellProblemResult                      &result)
+    {
+      assemble(bc);
+      setup_preconditioner();
+      for (unsigned int k = 0; k < 6; ++k)
+        {
+          TimerOutput::Scope         scope(timer, "CG solve");
+          SolverControl              control(parameters.max_iterations,
+                                parameters.solver_tolerance * load_scale[k],
+                                /*log_history = */ false,
+                                /*log_result = */ false);
+          TrilinosWrappers::SolverCG cg(control);
+          run_volume_cg(bc, k, load_scale[k], [&]() {
+            cg.solve(system_matrix,
+                     solutions[k],
+                     system_rhs[k],
+                     preconditioner);
+          });
+          result.load_cases[k].cg_iterations = control.last_step();
+        }
+    }
+
+
+    void
+    VolumeCellProblem::solve_with_multigrid(
+      const BoundaryCondition                       bc,
+      std::array<TrilinosWrappers::MPI::Vector, 6> &solutions,
+      VolumeCellProblemResult                      &result)
+    {
+      // The element data of the averages (the assembly computes them on
+      // the AMG path).
+      compute_element_data(bc);
+      internal::VolumeLevelConstraints levels;
+      levels.zero_boundary = bc == BoundaryCondition::kubc;
+      levels.pins          = pinned_vertices(bc);
+      levels.tolerance
+        = 1e-3
+          * std::min(
+            {volume.voxel_size(0), volume.voxel_size(1), volume.voxel_size(2)});
+      // The coefficient of a cell on any level: the mean stiffness of the
+      // voxels it covers.
+      const auto stiffness_over_box = [&](const Point<3> &lower,
+                                          const Point<3> &upper) {
+        int first[3], last[3];
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            first[d]
+              = static_cast<int>(std::lround(lower[d] / volume.voxel_size(d)));
+            last[d]
+              = static_cast<int>(std::lround(upper[d] / volume.voxel_size(d)));
+          }
+        VoigtMatrix6 sum;
+        for (int k = first[2]; k < last[2]; ++k)
+          for (int j = first[1]; j < last[1]; ++j)
+            for (int i = first[0]; i < last[0]; ++i)
+              sum += stiffness[volume.voxel(i, j, k)];
+        return VoigtMatrix6(sum
+                            / double((last[0] - first[0]) * (last[1] - first[1])
+                                     * (last[2] - first[2])));
+      };
+      const auto solver = internal::make_volume_multigrid_solver(
+        dof_handler, constraints, levels, stiffness_over_box, timer);
+      for (unsigned int k = 0; k < 6; ++k)
+        {
+          TimerOutput::Scope scope(timer, "CG solve");
+          const double       rhs_norm
+            = solver->assemble_rhs(unit_load(k), bc != BoundaryCondition::subc);
+          SolverControl control(parameters.max_iterations,
+                                parameters.solver_tolerance * rhs_norm,
+                                /*log_history = */ false,
+                                /*log_result = */ false);
+          run_volume_cg(bc, k, rhs_norm, [&]() {
+            solver->solve(control, solutions[k]);
+          });
+          result.load_cases[k].cg_iterations = control.last_step();
+        }
+    }
+
+
     VolumeCellProblemResult
     VolumeCellProblem::solve(const BoundaryCondition bc)
     {
@@ -445,54 +629,26 @@ namespace tribodyn
           setup_dofs();
         }
       make_constraints(bc);
-      assemble(bc);
-      setup_preconditioner();
 
       VolumeCellProblemResult result;
       result.boundary_condition = bc;
+      result.multigrid          = uses_multigrid(bc);
       const bool strain_driven  = bc != BoundaryCondition::subc;
+      std::array<TrilinosWrappers::MPI::Vector, 6> solutions;
+      for (auto &solution : solutions)
+        solution.reinit(locally_owned_dofs, mpi_communicator);
+      if (result.multigrid)
+        solve_with_multigrid(bc, solutions, result);
+      else
+        solve_with_amg(bc, solutions, result);
       std::array<TrilinosWrappers::MPI::Vector, 6> fields;
       for (unsigned int k = 0; k < 6; ++k)
         {
-          TimerOutput::Scope            scope(timer, "CG solve");
-          TrilinosWrappers::MPI::Vector solution(locally_owned_dofs,
-                                                 mpi_communicator);
-          SolverControl                 control(parameters.max_iterations,
-                                parameters.solver_tolerance * load_scale[k],
-                                /*log_history = */ false,
-                                /*log_result = */ false);
-          TrilinosWrappers::SolverCG    cg(control);
-          const std::string             which = "The " + to_string(bc)
-                                    + " cell problem, load case "
-                                    + std::to_string(k);
-          try
-            {
-              cg.solve(system_matrix, solution, system_rhs[k], preconditioner);
-            }
-          catch (const SolverControl::NoConvergence &e)
-            {
-              throw RunError(which + ", did not converge: CG reached "
-                             + std::to_string(e.last_step)
-                             + " iterations with a relative residual of "
-                             + format_number(e.last_residual / load_scale[k])
-                             + ". Raise 'Cell problem/Max iterations' or "
-                               "'Cell problem/Solver tolerance'.");
-            }
-          catch (const ExceptionBase &e)
-            {
-              std::ostringstream info;
-              e.print_info(info);
-              throw RunError(which + ", failed in CG: " + info.str()
-                             + " This happens when 'Cell problem/Solver "
-                               "tolerance' is below what double precision "
-                               "can reach; raise it (1e-10 is ample).");
-            }
-          result.load_cases[k].cg_iterations = control.last_step();
-          constraints.distribute(solution);
+          constraints.distribute(solutions[k]);
           fields[k].reinit(locally_owned_dofs,
                            locally_relevant_dofs,
                            mpi_communicator);
-          fields[k] = solution;
+          fields[k] = solutions[k];
         }
 
       // Volume averages: on an element of phase m, int eps = G u_K (+ E

@@ -157,8 +157,8 @@ namespace tribodyn
             << " x " << volume.n_voxels(2) << " voxels, "
             << cell_problem.n_cells() << " hexahedra (Q1), "
             << cell_problem.n_dofs() << " degrees of freedom, "
-            << dealii::Utilities::MPI::n_mpi_processes(comm)
-            << " MPI rank(s); CG with ML AMG" << std::endl;
+            << dealii::Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
+            << std::endl;
       const std::vector<double> fractions = cell_problem.phase_fractions();
       context.claim_output();
       const std::string &out_dir = context.output_directory;
@@ -194,8 +194,6 @@ namespace tribodyn
         = static_cast<unsigned long long>(cell_problem.n_cells());
       summary["n_dofs"]
         = static_cast<unsigned long long>(cell_problem.n_dofs());
-      summary["solver"] = "CG, ML AMG (rigid-body modes) on the assembled "
-                          "matrix";
 
       std::vector<std::string> columns = {"estimate"};
       for (const char *name : volume_constant_names)
@@ -236,6 +234,7 @@ namespace tribodyn
             iterations.push_back(lc.cg_iterations);
           j["cg_iterations"]     = iterations;
           j["wall_time_s"]       = r.wall_time;
+          j["preconditioner"]    = r.multigrid ? "multigrid" : "AMG";
           summary[to_string(bc)] = j;
           print_volume_row(table, to_string(bc), r.properties.constants);
           csv.add_row({to_string(bc)}, volume_csv_values(r.properties));

@@ -155,7 +155,7 @@ def run(tribodyn, directory, prm_text, ranks=1):
     prm = os.path.join(directory, "run.prm")
     with open(prm, "w") as f:
         f.write(prm_text)
-    command = [tribodyn, "run.prm"]
+    command = [os.path.abspath(tribodyn), "run.prm"]
     if ranks > 1:
         command = ["mpirun", "-np", str(ranks)] + command
     out = subprocess.run(command, cwd=directory, capture_output=True,

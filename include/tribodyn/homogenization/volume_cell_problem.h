@@ -31,8 +31,9 @@ namespace tribodyn
     {
       std::vector<BoundaryCondition> boundary_conditions
         = {BoundaryCondition::kubc, BoundaryCondition::subc};
-      double       solver_tolerance = 1e-10;
-      unsigned int max_iterations   = 2000;
+      double             solver_tolerance = 1e-10;
+      unsigned int       max_iterations   = 2000;
+      CellPreconditioner preconditioner   = CellPreconditioner::amg;
 
       /// The entries of "Cell problem", bound to the members above.
       ParameterBinding
@@ -58,8 +59,11 @@ namespace tribodyn
       BoundaryCondition                   boundary_condition;
       std::array<VolumeLoadCaseResult, 6> load_cases;
       VolumeProperties                    properties;
-      /// Wall time of the assembly, the AMG setup and the six solves (s).
+      /// Wall time of the setup (assembly and AMG, or multigrid) and the
+      /// six solves (s).
       double wall_time = 0;
+      /// Whether CG was preconditioned by geometric multigrid (else AMG).
+      bool multigrid = false;
     };
 
     /**
@@ -71,9 +75,11 @@ namespace tribodyn
      * motions removed by pinning three corners. Every cell is the same
      * box, so the element matrix and loads are computed once per phase.
      * Solver: CG preconditioned by ML's smoothed-aggregation AMG on the
-     * assembled matrix, with the six rigid-body modes as near-null space
-     * (the 2D matrix-free multigrid is written for quadrilaterals; its 3D
-     * version is the next step of issue #51).
+     * assembled matrix with the six rigid-body modes as near-null space
+     * (default), or, for KUBC and SUBC with 'Cell problem/Preconditioner =
+     * multigrid', by geometric multigrid on the voxel hierarchy
+     * (matrix-free, volume_multigrid.h; a first version, slower than AMG
+     * on the volumes measured: doc/theory/homogenization.md).
      */
     class VolumeCellProblem
     {
@@ -95,6 +101,9 @@ namespace tribodyn
       /// Volume fraction of each material id, measured on the mesh.
       std::vector<double>
       phase_fractions() const;
+      /// Whether the problem of @p bc is solved with geometric multigrid.
+      bool
+      uses_multigrid(const BoundaryCondition bc) const;
 
     private:
       /// The coarsest box mesh whose cells are 2^L voxels wide along every
@@ -110,6 +119,25 @@ namespace tribodyn
       assemble(const BoundaryCondition bc);
       void
       setup_preconditioner();
+      /// DoFs of the coarsest mesh.
+      unsigned int
+      n_coarse_dofs() const;
+      /// The pinned vertices of @p bc and their components.
+      std::vector<std::pair<dealii::Point<3>, std::vector<unsigned int>>>
+      pinned_vertices(const BoundaryCondition bc) const;
+      /// Solve the six load cases with geometric multigrid (@p solutions
+      /// get the locally owned values, @p result the iteration counts).
+      void
+      solve_with_multigrid(
+        const BoundaryCondition                               bc,
+        std::array<dealii::TrilinosWrappers::MPI::Vector, 6> &solutions,
+        VolumeCellProblemResult                              &result);
+      /// The same with AMG on the assembled matrix.
+      void
+      solve_with_amg(
+        const BoundaryCondition                               bc,
+        std::array<dealii::TrilinosWrappers::MPI::Vector, 6> &solutions,
+        VolumeCellProblemResult                              &result);
       /// The element matrix, the element loads of the six unit loads (per
       /// phase) and the integrals of the strain of each shape function.
       void
