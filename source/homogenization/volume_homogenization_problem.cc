@@ -1,5 +1,6 @@
 // `set Problem = volume_homogenization` (issue #51): the cell problems of
 // a 3D voxel volume and their report.
+#include <algorithm>
 #include <chrono>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -160,6 +161,35 @@ namespace tribodyn
             << dealii::Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
             << std::endl;
       const std::vector<double> fractions = cell_problem.phase_fractions();
+      // SUBC loads the faces with Sigma n, pores too: their ersatz material
+      // then deforms by about Sigma / E_pore (as in 2D).
+      if (std::find(parameters.cell_problem.boundary_conditions.begin(),
+                    parameters.cell_problem.boundary_conditions.end(),
+                    BoundaryCondition::subc)
+          != parameters.cell_problem.boundary_conditions.end())
+        {
+          const auto         pores = materials.pores();
+          const unsigned int nx = volume.n_voxels(0), ny = volume.n_voxels(1),
+                             nz = volume.n_voxels(2);
+          std::size_t n         = 0;
+          for (unsigned int k = 0; k < nz; ++k)
+            for (unsigned int j = 0; j < ny; ++j)
+              for (unsigned int i = 0; i < nx; ++i)
+                if ((i == 0 || j == 0 || k == 0 || i + 1 == nx || j + 1 == ny
+                     || k + 1 == nz)
+                    && volume.voxel(i, j, k) < pores.size()
+                    && pores[volume.voxel(i, j, k)])
+                  ++n;
+          if (n > 0)
+            pcout << "Warning: " << n
+                  << " pore voxels touch the boundary. SUBC loads them with "
+                     "the traction Sigma n, which a pore cannot carry: the "
+                     "SUBC apparent stiffness then reflects the ersatz pore "
+                     "stiffness ('Materials/Phases/Pore stiffness ratio') "
+                     "and tends to zero with it. Use KUBC and periodic, or a "
+                     "volume whose faces cut no pore."
+                  << std::endl;
+        }
       context.claim_output();
       const std::string &out_dir = context.output_directory;
       if (root && parameters.output.write_morphology)
