@@ -25,6 +25,18 @@ namespace tribodyn
         v = (v | v << 2) & 0x1249249249249249ULL;
         return v;
       }
+
+      /// Structured index of cell @p b (0 ... split^3 - 1, x fastest) of
+      /// the deal.II cell whose first cell is @p first.
+      std::array<unsigned int, 3>
+      cell_in_mesh_cell(const std::array<unsigned int, 3> &first,
+                        const unsigned int                 split,
+                        const unsigned int                 b)
+      {
+        return {{first[0] + b % split,
+                 first[1] + b / split % split,
+                 first[2] + b / (split * split)}};
+      }
     } // namespace
 
 
@@ -189,9 +201,7 @@ namespace tribodyn
           const auto   first = first_cell_of(cell);
           unsigned int sum   = 0;
           for (unsigned int b = 0; b < split * split * split; ++b)
-            sum += weight({{first[0] + b % split,
-                            first[1] + b / split % split,
-                            first[2] + b / (split * split)}});
+            sum += weight(cell_in_mesh_cell(first, split, b));
           return sum;
         });
       tria.repartition();
@@ -285,11 +295,8 @@ namespace tribodyn
             const auto first = first_cell_of(cell);
             for (unsigned int b = 0; b < per_cell; ++b)
               {
-                const std::array<unsigned int, 3> ijk{
-                  {first[0] + b % split,
-                   first[1] + b / split % split,
-                   first[2] + b / (split * split)}};
-                const std::uint64_t z = spread_bits(ijk[0])
+                const auto          ijk = cell_in_mesh_cell(first, split, b);
+                const std::uint64_t z   = spread_bits(ijk[0])
                                         | spread_bits(ijk[1]) << 1
                                         | spread_bits(ijk[2]) << 2;
                 (cell->is_locally_owned() ? owned : candidates)
