@@ -381,8 +381,7 @@ namespace tribodyn
                       dr_p   = r - touch;
                     }
                 }
-              const double qi = q_stored ? q_i[p] : 0.5 * r_prev,
-                           qj = r_prev - qi;
+              const double qi = moment_arm(p, r_prev, 0), qj = r_prev - qi;
 
               // Relative-rotation moment K_ij (moment_laws.h): its trial
               // update from this step's kinematics, gathered above; pass C
@@ -649,7 +648,7 @@ namespace tribodyn
               const unsigned int i = pi[p], j = pj[p];
               const double       r  = nblock.r[b];
               const Vec3         n  = nblock.normal(b);
-              const double       qi = q_stored ? q_i[p] : 0.5 * r, qj = r - qi;
+              const double       qi = moment_arm(p, r, 0), qj = r - qi;
               const double       Sp = geometry.area(p);
               const Vec3         t  = tau[p];
               // (pass A set both shear factors to 1)
