@@ -41,6 +41,10 @@ namespace tribodyn
         , moment_laws(parameters.interaction.moment)
         , breaking_laws(parameters.interaction.bond_breaking)
         , formation_laws(parameters.interaction.bond_formation)
+        , loads(parameters.boundary,
+                communicator,
+                static_cast<AutomatonArrays &>(*this),
+                static_cast<const SystemScalars &>(*this))
     {
       const auto &g = prm.geometry;
       d             = g.automaton_size;
@@ -202,7 +206,7 @@ namespace tribodyn
       t.add("many-body state", Kind::step, mb_state);
       t.add("inverse fabric", Kind::step, fabric_inverse);
       t.add("neighbourhood changed", Kind::step, changed);
-      t.add("damping force", Kind::step, f_damp);
+      t.add("damping force", Kind::step, loads.state().f_damp);
       for (auto *buffer : {&plast, &bond_buffer, &dsm, &side_dq})
         t.add("buffer", Kind::scratch, *buffer);
       t.add("many-body shape", Kind::scratch, mb_shape);
@@ -375,22 +379,7 @@ namespace tribodyn
                 "(automatic).");
         }
 
-      wait_for_contact = false;
-      damping_on       = prm.boundary.global_damping > 0;
-      for (const auto &g : prm.boundary.groups)
-        {
-          wait_for_contact = wait_for_contact || g.switch_on_contact;
-          damping_on = damping_on || g.type == BoundaryGroup::Type::damping;
-        }
-
-      // Group sizes are fixed: automata never change group.
-      const unsigned int n_groups = prm.boundary.groups.size();
-      group_size.assign(n_groups, 0);
-      for (unsigned int k = 0; k < n_owned; ++k)
-        for (unsigned int gi = 0; gi < n_groups; ++gi)
-          if (groups[k] & (1u << gi))
-            ++group_size[gi];
-      dealii::Utilities::MPI::sum(group_size, comm, group_size);
+      loads.count_members();
 
       // The particle handler carries the automata that change rank at a
       // rebuild (their state in the particle properties); it is empty
@@ -422,8 +411,8 @@ namespace tribodyn
       const double t = current_time;
       // First half kick (f holds the pair and external forces of the last
       // step).
-      half_kick_with_work();
-      apply_kinematic_constraints(t + 0.5 * dt);
+      loads.half_kick(work);
+      loads.apply_constraints(t + 0.5 * dt, work);
       // Drift (the pair kernel takes the increment as dt v again).
       for (unsigned int k = 0; k < n_owned; ++k)
         for (unsigned int c = 0; c < 3; ++c)
@@ -435,12 +424,29 @@ namespace tribodyn
       current_time = t + dt;
       evaluate_pairs(dt);
       detect_first_contact();
-      apply_boundary_forces(current_time);
-      half_kick_with_work();
-      apply_kinematic_constraints(current_time);
+      loads.apply_forces(current_time);
+      loads.half_kick(work);
+      loads.apply_constraints(current_time, work);
       ++n_steps_done;
       // Finiteness and growth: checked by the driver after each step
       // (count_unstable_automata(), source/mca/stability.cc).
+    }
+
+
+    void
+    AutomatonSystem::detect_first_contact()
+    {
+      if (!loads.waits_for_contact())
+        return;
+      // Before the bodies touch, every unbonded pair in contact joins the
+      // two bodies (pairs within a body start bonded).
+      unsigned int touching = 0;
+      for (unsigned int p = 0; p < pi.size() && !touching; ++p)
+        touching = !bonded[p] && in_contact[p];
+      if (n_ranks > 1)
+        touching = dealii::Utilities::MPI::max(touching, comm);
+      if (touching)
+        loads.set_contact_time(current_time);
     }
 
 

@@ -106,7 +106,8 @@ namespace tribodyn
   /* the partition: weights of each rebalance (replayed on resume) */         \
   apply(rebalance_count) apply(partition_imbalance) apply(rebalance_history)  \
   /* staged loading and energy bookkeeping */                                 \
-  apply(first_contact_time) apply(f_damp_rebuild) apply(group_reaction)
+  apply(loads.state().first_contact_time)                                   \
+  apply(loads.state().f_damp_rebuild) apply(loads.state().group_reaction)
 // (then the automata, from automaton_fields; the pairs: the list, the
 // persistent fields from pair_fields, the lists of the automata)
 #define MCA_CHECKPOINT_PAIRS(apply)                                           \

@@ -331,11 +331,11 @@ namespace tribodyn
         record_series()
         {
           dealii::TimerOutput::Scope scope(timer, "series");
-          const SystemEnergies       e      = system.energies();
-          const auto                 forces = system.group_forces();
-          const auto                 disp   = system.group_displacements();
-          const SeriesSample         sample{system.time(), e, forces, disp};
-          std::vector<double>        row;
+          const SystemEnergies       e = system.energies();
+          const auto forces            = system.boundary_loads().reactions();
+          const auto disp = system.boundary_loads().mean_displacements();
+          const SeriesSample  sample{system.time(), e, forces, disp};
+          std::vector<double> row;
           key_figure.clear();
           for (const auto &pp : postprocessors)
             {

@@ -94,14 +94,17 @@ namespace tribodyn
       for (unsigned int i = 0; i < n_works; ++i)
         absorbed.work[i] += work[i];
       absorbed.dropped += dropped_bonds;
+      const auto &group_reaction = loads.state().group_reaction;
       absorbed.group_reaction.resize(group_reaction.size(), Vec3{{0, 0, 0}});
       for (unsigned int g = 0; g < group_reaction.size(); ++g)
         for (unsigned int c = 0; c < 3; ++c)
           absorbed.group_reaction[g][c] += group_reaction[g][c];
 
       // Its owned automata.
-      const bool has_fabric = fabric_inverse.size() >= n_owned;
-      const bool has_damp   = damping_on && f_damp_rebuild == rebuild_count
+      const bool  has_fabric = fabric_inverse.size() >= n_owned;
+      const auto &f_damp     = loads.state().f_damp;
+      const bool  has_damp   = loads.damping()
+                            && loads.state().f_damp_rebuild == rebuild_count
                             && f_damp.size() == n_owned;
       const unsigned int stride
         = field::props + automaton_fields.record_width() + extras;
@@ -226,18 +229,20 @@ namespace tribodyn
                                       double(n_steps_done),
                                       double(rebuild_count),
                                       double(rebalance_count),
-                                      first_contact_time};
-      counters           = dealii::Utilities::MPI::broadcast(comm, counters, 0);
-      current_time       = counters[0];
-      n_steps_done       = static_cast<unsigned long>(counters[1]);
-      rebuild_count      = static_cast<unsigned int>(counters[2]);
-      rebalance_count    = static_cast<unsigned int>(counters[3]);
-      first_contact_time = counters[4];
+                                      loads.contact_time()};
+      counters        = dealii::Utilities::MPI::broadcast(comm, counters, 0);
+      current_time    = counters[0];
+      n_steps_done    = static_cast<unsigned long>(counters[1]);
+      rebuild_count   = static_cast<unsigned int>(counters[2]);
+      rebalance_count = static_cast<unsigned int>(counters[3]);
+      loads.set_contact_time(counters[4]);
       rebalance_history.clear();
-      work           = absorbed.work;
-      dropped_bonds  = absorbed.dropped;
-      group_reaction = absorbed.group_reaction;
-      group_reaction.resize(prm.boundary.groups.size(), Vec3{{0, 0, 0}});
+      work                       = absorbed.work;
+      dropped_bonds              = absorbed.dropped;
+      auto &loads_state          = loads.state();
+      loads_state.group_reaction = absorbed.group_reaction;
+      loads_state.group_reaction.resize(prm.boundary.groups.size(),
+                                        Vec3{{0, 0, 0}});
       absorbed = Absorbed();
 
       // The last rebuild again, on this partition, at the positions of
@@ -292,7 +297,8 @@ namespace tribodyn
       fabric_inverse.assign(fabric_stored ? n_owned : 0,
                             Sym3{{1, 1, 1, 0, 0, 0}});
       changed.assign(n_local, 0);
-      f_damp.assign(damping_on ? n_owned : 0, Vec3{{0, 0, 0}});
+      auto &f_damp = loads_state.f_damp;
+      f_damp.assign(loads.damping() ? n_owned : 0, Vec3{{0, 0, 0}});
       x_at_rebuild.resize(n_owned);
       bool any_damp = false;
       for (unsigned int k = 0; k < n_owned; ++k)
@@ -311,7 +317,7 @@ namespace tribodyn
           if (fabric_stored && e[10] != 0)
             std::copy_n(e, 6, fabric_inverse[k].begin());
           changed[k] = e[6] != 0;
-          if (damping_on)
+          if (loads.damping())
             {
               std::copy_n(e + 7, 3, f_damp[k].begin());
               any_damp = any_damp || e[11] != 0;
@@ -349,7 +355,7 @@ namespace tribodyn
         update_many_body_state(k);
       // the damping forces of the last step stay valid when they were
       // (else recomputed at the next half kick, as after any rebuild)
-      f_damp_rebuild = rebuild_count;
+      loads_state.f_damp_rebuild = rebuild_count;
       if (!any_damp)
         std::vector<Vec3>().swap(f_damp);
       partition_imbalance = work_imbalance();

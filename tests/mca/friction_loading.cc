@@ -160,7 +160,7 @@ main(int argc, char **argv)
   while (system.time() < t_end)
     {
       system.step();
-      const double fz = system.group_forces()[top][2];
+      const double fz = system.boundary_loads().reactions()[top][2];
       window += fz;
       ++in_window;
       if (in_window == 400)

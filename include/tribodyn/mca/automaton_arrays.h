@@ -54,7 +54,7 @@ namespace tribodyn
       /// precision: a test against skin d / 2).
       std::vector<std::array<float, 3>> x_at_rebuild;
       /// v: velocity (the drift of a step is dt v); f: pair forces, then
-      /// (apply_boundary_forces) the total force of the kicks.
+      /// (BoundaryLoads::apply_forces()) the total force of the kicks.
       std::vector<Vec3> v, w, f, torque, u;
       /// material index; body index, with elastic_flag for the automata
       /// of elastic regions
@@ -66,9 +66,6 @@ namespace tribodyn
       std::vector<double>        volume;
       std::vector<std::uint32_t> groups;
       std::vector<double>        eps_p, sigma_y;
-      /// Pair-force reaction of each boundary group on this rank (sum of
-      /// f over the group's owned automata before the loads are added).
-      std::vector<Vec3> group_reaction;
       /// Per-step exchange buffers (stride given by their use).
       std::vector<double> plast;       ///< sigma_m trial, M
       std::vector<double> bond_buffer; ///< stress tensor (6), yield stress

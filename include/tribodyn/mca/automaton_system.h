@@ -15,6 +15,7 @@
 #include <tribodyn/core/archive_fwd.h>
 #include <tribodyn/mca/automaton_arrays.h>
 #include <tribodyn/mca/bond_laws.h>
+#include <tribodyn/mca/boundary_loads.h>
 #include <tribodyn/mca/decomposition.h>
 #include <tribodyn/mca/moment_laws.h>
 #include <tribodyn/mca/packing.h>
@@ -152,17 +153,12 @@ namespace tribodyn
       SystemEnergies
       energies() const;
 
-      /// Reaction (sum of pair forces) on each boundary group, global.
-      std::vector<Vec3>
-      group_forces() const;
-      /// Mean displacement of each group's automata, global.
-      std::vector<Vec3>
-      group_displacements() const;
-      /// Number of automata in each group, global (counted at set-up).
-      const std::vector<unsigned long long> &
-      group_sizes() const
+      /// The boundary groups at work (reactions, mean displacements, sizes:
+      /// boundary_loads.h).
+      const BoundaryLoads &
+      boundary_loads() const
       {
-        return group_size;
+        return loads;
       }
 
       unsigned long long
@@ -188,7 +184,7 @@ namespace tribodyn
       double
       contact_time() const
       {
-        return first_contact_time;
+        return loads.contact_time();
       }
       /// The contacting parts (Geometry/Inclusions) at set-up, global:
       /// their automata and those turned into the inclusion material, and
@@ -272,7 +268,7 @@ namespace tribodyn
       double
       automaton_size(const unsigned int k) const
       {
-        return d * (1u << (size_level[k] & ~transitional_flag));
+        return SystemScalars::automaton_size(*this, k);
       }
 
       /// Set velocity and angular velocity of every local automaton from a
@@ -621,36 +617,16 @@ namespace tribodyn
       Sym3
       inverse_fabric(const unsigned int k) const;
 
-      // --- boundary groups (boundary_groups.cc)
-      void
-      apply_boundary_forces(const double t);
-      /// Sum of @p field (per local automaton) over the owned automata of
-      /// each boundary group, over all ranks.
-      std::vector<Vec3>
-      sum_over_groups(const std::vector<Vec3> &field) const;
-      /// The same on this rank only, and the sum over ranks of such sums.
-      std::vector<Vec3>
-      local_group_sums(const std::vector<Vec3> &field) const;
-      std::vector<Vec3>
-      global_group_sums(const std::vector<Vec3> &local) const;
-      void
-      apply_kinematic_constraints(const double t);
-      double
-      ramp(const double t) const;
-      Vec3
-      group_value(const BoundaryGroup &g, const double t) const;
-
       // --- automata of several sizes (graded_geometry.cc)
       double
       mass_of(const unsigned int k) const
       {
-        return mc[mat[k]].rho * volume[k];
+        return automaton_mass(*this, k);
       }
       double
       inertia_of(const unsigned int k) const
       {
-        const double s = automaton_size(k);
-        return mass_of(k) * s * s / 10;
+        return automaton_inertia(*this, k);
       }
       /// Contact area and volume ratio of pair @p p (graded: its own).
       double
@@ -716,30 +692,14 @@ namespace tribodyn
       unsigned long long dropped_bonds = 0;
 
       // --- staged loading, contacting parts, energy bookkeeping
-      // (boundary_groups.cc)
-      /// Set first_contact_time once the bodies touch (collective).
+      /// What the boundary groups do to the automata (boundary_loads.h).
+      BoundaryLoads loads;
+      /// Set the contact time once the bodies touch (collective).
       void
-      detect_first_contact();
-      /// Velocity-Verlet half kick, recording the work of the pair forces
-      /// and torques, of the loads and of the damping over it.
-      void
-      half_kick_with_work();
-      /// Damping force -c m v of owned automaton @p k (global damping and
-      /// damping groups; @p values: group_value() of every group).
-      Vec3
-           damping_force(const unsigned int       k,
-                         const std::vector<Vec3> &values) const;
-      bool wait_for_contact = false;
-      /// Global damping or a damping group (f_damp is used).
-      bool       damping_on         = false;
-      double     first_contact_time = -1;
+                 detect_first_contact();
       PartCounts part_counts;
       /// The works since the start, by Work (system_figures.h).
       WorkSums work{};
-      /// Damping part of f of each owned automaton (for damped_work), valid
-      /// while f_damp_rebuild == rebuild_count; empty without damping.
-      std::vector<Vec3> f_damp;
-      unsigned int      f_damp_rebuild = 0;
     };
   } // namespace mca
 } // namespace tribodyn

@@ -47,10 +47,32 @@ namespace tribodyn
       /// Rebalances so far, the imbalance right after the last partition,
       /// and the weights this rank gave at each rebalance: (number of
       /// cells, then key and weight per cell) per rebalance.
-      unsigned int                    rebalance_count     = 0;
-      double                          partition_imbalance = 1;
-      std::vector<std::uint64_t>      rebalance_history;
-      std::vector<unsigned long long> group_size;
+      unsigned int               rebalance_count     = 0;
+      double                     partition_imbalance = 1;
+      std::vector<std::uint64_t> rebalance_history;
+
+      /// Mass rho V of local automaton @p k of @p a.
+      double
+      automaton_mass(const AutomatonArrays &a, const unsigned int k) const
+      {
+        return mc[a.mat[k]].rho * a.volume[k];
+      }
+      /// Size 2^L d of local automaton @p k of @p a.
+      double
+      automaton_size(const AutomatonArrays &a, const unsigned int k) const
+      {
+        return d
+               * (1u << (a.size_level[k]
+                         & ~AutomatonArrays::transitional_flag));
+      }
+      /// Moment of inertia m s^2 / 10 of local automaton @p k of @p a (a
+      /// sphere of the automaton's size s).
+      double
+      automaton_inertia(const AutomatonArrays &a, const unsigned int k) const
+      {
+        const double s = automaton_size(a, k);
+        return automaton_mass(a, k) * s * s / 10;
+      }
     };
   } // namespace mca
 } // namespace tribodyn

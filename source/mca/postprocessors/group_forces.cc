@@ -44,7 +44,7 @@ namespace tribodyn
         void
         finish(JsonValue &summary, std::ostream &) const override
         {
-          const auto forces = system.group_forces();
+          const auto forces = system.boundary_loads().reactions();
           JsonValue  groups = JsonValue::object();
           for (unsigned int g = 0; g < forces.size(); ++g)
             groups[prm.boundary.groups[g].name]

@@ -1,19 +1,54 @@
-// Boundary groups: kinematic constraints (fixed, prescribed velocity),
-// loads (rigid loading plates) and damping layers, with smooth ramps; and
-// the group reductions reported to the observers.
+// The boundary groups at work on the automata (BoundaryLoads): kinematic
+// constraints (fixed, prescribed velocity), loads (rigid loading plates)
+// and damping layers, with smooth ramps and switches; the half kick with
+// its works; the group reductions reported to the observers.
 
 #include <cmath>
-#include <tribodyn/mca/automaton_system.h>
+#include <tribodyn/mca/boundary_loads.h>
 #include <tribodyn/mca/vector_algebra.h>
 
 namespace tribodyn
 {
   namespace mca
   {
-    double
-    AutomatonSystem::ramp(const double t) const
+    BoundaryLoads::BoundaryLoads(const BoundaryParameters &parameters,
+                                 const MPI_Comm            comm,
+                                 AutomatonArrays          &automata,
+                                 const SystemScalars      &scalars)
+        : prm(parameters)
+        , comm(comm)
+        , automata(automata)
+        , scalars(scalars)
     {
-      const double T = prm.boundary.ramp_time;
+    }
+
+
+    void
+    BoundaryLoads::count_members()
+    {
+      wait_for_contact = false;
+      damping_on       = prm.global_damping > 0;
+      for (const auto &g : prm.groups)
+        {
+          wait_for_contact = wait_for_contact || g.switch_on_contact;
+          damping_on = damping_on || g.type == BoundaryGroup::Type::damping;
+        }
+
+      // Group sizes are fixed: automata never change group.
+      const unsigned int n_groups = prm.groups.size();
+      group_size.assign(n_groups, 0);
+      for (unsigned int k = 0; k < automata.n_owned; ++k)
+        for (unsigned int gi = 0; gi < n_groups; ++gi)
+          if (automata.groups[k] & (1u << gi))
+            ++group_size[gi];
+      dealii::Utilities::MPI::sum(group_size, comm, group_size);
+    }
+
+
+    double
+    BoundaryLoads::ramp(const double t) const
+    {
+      const double T = prm.ramp_time;
       if (T <= 0 || t >= T)
         return 1;
       if (t <= 0)
@@ -24,113 +59,99 @@ namespace tribodyn
 
 
     Vec3
-    AutomatonSystem::group_value(const BoundaryGroup &g, const double t) const
+    BoundaryLoads::value(const BoundaryGroup &g, const double t) const
     {
       const bool   damping = g.type == BoundaryGroup::Type::damping;
       const double ts
-        = g.switch_on_contact ? first_contact_time : g.switch_time;
-      Vec3 value;
+        = g.switch_on_contact ? st.first_contact_time : g.switch_time;
+      Vec3 out;
       if (ts < 0 || t <= ts)
         {
           for (unsigned int c = 0; c < 3; ++c)
-            value[c] = g.value[c] * (damping ? 1 : ramp(t));
-          return value;
+            out[c] = g.value[c] * (damping ? 1 : ramp(t));
+          return out;
         }
       // Blend from the value reached at the switch to the second value; a
       // component free after the switch ('*', NaN) is released at once.
       const double s  = ramp(t - ts);
       const double r0 = damping ? 1 : ramp(ts);
       for (unsigned int c = 0; c < 3; ++c)
-        value[c] = std::isnan(g.second_value[c])
-                     ? g.second_value[c]
-                     : (1 - s) * r0 * g.value[c] + s * g.second_value[c];
-      return value;
+        out[c] = std::isnan(g.second_value[c])
+                   ? g.second_value[c]
+                   : (1 - s) * r0 * g.value[c] + s * g.second_value[c];
+      return out;
     }
 
 
     void
-    AutomatonSystem::apply_kinematic_constraints(const double t)
+    BoundaryLoads::apply_constraints(const double t, WorkSums &work)
     {
-      const auto &grp = prm.boundary.groups;
+      const auto &grp = prm.groups;
       if (grp.empty())
         return;
       std::vector<Vec3> values(grp.size());
       for (unsigned int gi = 0; gi < grp.size(); ++gi)
-        values[gi] = group_value(grp[gi], t);
+        values[gi] = value(grp[gi], t);
       // The kinetic energy a constraint adds or removes is work of the
       // loads (the loading machine), recorded for the energy balance.
       double kick_work = 0;
-      for (unsigned int k = 0; k < n_owned; ++k)
+      for (unsigned int k = 0; k < automata.n_owned; ++k)
         {
-          if (groups[k] == 0)
+          if (automata.groups[k] == 0)
             continue;
-          const double before = dot(v[k], v[k]);
+          const double before = dot(automata.v[k], automata.v[k]);
           bool         set    = false;
           for (unsigned int gi = 0; gi < grp.size(); ++gi)
-            if (groups[k] & (1u << gi))
+            if (automata.groups[k] & (1u << gi))
               {
                 if (grp[gi].type == BoundaryGroup::Type::fixed)
                   {
-                    v[k] = {{0, 0, 0}};
-                    set  = true;
+                    automata.v[k] = {{0, 0, 0}};
+                    set           = true;
                   }
                 else if (grp[gi].type == BoundaryGroup::Type::velocity)
                   for (unsigned int c = 0; c < 3; ++c)
                     if (!std::isnan(values[gi][c]))
                       {
-                        v[k][c] = values[gi][c];
-                        set     = true;
+                        automata.v[k][c] = values[gi][c];
+                        set              = true;
                       }
               }
           if (set)
-            kick_work += 0.5 * mass_of(k) * (dot(v[k], v[k]) - before);
+            kick_work += 0.5 * scalars.automaton_mass(automata, k)
+                         * (dot(automata.v[k], automata.v[k]) - before);
         }
       work[load_work] += kick_work;
     }
 
 
     Vec3
-    AutomatonSystem::damping_force(const unsigned int       k,
-                                   const std::vector<Vec3> &values) const
+    BoundaryLoads::damping_force(const unsigned int       k,
+                                 const std::vector<Vec3> &values) const
     {
-      const auto  &grp  = prm.boundary.groups;
-      const double mass = mass_of(k);
+      const auto  &grp  = prm.groups;
+      const double mass = scalars.automaton_mass(automata, k);
       Vec3         fd{{0, 0, 0}};
       for (unsigned int c = 0; c < 3; ++c)
-        fd[c] = -prm.boundary.global_damping * mass * v[k][c];
-      if (groups[k] != 0)
+        fd[c] = -prm.global_damping * mass * automata.v[k][c];
+      if (automata.groups[k] != 0)
         for (unsigned int gi = 0; gi < grp.size(); ++gi)
-          if ((groups[k] & (1u << gi))
+          if ((automata.groups[k] & (1u << gi))
               && grp[gi].type == BoundaryGroup::Type::damping)
             for (unsigned int c = 0; c < 3; ++c)
-              fd[c] -= values[gi][c] * mass * v[k][c];
+              fd[c] -= values[gi][c] * mass * automata.v[k][c];
       return fd;
     }
 
 
     void
-    AutomatonSystem::detect_first_contact()
+    BoundaryLoads::half_kick(WorkSums &work)
     {
-      if (!wait_for_contact || first_contact_time >= 0)
-        return;
-      // Before the bodies touch, every unbonded pair in contact joins the
-      // two bodies (pairs within a body start bonded).
-      unsigned int touching = 0;
-      for (unsigned int p = 0; p < pi.size() && !touching; ++p)
-        touching = !bonded[p] && in_contact[p];
-      if (n_ranks > 1)
-        touching = dealii::Utilities::MPI::max(touching, comm);
-      if (touching)
-        first_contact_time = current_time;
-    }
-
-
-    void
-    AutomatonSystem::half_kick_with_work()
-    {
+      const double dt        = scalars.dt;
+      const bool   rotations = scalars.rotations;
       // Velocity Verlet's half kick v += dt/2 F/m changes the kinetic
       // energy by exactly dt/2 F.(v_before + v_after)/2: that is credited
-      // to the damping (f_damp), the applied forces of the force groups
+      // to the damping (st.f_damp), the applied forces of the force groups
       // and the pair forces and torques (the rest of f), so that kinetic
       // energy = pair + load - damped work holds to round-off (energy test).
       // A loading plate's redistribution of its forces among its automata
@@ -146,7 +167,7 @@ namespace tribodyn
       // moved dt^2 f^2 / (8 m) per constrained component and half step
       // from load to pair work (measured: 75 % of the damped energy of the
       // flat friction scene, tests/mca/flat_friction_frictionless.prm).
-      const auto &grp      = prm.boundary.groups;
+      const auto &grp      = prm.groups;
       bool        any_load = false, any_kinematic = false;
       for (unsigned int gi = 0; gi < grp.size(); ++gi)
         {
@@ -160,14 +181,14 @@ namespace tribodyn
       std::vector<Vec3> kinematic;
       if (any_kinematic)
         for (const auto &g : grp)
-          kinematic.push_back(group_value(g, current_time));
+          kinematic.push_back(value(g, scalars.current_time));
       // bit c set: component c of automaton k is reset by a constraint
       auto constrained = [&](const unsigned int k) {
         unsigned int mask = 0;
-        if (!any_kinematic || groups[k] == 0)
+        if (!any_kinematic || automata.groups[k] == 0)
           return mask;
         for (unsigned int gi = 0; gi < grp.size(); ++gi)
-          if (groups[k] & (1u << gi))
+          if (automata.groups[k] & (1u << gi))
             {
               if (grp[gi].type == BoundaryGroup::Type::fixed)
                 mask = 7;
@@ -185,30 +206,32 @@ namespace tribodyn
           // (one partial sum per component and kind: independent chains
           // of additions)
           double wp[6] = {0, 0, 0, 0, 0, 0}, excess = 0;
-          for (unsigned int k = 0; k < n_owned; ++k)
+          for (unsigned int k = 0; k < automata.n_owned; ++k)
             {
-              const double       a    = 0.5 * dt / mass_of(k);
+              const double a = 0.5 * dt / scalars.automaton_mass(automata, k);
               const unsigned int mask = constrained(k);
               for (unsigned int c = 0; c < 3; ++c)
                 {
-                  const double vb = v[k][c];
-                  v[k][c] += a * f[k][c];
+                  const double vb = automata.v[k][c];
+                  automata.v[k][c] += a * automata.f[k][c];
                   if (mask & (1u << c))
                     {
-                      wp[c] += 2 * f[k][c] * vb;
-                      excess += f[k][c] * (v[k][c] - vb);
+                      wp[c] += 2 * automata.f[k][c] * vb;
+                      excess += automata.f[k][c] * (automata.v[k][c] - vb);
                     }
                   else
-                    wp[c] += f[k][c] * (vb + v[k][c]);
+                    wp[c] += automata.f[k][c] * (vb + automata.v[k][c]);
                 }
               if (rotations)
                 {
-                  const double b = 0.5 * dt / inertia_of(k);
+                  const double b
+                    = 0.5 * dt / scalars.automaton_inertia(automata, k);
                   for (unsigned int c = 0; c < 3; ++c)
                     {
-                      const double wb = w[k][c];
-                      w[k][c] += b * torque[k][c];
-                      wp[3 + c] += torque[k][c] * (wb + w[k][c]);
+                      const double wb = automata.w[k][c];
+                      automata.w[k][c] += b * automata.torque[k][c];
+                      wp[3 + c]
+                        += automata.torque[k][c] * (wb + automata.w[k][c]);
                     }
                 }
             }
@@ -217,59 +240,61 @@ namespace tribodyn
           work[load_work] += 0.25 * dt * excess;
           return;
         }
-      const bool stale
-        = damping_on
-          && (f_damp_rebuild != rebuild_count || f_damp.size() != n_owned);
+      const bool stale = damping_on
+                         && (st.f_damp_rebuild != scalars.rebuild_count
+                             || st.f_damp.size() != automata.n_owned);
       std::vector<Vec3> load(grp.size(), Vec3{{0, 0, 0}}), values;
       for (unsigned int gi = 0; gi < grp.size(); ++gi)
         if (grp[gi].type == BoundaryGroup::Type::force && group_size[gi] > 0)
           {
-            load[gi] = group_value(grp[gi], current_time);
+            load[gi] = value(grp[gi], scalars.current_time);
             for (unsigned int c = 0; c < 3; ++c)
               load[gi][c] /= group_size[gi];
           }
       if (stale)
         for (const auto &g : grp)
-          values.push_back(group_value(g, current_time));
+          values.push_back(value(g, scalars.current_time));
       double wp = 0, wl = 0, wd = 0;
-      for (unsigned int k = 0; k < n_owned; ++k)
+      for (unsigned int k = 0; k < automata.n_owned; ++k)
         {
-          const double a  = 0.5 * dt / mass_of(k);
-          const Vec3   vb = v[k];
-          // after a rebuild f_damp is in the old order: recompute it (from
+          const double a  = 0.5 * dt / scalars.automaton_mass(automata, k);
+          const Vec3   vb = automata.v[k];
+          // after a rebuild st.f_damp is in the old order: recompute it (from
           // the current velocity: an O(dt) error at that step only)
           const Vec3 fd = !damping_on ? Vec3{{0, 0, 0}}
                           : stale     ? damping_force(k, values)
-                                      : f_damp[k];
+                                      : st.f_damp[k];
           Vec3       fl{{0, 0, 0}};
-          if (groups[k] != 0)
+          if (automata.groups[k] != 0)
             for (unsigned int gi = 0; gi < grp.size(); ++gi)
-              if (groups[k] & (1u << gi))
+              if (automata.groups[k] & (1u << gi))
                 for (unsigned int c = 0; c < 3; ++c)
                   fl[c] += load[gi][c];
           for (unsigned int c = 0; c < 3; ++c)
-            v[k][c] += a * f[k][c];
+            automata.v[k][c] += a * automata.f[k][c];
           const unsigned int mask = constrained(k);
           for (unsigned int c = 0; c < 3; ++c)
             {
               // a constrained component moves at vb (see above)
               const bool   fixed = mask & (1u << c);
-              const double vm
-                = fixed ? 0.5 * dt * vb[c] : 0.25 * dt * (vb[c] + v[k][c]);
-              wp += (f[k][c] - fd[c] - fl[c]) * vm;
+              const double vm    = fixed ? 0.5 * dt * vb[c]
+                                         : 0.25 * dt * (vb[c] + automata.v[k][c]);
+              wp += (automata.f[k][c] - fd[c] - fl[c]) * vm;
               wd -= fd[c] * vm;
               wl += fl[c] * vm;
               if (fixed)
-                wl += f[k][c] * 0.25 * dt * (v[k][c] - vb[c]);
+                wl += automata.f[k][c] * 0.25 * dt * (automata.v[k][c] - vb[c]);
             }
           if (rotations)
             {
-              const double b  = 0.5 * dt / inertia_of(k);
-              const Vec3   wb = w[k];
+              const double b
+                = 0.5 * dt / scalars.automaton_inertia(automata, k);
+              const Vec3 wb = automata.w[k];
               for (unsigned int c = 0; c < 3; ++c)
                 {
-                  w[k][c] += b * torque[k][c];
-                  wp += torque[k][c] * 0.25 * dt * (wb[c] + w[k][c]);
+                  automata.w[k][c] += b * automata.torque[k][c];
+                  wp += automata.torque[k][c] * 0.25 * dt
+                        * (wb[c] + automata.w[k][c]);
                 }
             }
         }
@@ -280,43 +305,43 @@ namespace tribodyn
 
 
     void
-    AutomatonSystem::apply_boundary_forces(const double t)
+    BoundaryLoads::apply_forces(const double t)
     {
       // Adds external and damping forces to the pair forces f, which then
       // hold the total forces of the kicks; the pair-force reaction of each
       // group (what the observers report) is summed first, per rank.
-      const auto               &grp = prm.boundary.groups;
+      const auto               &grp = prm.groups;
       std::vector<Vec3>         values(grp.size());
       std::vector<unsigned int> plates;
       for (unsigned int gi = 0; gi < grp.size(); ++gi)
         {
-          values[gi] = group_value(grp[gi], t);
+          values[gi] = value(grp[gi], t);
           if (grp[gi].type == BoundaryGroup::Type::force)
             plates.push_back(gi);
         }
-      group_reaction = local_group_sums(f);
-      // Scenes with damping keep its part of f in f_damp (energy
+      st.group_reaction = local_sums(automata.f);
+      // Scenes with damping keep its part of f in st.f_damp (energy
       // bookkeeping of the next half kicks); others hold no such array.
       if (damping_on)
         {
-          f_damp.resize(n_owned);
-          f_damp_rebuild = rebuild_count;
+          st.f_damp.resize(automata.n_owned);
+          st.f_damp_rebuild = scalars.rebuild_count;
         }
-      for (unsigned int k = 0; k < n_owned; ++k)
+      for (unsigned int k = 0; k < automata.n_owned; ++k)
         {
           if (damping_on)
             {
-              f_damp[k] = damping_force(k, values);
+              st.f_damp[k] = damping_force(k, values);
               for (unsigned int c = 0; c < 3; ++c)
-                f[k][c] += f_damp[k][c];
+                automata.f[k][c] += st.f_damp[k][c];
             }
-          if (groups[k] == 0)
+          if (automata.groups[k] == 0)
             continue;
           for (unsigned int gi = 0; gi < grp.size(); ++gi)
-            if ((groups[k] & (1u << gi))
+            if ((automata.groups[k] & (1u << gi))
                 && grp[gi].type == BoundaryGroup::Type::force)
               for (unsigned int c = 0; c < 3; ++c)
-                f[k][c] += values[gi][c] / group_size[gi];
+                automata.f[k][c] += values[gi][c] / group_size[gi];
         }
       if (plates.empty())
         return;
@@ -324,34 +349,35 @@ namespace tribodyn
       // acceleration of the group's total force over its total mass. One
       // reduction for all plates.
       std::vector<double> sums(4 * plates.size(), 0.);
-      for (unsigned int k = 0; k < n_owned; ++k)
-        if (groups[k] != 0)
+      for (unsigned int k = 0; k < automata.n_owned; ++k)
+        if (automata.groups[k] != 0)
           for (unsigned int q = 0; q < plates.size(); ++q)
-            if (groups[k] & (1u << plates[q]))
+            if (automata.groups[k] & (1u << plates[q]))
               {
                 for (unsigned int c = 0; c < 3; ++c)
-                  sums[4 * q + c] += f[k][c];
-                sums[4 * q + 3] += mass_of(k);
+                  sums[4 * q + c] += automata.f[k][c];
+                sums[4 * q + 3] += scalars.automaton_mass(automata, k);
               }
       dealii::Utilities::MPI::sum(sums, comm, sums);
-      for (unsigned int k = 0; k < n_owned; ++k)
-        if (groups[k] != 0)
+      for (unsigned int k = 0; k < automata.n_owned; ++k)
+        if (automata.groups[k] != 0)
           for (unsigned int q = 0; q < plates.size(); ++q)
-            if ((groups[k] & (1u << plates[q])) && sums[4 * q + 3] > 0)
+            if ((automata.groups[k] & (1u << plates[q])) && sums[4 * q + 3] > 0)
               for (unsigned int c = 0; c < 3; ++c)
-                f[k][c] = mass_of(k) * sums[4 * q + c] / sums[4 * q + 3];
+                automata.f[k][c] = scalars.automaton_mass(automata, k)
+                                   * sums[4 * q + c] / sums[4 * q + 3];
     }
 
 
     std::vector<Vec3>
-    AutomatonSystem::local_group_sums(const std::vector<Vec3> &field) const
+    BoundaryLoads::local_sums(const std::vector<Vec3> &field) const
     {
-      const unsigned int n_groups = prm.boundary.groups.size();
+      const unsigned int n_groups = prm.groups.size();
       std::vector<Vec3>  sums(n_groups, Vec3{{0, 0, 0}});
-      for (unsigned int k = 0; k < n_owned; ++k)
-        if (groups[k] != 0)
+      for (unsigned int k = 0; k < automata.n_owned; ++k)
+        if (automata.groups[k] != 0)
           for (unsigned int gi = 0; gi < n_groups; ++gi)
-            if (groups[k] & (1u << gi))
+            if (automata.groups[k] & (1u << gi))
               for (unsigned int c = 0; c < 3; ++c)
                 sums[gi][c] += field[k][c];
       return sums;
@@ -359,9 +385,9 @@ namespace tribodyn
 
 
     std::vector<Vec3>
-    AutomatonSystem::global_group_sums(const std::vector<Vec3> &local) const
+    BoundaryLoads::global_sums(const std::vector<Vec3> &local) const
     {
-      const unsigned int  n_groups = prm.boundary.groups.size();
+      const unsigned int  n_groups = prm.groups.size();
       std::vector<double> sums(3 * n_groups, 0.);
       for (unsigned int gi = 0; gi < local.size(); ++gi)
         for (unsigned int c = 0; c < 3; ++c)
@@ -376,24 +402,17 @@ namespace tribodyn
 
 
     std::vector<Vec3>
-    AutomatonSystem::sum_over_groups(const std::vector<Vec3> &field) const
-    {
-      return global_group_sums(local_group_sums(field));
-    }
-
-
-    std::vector<Vec3>
-    AutomatonSystem::group_forces() const
+    BoundaryLoads::reactions() const
     {
       // the pair-force reactions summed at the last step
-      return global_group_sums(group_reaction);
+      return global_sums(st.group_reaction);
     }
 
 
     std::vector<Vec3>
-    AutomatonSystem::group_displacements() const
+    BoundaryLoads::mean_displacements() const
     {
-      std::vector<Vec3> out = sum_over_groups(u);
+      std::vector<Vec3> out = global_sums(local_sums(automata.u));
       for (unsigned int gi = 0; gi < out.size(); ++gi)
         for (unsigned int c = 0; c < 3; ++c)
           out[gi][c] = group_size[gi] > 0 ? out[gi][c] / group_size[gi] : 0;

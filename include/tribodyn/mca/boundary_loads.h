@@ -1,0 +1,163 @@
+// The boundary groups at work on the automata: one part of AutomatonSystem
+// (issue #52 item 1), with one job — what the loading machine does.
+#ifndef tribodyn_mca_boundary_loads_h
+#define tribodyn_mca_boundary_loads_h
+
+#include <deal.II/base/mpi.h>
+#include <tribodyn/mca/automaton_arrays.h>
+#include <tribodyn/mca/parameters.h>
+#include <tribodyn/mca/system_figures.h>
+#include <tribodyn/mca/system_scalars.h>
+#include <tribodyn/mca/vector_algebra.h>
+#include <vector>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    /**
+     * The groups of 'Boundary conditions' acting on the automata:
+     * kinematic constraints (fixed, prescribed velocity), loads (a force
+     * group is a rigid loading plate), damping (global and damping groups),
+     * each with its smooth ramp and its switch (at a time, or at the first
+     * contact of the bodies); the velocity-Verlet half kick with the work
+     * that the pair forces, the loads and the damping do over it (the
+     * energy balance, doc/theory/mca.md §8); and what the observers read:
+     * each group's pair-force reaction and mean displacement.
+     *
+     * A part of AutomatonSystem in the way of ASPECT's SimulatorAccess: it
+     * reads the automata (AutomatonArrays: membership, masses, velocities,
+     * forces) and the run's scalars (SystemScalars: the time, the step,
+     * the materials) of its system, writes the automata's velocities and
+     * forces, and owns its own state (State): the groups' sizes and
+     * reactions, the contact time and the damping forces.
+     */
+    class BoundaryLoads
+    {
+    public:
+      BoundaryLoads(const BoundaryParameters &parameters,
+                    const MPI_Comm            comm,
+                    AutomatonArrays          &automata,
+                    const SystemScalars      &scalars);
+
+      /// What the part carries from one step to the next: checkpointed (in
+      /// this order; the damping forces with the automata, an automaton
+      /// field) and moved by a restart on another number of ranks.
+      struct State
+      {
+        /// Time at which the bodies first touched; -1 before.
+        double first_contact_time = -1;
+        /// The rebuild at which f_damp was computed (it is in that
+        /// rebuild's order of the automata).
+        unsigned int f_damp_rebuild = 0;
+        /// Pair-force reaction of each group on this rank (sum of f over
+        /// the group's owned automata before the loads are added).
+        std::vector<Vec3> group_reaction;
+        /// Damping part of f of each owned automaton (for the damped
+        /// work), valid while f_damp_rebuild is the system's rebuild
+        /// count; empty without damping.
+        std::vector<Vec3> f_damp;
+      };
+      State &
+      state()
+      {
+        return st;
+      }
+      const State &
+      state() const
+      {
+        return st;
+      }
+
+      /// At set-up, after the automata are packed (collective): the
+      /// groups' sizes (automata never change group) and whether any
+      /// group waits for the contact or damps.
+      void
+      count_members();
+
+      /// Whether a group switches when the bodies first touch and they have
+      /// not yet (the system then looks for the first contact).
+      bool
+      waits_for_contact() const
+      {
+        return wait_for_contact && st.first_contact_time < 0;
+      }
+      void
+      set_contact_time(const double t)
+      {
+        st.first_contact_time = t;
+      }
+      double
+      contact_time() const
+      {
+        return st.first_contact_time;
+      }
+      /// Global damping or a damping group (State::f_damp is used).
+      bool
+      damping() const
+      {
+        return damping_on;
+      }
+
+      /// Velocity-Verlet half kick v += dt/2 F/m (and of the rotations),
+      /// booking its work as pair, load and damped work in @p work.
+      void
+      half_kick(WorkSums &work);
+      /// The fixed and prescribed velocities at time @p t; the kinetic
+      /// energy they add or remove is load work.
+      void
+      apply_constraints(const double t, WorkSums &work);
+      /// The groups' reactions (the pair forces f, summed per rank), then
+      /// the loads and damping at time @p t added to f, which then holds
+      /// the forces of the next kicks; a loading plate's automata share
+      /// its acceleration (collective).
+      void
+      apply_forces(const double t);
+
+      /// Number of automata in each group, global (counted at set-up).
+      const std::vector<unsigned long long> &
+      sizes() const
+      {
+        return group_size;
+      }
+      /// Reaction (sum of pair forces) on each group at the last step,
+      /// global.
+      std::vector<Vec3>
+      reactions() const;
+      /// Mean displacement of each group's automata, global.
+      std::vector<Vec3>
+      mean_displacements() const;
+
+    private:
+      /// The smooth (C1) ramp of velocities and forces at time @p t.
+      double
+      ramp(const double t) const;
+      /// The value of group @p g at time @p t (its ramp and switch).
+      Vec3
+      value(const BoundaryGroup &g, const double t) const;
+      /// Damping force -c m v of owned automaton @p k (@p values: value()
+      /// of every group).
+      Vec3
+      damping_force(const unsigned int       k,
+                    const std::vector<Vec3> &values) const;
+      /// Sum of @p field (per local automaton) over the owned automata of
+      /// each group on this rank; the sum over ranks of such sums.
+      std::vector<Vec3>
+      local_sums(const std::vector<Vec3> &field) const;
+      std::vector<Vec3>
+      global_sums(const std::vector<Vec3> &local) const;
+
+      const BoundaryParameters &prm;
+      MPI_Comm                  comm;
+      AutomatonArrays          &automata;
+      const SystemScalars      &scalars;
+
+      std::vector<unsigned long long> group_size;
+      bool                            wait_for_contact = false;
+      bool                            damping_on       = false;
+      State                           st;
+    };
+  } // namespace mca
+} // namespace tribodyn
+
+#endif
