@@ -338,29 +338,39 @@ namespace tribodyn
     RunSummary
     ContactSolver::summarize(const std::string &output_directory)
     {
-      RunSummary          s;
-      const double        t0 = prm.output.average_start;
-      const double        t1 = prm.output.average_end < 0
-                                 ? std::numeric_limits<double>::max()
-                                 : prm.output.average_end;
+      RunSummary   s;
+      const double t0 = prm.output.average_start;
+      const double t1 = prm.output.average_end < 0
+                          ? std::numeric_limits<double>::max()
+                          : prm.output.average_end;
+      // The averages take every sample of the window; the spectra only
+      // those of the regular cadence (every Sample interval steps): the
+      // sample of a run's last step (end_of_run()) is off that grid, and a
+      // spectrum assumes equal spacing.
       std::vector<double> mu, normal;
-      double              mu_c = 0, fr[3] = {0, 0, 0}, m_status[3] = {0, 0, 0};
+      double              n = 0, mu_sum = 0, mu_c = 0, fr[3] = {0, 0, 0},
+             m_status[3]           = {0, 0, 0};
+      const unsigned long interval = prm.output.sample_interval;
       for (const Sample &x : history)
         {
           s.energy_balance_error
             = std::max(s.energy_balance_error, x.energy_balance_error);
           if (x.time < t0 || x.time > t1)
             continue;
-          mu.push_back(x.mu_global);
-          normal.push_back(x.contact_normal_force);
+          if (std::llround(x.time / dt) % interval == 0)
+            {
+              mu.push_back(x.mu_global);
+              normal.push_back(x.contact_normal_force);
+            }
+          n += 1;
+          mu_sum += x.mu_global;
           mu_c += x.mu_contact;
           fr[0] += x.stick_fraction;
           fr[1] += x.slip_fraction;
           fr[2] += x.separation_fraction;
           m_status[x.M_status] += 1;
         }
-      const double n       = static_cast<double>(mu.size());
-      s.n_samples_averaged = mu.size();
+      s.n_samples_averaged = static_cast<std::size_t>(n);
       if (n == 0)
         {
           // An empty window (a leg of a longer run): undefined averages.
@@ -373,10 +383,7 @@ namespace tribodyn
         }
       else
         {
-          double sum = 0;
-          for (const double m : mu)
-            sum += m;
-          s.mu_global_mean        = sum / n;
+          s.mu_global_mean        = mu_sum / n;
           s.mu_contact_mean       = mu_c / n;
           s.stick_fraction        = fr[0] / n;
           s.slip_fraction         = fr[1] / n;
@@ -397,7 +404,7 @@ namespace tribodyn
       const double spacing  = prm.output.sample_interval * dt;
       const auto   spectrum = amplitude_spectrum(mu, spacing);
       // Ignore the lowest frequencies (trends over the window).
-      const double f_min = n > 0 ? 2. / (n * spacing) : 0;
+      const double f_min = mu.empty() ? 0 : 2. / (mu.size() * spacing);
       std::vector<std::pair<double, double>> above;
       above.emplace_back(0., 0.);
       for (const auto &f : spectrum)
