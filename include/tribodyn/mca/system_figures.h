@@ -173,13 +173,14 @@ namespace tribodyn
     namespace cost_model
     {
       /// Memory per owned and per ghost automaton for the partition
-      /// report's estimate, measured (bench/mca/compare.py --memory): peak
-      /// RSS per automaton of a 256 000-automaton elastic block on one rank
-      /// (955 B), and the increase on two ranks divided by the ghosts
-      /// (1118 B per owned automaton with 0.12 ghosts per owned one: the
-      /// ghost's own arrays and its pairs, stored on both ranks).
-      constexpr double bytes_per_owned_automaton = 960;
-      constexpr double bytes_per_ghost_automaton = 1400;
+      /// report's estimate, measured (bench/mca/compare.py --memory,
+      /// 2026-11-30): peak RSS per automaton of a 256 000-automaton
+      /// elastic block on one rank (815 B), and the increase on two ranks
+      /// divided by the ghosts (948 B per owned automaton with 0.119
+      /// ghosts per owned one: 1 113 B per ghost, its own arrays and its
+      /// pairs, stored on both ranks).
+      constexpr double bytes_per_owned_automaton = 815;
+      constexpr double bytes_per_ghost_automaton = 1115;
       /// Added per automaton (owned or ghost) by the relative-rotation
       /// moments (24 B a pair): measured +142 B of peak RSS and of arrays
       /// per automaton on the 128 000-automaton elastic block.
