@@ -11,6 +11,7 @@
 #include <sstream>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/selection.h>
+#include <tribodyn/mca/packing.h>
 #include <tribodyn/mca/parameters.h>
 #include <unistd.h>
 
@@ -132,7 +133,9 @@ namespace tribodyn
           "bodies are on both sides (a band may end at a body's top or "
           "bottom face with any size). Automata "
           "near a change of size take their volumes and contact areas from "
-          "their Voronoi cells (doc/theory/mca.md section 9). Or "
+          "their Voronoi cells (doc/theory/mca.md section 9); with a rough "
+          "interface every change of size keeps (3 2^L + 1) d clear of its "
+          "surface (2^L d the larger size), or the run is refused. Or "
           "'interface N M', the layout of a friction scene: d within N cells "
           "(a = d sqrt 2) of the rough interface's mean height and in the "
           "4 cells at the bodies' bottom and top (the loading layers), 2d "
@@ -359,6 +362,7 @@ namespace tribodyn
                                   "between them (sizes may change by a "
                                   "factor 2 only).");
             }
+        check_size_changes_clear_of_interface();
         // A periodic direction must hold whole cells of the coarsest
         // lattice, or its sites do not match across the period.
         unsigned int top = 0;
@@ -531,6 +535,49 @@ namespace tribodyn
       return -1;
     }
 
+
+    void
+    GeometryParameters::check_size_changes_clear_of_interface() const
+    {
+      // The automata within 3 times the larger size of a change of size
+      // (near_size_change()) take their contact areas from the Voronoi
+      // cells of the set-up; a pair of them found later is inert (no face,
+      // no force: AutomatonSystem::new_pair_area()). Where they can meet
+      // the other body of a rough interface, contacts would be lost
+      // silently (and the set-up's cells would reach across a narrow gap:
+      // the Voronoi check's internal error). They must stay below the
+      // lowest point of the surface (above its highest) by one more
+      // automaton d, the contact distance of two fine ones.
+      if (!rough_interface || size_bands.empty())
+        return;
+      const auto [lowest, highest] = rough_surface_range(*this);
+      const double eps             = 1e-9 * automaton_size;
+      for (const SizeBand &band : size_bands)
+        for (const double plane : {band.z_lower, band.z_upper})
+          {
+            const unsigned int below = size_level(plane - eps);
+            const unsigned int above = size_level(plane + eps);
+            if (below == above)
+              continue;
+            const double reach
+              = (3. * (1u << std::max(below, above)) + 1.) * automaton_size;
+            if (plane + reach <= lowest || plane - reach >= highest)
+              continue;
+            throw InputError(
+              "Parameter 'Geometry/Size bands': the change of size at z = "
+              + format_number(plane) + " m is within " + format_number(reach)
+              + " m of the rough interface, whose surface spans z = "
+              + format_number(lowest) + " to " + format_number(highest)
+              + " m. The automata within 3 times the larger size of a "
+                "change of size take their contact areas from the set-up "
+                "and a contact they make later is inert (doc/theory/mca.md "
+                "section 9), so they must stay one automaton d clear of the "
+                "other body: keep every change of size below z = "
+              + format_number(lowest - reach) + " m or above "
+              + format_number(highest + reach)
+              + " m (with 'interface N M': a larger N).");
+          }
+    }
 
     std::string
     GeometryParameters::bands_around_interface(const std::string &text) const

@@ -86,28 +86,53 @@ namespace tribodyn
     } // namespace
 
 
+    namespace
+    {
+      /// Call @p f(x, y) on a grid of the box's xy extent: the surface is a
+      /// sum of six cosines, and a grid of 1/64 of the shortest wavelength
+      /// resolves its extremes to ~0.1 % of the amplitude.
+      template <class F>
+      void
+      for_each_surface_grid_point(const GeometryParameters &g, const F &f)
+      {
+        const double Lx = g.domain_upper[0] - g.domain_lower[0];
+        const double Ly = g.domain_upper[1] - g.domain_lower[1];
+        const double h  = g.roughness_wavelength / 64;
+        const auto   nx = static_cast<unsigned int>(std::ceil(Lx / h));
+        const auto   ny = static_cast<unsigned int>(std::ceil(Ly / h));
+        for (unsigned int i = 0; i <= nx; ++i)
+          for (unsigned int j = 0; j <= ny; ++j)
+            f(g.domain_lower[0] + i * Lx / nx, g.domain_lower[1] + j * Ly / ny);
+      }
+    } // namespace
+
+
     double
     rough_surface_rise(const GeometryParameters &g, const double shift_y)
     {
       if (!g.rough_interface || g.roughness_amplitude == 0)
         return 0;
       const RoughSurface surface(g);
-      const double       Lx = g.domain_upper[0] - g.domain_lower[0];
-      const double       Ly = g.domain_upper[1] - g.domain_lower[1];
-      // The surface is a sum of six cosines: a grid of 1/64 of the shortest
-      // wavelength resolves its maximum to ~0.1 % of the amplitude.
-      const double h    = g.roughness_wavelength / 64;
-      const auto   nx   = static_cast<unsigned int>(std::ceil(Lx / h));
-      const auto   ny   = static_cast<unsigned int>(std::ceil(Ly / h));
-      double       rise = -1;
-      for (unsigned int i = 0; i <= nx; ++i)
-        for (unsigned int j = 0; j <= ny; ++j)
-          {
-            const double x = g.domain_lower[0] + i * Lx / nx;
-            const double y = g.domain_lower[1] + j * Ly / ny;
-            rise = std::max(rise, surface(x, y) - surface(x, y - shift_y));
-          }
+      double             rise = -1;
+      for_each_surface_grid_point(g, [&](const double x, const double y) {
+        rise = std::max(rise, surface(x, y) - surface(x, y - shift_y));
+      });
       return g.roughness_amplitude * rise;
+    }
+
+
+    std::pair<double, double>
+    rough_surface_range(const GeometryParameters &g)
+    {
+      const RoughSurface surface(g);
+      double             lowest = 1, highest = -1;
+      for_each_surface_grid_point(g, [&](const double x, const double y) {
+        const double f = surface(x, y);
+        lowest         = std::min(lowest, f);
+        highest        = std::max(highest, f);
+      });
+      return {g.interface_height + g.roughness_amplitude * lowest,
+              g.interface_height + g.roughness_amplitude * highest};
     }
 
 

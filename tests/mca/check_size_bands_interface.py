@@ -51,7 +51,7 @@ by_hand = counts(with_bands(BY_HAND), "by_hand.prm")
 report(by_hand == counts(with_bands("interface 23"), "interface_23.prm"),
        f"'interface 23' packs as the hand-written bands of the seed-heights "
        f"scene: {by_hand}")
-for n, m in ((1, None), (8, None), (12, None), (8, 16), (3, 9)):
+for n, m in ((7, None), (8, None), (12, None), (8, 16), (7, 9)):
     words = f"interface {n}" + (f" {m}" if m else "")
     m = m or 4
     expected = ((8 + 2 * n) * 1024, (2 * m + 8) * 128, (404 - 8 - 2 * n - 2 * m - 8) * 16)

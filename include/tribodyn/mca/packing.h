@@ -6,6 +6,7 @@
 #include <functional>
 #include <tribodyn/mca/parameters.h>
 #include <tribodyn/mca/vector_algebra.h>
+#include <utility>
 #include <vector>
 
 namespace tribodyn
@@ -65,6 +66,12 @@ namespace tribodyn
     double
     rough_surface_rise(const GeometryParameters &geometry,
                        const double              shift_y);
+
+    /// Lowest and highest z of the rough interface of @p geometry (its
+    /// height plus the amplitude times the surface's extremes, before the
+    /// upper body is lifted).
+    std::pair<double, double>
+    rough_surface_range(const GeometryParameters &geometry);
 
     /// The whole packing (tests and small scenes), in id order.
     std::vector<PackedAutomaton>

@@ -214,6 +214,11 @@ namespace tribodyn
       /// it is. Needs the bodies and the rough interface parsed.
       std::string
       bands_around_interface(const std::string &text) const;
+      /// Refuse size bands whose changes of size lie so near the rough
+      /// interface that the automata near them (which take their contact
+      /// areas from the set-up) could meet the other body.
+      void
+      check_size_changes_clear_of_interface() const;
       /// The size level of a site at height @p z (0 outside every band).
       unsigned int
       size_level(const double z) const;
