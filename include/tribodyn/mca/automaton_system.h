@@ -696,7 +696,8 @@ namespace tribodyn
       BoundaryLoads loads;
       /// Set the contact time once the bodies touch (collective).
       void
-                 detect_first_contact();
+      detect_first_contact();
+
       PartCounts part_counts;
       /// The works since the start, by Work (system_figures.h).
       WorkSums work{};
