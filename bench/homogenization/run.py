@@ -17,6 +17,13 @@
       E_L, E_T, G_LT (KUBC and SUBC) of the default morphology as the mesh is
       refined (h = 0.1, 0.05, 0.025, 0.0125 mm); error against the Richardson
       extrapolation of the three finest meshes, with the run time of each.
+  bench/homogenization/run.py volume       [--sizes 16 32 64 128] [--ranks 2]
+                                           [--preconditioner multigrid|AMG]
+                                           [--conditions "KUBC, SUBC"]
+      bench/homogenization/volume_128.prm (random glass spheres in epoxy)
+      at n^3 voxels for each n of --sizes: DoFs, wall time, CG iterations
+      per condition, memory_bytes_per_dof (the ranks' peak RSS over the
+      DoFs), time per DoF and iteration, and the load (uptime) when it ran.
   bench/homogenization/run.py morphologies
       the five constants of the six random morphologies (seeds 1-6) against
       the seed's Table 1.
@@ -244,15 +251,54 @@ def morphologies(args):
     print("| seed 001 Table 1 | 0.10 | 31.9 | 34 | 13.3 | | | | 0.2 | 0.2 |")
 
 
+VOLUME_PRM = os.path.join(ROOT, "bench", "homogenization", "volume_128.prm")
+
+
+def volume(args):
+    print("| voxels | DoFs | ranks | preconditioner | wall time (s) | "
+          + " | ".join("%s: iterations, time (s)" % bc
+                       for bc in args.conditions.split(", "))
+          + " | B per DoF | core-ns per DoF and iteration | load |")
+    print("|---" * (8 + len(args.conditions.split(", "))) + "|")
+    for n in args.sizes:
+        overrides = ["subsection Morphology"]
+        overrides += ["  set Voxels in %s = %d" % (axis, n) for axis in "xyz"]
+        overrides += ["end", "subsection Cell problem",
+                      "  set Boundary conditions = " + args.conditions,
+                      "  set Preconditioner = " + args.preconditioner, "end"]
+        with open("/proc/loadavg") as f:
+            load = f.read().split()[0]
+        s, elapsed, stdout = run(args.tribodyn, "volume_%d" % n, overrides,
+                                 args.ranks, base_prm=VOLUME_PRM)
+        cells, solve_time, iterations = [], 0.0, 0
+        for bc in args.conditions.split(", "):
+            r = s[bc]
+            its = r["cg_iterations"]
+            cells.append("%s, %.1f" % ("%d-%d" % (min(its), max(its))
+                                       if min(its) != max(its) else str(its[0]),
+                                       r["wall_time_s"]))
+            solve_time += r["wall_time_s"]
+            iterations += sum(its)
+        print("| %d³ | %d | %d | %s | %.1f | %s | %.0f | %.0f | %s |" % (
+            n, s["n_dofs"], s["n_mpi_ranks"], args.preconditioner, elapsed,
+            " | ".join(cells), s["memory_bytes_per_dof"],
+            1e9 * solve_time / (s["n_dofs"] * max(iterations, 1)) * s["n_mpi_ranks"],
+            load), flush=True)
+
+
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("study", choices=["scaling", "convergence", "morphologies", "large"])
+    parser.add_argument("study", choices=["scaling", "convergence", "morphologies", "large",
+                                          "volume"])
     parser.add_argument("--old", help="older tribodyn binary to alternate with (scaling)")
     parser.add_argument("--old-lib", help="directory of the older binary's libtribodyn.so")
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--tribodyn", default=os.path.join(ROOT, "build", "tribodyn"))
     parser.add_argument("--ranks", type=int, default=2)
+    parser.add_argument("--sizes", type=int, nargs="+", default=[16, 32, 64, 128])
+    parser.add_argument("--preconditioner", default="multigrid")
+    parser.add_argument("--conditions", default="KUBC, SUBC")
     args = parser.parse_args()
     {"scaling": scaling, "convergence": convergence, "morphologies": morphologies,
-     "large": large}[args.study](args)
+     "large": large, "volume": volume}[args.study](args)

@@ -29,6 +29,7 @@
 #include <deal.II/multigrid/mg_transfer_matrix_free.h>
 #include <deal.II/multigrid/multigrid.h>
 #include <map>
+#include <set>
 
 namespace tribodyn
 {
@@ -87,84 +88,88 @@ namespace tribodyn
         };
 
 
-        /// DoFs of level @p level at the vertices @p pin designates.
+        /// DoFs of level @p level at the vertex @p point, components
+        /// @p components.
+        template <int dim>
         IndexSet
-        pinned_level_dofs(const DoFHandler<2>                   &dofs,
-                          const unsigned int                     level,
-                          const LevelConstraintDescription::Pin &pin,
-                          const double                           tolerance)
+        pinned_level_dofs(const DoFHandler<dim>           &dofs,
+                          const unsigned int               level,
+                          const Point<dim>                &point,
+                          const std::vector<unsigned int> &components,
+                          const double                     tolerance)
         {
           IndexSet pinned(dofs.n_dofs(level));
           for (const auto &cell : dofs.mg_cell_iterators_on_level(level))
             if (cell->level_subdomain_id() != numbers::artificial_subdomain_id)
               for (const unsigned int v : cell->vertex_indices())
-                if (cell->vertex(v).distance(pin.point) < tolerance)
-                  for (const unsigned int c : pin.components)
+                if (cell->vertex(v).distance(point) < tolerance)
+                  for (const unsigned int c : components)
                     pinned.add_index(cell->mg_vertex_dof_index(level, v, c));
           return pinned;
         }
 
 
-        /// The shared matrix-free objects of the bilinear fast path.
-        template <typename LevelNumber>
-        struct BilinearMatrixFree : MultigridCache
+        /// The shared matrix-free objects of the multilinear fast path.
+        template <int dim, typename LevelNumber>
+        struct MultilinearMatrixFree : MultigridCache
         {
-          std::shared_ptr<const MatrixFree<2, double>>                   fine;
-          std::vector<std::shared_ptr<const MatrixFree<2, LevelNumber>>> levels;
+          std::shared_ptr<const MatrixFree<dim, double>> fine;
+          std::vector<std::shared_ptr<const MatrixFree<dim, LevelNumber>>>
+            levels;
         };
 
 
-        template <int degree, typename LevelNumber>
-        class MultigridSolver : public CellMultigridSolver
+        template <int dim, int degree, typename LevelNumber>
+        class MultigridSolver : public CellMultigridSolver<dim>
         {
         public:
           using LevelVectorType
             = LinearAlgebra::distributed::Vector<LevelNumber>;
-          using FineOperator  = ElasticityOperator<degree, double>;
-          using LevelOperator = ElasticityOperator<degree, LevelNumber>;
-          using Transfer      = MGTransferMatrixFree<2, LevelNumber>;
+          using FineOperator  = ElasticityOperator<dim, degree, double>;
+          using LevelOperator = ElasticityOperator<dim, degree, LevelNumber>;
+          using Transfer      = MGTransferMatrixFree<dim, LevelNumber>;
+          static constexpr bool fast_path = FineOperator::fast_path;
           using Smoother
             = PreconditionChebyshev<LevelOperator,
                                     LevelVectorType,
                                     DiagonalMatrix<LevelVectorType>>;
 
-          MultigridSolver(const DoFHandler<2>              &dof_handler,
-                          const AffineConstraints<double>  &constraints,
-                          const LevelConstraintDescription &description,
-                          const StiffnessOverBox           &stiffness,
-                          std::shared_ptr<MultigridCache>  &cache,
-                          TimerOutput                      &timer)
+          MultigridSolver(const DoFHandler<dim>                 &dof_handler,
+                          const AffineConstraints<double>       &constraints,
+                          const LevelConstraintDescription<dim> &description,
+                          const StiffnessOverBox<dim>           &stiffness,
+                          std::shared_ptr<MultigridCache>       &cache,
+                          TimerOutput                           &timer)
               : dof_handler(dof_handler)
           {
             TimerOutput::Scope scope(timer, "multigrid setup");
-            typename MatrixFree<2, double>::AdditionalData data;
+            typename MatrixFree<dim, double>::AdditionalData data;
             data.tasks_parallel_scheme
-              = MatrixFree<2, double>::AdditionalData::none;
+              = MatrixFree<dim, double>::AdditionalData::none;
             data.mapping_update_flags = update_gradients | update_JxW_values;
-            typename MatrixFree<2, LevelNumber>::AdditionalData level_data;
+            typename MatrixFree<dim, LevelNumber>::AdditionalData level_data;
             level_data.tasks_parallel_scheme
-              = MatrixFree<2, LevelNumber>::AdditionalData::none;
+              = MatrixFree<dim, LevelNumber>::AdditionalData::none;
             level_data.mapping_update_flags = data.mapping_update_flags;
-            // the bilinear fast path needs no mapping data (its element
+            // the multilinear fast path needs no mapping data (its element
             // matrices are computed directly); other degrees evaluate
             // gradients on every cell
-            data.initialize_mapping       = degree > 1;
-            level_data.initialize_mapping = degree > 1;
+            data.initialize_mapping       = !fast_path;
+            level_data.initialize_mapping = !fast_path;
             const QGauss<1> quadrature(degree + 1);
-            // Bilinear elements: the operator applies the constraints
+            // Multilinear elements: the operator applies the constraints
             // itself, so the matrix-free objects hold none and are shared by
             // the boundary conditions (built by the first one).
-            std::shared_ptr<BilinearMatrixFree<LevelNumber>> shared;
-            bool                                             reuse = false;
-            if constexpr (degree == 1)
+            std::shared_ptr<MultilinearMatrixFree<dim, LevelNumber>> shared;
+            bool reuse = false;
+            if constexpr (fast_path)
               {
-                shared
-                  = std::dynamic_pointer_cast<BilinearMatrixFree<LevelNumber>>(
-                    cache);
+                shared = std::dynamic_pointer_cast<
+                  MultilinearMatrixFree<dim, LevelNumber>>(cache);
                 reuse = shared != nullptr;
                 if (!reuse)
-                  cache = shared
-                    = std::make_shared<BilinearMatrixFree<LevelNumber>>();
+                  cache = shared = std::make_shared<
+                    MultilinearMatrixFree<dim, LevelNumber>>();
               }
             AffineConstraints<double> no_constraints;
             no_constraints.close();
@@ -173,15 +178,15 @@ namespace tribodyn
 
             // The active mesh.
             {
-              std::shared_ptr<const MatrixFree<2, double>> mf;
+              std::shared_ptr<const MatrixFree<dim, double>> mf;
               if (reuse)
                 mf = shared->fine;
               else
                 {
-                  auto new_mf = std::make_shared<MatrixFree<2, double>>();
+                  auto new_mf = std::make_shared<MatrixFree<dim, double>>();
                   new_mf->reinit(mapping,
                                  dof_handler,
-                                 degree == 1 ? no_constraints : constraints,
+                                 fast_path ? no_constraints : constraints,
                                  quadrature,
                                  data);
                   mf = new_mf;
@@ -199,15 +204,23 @@ namespace tribodyn
               = dof_handler.get_triangulation().n_global_levels();
             mg_constrained_dofs.initialize(dof_handler);
             if (description.zero_boundary)
-              mg_constrained_dofs.make_zero_boundary_constraints(dof_handler,
-                                                                 {0, 1, 2, 3});
+              {
+                std::set<types::boundary_id> faces;
+                for (unsigned int id = 0; id < 2 * dim; ++id)
+                  faces.insert(id);
+                mg_constrained_dofs.make_zero_boundary_constraints(dof_handler,
+                                                                   faces);
+              }
             for (unsigned int level = 0; level < n_levels; ++level)
-              for (const auto &pin : description.pins)
+              for (const auto &[point, components] : description.pins)
                 mg_constrained_dofs.add_boundary_indices(
                   dof_handler,
                   level,
-                  pinned_level_dofs(
-                    dof_handler, level, pin, description.tolerance));
+                  pinned_level_dofs(dof_handler,
+                                    level,
+                                    point,
+                                    components,
+                                    description.tolerance));
 
             level_operators.resize(0, n_levels - 1);
             AffineConstraints<double> coarse_constraints;
@@ -227,17 +240,17 @@ namespace tribodyn
                 AffineConstraints<LevelNumber> level_constraints;
                 level_constraints_of(level, level_constraints);
                 level_data.mg_level = level;
-                std::shared_ptr<const MatrixFree<2, LevelNumber>> mf;
+                std::shared_ptr<const MatrixFree<dim, LevelNumber>> mf;
                 if (reuse)
                   mf = shared->levels[level];
                 else
                   {
                     auto new_mf
-                      = std::make_shared<MatrixFree<2, LevelNumber>>();
+                      = std::make_shared<MatrixFree<dim, LevelNumber>>();
                     new_mf->reinit(mapping,
                                    dof_handler,
-                                   degree == 1 ? no_level_constraints
-                                               : level_constraints,
+                                   fast_path ? no_level_constraints
+                                             : level_constraints,
                                    quadrature,
                                    level_data);
                     mf = new_mf;
@@ -280,7 +293,7 @@ namespace tribodyn
               level_constraints_of(0, coarse_constraints);
               data.mg_level           = 0;
               data.initialize_mapping = true; // compute_matrix integrates
-              auto mf = std::make_shared<MatrixFree<2, double>>();
+              auto mf = std::make_shared<MatrixFree<dim, double>>();
               mf->reinit(
                 mapping, dof_handler, coarse_constraints, quadrature, data);
               FineOperator coarse_operator;
@@ -315,14 +328,15 @@ namespace tribodyn
               = std::make_unique<mg::Matrix<LevelVectorType>>(level_operators);
             multigrid = std::make_unique<Multigrid<LevelVectorType>>(
               *mg_matrix, *coarse, *transfer, smoother, smoother);
-            preconditioner
-              = std::make_unique<PreconditionMG<2, LevelVectorType, Transfer>>(
-                dof_handler, *multigrid, *transfer);
+            preconditioner = std::make_unique<
+              PreconditionMG<dim, LevelVectorType, Transfer>>(dof_handler,
+                                                              *multigrid,
+                                                              *transfer);
           }
 
           double
-          assemble_rhs(const VoigtVector &load,
-                       const bool         strain_driven) override
+          assemble_rhs(const Tensor<1, CellTraits<dim>::n_voigt> &load,
+                       const bool strain_driven) override
           {
             return fine_operator.assemble_rhs(rhs, load, strain_driven);
           }
@@ -342,8 +356,8 @@ namespace tribodyn
           }
 
         private:
-          const DoFHandler<2>         &dof_handler;
-          const MappingQ1<2>           mapping;
+          const DoFHandler<dim>       &dof_handler;
+          const MappingQ1<dim>         mapping;
           FineOperator                 fine_operator;
           VectorType                   rhs;
           MGConstrainedDoFs            mg_constrained_dofs;
@@ -355,28 +369,29 @@ namespace tribodyn
           std::unique_ptr<DirectCoarseSolver<LevelNumber>> coarse;
           std::unique_ptr<mg::Matrix<LevelVectorType>>     mg_matrix;
           std::unique_ptr<Multigrid<LevelVectorType>>      multigrid;
-          std::unique_ptr<PreconditionMG<2, LevelVectorType, Transfer>>
+          std::unique_ptr<PreconditionMG<dim, LevelVectorType, Transfer>>
             preconditioner;
         };
       } // namespace
 
 
-      std::unique_ptr<CellMultigridSolver>
+      template <int dim>
+      std::unique_ptr<CellMultigridSolver<dim>>
       make_cell_multigrid_solver(
         const unsigned int                       fe_degree,
         const bool                               single_precision,
         std::shared_ptr<MultigridCache>         &cache,
-        const dealii::DoFHandler<2>             &dof_handler,
+        const dealii::DoFHandler<dim>           &dof_handler,
         const dealii::AffineConstraints<double> &constraints,
-        const LevelConstraintDescription        &level_constraints,
-        const StiffnessOverBox                  &stiffness,
+        const LevelConstraintDescription<dim>   &level_constraints,
+        const StiffnessOverBox<dim>             &stiffness,
         dealii::TimerOutput                     &timer)
       {
         const auto make
           = [&](auto degree,
-                auto number) -> std::unique_ptr<CellMultigridSolver> {
+                auto number) -> std::unique_ptr<CellMultigridSolver<dim>> {
           return std::make_unique<
-            MultigridSolver<decltype(degree)::value, decltype(number)>>(
+            MultigridSolver<dim, decltype(degree)::value, decltype(number)>>(
             dof_handler,
             constraints,
             level_constraints,
@@ -384,21 +399,46 @@ namespace tribodyn
             cache,
             timer);
         };
-        const auto with_degree = [&](auto number) {
-          switch (fe_degree)
-            {
-              case 1:
-                return make(std::integral_constant<int, 1>(), number);
-              case 2:
-                return make(std::integral_constant<int, 2>(), number);
-              case 3:
-                return make(std::integral_constant<int, 3>(), number);
-              default:
-                return make(std::integral_constant<int, 4>(), number);
-            }
+        const auto with_degree
+          = [&](auto number) -> std::unique_ptr<CellMultigridSolver<dim>> {
+          // trilinear elements only in 3D (one per voxel)
+          if constexpr (dim == 3)
+            return make(std::integral_constant<int, 1>(), number);
+          else
+            switch (fe_degree)
+              {
+                case 1:
+                  return make(std::integral_constant<int, 1>(), number);
+                case 2:
+                  return make(std::integral_constant<int, 2>(), number);
+                case 3:
+                  return make(std::integral_constant<int, 3>(), number);
+                default:
+                  return make(std::integral_constant<int, 4>(), number);
+              }
         };
         return single_precision ? with_degree(float()) : with_degree(double());
       }
+
+
+      template std::unique_ptr<CellMultigridSolver<2>>
+      make_cell_multigrid_solver<2>(const unsigned int,
+                                    const bool,
+                                    std::shared_ptr<MultigridCache> &,
+                                    const dealii::DoFHandler<2> &,
+                                    const dealii::AffineConstraints<double> &,
+                                    const LevelConstraintDescription<2> &,
+                                    const StiffnessOverBox<2> &,
+                                    dealii::TimerOutput &);
+      template std::unique_ptr<CellMultigridSolver<3>>
+      make_cell_multigrid_solver<3>(const unsigned int,
+                                    const bool,
+                                    std::shared_ptr<MultigridCache> &,
+                                    const dealii::DoFHandler<3> &,
+                                    const dealii::AffineConstraints<double> &,
+                                    const LevelConstraintDescription<3> &,
+                                    const StiffnessOverBox<3> &,
+                                    dealii::TimerOutput &);
     } // namespace internal
   }   // namespace homogenization
 } // namespace tribodyn

@@ -1,5 +1,5 @@
-// Geometric multigrid for the cell problems (issue #19 item 4): a
-// matrix-free plane-strain elasticity operator on the pixel hierarchy,
+// Geometric multigrid for the cell problems (issue #19 item 4, #51): a
+// matrix-free elasticity operator on the pixel (voxel) hierarchy,
 // Chebyshev smoothing and a direct solve on the coarsest mesh, as the
 // preconditioner of CG. Private to the homogenization sources.
 #ifndef tribodyn_source_homogenization_cell_multigrid_h
@@ -13,7 +13,8 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <functional>
 #include <memory>
-#include <tribodyn/homogenization/effective_properties.h>
+#include <tribodyn/homogenization/cell_problem.h>
+#include <utility>
 #include <vector>
 
 namespace tribodyn
@@ -24,26 +25,27 @@ namespace tribodyn
     {
       /// The constraints of a boundary condition, on every level: zero
       /// fluctuation on the whole boundary (KUBC) and pinned components of
-      /// single vertices (SUBC). (Periodic problems are solved with AMG.)
+      /// single vertices (SUBC; vertices of the coarsest mesh, so on every
+      /// level). (Periodic problems are solved with AMG.)
+      template <int dim>
       struct LevelConstraintDescription
       {
         bool zero_boundary = false;
-        struct Pin
-        {
-          dealii::Point<2>          point;
-          std::vector<unsigned int> components;
-        };
-        std::vector<Pin> pins;
+        /// The pinned vertices and their components.
+        std::vector<std::pair<dealii::Point<dim>, std::vector<unsigned int>>>
+          pins;
         /// Distance below which a vertex is the pinned point.
         double tolerance = 0;
       };
 
-      /// Plane-strain Voigt stiffness averaged over a rectangle of the
-      /// cell (lower-left and upper-right corners): the coefficient of a
-      /// cell on any level of the hierarchy.
+      /// Voigt stiffness averaged over a box of the cell (lower and upper
+      /// corners): the coefficient of a cell on any level of the
+      /// hierarchy.
+      template <int dim>
       using StiffnessOverBox
-        = std::function<VoigtMatrix(const dealii::Point<2> &lower,
-                                    const dealii::Point<2> &upper)>;
+        = std::function<dealii::Tensor<2, CellTraits<dim>::n_voigt>(
+          const dealii::Point<dim> &,
+          const dealii::Point<dim> &)>;
 
       /**
        * CG preconditioned by a geometric multigrid V-cycle, for one set of
@@ -53,9 +55,11 @@ namespace tribodyn
        * refinement hierarchy, with the coefficient of a coarse cell the
        * arithmetic mean of the fine cells it covers; Chebyshev smoothing
        * (degree 3) around point Jacobi; the coarsest level solved directly
-       * (Amesos KLU). Bilinear elements take a fast path: one 8 x 8 element
-       * matrix per distinct stiffness, applied cell by cell.
+       * (Amesos KLU). Multilinear elements take a fast path: one element
+       * matrix (8 x 8 in 2D, 24 x 24 in 3D) per distinct stiffness,
+       * applied cell by cell.
        */
+      template <int dim>
       class CellMultigridSolver
       {
       public:
@@ -66,7 +70,8 @@ namespace tribodyn
         /// for the macroscopic stress Sigma. Returns the norm of the
         /// unassembled element loads (the scale of the CG tolerance).
         virtual double
-        assemble_rhs(const VoigtVector &load, const bool strain_driven)
+        assemble_rhs(const dealii::Tensor<1, CellTraits<dim>::n_voigt> &load,
+                     const bool strain_driven)
           = 0;
 
         /// Solve for the last assembled right-hand side; @p solution gets
@@ -87,21 +92,22 @@ namespace tribodyn
         virtual ~MultigridCache() = default;
       };
 
-      /// The solver for elements of degree @p fe_degree (1 to 4) on
-      /// @p dof_handler (multigrid DoFs distributed), with the active
-      /// level's @p constraints and the description of the same
+      /// The solver for elements of degree @p fe_degree (1 to 4 in 2D, 1 in
+      /// 3D) on @p dof_handler (multigrid DoFs distributed), with the
+      /// active level's @p constraints and the description of the same
       /// constraints on the levels; the V-cycle in single precision when
       /// @p single_precision (CG in double either way). @p cache is filled
       /// by the first call and reused by the next ones on the same DoFs.
-      std::unique_ptr<CellMultigridSolver>
+      template <int dim>
+      std::unique_ptr<CellMultigridSolver<dim>>
       make_cell_multigrid_solver(
         const unsigned int                       fe_degree,
         const bool                               single_precision,
         std::shared_ptr<MultigridCache>         &cache,
-        const dealii::DoFHandler<2>             &dof_handler,
+        const dealii::DoFHandler<dim>           &dof_handler,
         const dealii::AffineConstraints<double> &constraints,
-        const LevelConstraintDescription        &level_constraints,
-        const StiffnessOverBox                  &stiffness,
+        const LevelConstraintDescription<dim>   &level_constraints,
+        const StiffnessOverBox<dim>             &stiffness,
         dealii::TimerOutput                     &timer);
     } // namespace internal
   }   // namespace homogenization

@@ -1,7 +1,7 @@
-// The matrix-free plane-strain elasticity operator of the cell problems'
-// geometric multigrid (issue #19 item 4): the general FEEvaluation kernel
-// and the bilinear fast path. Private to source/homogenization/
-// cell_multigrid.cc.
+// The matrix-free elasticity operator of the cell problems' geometric
+// multigrid (issue #19 item 4; 3D: issue #51), for dim = 2 (plane strain)
+// and 3: the general FEEvaluation kernel and the fast path of multilinear
+// elements. Private to source/homogenization/cell_multigrid.cc.
 #ifndef tribodyn_source_homogenization_cell_multigrid_operator_h
 #define tribodyn_source_homogenization_cell_multigrid_operator_h
 
@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <deal.II/base/vectorization.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -20,6 +21,7 @@
 #include <deal.II/matrix_free/tools.h>
 #include <map>
 #include <memory>
+#include <tribodyn/homogenization/volume_properties.h>
 #include <vector>
 
 namespace tribodyn
@@ -45,30 +47,57 @@ namespace tribodyn
       namespace types               = dealii::types;
       namespace Utilities           = dealii::Utilities;
 
+      /// The Voigt index of the shear of the plane of axes (@p i, @p j),
+      /// i != j: xy in 2D; yz, xz, xy in 3D.
+      template <int dim>
+      constexpr unsigned int
+      voigt_shear(const unsigned int i, const unsigned int j)
+      {
+        return dim == 2 ? 2 : 3 + (3 - i - j);
+      }
+
       /**
-       * Plane-strain elasticity, int eps(v) : C eps(u), with one constant
-       * stiffness per cell: on the active mesh or on one level of the
-       * hierarchy (whichever MatrixFree object it is initialized with).
-       * C is symmetric: its six distinct entries are stored per cell
-       * batch (C00, C01, C02, C11, C12, C22 of the Voigt matrix acting on
-       * (eps_xx, eps_yy, gamma_xy)). @p Number: double on the active
-       * mesh (CG's operator), float on the levels (the V-cycle).
+       * Elasticity, int eps(v) : C eps(u), with one constant stiffness per
+       * cell: on the active mesh or on one level of the hierarchy
+       * (whichever MatrixFree object it is initialized with). C is
+       * symmetric: the n (n + 1) / 2 entries C_ij, i <= j, of its n x n
+       * Voigt matrix (n = 3 in 2D, 6 in 3D) are stored per cell batch, row
+       * by row (in 2D C00, C01, C02, C11, C12, C22 acting on (eps_xx,
+       * eps_yy, gamma_xy)). @p Number: double on the active mesh (CG's
+       * operator), float on the levels (the V-cycle).
        */
-      template <int degree, typename Number>
+      template <int dim, int degree, typename Number>
       class ElasticityOperator
           : public MatrixFreeOperators::
-              Base<2, LinearAlgebra::distributed::Vector<Number>>
+              Base<dim, LinearAlgebra::distributed::Vector<Number>>
       {
       public:
+        static constexpr unsigned int n_voigt = CellTraits<dim>::n_voigt;
         using VectorType = LinearAlgebra::distributed::Vector<Number>;
         using Scalar     = VectorizedArray<Number>;
-        using Tensor2    = SymmetricTensor<2, 2, Scalar>;
-        using FEEval     = FEEvaluation<2, degree, degree + 1, 2, Number>;
-        using Stiffness  = std::array<Scalar, 6>;
+        using Tensor2    = SymmetricTensor<2, dim, Scalar>;
+        using FEEval     = FEEvaluation<dim, degree, degree + 1, dim, Number>;
+        using Stiffness  = std::array<Scalar, n_voigt *(n_voigt + 1) / 2>;
+        /// Multilinear elements take the tabulated fast path (below).
+        static constexpr bool         fast_path  = degree == 1;
+        static constexpr unsigned int n_vertices = 1u << dim;
+        /// DoFs of a multilinear element: 8 in 2D, 24 in 3D.
+        static constexpr unsigned int n_dofs = dim * n_vertices;
+        /// The entries C_ij (i <= j) of a Voigt stiffness.
+        using StiffnessEntries = std::array<double, n_voigt *(n_voigt + 1) / 2>;
+        template <typename T>
+        using ElementMatrix = std::array<T, n_dofs * n_dofs>;
+
+        /// Index of C_ij in a Stiffness.
+        static constexpr unsigned int
+        entry(const unsigned int i, const unsigned int j)
+        {
+          return i <= j ? i * n_voigt - i * (i - 1) / 2 + (j - i) : entry(j, i);
+        }
 
         /// Evaluate @p stiffness on the box of every cell.
         void
-        set_stiffness(const StiffnessOverBox &stiffness)
+        set_stiffness(const StiffnessOverBox<dim> &stiffness)
         {
           const auto &mf = *this->get_matrix_free();
           coefficient.resize(mf.n_cell_batches());
@@ -78,32 +107,50 @@ namespace tribodyn
                  ++lane)
               {
                 const auto cell = mf.get_cell_iterator(batch, lane);
-                // Vertices 0 and 3 of an axis-parallel rectangle are its
-                // lower-left and upper-right corners.
-                const VoigtMatrix C
-                  = stiffness(cell->vertex(0), cell->vertex(3));
-                Stiffness &c = coefficient[batch];
-                c[0][lane]   = C[0][0];
-                c[1][lane]   = C[0][1];
-                c[2][lane]   = C[0][2];
-                c[3][lane]   = C[1][1];
-                c[4][lane]   = C[1][2];
-                c[5][lane]   = C[2][2];
+                // The first and the last vertex of an axis-parallel box
+                // are its lower and upper corners.
+                const auto C
+                  = stiffness(cell->vertex(0), cell->vertex((1 << dim) - 1));
+                for (unsigned int i = 0; i < n_voigt; ++i)
+                  for (unsigned int j = i; j < n_voigt; ++j)
+                    coefficient[batch][entry(i, j)][lane] = C[i][j];
               }
         }
 
-        /// sigma = C eps of a Voigt strain, as a symmetric tensor.
+        /// sigma = C eps of a Voigt strain @p e (engineering shears), as a
+        /// symmetric tensor.
         static Tensor2
-        stress(const Stiffness &c,
-               const Scalar    &exx,
-               const Scalar    &eyy,
-               const Scalar    &gxy)
+        stress(const Stiffness &c, const std::array<Scalar, n_voigt> &e)
         {
-          Tensor2 s;
-          s[0][0] = c[0] * exx + c[1] * eyy + c[2] * gxy;
-          s[1][1] = c[1] * exx + c[3] * eyy + c[4] * gxy;
-          s[0][1] = c[2] * exx + c[4] * eyy + c[5] * gxy;
-          return s;
+          std::array<Scalar, n_voigt> s;
+          for (unsigned int i = 0; i < n_voigt; ++i)
+            {
+              s[i] = c[entry(i, 0)] * e[0];
+              for (unsigned int j = 1; j < n_voigt; ++j)
+                s[i] += c[entry(i, j)] * e[j];
+            }
+          Tensor2 t;
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              t[i][i] = s[i];
+              for (unsigned int j = i + 1; j < dim; ++j)
+                t[i][j] = s[voigt_shear<dim>(i, j)];
+            }
+          return t;
+        }
+
+        /// The Voigt strain of a symmetric gradient.
+        static std::array<Scalar, n_voigt>
+        voigt_strain(const Tensor2 &g)
+        {
+          std::array<Scalar, n_voigt> e;
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              e[i] = g[i][i];
+              for (unsigned int j = i + 1; j < dim; ++j)
+                e[voigt_shear<dim>(i, j)] = Number(2) * g[i][j];
+            }
+          return e;
         }
 
         /// The cell integral on the values in @p phi (also used for the
@@ -120,63 +167,61 @@ namespace tribodyn
         {
           phi.evaluate(EvaluationFlags::gradients);
           for (const unsigned int q : phi.quadrature_point_indices())
-            {
-              const Tensor2 e = phi.get_symmetric_gradient(q);
-              phi.submit_symmetric_gradient(
-                stress(c, e[0][0], e[1][1], Number(2) * e[0][1]), q);
-            }
+            phi.submit_symmetric_gradient(
+              stress(c, voigt_strain(phi.get_symmetric_gradient(q))), q);
           phi.integrate(EvaluationFlags::gradients);
         }
 
         /**
-         * Bilinear elements (degree 1) on the pixel grid: every cell of a
-         * level has the same rectangle, so its 8 x 8 element matrix
-         * depends on the cell's stiffness only. The distinct stiffnesses
-         * (the phases on the active mesh; the mixtures of coarse cells)
-         * get their element matrix once (bilinear_element_matrix(), in
-         * FEEvaluation's DoF order); the cell loop then multiplies by it:
-         * 64 multiply-adds per cell instead of the general
-         * evaluate/integrate. MatrixFree's mapping data are not needed
-         * (nor computed) for it.
+         * Multilinear elements (degree 1) on the pixel or voxel grid:
+         * every cell of a level is the same box, so its element matrix
+         * (8 x 8 in 2D, 24 x 24 in 3D) depends on the cell's stiffness
+         * only. The distinct stiffnesses (the phases on the active mesh;
+         * the mixtures of coarse cells) get their element matrix once
+         * (element_matrix(), in FEEvaluation's DoF order); the cell loop
+         * then multiplies by it: n^2 multiply-adds per cell instead of the
+         * general evaluate/integrate. MatrixFree's mapping data are not
+         * needed (nor computed) for it.
          */
         void
         tabulate_element_matrices(const AffineConstraints<Number> &constraints)
         {
-          if constexpr (degree == 1)
+          if constexpr (fast_path)
             {
               const auto &mf = *this->get_matrix_free();
-              std::map<std::array<double, 6>, unsigned int> index_of;
-              std::vector<unsigned int>                     matrix_of_cell;
+              std::map<StiffnessEntries, unsigned int> index_of;
+              std::vector<unsigned int>                matrix_of_cell;
               element_matrices.clear();
               element_stiffness.clear();
-              {
-                const auto cell = mf.get_cell_iterator(0, 0);
-                cell_size       = {{cell->vertex(3)[0] - cell->vertex(0)[0],
-                                    cell->vertex(3)[1] - cell->vertex(0)[1]}};
-              }
+              // (a rank may own no cell of the coarsest levels)
+              if (mf.n_cell_batches() > 0)
+                {
+                  const auto cell = mf.get_cell_iterator(0, 0);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    cell_size[d]
+                      = cell->vertex(n_vertices - 1)[d] - cell->vertex(0)[d];
+                }
               for (unsigned int batch = 0; batch < mf.n_cell_batches(); ++batch)
                 for (unsigned int lane = 0;
                      lane < mf.n_active_entries_per_cell_batch(batch);
                      ++lane)
                   {
-                    std::array<double, 6> key;
-                    for (unsigned int k = 0; k < 6; ++k)
+                    StiffnessEntries key;
+                    for (unsigned int k = 0; k < key.size(); ++k)
                       key[k] = coefficient[batch][k][lane];
                     const auto [it, inserted]
                       = index_of.emplace(key, element_matrices.size());
                     if (inserted)
                       {
-                        const auto             K = bilinear_element_matrix(key);
-                        std::array<Number, 64> k;
-                        for (unsigned int i = 0; i < 64; ++i)
+                        const auto            K = element_matrix(key);
+                        ElementMatrix<Number> k;
+                        for (unsigned int i = 0; i < K.size(); ++i)
                           k[i] = Number(K[i]);
                         element_matrices.push_back(k);
                         element_stiffness.push_back(key);
                       }
                     matrix_of_cell.push_back(it->second);
                   }
-              AssertThrow(element_matrices.size() < (1u << 24),
-                          ExcMessage("too many distinct cell stiffnesses"));
               tabulate_cell_dofs(constraints, matrix_of_cell);
               // the locally owned constrained DoFs: identity rows
               const auto &partitioner = *mf.get_vector_partitioner();
@@ -189,58 +234,88 @@ namespace tribodyn
         }
 
         /**
-         * The 8 x 8 stiffness matrix (row-major) of a bilinear element of
-         * the size cell_size with the plane-strain stiffness @p c (C00,
-         * C01, C02, C11, C12, C22), by 2 x 2 Gauss quadrature as
-         * FEEvaluation integrates it, in FEEvaluation's DoF order 4
-         * component + vertex (vertices lexicographic): K = sum_q w_q B_q^T
-         * C B_q, B = [[dN/dx, 0], [0, dN/dy], [dN/dy, dN/dx]].
+         * The element stiffness matrix (row-major) of a multilinear element
+         * of the size cell_size with the stiffness @p c (the entries C_ij,
+         * i <= j), by 2^dim-point Gauss quadrature as FEEvaluation
+         * integrates it, in FEEvaluation's DoF order 2^dim component +
+         * vertex (vertices lexicographic, x fastest): K = sum_q w_q B_q^T C
+         * B_q, with the Voigt strain B of the shape functions: dN_v/dx_c
+         * on the normal strain c of component c, and on the shear of the
+         * plane (i, j) dN_v/dx_j for component i and dN_v/dx_i for
+         * component j. dN_v/dx_d = (+-1 / h_d) times the product over the
+         * other axes e of (xi_e or 1 - xi_e), multiplied in the order of
+         * the axes.
          */
-        std::array<double, 64>
-        bilinear_element_matrix(const std::array<double, 6> &c) const
+        ElementMatrix<double>
+        element_matrix(const StiffnessEntries &c) const
         {
-          const double C[3][3]
-            = {{c[0], c[1], c[2]}, {c[1], c[3], c[4]}, {c[2], c[4], c[5]}};
-          const double hx = cell_size[0], hy = cell_size[1];
+          double C[n_voigt][n_voigt];
+          for (unsigned int a = 0; a < n_voigt; ++a)
+            for (unsigned int b = 0; b < n_voigt; ++b)
+              C[a][b] = c[entry(a, b)];
           const double g[2]
             = {0.5 - 0.5 / std::sqrt(3.), 0.5 + 0.5 / std::sqrt(3.)};
-          std::array<double, 64> K{};
-          for (const double xi : g)
-            for (const double eta : g)
-              {
-                double B[3][8] = {};
-                for (unsigned int v = 0; v < 4; ++v)
-                  {
-                    const unsigned int vx = v & 1, vy = v >> 1;
-                    const double       dx
-                      = (vx ? 1. : -1.) / hx * (vy ? eta : 1 - eta);
-                    const double dy = (vx ? xi : 1 - xi) * (vy ? 1. : -1.) / hy;
-                    B[0][v]         = dx;
-                    B[2][v]         = dy;
-                    B[1][4 + v]     = dy;
-                    B[2][4 + v]     = dx;
-                  }
-                const double w = 0.25 * hx * hy;
-                for (unsigned int i = 0; i < 8; ++i)
-                  for (unsigned int j = 0; j < 8; ++j)
+          double w = 1. / n_vertices;
+          for (unsigned int d = 0; d < dim; ++d)
+            w *= cell_size[d];
+          ElementMatrix<double> K{};
+          // the quadrature points, x slowest
+          for (unsigned int q = 0; q < n_vertices; ++q)
+            {
+              double xi[dim];
+              for (unsigned int d = 0; d < dim; ++d)
+                xi[d] = g[(q >> (dim - 1 - d)) & 1];
+              double B[n_voigt][n_dofs] = {};
+              for (unsigned int v = 0; v < n_vertices; ++v)
+                {
+                  // the factors from x to z, left to right: in 2D
+                  // (+-1 / h_x) (eta or 1 - eta) and (xi or 1 - xi) (+-1) /
+                  // h_y
+                  double grad[dim];
+                  for (unsigned int d = 0; d < dim; ++d)
+                    for (unsigned int e = 0; e < dim; ++e)
+                      {
+                        const double sign = ((v >> e) & 1) ? 1. : -1.;
+                        const double factor
+                          = ((v >> e) & 1) ? xi[e] : 1 - xi[e];
+                        if (e == 0)
+                          grad[d] = e == d ? sign / cell_size[e] : factor;
+                        else
+                          grad[d] = e == d ? grad[d] * sign / cell_size[e]
+                                           : grad[d] * factor;
+                      }
+                  for (unsigned int i = 0; i < dim; ++i)
                     {
-                      double sum = 0;
-                      for (unsigned int a = 0; a < 3; ++a)
-                        for (unsigned int b = 0; b < 3; ++b)
-                          sum += B[a][i] * C[a][b] * B[b][j];
-                      K[8 * i + j] += w * sum;
+                      B[i][n_vertices * i + v] = grad[i];
+                      for (unsigned int j = i + 1; j < dim; ++j)
+                        {
+                          B[voigt_shear<dim>(i, j)][n_vertices * i + v]
+                            = grad[j];
+                          B[voigt_shear<dim>(i, j)][n_vertices * j + v]
+                            = grad[i];
+                        }
                     }
-              }
+                }
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                for (unsigned int j = 0; j < n_dofs; ++j)
+                  {
+                    double sum = 0;
+                    for (unsigned int a = 0; a < n_voigt; ++a)
+                      for (unsigned int b = 0; b < n_voigt; ++b)
+                        sum += B[a][i] * C[a][b] * B[b][j];
+                    K[n_dofs * i + j] += w * sum;
+                  }
+            }
           return K;
         }
 
         /**
          * Degree 1: the DoFs of every cell (CellIndices) in FEEvaluation's
-         * order 4 c + v (component-major, vertices in lexicographic order;
-         * FESystem numbers them vertex by vertex, 2 v + c, so that the two
-         * components of a vertex are consecutive, also as vector-local
-         * indices: both owned or both ghosts of the same rank), with its
-         * element matrix @p matrix_of_cell. Constrained DoFs (all
+         * order 2^dim c + v (component-major, vertices in lexicographic
+         * order; FESystem numbers them vertex by vertex, dim v + c, so
+         * that the components of a vertex are consecutive, also as
+         * vector-local indices: all owned or all ghosts of the same rank),
+         * with its element matrix @p matrix_of_cell. Constrained DoFs (all
          * homogeneous here: boundary and pins) are read as zero and not
          * written, as MatrixFree does.
          */
@@ -252,7 +327,7 @@ namespace tribodyn
           const auto        &partitioner = *mf.get_vector_partitioner();
           const unsigned int level       = mf.get_mg_level();
           cells.clear();
-          std::vector<types::global_dof_index> dofs(8);
+          std::vector<types::global_dof_index> dofs(n_dofs);
           for (unsigned int batch = 0; batch < mf.n_cell_batches(); ++batch)
             for (unsigned int lane = 0;
                  lane < mf.n_active_entries_per_cell_batch(batch);
@@ -266,17 +341,16 @@ namespace tribodyn
                 CellIndices cell_indices;
                 cell_indices.matrix      = matrix_of_cell[cells.size()];
                 cell_indices.constrained = 0;
-                for (unsigned int v = 0; v < 4; ++v)
+                for (unsigned int v = 0; v < n_vertices; ++v)
                   {
                     const unsigned int x
-                      = partitioner.global_to_local(dofs[2 * v]);
-                    AssertThrow(partitioner.global_to_local(dofs[2 * v + 1])
-                                  == x + 1,
-                                ExcInternalError());
+                      = partitioner.global_to_local(dofs[dim * v]);
                     cell_indices.vertex[v] = x;
-                    for (unsigned int c = 0; c < 2; ++c)
+                    for (unsigned int c = 0; c < dim; ++c)
                       {
-                        const auto dof = dofs[2 * v + c];
+                        const auto dof = dofs[dim * v + c];
+                        AssertThrow(partitioner.global_to_local(dof) == x + c,
+                                    ExcInternalError());
                         AssertThrow(
                           !constraints.is_constrained(dof)
                             || constraints.is_identity_constrained(dof)
@@ -284,7 +358,8 @@ namespace tribodyn
                                 && constraints.get_inhomogeneity(dof) == 0),
                           ExcInternalError());
                         if (constraints.is_constrained(dof))
-                          cell_indices.constrained |= 1u << (4 * c + v);
+                          cell_indices.constrained |= 1u
+                                                      << (n_vertices * c + v);
                       }
                   }
                 cells.push_back(cell_indices);
@@ -293,30 +368,33 @@ namespace tribodyn
 
         /// Right-hand side of a unit load (see CellMultigridSolver).
         double
-        assemble_rhs(VectorType        &rhs,
-                     const VoigtVector &load,
-                     const bool         strain_driven) const
+        assemble_rhs(VectorType                       &rhs,
+                     const dealii::Tensor<1, n_voigt> &load,
+                     const bool                        strain_driven) const
         {
           const auto &mf = *this->get_matrix_free();
           mf.initialize_dof_vector(rhs);
-          if constexpr (degree == 1)
+          if constexpr (fast_path)
             return assemble_rhs_bilinear(rhs, load, strain_driven);
-          FEEval phi(mf);
-          double scale = 0;
+          FEEval                      phi(mf);
+          double                      scale = 0;
+          std::array<Scalar, n_voigt> l;
+          for (unsigned int i = 0; i < n_voigt; ++i)
+            l[i] = Number(load[i]);
           for (unsigned int batch = 0; batch < mf.n_cell_batches(); ++batch)
             {
               phi.reinit(batch);
-              const Scalar l0 = Number(load[0]), l1 = Number(load[1]),
-                           l2 = Number(load[2]);
               Tensor2 s;
               if (strain_driven)
-                s = -stress(coefficient[batch], l0, l1, l2);
+                s = -stress(coefficient[batch], l);
               else
-                {
-                  s[0][0] = l0;
-                  s[1][1] = l1;
-                  s[0][1] = l2;
-                }
+                // the stress tensor of the Voigt stress l
+                for (unsigned int i = 0; i < dim; ++i)
+                  {
+                    s[i][i] = l[i];
+                    for (unsigned int j = i + 1; j < dim; ++j)
+                      s[i][j] = l[voigt_shear<dim>(i, j)];
+                  }
               for (const unsigned int q : phi.quadrature_point_indices())
                 phi.submit_symmetric_gradient(s, q);
               phi.integrate(EvaluationFlags::gradients);
@@ -342,40 +420,49 @@ namespace tribodyn
          * per distinct element matrix.
          */
         double
-        assemble_rhs_bilinear(VectorType        &rhs,
-                              const VoigtVector &load,
-                              const bool         strain_driven) const
+        assemble_rhs_bilinear(VectorType                       &rhs,
+                              const dealii::Tensor<1, n_voigt> &load,
+                              const bool strain_driven) const
         {
-          std::vector<std::array<double, 8>> loads(element_matrices.size());
+          std::vector<std::array<double, n_dofs>> loads(
+            element_matrices.size());
           for (unsigned int m = 0; m < element_matrices.size(); ++m)
             {
-              VoigtVector strain = load;
+              dealii::Tensor<1, n_voigt> strain = load;
               if (!strain_driven)
                 {
-                  const auto &c = element_stiffness[m];
-                  VoigtMatrix C;
-                  C[0][0] = c[0];
-                  C[0][1] = C[1][0] = c[1];
-                  C[0][2] = C[2][0] = c[2];
-                  C[1][1]           = c[3];
-                  C[1][2] = C[2][1] = c[4];
-                  C[2][2]           = c[5];
-                  strain            = invert(C) * load;
+                  const auto                &c = element_stiffness[m];
+                  dealii::Tensor<2, n_voigt> C;
+                  for (unsigned int a = 0; a < n_voigt; ++a)
+                    for (unsigned int b = 0; b < n_voigt; ++b)
+                      C[a][b] = c[entry(a, b)];
+                  if constexpr (dim == 2)
+                    strain = invert(C) * load;
+                  else
+                    strain = invert6(C) * load;
                 }
-              double u[8];
-              for (unsigned int v = 0; v < 4; ++v)
-                {
-                  const double x = (v & 1) * cell_size[0];
-                  const double y = (v >> 1) * cell_size[1];
-                  u[v]           = strain[0] * x + 0.5 * strain[2] * y;
-                  u[4 + v]       = 0.5 * strain[2] * x + strain[1] * y;
-                }
+              // u_c = sum_d eps_cd x_d at the vertices, eps_cd = gamma_cd/2
+              double u[n_dofs];
+              for (unsigned int v = 0; v < n_vertices; ++v)
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    double sum = 0;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      {
+                        const double e
+                          = c == d ? strain[c]
+                                   : 0.5 * strain[voigt_shear<dim>(c, d)];
+                        const double x = ((v >> d) & 1) * cell_size[d];
+                        sum            = d == 0 ? e * x : sum + e * x;
+                      }
+                    u[n_vertices * c + v] = sum;
+                  }
               const double sign = strain_driven ? -1. : 1.;
-              for (unsigned int i = 0; i < 8; ++i)
+              for (unsigned int i = 0; i < n_dofs; ++i)
                 {
                   double sum = 0;
-                  for (unsigned int j = 0; j < 8; ++j)
-                    sum += double(element_matrices[m][8 * i + j]) * u[j];
+                  for (unsigned int j = 0; j < n_dofs; ++j)
+                    sum += double(element_matrices[m][n_dofs * i + j]) * u[j];
                   loads[m][i] = sign * sum;
                 }
             }
@@ -383,7 +470,7 @@ namespace tribodyn
           for (const CellIndices &cell : cells)
             {
               const auto &f = loads[cell.matrix];
-              for (unsigned int i = 0; i < 8; ++i)
+              for (unsigned int i = 0; i < n_dofs; ++i)
                 {
                   scale += f[i] * f[i];
                   if (!cell.is_constrained(i))
@@ -398,7 +485,7 @@ namespace tribodyn
         void
         compute_diagonal() override
         {
-          if constexpr (degree == 1)
+          if constexpr (fast_path)
             {
               // The diagonal of the assembled operator from the element
               // matrices' diagonals.
@@ -408,10 +495,10 @@ namespace tribodyn
                 = this->inverse_diagonal_entries->get_vector();
               this->initialize_dof_vector(diagonal);
               for (const CellIndices &cell : cells)
-                for (unsigned int i = 0; i < 8; ++i)
+                for (unsigned int i = 0; i < n_dofs; ++i)
                   if (!cell.is_constrained(i))
                     diagonal.local_element(cell.dof(i))
-                      += element_matrices[cell.matrix][9 * i];
+                      += element_matrices[cell.matrix][(n_dofs + 1) * i];
               diagonal.compress(VectorOperation::add);
               for (const unsigned int k : constrained_owned)
                 diagonal.local_element(k) = 1;
@@ -437,7 +524,7 @@ namespace tribodyn
         void
         apply_add(VectorType &dst, const VectorType &src) const override
         {
-          if constexpr (degree == 1)
+          if constexpr (fast_path)
             apply_add_bilinear(dst, src);
           else
             this->data->cell_loop(&ElasticityOperator::cell_range,
@@ -449,9 +536,9 @@ namespace tribodyn
         /// Degree 1: gather, multiply by the cell's element matrix,
         /// scatter; ghost values exchanged as MatrixFree's cell loop does.
         /// The product y = sum_j x_j K(:, j) (K is symmetric: its rows are
-        /// its columns) is eight multiply-adds of 8-vectors, which the
-        /// compiler vectorizes; constrained DoFs read 0 and are not
-        /// written.
+        /// its columns) is n multiply-adds of n-vectors, in chunks of eight
+        /// Numbers that the compiler vectorizes; constrained DoFs read 0
+        /// and are not written.
         void
         apply_add_bilinear(VectorType &dst, const VectorType &src) const
         {
@@ -464,36 +551,37 @@ namespace tribodyn
           // eight Numbers in one SIMD register (GCC's vector extension)
           typedef Number Column
             __attribute__((vector_size(8 * sizeof(Number))));
+          constexpr unsigned int n_chunks = n_dofs / 8;
           for (const CellIndices &cell : cells)
             {
-              Number x[8];
+              Number x[n_dofs];
               if (cell.constrained == 0) // all but the boundary's cells
-                for (unsigned int v = 0; v < 4; ++v)
-                  {
-                    x[v]     = in[cell.vertex[v]];
-                    x[4 + v] = in[cell.vertex[v] + 1];
-                  }
+                for (unsigned int v = 0; v < n_vertices; ++v)
+                  for (unsigned int c = 0; c < dim; ++c)
+                    x[n_vertices * c + v] = in[cell.vertex[v] + c];
               else
-                for (unsigned int i = 0; i < 8; ++i)
+                for (unsigned int i = 0; i < n_dofs; ++i)
                   x[i] = cell.is_constrained(i) ? Number(0) : in[cell.dof(i)];
-              const Number *K = element_matrices[cell.matrix].data();
-              Column        y = {};
-              for (unsigned int j = 0; j < 8; ++j)
-                {
-                  Column column;
-                  std::memcpy(&column, K + 8 * j, sizeof(Column));
-                  y += column * x[j];
-                }
-              if (cell.constrained == 0)
-                for (unsigned int v = 0; v < 4; ++v)
+              const Number *K           = element_matrices[cell.matrix].data();
+              Column        y[n_chunks] = {};
+              for (unsigned int j = 0; j < n_dofs; ++j)
+                for (unsigned int b = 0; b < n_chunks; ++b)
                   {
-                    out[cell.vertex[v]] += y[v];
-                    out[cell.vertex[v] + 1] += y[4 + v];
+                    Column column;
+                    std::memcpy(&column,
+                                K + n_dofs * j + 8 * b,
+                                sizeof(Column));
+                    y[b] += column * x[j];
                   }
+              if (cell.constrained == 0)
+                for (unsigned int v = 0; v < n_vertices; ++v)
+                  for (unsigned int c = 0; c < dim; ++c)
+                    out[cell.vertex[v] + c]
+                      += y[(n_vertices * c + v) / 8][(n_vertices * c + v) % 8];
               else
-                for (unsigned int i = 0; i < 8; ++i)
+                for (unsigned int i = 0; i < n_dofs; ++i)
                   if (!cell.is_constrained(i))
-                    out[cell.dof(i)] += y[i];
+                    out[cell.dof(i)] += y[i / 8][i % 8];
             }
           // constrained rows: the identity (the MatrixFree objects hold
           // no constraints, see MultigridCache)
@@ -505,7 +593,7 @@ namespace tribodyn
         }
 
         void
-        cell_range(const MatrixFree<2, Number>                 &data,
+        cell_range(const MatrixFree<dim, Number>               &data,
                    VectorType                                  &dst,
                    const VectorType                            &src,
                    const std::pair<unsigned int, unsigned int> &range) const
@@ -524,38 +612,38 @@ namespace tribodyn
         /// Degree 1: the distinct element matrices (row-major), and per
         /// locally owned cell (in the order of the cell batches and their
         /// lanes) its matrix and its DoFs.
-        std::vector<std::array<Number, 64>> element_matrices;
+        std::vector<ElementMatrix<Number>> element_matrices;
         /// Degree 1: a locally owned cell's DoFs and element matrix.
         struct CellIndices
         {
           /// vector-local index of component 0 at each vertex (component
-          /// 1 is the next one)
-          std::array<unsigned int, 4> vertex;
+          /// c is the c-th next one)
+          std::array<unsigned int, n_vertices> vertex;
           /// index of its element matrix
-          unsigned int matrix : 24;
-          /// bit 4 c + v: DoF (c, v) constrained
-          unsigned int constrained : 8;
+          unsigned int matrix;
+          /// bit 2^dim c + v: DoF (c, v) constrained
+          std::uint32_t constrained;
 
           bool
           is_constrained(const unsigned int i) const
           {
             return (constrained >> i) & 1u;
           }
-          /// vector-local index of DoF i = 4 c + v
+          /// vector-local index of DoF i = 2^dim c + v
           unsigned int
           dof(const unsigned int i) const
           {
-            return vertex[i % 4] + i / 4;
+            return vertex[i % n_vertices] + i / n_vertices;
           }
         };
         std::vector<CellIndices> cells;
         /// Degree 1: vector-local indices of the locally owned
         /// constrained DoFs.
         std::vector<unsigned int> constrained_owned;
-        /// The six stiffness entries of each element matrix, and the
-        /// cells' size along x and y.
-        std::vector<std::array<double, 6>> element_stiffness;
-        std::array<double, 2>              cell_size = {{0, 0}};
+        /// The stiffness entries of each element matrix, and the cells'
+        /// size along each axis.
+        std::vector<StiffnessEntries> element_stiffness;
+        std::array<double, dim>       cell_size = {};
       };
 
 

@@ -21,11 +21,13 @@ namespace tribodyn
     using internal::for_each_owned_cell_integral;
 
 
+    template <int dim>
     void
-    CellProblem::write_fields(const BoundaryCondition              bc,
-                              const unsigned int                   load_case,
-                              const TrilinosWrappers::MPI::Vector &solution,
-                              const std::string &output_directory) const
+    CellProblem<dim>::write_fields(
+      const BoundaryCondition              bc,
+      const unsigned int                   load_case,
+      const TrilinosWrappers::MPI::Vector &solution,
+      const std::string                   &output_directory) const
     {
       TimerOutput::Scope scope(timer, "output");
       const bool         strain_driven = bc != BoundaryCondition::subc;
@@ -81,7 +83,7 @@ namespace tribodyn
           cell_data[8][k]      = cell->material_id();
         });
 
-      DataOut<2> data_out;
+      DataOut<dim> data_out;
       data_out.attach_dof_handler(dof_handler);
       const std::vector<
         DataComponentInterpretation::DataComponentInterpretation>
@@ -103,7 +105,7 @@ namespace tribodyn
       for (unsigned int i = 0; i < 9; ++i)
         data_out.add_data_vector(cell_data[i],
                                  names[i],
-                                 DataOut<2>::type_cell_data);
+                                 DataOut<dim>::type_cell_data);
       data_out.build_patches();
       DataOutBase::VtkFlags flags;
       flags.time = load_case;
@@ -138,8 +140,10 @@ namespace tribodyn
     }
 
 
+    template <int dim>
     void
-    CellProblem::write_material_map(const std::string &output_directory) const
+    CellProblem<dim>::write_material_map(
+      const std::string &output_directory) const
     {
       TimerOutput::Scope scope(timer, "output");
       Vector<float>      ids(triangulation.n_active_cells());
@@ -150,10 +154,12 @@ namespace tribodyn
             ids[cell->active_cell_index()]   = cell->material_id();
             ranks[cell->active_cell_index()] = cell->subdomain_id();
           }
-      DataOut<2> data_out;
+      DataOut<dim> data_out;
       data_out.attach_triangulation(triangulation);
-      data_out.add_data_vector(ids, "material_id", DataOut<2>::type_cell_data);
-      data_out.add_data_vector(ranks, "mpi_rank", DataOut<2>::type_cell_data);
+      data_out.add_data_vector(ids,
+                               "material_id",
+                               DataOut<dim>::type_cell_data);
+      data_out.add_data_vector(ranks, "mpi_rank", DataOut<dim>::type_cell_data);
       data_out.build_patches();
       DataOutBase::VtkFlags flags;
       flags.compression_level = DataOutBase::VtkFlags::best_speed;
@@ -162,5 +168,17 @@ namespace tribodyn
                                                "morphology.vtu"),
                                      mpi_communicator);
     }
+
+    // The field output is that of plane strain (the 3D fields are still to
+    // come, issue #51 item 6).
+    template void
+    CellProblem<2>::write_fields(const BoundaryCondition,
+                                 const unsigned int,
+                                 const TrilinosWrappers::MPI::Vector &,
+                                 const std::string &) const;
+    template void
+    CellProblem<2>::write_material_map(const std::string &) const;
+    template void
+    CellProblem<3>::write_material_map(const std::string &) const;
   } // namespace homogenization
 } // namespace tribodyn

@@ -1,6 +1,13 @@
+// The cell problems of 2D morphologies and 3D voxel volumes (declared in
+// cell_problem.h): their parameters, the mesh and the DoFs, the
+// constraints of each boundary condition and the solve of one condition.
+// The assembly and the averages are in cell_assembly.cc, the solvers in
+// cell_solvers.cc, the field output in cell_output.cc.
 #include "cell_integrals.h"
 #include "cell_multigrid.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature.h>
@@ -178,22 +185,76 @@ namespace tribodyn
     }
 
 
-    CellProblem::CellProblem(const MPI_Comm                   comm,
-                             const Morphology                &morphology,
-                             const std::vector<ElasticPhase> &phases,
-                             const CellProblemParameters     &parameters,
-                             TimerOutput                     &timer)
+    ParameterBinding
+    VolumeCellProblemParameters::binding()
+    {
+      ParameterBinding b("Cell problem");
+      add_boundary_conditions_entry(b, boundary_conditions);
+      add_cg_entries(b, solver_tolerance, max_iterations);
+      b.add("Preconditioner",
+            preconditioner,
+            "Preconditioner of CG: 'multigrid' (KUBC and SUBC: geometric "
+            "multigrid on the voxel hierarchy, matrix-free, one 24 x 24 "
+            "element matrix per distinct cell stiffness; its KUBC "
+            "iteration counts do not grow with the volume; 2-3 times "
+            "faster than AMG in a third to a tenth of its memory, "
+            "doc/performance.md) or 'AMG' (Trilinos ML on the assembled "
+            "matrix, the six rigid-body modes as near-null space). Periodic "
+            "conditions always use AMG, and so do volumes whose coarsest "
+            "mesh (the voxel counts halved while all three are even) keeps "
+            "more than 50000 DoFs.",
+            preconditioner_choices);
+      b.add("Multigrid precision",
+            multigrid_precision,
+            "Floating-point precision of the multigrid V-cycle (levels, "
+            "smoother, transfer; the coarsest level is factorized in double "
+            "and CG always runs in double): 'single' halves the memory "
+            "traffic and the memory of the levels, 'double' as in 2D.",
+            precision_choices);
+      return b;
+    }
+
+
+    void
+    VolumeCellProblemParameters::declare_parameters(ParameterHandler &prm)
+    {
+      VolumeCellProblemParameters().binding().declare(prm);
+    }
+
+
+    void
+    VolumeCellProblemParameters::parse_parameters(ParameterHandler &prm)
+    {
+      binding().parse(prm);
+    }
+
+
+    // @sect3{The mesh and the DoFs}
+    //
+    // The elements are the pixels (or voxels) of the geometry, subdivided
+    // in 2D by 'Subdivisions per pixel'. p4est keeps one tree per coarse
+    // cell, and multigrid needs a hierarchy of levels: the coarse mesh is
+    // the element grid halved while all its counts are even (a 128^3
+    // volume is one tree), refined back L times, and in 2D 'Global
+    // refinements' times more.
+
+    template <int dim>
+    CellProblem<dim>::CellProblem(const MPI_Comm              comm,
+                                  const Geometry             &geometry,
+                                  const std::vector<Phase>   &phases,
+                                  const CellSolverParameters &parameters,
+                                  TimerOutput                &timer)
         : mpi_communicator(comm)
-        , morphology(morphology)
+        , geometry(geometry)
         , phases(phases)
         , parameters(parameters)
         , timer(timer)
         , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
         , triangulation(comm,
-                        Triangulation<2>::none,
+                        Triangulation<dim>::none,
                         parallel::distributed::Triangulation<
-                          2>::construct_multigrid_hierarchy)
-        , fe(FE_Q<2>(parameters.fe_degree), 2)
+                          dim>::construct_multigrid_hierarchy)
+        , fe(FE_Q<dim>(parameters.fe_degree), dim)
         , dof_handler(triangulation)
     {
       setup_mesh(parameters.boundary_conditions.front()
@@ -201,75 +262,104 @@ namespace tribodyn
       setup_dofs();
       if (parameters.preconditioner == CellPreconditioner::multigrid
           && !uses_multigrid())
-        pcout << "Note: the coarsest mesh of the multigrid hierarchy would "
-              << "have " << n_coarse_cells[0] << " x " << n_coarse_cells[1]
-              << " elements (" << n_coarse_dofs() << " DoFs > "
-              << max_coarse_dofs << "): the element counts along x and y "
-              << "have too few common factors of 2. Using AMG instead; "
-              << "pixel counts divisible by a power of 2 (or 'Subdivisions "
-              << "per pixel' = 2, 4, ...) allow multigrid." << std::endl;
+        {
+          pcout << "Note: the coarsest mesh of the multigrid hierarchy would "
+                << "have ";
+          for (unsigned int d = 0; d < dim; ++d)
+            pcout << (d > 0 ? " x " : "") << n_coarse_cells[d];
+          pcout << " elements (" << n_coarse_dofs() << " DoFs > "
+                << max_coarse_dofs << "): the element counts along "
+                << (dim == 2 ? "x and y" : "x, y and z")
+                << " have too few common factors of 2. Using AMG instead; "
+                << (dim == 2 ? "pixel counts divisible by a power of 2 (or "
+                               "'Subdivisions per pixel' = 2, 4, ...)"
+                             : "voxel counts divisible by a power of 2")
+                << " allow multigrid." << std::endl;
+        }
     }
 
 
+    template <int dim>
     void
-    CellProblem::setup_mesh(const bool periodic)
+    CellProblem<dim>::setup_mesh(const bool periodic)
     {
       TimerOutput::Scope scope(timer, "mesh and dofs");
       triangulation.clear();
-      // The elements of 'Subdivisions per pixel' are the pixel grid
-      // refined; the coarse mesh halves it while both counts are even, so
-      // that multigrid finds a hierarchy of L levels down to it.
-      n_coarse_cells
-        = {{morphology.n_pixels_x() * parameters.subdivisions_per_pixel,
-            morphology.n_pixels_y() * parameters.subdivisions_per_pixel}};
-      n_pixel_levels = 0;
-      while (n_coarse_cells[0] % 2 == 0 && n_coarse_cells[1] % 2 == 0)
+      for (unsigned int d = 0; d < dim; ++d)
+        n_coarse_cells[d] = Traits::n_elements(geometry, parameters, d);
+      n_element_levels = 0;
+      while (std::all_of(n_coarse_cells.begin(),
+                         n_coarse_cells.end(),
+                         [](const unsigned int n) { return n % 2 == 0; }))
         {
-          n_coarse_cells[0] /= 2;
-          n_coarse_cells[1] /= 2;
-          ++n_pixel_levels;
+          for (unsigned int &n : n_coarse_cells)
+            n /= 2;
+          ++n_element_levels;
         }
-      GridGenerator::subdivided_hyper_rectangle(
-        triangulation,
-        {n_coarse_cells[0], n_coarse_cells[1]},
-        Point<2>(0, 0),
-        Point<2>(morphology.width(), morphology.height()),
-        /*colorize = */ true);
+      Point<dim>                upper;
+      std::vector<unsigned int> repetitions(dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          upper[d]       = Traits::extent(geometry, d);
+          repetitions[d] = n_coarse_cells[d];
+        }
+      GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                                repetitions,
+                                                Point<dim>(),
+                                                upper,
+                                                /*colorize = */ true);
       // Periodic constraints on a distributed mesh need the ghost layer to
       // reach across the periodic faces. Registered only for the periodic
-      // problem: multigrid takes the periodicity of the triangulation into
-      // the constraints of every level.
+      // problem: multigrid would take the periodicity of the triangulation
+      // into the constraints of every level.
       mesh_is_periodic = periodic;
       if (periodic)
         {
           std::vector<GridTools::PeriodicFacePair<
-            parallel::distributed::Triangulation<2>::cell_iterator>>
+            typename parallel::distributed::Triangulation<dim>::cell_iterator>>
             pairs;
-          GridTools::collect_periodic_faces(triangulation, 0, 1, 0, pairs);
-          GridTools::collect_periodic_faces(triangulation, 2, 3, 1, pairs);
+          for (unsigned int d = 0; d < dim; ++d)
+            GridTools::collect_periodic_faces(
+              triangulation, 2 * d, 2 * d + 1, d, pairs);
           triangulation.add_periodicity(pairs);
         }
-      triangulation.refine_global(n_pixel_levels
+      triangulation.refine_global(n_element_levels
                                   + parameters.global_refinements);
-      // Each element lies in one pixel: its material is that of its centre.
+      // Each element lies in one pixel (voxel): its material is that of its
+      // centre.
       for (const auto &cell : triangulation.active_cell_iterators())
         if (!cell->is_artificial())
-          cell->set_material_id(morphology.material_at(cell->center()));
+          cell->set_material_id(Traits::material_at(geometry, cell->center()));
     }
 
 
-    std::array<double, 2>
-    CellProblem::element_size() const
+    template <int dim>
+    std::array<double, dim>
+    CellProblem<dim>::element_size() const
     {
       const unsigned int refinements
-        = n_pixel_levels + parameters.global_refinements;
-      return {{morphology.width() / (n_coarse_cells[0] << refinements),
-               morphology.height() / (n_coarse_cells[1] << refinements)}};
+        = n_element_levels + parameters.global_refinements;
+      std::array<double, dim> h;
+      for (unsigned int d = 0; d < dim; ++d)
+        h[d] = Traits::extent(geometry, d) / (n_coarse_cells[d] << refinements);
+      return h;
     }
 
 
+    template <int dim>
+    double
+    CellProblem<dim>::measure() const
+    {
+      double m = Traits::extent(geometry, 0);
+      for (unsigned int d = 1; d < dim; ++d)
+        m *= Traits::extent(geometry, d);
+      return m;
+    }
+
+
+    template <int dim>
     void
-    CellProblem::setup_dofs()
+    CellProblem<dim>::setup_dofs()
     {
       TimerOutput::Scope scope(timer, "mesh and dofs");
       multigrid_cache.reset(); // its objects refer to the old DoFs
@@ -284,84 +374,97 @@ namespace tribodyn
     }
 
 
+    template <int dim>
     unsigned int
-    CellProblem::n_coarse_dofs() const
+    CellProblem<dim>::n_coarse_dofs() const
     {
-      return 2 * (n_coarse_cells[0] * parameters.fe_degree + 1)
-             * (n_coarse_cells[1] * parameters.fe_degree + 1);
+      unsigned int n = dim;
+      for (unsigned int d = 0; d < dim; ++d)
+        n *= n_coarse_cells[d] * parameters.fe_degree + 1;
+      return n;
     }
 
 
+    template <int dim>
     bool
-    CellProblem::uses_multigrid() const
+    CellProblem<dim>::uses_multigrid() const
     {
       return parameters.preconditioner == CellPreconditioner::multigrid
              && n_coarse_dofs() <= max_coarse_dofs;
     }
 
 
+    template <int dim>
     bool
-    CellProblem::uses_multigrid(const BoundaryCondition bc) const
+    CellProblem<dim>::uses_multigrid(const BoundaryCondition bc) const
     {
       // deal.II 9.4's matrix-free level transfer does not carry the
       // periodicity constraints between levels (CG took 759 iterations
-      // where KUBC took 8): periodic problems keep AMG.
+      // where KUBC took 8 in 2D): periodic problems keep AMG.
       return uses_multigrid() && bc != BoundaryCondition::periodic;
     }
 
 
+    template <int dim>
     unsigned int
-    CellProblem::n_multigrid_levels() const
+    CellProblem<dim>::n_multigrid_levels() const
     {
       return uses_multigrid() ? triangulation.n_global_levels() : 0;
     }
 
 
+    template <int dim>
     types::global_dof_index
-    CellProblem::n_dofs() const
+    CellProblem<dim>::n_dofs() const
     {
       return dof_handler.n_dofs();
     }
 
 
+    template <int dim>
     types::global_cell_index
-    CellProblem::n_cells() const
+    CellProblem<dim>::n_cells() const
     {
       return triangulation.n_global_active_cells();
     }
 
 
+    template <int dim>
     std::vector<double>
-    CellProblem::phase_fractions() const
+    CellProblem<dim>::phase_fractions() const
     {
-      std::vector<double> area(phases.size(), 0.);
+      std::vector<double> fraction(phases.size(), 0.);
       for (const auto &cell : triangulation.active_cell_iterators())
         if (cell->is_locally_owned())
-          area[cell->material_id()] += cell->measure();
-      Utilities::MPI::sum(area, mpi_communicator, area);
-      const double total = morphology.width() * morphology.height();
-      for (double &a : area)
-        a /= total;
-      return area;
+          fraction[cell->material_id()] += cell->measure();
+      Utilities::MPI::sum(fraction, mpi_communicator, fraction);
+      const double total = measure();
+      for (double &f : fraction)
+        f /= total;
+      return fraction;
     }
 
 
-    VoigtVector
-    CellProblem::unit_load(const unsigned int load_case)
+    template <int dim>
+    typename CellProblem<dim>::Voigt
+    CellProblem<dim>::unit_load(const unsigned int load_case)
     {
-      VoigtVector load;
+      Voigt load;
       load[load_case] = 1.;
       return load;
     }
 
 
+    // @sect3{The constraints of the boundary conditions}
+
     namespace
     {
       /// Constrain component(s) @p components of the vertex at @p point to
       /// zero, on every rank that sees that vertex.
+      template <int dim>
       void
-      pin_vertex(const DoFHandler<2>             &dof_handler,
-                 const Point<2>                  &point,
+      pin_vertex(const DoFHandler<dim>           &dof_handler,
+                 const Point<dim>                &point,
                  const std::vector<unsigned int> &components,
                  const double                     tolerance,
                  const IndexSet                  &locally_relevant_dofs,
@@ -380,14 +483,14 @@ namespace tribodyn
                       constraints.add_line(dof);
                   }
       }
-
-
     } // namespace
 
 
-    std::vector<std::pair<Point<2>, std::vector<unsigned int>>>
-    CellProblem::pinned_vertices(const BoundaryCondition bc) const
+    template <int dim>
+    std::vector<std::pair<Point<dim>, std::vector<unsigned int>>>
+    CellProblem<dim>::pinned_vertices(const BoundaryCondition bc) const
     {
+      std::vector<std::pair<Point<dim>, std::vector<unsigned int>>> pins;
       switch (bc)
         {
           case BoundaryCondition::periodic:
@@ -397,46 +500,63 @@ namespace tribodyn
               // with AMG: the vertex need not exist on coarser levels.)
               const auto         h = element_size();
               const unsigned int refinements
-                = n_pixel_levels + parameters.global_refinements;
-              return {
-                {Point<2>(((n_coarse_cells[0] << refinements) / 2) * h[0],
-                          ((n_coarse_cells[1] << refinements) / 2) * h[1]),
-                 {0, 1}}};
+                = n_element_levels + parameters.global_refinements;
+              Point<dim>                centre;
+              std::vector<unsigned int> all(dim);
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  centre[d] = ((n_coarse_cells[d] << refinements) / 2) * h[d];
+                  all[d]    = d;
+                }
+              pins.push_back({centre, all});
+              break;
             }
           case BoundaryCondition::subc:
-            // Pure traction problem: remove the rigid motions by fixing the
-            // bottom-left corner and the vertical displacement of the
-            // bottom-right one. The load is self-equilibrated, so these
-            // supports carry no force.
-            return {{Point<2>(0, 0), {0, 1}},
-                    {Point<2>(morphology.width(), 0), {1}}};
+            {
+              // Pure traction problem: remove the rigid motions by fixing
+              // the corner at the origin, the components but x of the
+              // corner along x, and in 3D the z component of the corner
+              // along y (vertices of the coarsest mesh, on every multigrid
+              // level). The load is self-equilibrated, so these supports
+              // carry no force.
+              std::vector<unsigned int> components(dim);
+              for (unsigned int d = 0; d < dim; ++d)
+                components[d] = d;
+              pins.push_back({Point<dim>(), components});
+              for (unsigned int axis = 0; axis + 1 < dim; ++axis)
+                {
+                  Point<dim> corner;
+                  corner[axis] = Traits::extent(geometry, axis);
+                  components.erase(components.begin());
+                  pins.push_back({corner, components});
+                }
+              break;
+            }
           case BoundaryCondition::kubc:
             break;
         }
-      return {};
+      return pins;
     }
 
 
+    template <int dim>
     void
-    CellProblem::make_constraints(const BoundaryCondition bc)
+    CellProblem<dim>::make_constraints(const BoundaryCondition bc)
     {
       constraints.clear();
       constraints.reinit(locally_relevant_dofs);
       const auto   h         = element_size();
-      const double tolerance = 1e-3 * std::min(h[0], h[1]);
+      const double tolerance = 1e-3 * *std::min_element(h.begin(), h.end());
 
       if (bc == BoundaryCondition::kubc)
         // Fluctuation w = 0 on the whole boundary.
-        for (const types::boundary_id id : {0, 1, 2, 3})
+        for (types::boundary_id id = 0; id < 2 * dim; ++id)
           VectorTools::interpolate_boundary_values(
-            dof_handler, id, Functions::ZeroFunction<2>(2), constraints);
+            dof_handler, id, Functions::ZeroFunction<dim>(dim), constraints);
       if (bc == BoundaryCondition::periodic)
-        {
+        for (unsigned int d = 0; d < dim; ++d)
           DoFTools::make_periodicity_constraints(
-            dof_handler, 0, 1, 0, constraints);
-          DoFTools::make_periodicity_constraints(
-            dof_handler, 2, 3, 1, constraints);
-        }
+            dof_handler, 2 * d, 2 * d + 1, d, constraints);
       for (const auto &[point, components] : pinned_vertices(bc))
         pin_vertex(dof_handler,
                    point,
@@ -448,139 +568,18 @@ namespace tribodyn
     }
 
 
-    namespace
+    // @sect3{The solve of one boundary condition}
+    //
+    // The mesh with or without periodic faces, the constraints, CG with one
+    // of the two preconditioners (cell_solvers.cc), then the averages
+    // (cell_assembly.cc) and the apparent properties.
+
+    template <int dim>
+    CellResult<dim>
+    CellProblem<dim>::solve(const BoundaryCondition bc,
+                            const std::string      &output_directory)
     {
-      /// Run @p solve (a CG solve with @p control), turning Trilinos's and
-      /// deal.II's failures into errors that say what to change.
-      template <typename F>
-      void
-      run_cg(const BoundaryCondition bc,
-             const unsigned int      load_case,
-             const double            rhs_norm,
-             const F                &solve)
-      {
-        try
-          {
-            solve();
-          }
-        catch (const SolverControl::NoConvergence &e)
-          {
-            throw RunError("The " + to_string(bc) + " cell problem, load case "
-                           + std::to_string(load_case)
-                           + ", did not converge: CG reached "
-                           + std::to_string(e.last_step)
-                           + " iterations with a relative residual of "
-                           + format_number(e.last_residual / rhs_norm)
-                           + ". Raise 'Cell problem/Max iterations' or 'Cell "
-                             "problem/Solver tolerance'.");
-          }
-        catch (const ExceptionBase &e)
-          {
-            // AztecOO breakdown or loss of precision.
-            std::ostringstream info;
-            e.print_info(info);
-            throw RunError("The " + to_string(bc) + " cell problem, load case "
-                           + std::to_string(load_case)
-                           + ", failed in CG: " + info.str()
-                           + " This happens when 'Cell problem/Solver "
-                             "tolerance' is below what double precision "
-                             "can reach; raise it (1e-10 is ample).");
-          }
-      }
-    } // namespace
-
-
-    void
-    CellProblem::solve_with_multigrid(
-      const BoundaryCondition                       bc,
-      std::array<TrilinosWrappers::MPI::Vector, 3> &solutions,
-      CellProblemResult                            &result)
-    {
-      internal::LevelConstraintDescription levels;
-      levels.zero_boundary = bc == BoundaryCondition::kubc;
-      for (const auto &[point, components] : pinned_vertices(bc))
-        levels.pins.push_back({point, components});
-      const auto h     = element_size();
-      levels.tolerance = 1e-3 * std::min(h[0], h[1]);
-
-      // The coefficient of a cell on any level: the mean plane-strain
-      // stiffness of the elements (each in one pixel) it covers.
-      std::vector<VoigtMatrix> stiffness_of_phase;
-      for (const auto &phase : phases)
-        stiffness_of_phase.push_back(phase.C);
-      const auto stiffness = [&](const Point<2> &lower, const Point<2> &upper) {
-        const int   i0 = static_cast<int>(std::lround(lower[0] / h[0]));
-        const int   i1 = static_cast<int>(std::lround(upper[0] / h[0]));
-        const int   j0 = static_cast<int>(std::lround(lower[1] / h[1]));
-        const int   j1 = static_cast<int>(std::lround(upper[1] / h[1]));
-        VoigtMatrix sum;
-        for (int j = j0; j < j1; ++j)
-          for (int i = i0; i < i1; ++i)
-            sum += stiffness_of_phase[morphology.material_at(
-              Point<2>((i + 0.5) * h[0], (j + 0.5) * h[1]))];
-        return VoigtMatrix(sum / double((i1 - i0) * (j1 - j0)));
-      };
-
-      const auto solver
-        = internal::make_cell_multigrid_solver(parameters.fe_degree,
-                                               parameters.multigrid_precision
-                                                 == MultigridPrecision::single,
-                                               multigrid_cache,
-                                               dof_handler,
-                                               constraints,
-                                               levels,
-                                               stiffness,
-                                               timer);
-      for (unsigned int load_case = 0; load_case < 3; ++load_case)
-        {
-          TimerOutput::Scope scope(timer, "CG solve");
-          const double       rhs_norm
-            = solver->assemble_rhs(unit_load(load_case),
-                                   bc != BoundaryCondition::subc);
-          SolverControl control(parameters.max_iterations,
-                                parameters.solver_tolerance * rhs_norm,
-                                /*log_history = */ false,
-                                /*log_result = */ false);
-          run_cg(bc, load_case, rhs_norm, [&]() {
-            solver->solve(control, solutions[load_case]);
-          });
-          result.load_cases[load_case].cg_iterations = control.last_step();
-        }
-    }
-
-
-    void
-    CellProblem::solve_with_amg(
-      const BoundaryCondition                       bc,
-      std::array<TrilinosWrappers::MPI::Vector, 3> &solutions,
-      CellProblemResult                            &result)
-    {
-      assemble(bc);
-      setup_preconditioner();
-      for (unsigned int load_case = 0; load_case < 3; ++load_case)
-        {
-          TimerOutput::Scope         scope(timer, "CG solve");
-          const double               rhs_norm = load_scale[load_case];
-          SolverControl              control(parameters.max_iterations,
-                                parameters.solver_tolerance * rhs_norm,
-                                /*log_history = */ false,
-                                /*log_result = */ false);
-          TrilinosWrappers::SolverCG cg(control);
-          run_cg(bc, load_case, rhs_norm, [&]() {
-            cg.solve(system_matrix,
-                     solutions[load_case],
-                     system_rhs[load_case],
-                     preconditioner);
-          });
-          result.load_cases[load_case].cg_iterations = control.last_step();
-        }
-    }
-
-
-    CellProblemResult
-    CellProblem::solve(const BoundaryCondition bc,
-                       const std::string      &output_directory)
-    {
+      const auto start = std::chrono::steady_clock::now();
       // The periodic problem needs the periodic faces registered in the
       // mesh, the others must not see them (multigrid would carry the
       // periodicity into their levels).
@@ -590,13 +589,16 @@ namespace tribodyn
           setup_dofs();
         }
       make_constraints(bc);
+      if constexpr (tabulated_elements)
+        tabulate_elements(bc);
 
-      CellProblemResult result;
+      CellResult<dim> result;
       result.boundary_condition = bc;
-      std::array<TrilinosWrappers::MPI::Vector, 3> solutions;
+      result.multigrid          = uses_multigrid(bc);
+      Solutions solutions;
       for (auto &solution : solutions)
         solution.reinit(locally_owned_dofs, mpi_communicator);
-      if (uses_multigrid(bc))
+      if (result.multigrid)
         solve_with_multigrid(bc, solutions, result);
       else
         solve_with_amg(bc, solutions, result);
@@ -604,8 +606,8 @@ namespace tribodyn
       {
         TimerOutput::Scope scope(timer, "averages and fields");
         // the fields with their ghosts, as deal.II vectors (local access)
-        std::array<LinearAlgebra::distributed::Vector<double>, 3> fields;
-        for (unsigned int load_case = 0; load_case < 3; ++load_case)
+        Fields fields;
+        for (unsigned int load_case = 0; load_case < n_voigt; ++load_case)
           {
             auto &field = fields[load_case];
             field.reinit(locally_owned_dofs,
@@ -619,25 +621,46 @@ namespace tribodyn
             field.update_ghost_values();
           }
         const auto averages = postprocess(bc, fields);
-        for (unsigned int load_case = 0; load_case < 3; ++load_case)
+        for (unsigned int load_case = 0; load_case < n_voigt; ++load_case)
           {
             const unsigned int iterations
               = result.load_cases[load_case].cg_iterations;
             result.load_cases[load_case]               = averages[load_case];
             result.load_cases[load_case].cg_iterations = iterations;
-            if (!output_directory.empty())
-              {
-                constraints.distribute(solutions[load_case]);
-                TrilinosWrappers::MPI::Vector ghosted(locally_owned_dofs,
-                                                      locally_relevant_dofs,
-                                                      mpi_communicator);
-                ghosted = solutions[load_case];
-                write_fields(bc, load_case, ghosted, output_directory);
-              }
+            if constexpr (dim == 2)
+              if (!output_directory.empty())
+                {
+                  constraints.distribute(solutions[load_case]);
+                  TrilinosWrappers::MPI::Vector ghosted(locally_owned_dofs,
+                                                        locally_relevant_dofs,
+                                                        mpi_communicator);
+                  ghosted = solutions[load_case];
+                  write_fields(bc, load_case, ghosted, output_directory);
+                }
           }
       }
 
-      // Apparent properties: columns of C (strain-driven) or of S (SUBC).
+      result.properties = apparent_properties(bc, result);
+      result.wall_time  = std::chrono::duration<double>(
+                           std::chrono::steady_clock::now() - start)
+                           .count();
+      return result;
+    }
+
+
+    // @sect3{The apparent properties}
+    //
+    // The averages of the strain-driven load cases are the columns of the
+    // apparent stiffness C, those of SUBC the columns of the apparent
+    // compliance S. In plane strain the averaged sigma_zz gives the row c_z
+    // as well: under SUBC <sigma_zz> = zz . Sigma and <eps> = S Sigma, so
+    // <sigma_zz> = (C^T zz) . <eps>.
+
+    template <>
+    ApparentProperties
+    CellProblem<2>::apparent_properties(const BoundaryCondition bc,
+                                        const CellResult<2>    &result)
+    {
       VoigtMatrix M;
       VoigtVector zz;
       for (unsigned int j = 0; j < 3; ++j)
@@ -650,68 +673,30 @@ namespace tribodyn
         }
       if (bc == BoundaryCondition::subc)
         {
-          // <sigma_zz> = zz . Sigma and <eps> = S Sigma, so
-          // <sigma_zz> = (C^T zz) . <eps>.
           const VoigtMatrix C = invert(M);
-          result.properties   = properties_from_stiffness(C, transpose(C) * zz);
+          return properties_from_stiffness(C, transpose(C) * zz);
         }
-      else
-        result.properties = properties_from_stiffness(M, zz);
-      return result;
+      return properties_from_stiffness(M, zz);
     }
 
 
-    std::array<LoadCaseResult, 3>
-    CellProblem::postprocess(
-      const BoundaryCondition bc,
-      const std::array<LinearAlgebra::distributed::Vector<double>, 3>
-        &solutions) const
+    template <>
+    VolumeProperties
+    CellProblem<3>::apparent_properties(const BoundaryCondition bc,
+                                        const CellResult<3>    &result)
     {
-      const bool               strain_driven = bc != BoundaryCondition::subc;
-      std::vector<VoigtVector> macro_strains;
-      std::vector<const LinearAlgebra::distributed::Vector<double> *> fields;
-      for (unsigned int load_case = 0; load_case < 3; ++load_case)
-        {
-          macro_strains.push_back(strain_driven ? unit_load(load_case)
-                                                : VoigtVector());
-          fields.push_back(&solutions[load_case]);
-        }
-
-      // Sums per load case: stress (3), strain (3), sigma_zz (1).
-      std::vector<double> sums(21, 0.);
-      for_each_owned_cell_integral(dof_handler,
-                                   fe,
-                                   parameters.fe_degree,
-                                   phases,
-                                   fields,
-                                   macro_strains,
-                                   [&](const auto &,
-                                       const unsigned int   load_case,
-                                       const CellIntegrals &integrals) {
-                                     double *s = &sums[7 * load_case];
-                                     for (unsigned int i = 0; i < 3; ++i)
-                                       {
-                                         s[i] += integrals.stress[i];
-                                         s[3 + i] += integrals.strain[i];
-                                       }
-                                     s[6] += integrals.stress_zz;
-                                   });
-      Utilities::MPI::sum(sums, mpi_communicator, sums);
-      const double area = morphology.width() * morphology.height();
-      std::array<LoadCaseResult, 3> r;
-      for (unsigned int load_case = 0; load_case < 3; ++load_case)
-        {
-          const double *s = &sums[7 * load_case];
-          for (unsigned int i = 0; i < 3; ++i)
-            {
-              r[load_case].mean_stress[i] = s[i] / area;
-              r[load_case].mean_strain[i] = s[3 + i] / area;
-            }
-          r[load_case].mean_stress_zz = s[6] / area;
-        }
-      return r;
+      const bool   strain_driven = bc != BoundaryCondition::subc;
+      VoigtMatrix6 M;
+      for (unsigned int j = 0; j < 6; ++j)
+        for (unsigned int i = 0; i < 6; ++i)
+          M[i][j] = strain_driven ? result.load_cases[j].mean_stress[i]
+                                  : result.load_cases[j].mean_strain[i];
+      return strain_driven ? volume_properties_from_stiffness(M)
+                           : volume_properties_from_compliance(M);
     }
 
 
+    template class CellProblem<2>;
+    template class CellProblem<3>;
   } // namespace homogenization
 } // namespace tribodyn

@@ -1,3 +1,5 @@
+#include "moduli_table.h"
+
 #include <algorithm>
 #include <chrono>
 #include <deal.II/base/conditional_ostream.h>
@@ -9,6 +11,7 @@
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/homogenization/homogenization_problem.h>
+#include <tuple>
 
 namespace tribodyn
 {
@@ -260,32 +263,21 @@ namespace tribodyn
             << std::setw(10) << "kappa" << std::setw(10) << "mu"
             << std::setw(12) << "anisotropy"
             << "\n";
-      const auto row
-        = [&](const std::string &label, const PlaneModuli &m, const double a) {
-            table << std::left << std::setw(10) << label << std::right
-                  << std::fixed << std::setprecision(3) << std::setw(10)
-                  << m.kappa / 1e9 << std::setw(10) << m.mu / 1e9;
-            if (a >= 0)
-              table << std::setw(12) << std::setprecision(4) << a;
-            table << "\n";
-          };
-      for (const auto &r : results)
-        {
-          const PlaneModuli m = isotropic_projection(r.properties.C);
-          const double      a = anisotropy(r.properties.C);
-          row(to_string(r.boundary_condition), m, a);
-          auto &entry         = summary[to_string(r.boundary_condition)];
-          entry["kappa"]      = m.kappa;
-          entry["mu"]         = m.mu;
-          entry["anisotropy"] = a;
-        }
+      const auto row = [&](const std::string &label, const PlaneModuli &m) {
+        internal::write_moduli_row(table, label, m.kappa, m.mu);
+      };
+      internal::write_result_rows(
+        table, summary, results, "kappa", [](const VoigtMatrix &C) {
+          const PlaneModuli m = isotropic_projection(C);
+          return std::tuple(m.kappa, m.mu, anisotropy(C));
+        });
       if (isotropic)
         {
-          row("HS upper", hs.upper, -1);
-          row("HS lower", hs.lower, -1);
+          row("HS upper", hs.upper);
+          row("HS lower", hs.lower);
         }
-      row("Voigt", voigt, -1);
-      row("Reuss", reuss, -1);
+      row("Voigt", voigt);
+      row("Reuss", reuss);
     }
 
 
@@ -308,7 +300,7 @@ namespace tribodyn
                       morphology_parameters.generator
                         == MorphologyParameters::Generator::image);
 
-      CellProblem cell_problem(
+      CellProblem<2> cell_problem(
         comm, morphology, phases, cell_problem_parameters, timer);
       pcout << "Mesh: " << cell_problem.n_cells() << " cells, "
             << cell_problem.n_dofs() << " degrees of freedom, "

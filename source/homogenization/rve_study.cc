@@ -477,8 +477,9 @@ namespace tribodyn
 
       if (boundary_conditions().empty())
         return values;
-      const auto  phases = materials.phases();
-      CellProblem cell(group, window, phases, cell_problem_parameters, timer);
+      const auto     phases = materials.phases();
+      CellProblem<2> cell(
+        group, window, phases, cell_problem_parameters, timer);
       for (const BoundaryCondition bc : boundary_conditions())
         {
           const EngineeringConstants c = cell.solve(bc).properties.constants;

@@ -1,5 +1,7 @@
 // `set Problem = volume_homogenization` (issue #51): the cell problems of
 // a 3D voxel volume and their report.
+#include "moduli_table.h"
+
 #include <algorithm>
 #include <chrono>
 #include <deal.II/base/conditional_ostream.h>
@@ -12,6 +14,7 @@
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/homogenization/volume_homogenization_problem.h>
+#include <tuple>
 
 namespace tribodyn
 {
@@ -152,7 +155,7 @@ namespace tribodyn
                                 pcout,
                                 dealii::TimerOutput::summary,
                                 dealii::TimerOutput::wall_times);
-      VolumeCellProblem   cell_problem(
+      CellProblem<3>      cell_problem(
         comm, volume, stiffness, parameters.cell_problem, timer);
       pcout << "Mesh: " << volume.n_voxels(0) << " x " << volume.n_voxels(1)
             << " x " << volume.n_voxels(2) << " voxels, "
@@ -252,11 +255,11 @@ namespace tribodyn
         table << std::setw(9) << name;
       table << "\n";
 
-      std::vector<VolumeCellProblemResult> results;
+      std::vector<CellResult<3>> results;
       for (const BoundaryCondition bc :
            parameters.cell_problem.boundary_conditions)
         {
-          const VolumeCellProblemResult r = cell_problem.solve(bc);
+          const CellResult<3> r = cell_problem.solve(bc);
           results.push_back(r);
           JsonValue j          = to_json(r.properties);
           JsonValue iterations = JsonValue::array();
@@ -331,33 +334,18 @@ namespace tribodyn
             << std::left << std::setw(10) << "estimate" << std::right
             << std::setw(10) << "k" << std::setw(10) << "mu" << std::setw(12)
             << "anisotropy\n";
-      const auto row = [&](const std::string     &label,
-                           const IsotropicModuli &m,
-                           const double           a) {
-        table << std::left << std::setw(10) << label << std::right << std::fixed
-              << std::setprecision(3) << std::setw(10) << m.k / 1e9
-              << std::setw(10) << m.mu / 1e9;
-        if (a >= 0)
-          table << std::setw(12) << std::setprecision(4) << a;
-        table << "\n";
-      };
-      for (const auto &r : results)
-        {
-          const IsotropicModuli m = isotropic_projection_3d(r.properties.C);
-          const double          a = anisotropy_3d(r.properties.C);
-          row(to_string(r.boundary_condition), m, a);
-          auto &entry         = summary[to_string(r.boundary_condition)];
-          entry["k"]          = m.k;
-          entry["mu"]         = m.mu;
-          entry["anisotropy"] = a;
-        }
+      internal::write_result_rows(
+        table, summary, results, "k", [](const VoigtMatrix6 &C) {
+          const IsotropicModuli m = isotropic_projection_3d(C);
+          return std::tuple(m.k, m.mu, anisotropy_3d(C));
+        });
       JsonValue hs; // null unless every phase is isotropic
       if (isotropic)
         {
           const auto [lower, upper]
             = hashin_shtrikman_bounds_3d(moduli, fractions);
-          row("HS upper", upper, -1);
-          row("HS lower", lower, -1);
+          internal::write_moduli_row(table, "HS upper", upper.k, upper.mu);
+          internal::write_moduli_row(table, "HS lower", lower.k, lower.mu);
           hs             = JsonValue::object();
           hs["k_lower"]  = lower.k;
           hs["k_upper"]  = upper.k;

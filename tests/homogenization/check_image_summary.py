@@ -31,6 +31,8 @@ import json
 import os
 import sys
 
+from volume_tools import inverse  # the small linear algebra of 2D and 3D
+
 out = os.path.join(sys.argv[1], "output")
 with open(os.path.join(out, "summary.json")) as f:
     s = json.load(f)
@@ -64,23 +66,6 @@ if transverse:
     check(s["bounds"]["hashin_shtrikman"] is None,
           "no Hashin-Shtrikman bounds with a transversely isotropic phase")
 
-
-
-def inverse(A):
-    """Gauss-Jordan inverse of a small matrix (partial pivoting)."""
-    n = len(A)
-    M = [list(map(float, row)) + [1.0 if i == j else 0.0 for j in range(n)]
-         for i, row in enumerate(A)]
-    for c in range(n):
-        pivot = max(range(c, n), key=lambda r: abs(M[r][c]))
-        M[c], M[pivot] = M[pivot], M[c]
-        d = M[c][c]
-        M[c] = [v / d for v in M[c]]
-        for r in range(n):
-            if r != c and M[r][c] != 0:
-                f = M[r][c]
-                M[r] = [a - f * b for a, b in zip(M[r], M[c])]
-    return [row[n:] for row in M]
 
 
 def phase_stiffness(phase):

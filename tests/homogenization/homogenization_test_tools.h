@@ -74,7 +74,7 @@ namespace tribodyn_test
                               std::cout,
                               dealii::TimerOutput::never,
                               dealii::TimerOutput::wall_times);
-    CellProblem         problem(comm, morphology, phases, parameters, timer);
+    CellProblem<2>      problem(comm, morphology, phases, parameters, timer);
     if (levels)
       *levels = problem.n_multigrid_levels();
     return problem.solve(bc);

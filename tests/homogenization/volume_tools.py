@@ -1,5 +1,6 @@
-"""Small helpers of the 3D homogenization tests (issue #51): 6x6 linear
-algebra in plain Python (no numpy on the test machines), the isotropic
+"""Small helpers of the homogenization tests: linear algebra of small
+matrices in plain Python (no numpy on the test machines; the 2D checks
+take inverse() too), and for the 3D tests (issue #51) the isotropic
 stiffness, the exact laminate, raw volumes and runs of tribodyn.
 
 Voigt order (xx, yy, zz, yz, xz, xy), engineering shears, as tribodyn's

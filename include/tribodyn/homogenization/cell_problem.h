@@ -1,6 +1,8 @@
 #ifndef tribodyn_homogenization_cell_problem_h
 #define tribodyn_homogenization_cell_problem_h
 
+#include <Epetra_MultiVector.h>
+#include <algorithm>
 #include <array>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/index_set.h>
@@ -10,10 +12,12 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <memory>
 #include <string>
@@ -21,6 +25,8 @@
 #include <tribodyn/core/morphology.h>
 #include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/homogenization/effective_properties.h>
+#include <tribodyn/homogenization/volume_properties.h>
+#include <tribodyn/homogenization/voxel_volume.h>
 #include <vector>
 
 namespace tribodyn
@@ -78,16 +84,18 @@ namespace tribodyn
                    double           &solver_tolerance,
                    unsigned int     &max_iterations);
 
-    /// Parameters of the subsection "Cell problem".
-    struct CellProblemParameters
+    /// What the cell problems of both dimensions are solved with: the
+    /// entries of the subsection "Cell problem" (the 3D problem declares a
+    /// subset, VolumeCellProblemParameters).
+    struct CellSolverParameters
     {
       std::vector<BoundaryCondition> boundary_conditions
         = {BoundaryCondition::kubc, BoundaryCondition::subc};
-      /// Finite elements per pixel of the morphology along each axis.
+      /// Finite elements per pixel of the morphology along each axis (2D).
       unsigned int subdivisions_per_pixel = 1;
-      /// Global refinements of that mesh.
+      /// Global refinements of that mesh (2D).
       unsigned int global_refinements = 0;
-      /// Polynomial degree of the Lagrange elements.
+      /// Polynomial degree of the Lagrange elements (2D; 1 in 3D).
       unsigned int fe_degree = 1;
       /// Tolerance of CG: residual relative to the norm of the unassembled
       /// element loads.
@@ -95,7 +103,11 @@ namespace tribodyn
       unsigned int       max_iterations      = 2000;
       CellPreconditioner preconditioner      = CellPreconditioner::multigrid;
       MultigridPrecision multigrid_precision = MultigridPrecision::single;
+    };
 
+    /// Parameters of the subsection "Cell problem" of the 2D problem.
+    struct CellProblemParameters : CellSolverParameters
+    {
       /// The entries of "Cell problem", bound to the members above (their
       /// initial values are the defaults).
       ParameterBinding
@@ -107,54 +119,192 @@ namespace tribodyn
       parse_parameters(dealii::ParameterHandler &prm);
     };
 
-    /// Volume averages of one load case.
-    struct LoadCaseResult
+    /// Parameters of the subsection "Cell problem" of the 3D problem: one
+    /// trilinear element per voxel, so no subdivisions, refinements or
+    /// degree.
+    struct VolumeCellProblemParameters : CellSolverParameters
     {
-      VoigtVector  mean_stress;        ///< <sigma> (Pa), (xx, yy, xy)
-      VoigtVector  mean_strain;        ///< <eps>, (xx, yy, gamma_xy)
-      double       mean_stress_zz = 0; ///< <sigma_zz> (Pa), plane strain
-      unsigned int cg_iterations  = 0;
-    };
+      /// The entries of "Cell problem", bound to the members above.
+      ParameterBinding
+      binding();
 
-    /// The three load cases of one boundary condition and what follows.
-    struct CellProblemResult
-    {
-      BoundaryCondition             boundary_condition;
-      std::array<LoadCaseResult, 3> load_cases;
-      ApparentProperties            properties;
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
     };
 
     /**
-     * The cell problem of a 2D composite in plane strain: linear
-     * elasticity with one phase per material id (isotropic or
-     * transversely isotropic), three unit load
-     * cases per boundary condition. Strain-driven conditions (KUBC,
-     * periodic) solve for the fluctuation w in u = E x + w; the stress-driven
-     * one (SUBC) solves for u with the load written as the volume term
-     * int eps(v) : Sigma (equal to the boundary work of t = Sigma n).
-     * CG preconditioned by geometric multigrid (matrix-free, on the mesh's
-     * refinement hierarchy down to the coarsest mesh whose cells are
-     * 2^L pixels wide) or by ML AMG (rigid-body modes as near-null space);
-     * one preconditioner per boundary condition, reused for its three load
-     * cases.
+     * What distinguishes the cell problems of the two dimensions, and only
+     * that: the geometry (a 2D morphology of pixels, a 3D volume of
+     * voxels), how a phase gives its Voigt stiffness, and the apparent
+     * properties that the averages make. Voigt vectors have
+     * n_voigt = dim (dim + 1) / 2 entries: (xx, yy, xy) in 2D, (xx, yy, zz,
+     * yz, xz, xy) in 3D, strains with engineering shears.
      */
+    template <int dim>
+    struct CellTraits;
+
+    template <>
+    struct CellTraits<2>
+    {
+      static constexpr unsigned int n_voigt = 3;
+      using Geometry                        = Morphology;
+      /// A phase in plane strain: its in-plane stiffness C and the row c_z
+      /// of sigma_zz.
+      using Phase      = ElasticPhase;
+      using Properties = ApparentProperties;
+
+      static const VoigtMatrix &
+      stiffness(const Phase &phase)
+      {
+        return phase.C;
+      }
+      static double
+      extent(const Geometry &morphology, const unsigned int axis)
+      {
+        return axis == 0 ? morphology.width() : morphology.height();
+      }
+      /// Elements along @p axis before the global refinements.
+      static unsigned int
+      n_elements(const Geometry             &morphology,
+                 const CellSolverParameters &parameters,
+                 const unsigned int          axis)
+      {
+        return (axis == 0 ? morphology.n_pixels_x() : morphology.n_pixels_y())
+               * parameters.subdivisions_per_pixel;
+      }
+      static unsigned int
+      material_at(const Geometry &morphology, const dealii::Point<2> &p)
+      {
+        return morphology.material_at(p);
+      }
+    };
+
+    template <>
+    struct CellTraits<3>
+    {
+      static constexpr unsigned int n_voigt = 6;
+      using Geometry                        = VoxelVolume;
+      /// A phase: its 6 x 6 Voigt stiffness.
+      using Phase      = VoigtMatrix6;
+      using Properties = VolumeProperties;
+
+      static const VoigtMatrix6 &
+      stiffness(const Phase &phase)
+      {
+        return phase;
+      }
+      static double
+      extent(const Geometry &volume, const unsigned int axis)
+      {
+        return volume.length(axis);
+      }
+      static unsigned int
+      n_elements(const Geometry &volume,
+                 const CellSolverParameters &,
+                 const unsigned int axis)
+      {
+        return volume.n_voxels(axis);
+      }
+      /// The material of the voxel that holds @p p (clamped at the far
+      /// faces).
+      static unsigned int
+      material_at(const Geometry &volume, const dealii::Point<3> &p)
+      {
+        unsigned int index[3];
+        for (unsigned int d = 0; d < 3; ++d)
+          index[d]
+            = std::min(volume.n_voxels(d) - 1,
+                       static_cast<unsigned int>(p[d] / volume.voxel_size(d)));
+        return volume.voxel(index[0], index[1], index[2]);
+      }
+    };
+
+    /// Volume averages of one load case.
+    template <int dim>
+    struct CellLoadCase
+    {
+      /// <sigma> (Pa), Voigt order
+      dealii::Tensor<1, CellTraits<dim>::n_voigt> mean_stress;
+      /// <eps>, engineering shears
+      dealii::Tensor<1, CellTraits<dim>::n_voigt> mean_strain;
+      /// <sigma_zz> (Pa) of plane strain (2D only)
+      double       mean_stress_zz = 0;
+      unsigned int cg_iterations  = 0;
+    };
+
+    /// The load cases of one boundary condition (one per Voigt component)
+    /// and what follows from them.
+    template <int dim>
+    struct CellResult
+    {
+      BoundaryCondition boundary_condition;
+      std::array<CellLoadCase<dim>, CellTraits<dim>::n_voigt> load_cases;
+      typename CellTraits<dim>::Properties                    properties;
+      /// Wall time of the setup (assembly and AMG, or multigrid) and the
+      /// solves (s).
+      double wall_time = 0;
+      /// Whether CG was preconditioned by geometric multigrid (else AMG).
+      bool multigrid = false;
+    };
+
+    using LoadCaseResult          = CellLoadCase<2>;
+    using CellProblemResult       = CellResult<2>;
+    using VolumeLoadCaseResult    = CellLoadCase<3>;
+    using VolumeCellProblemResult = CellResult<3>;
+
+    /**
+     * The cell problem of a composite: linear elasticity with one phase
+     * per material id, one unit load case per Voigt component and
+     * boundary condition; in 2D in plane strain on the pixels of a
+     * morphology (elements of any degree, optionally subdivided and
+     * refined), in 3D on the voxels of a volume (one trilinear hexahedron
+     * per voxel). Strain-driven conditions (KUBC, periodic) solve for the
+     * fluctuation w in u = E x + w; the stress-driven one (SUBC) solves
+     * for u with the load written as the volume term int eps(v) : Sigma
+     * (equal to the boundary work of t = Sigma n).
+     *
+     * The implementation is split along what it does:
+     * - cell_problem.cc: the mesh (the coarsest box grid whose cells are
+     *   2^L elements wide, refined L times), the DoFs, the constraints of
+     *   each boundary condition, and solve(), which ties the rest together;
+     * - cell_assembly.cc: the element integrals, the assembled matrix and
+     *   right-hand sides of the AMG path, and the volume averages;
+     * - cell_solvers.cc: CG with ML AMG (rigid-body modes as near-null
+     *   space) or with the matrix-free geometric multigrid of
+     *   cell_multigrid.h, one preconditioner per boundary condition,
+     *   reused for its load cases;
+     * - cell_output.cc: the fields and the material map (2D).
+     */
+    template <int dim>
     class CellProblem
     {
     public:
-      CellProblem(const MPI_Comm                   comm,
-                  const Morphology                &morphology,
-                  const std::vector<ElasticPhase> &phases,
-                  const CellProblemParameters     &parameters,
-                  dealii::TimerOutput             &timer);
+      using Traits                          = CellTraits<dim>;
+      static constexpr unsigned int n_voigt = Traits::n_voigt;
+      using Voigt                           = dealii::Tensor<1, n_voigt>;
+      using VoigtMatrixType                 = dealii::Tensor<2, n_voigt>;
+      using Geometry                        = typename Traits::Geometry;
+      using Phase                           = typename Traits::Phase;
+      /// One vector per load case.
+      using Solutions
+        = std::array<dealii::TrilinosWrappers::MPI::Vector, n_voigt>;
 
-      /// Solve the three load cases of @p bc. When @p output_directory is
-      /// not empty, write the fields of each load case there
+      CellProblem(const MPI_Comm              comm,
+                  const Geometry             &geometry,
+                  const std::vector<Phase>   &phases,
+                  const CellSolverParameters &parameters,
+                  dealii::TimerOutput        &timer);
+
+      /// Solve the load cases of @p bc. When @p output_directory is not
+      /// empty (2D), write the fields of each load case there
       /// (fields_<BC>.pvd indexing fields_<BC>_<case>.vtu).
-      CellProblemResult
+      CellResult<dim>
       solve(const BoundaryCondition bc,
             const std::string      &output_directory = "");
 
-      /// Write the material map (morphology.vtu).
+      /// Write the material map (morphology.vtu; 2D).
       void
       write_material_map(const std::string &output_directory) const;
 
@@ -175,13 +325,14 @@ namespace tribodyn
       static constexpr unsigned int max_coarse_dofs = 50000;
       dealii::types::global_cell_index
       n_cells() const;
-      /// Area fraction of each material id, measured on the mesh.
+      /// Area (2D) or volume (3D) fraction of each material id, measured on
+      /// the mesh.
       std::vector<double>
       phase_fractions() const;
 
     private:
-      /// The mesh: the coarsest rectangle grid whose cells are 2^L times
-      /// the element size, refined L + 'Global refinements' times, with
+      /// The mesh: the coarsest box grid whose cells are 2^L times the
+      /// element size, refined L + 'Global refinements' times, with
       /// periodic faces registered when @p periodic.
       void
       setup_mesh(const bool periodic);
@@ -191,40 +342,54 @@ namespace tribodyn
       /// translation of periodic): for SUBC vertices of the coarsest mesh
       /// (present on every multigrid level), for periodic the interior
       /// vertex nearest to the centre.
-      std::vector<std::pair<dealii::Point<2>, std::vector<unsigned int>>>
+      std::vector<std::pair<dealii::Point<dim>, std::vector<unsigned int>>>
       pinned_vertices(const BoundaryCondition bc) const;
       /// DoFs of the coarsest mesh.
       unsigned int
       n_coarse_dofs() const;
-      /// Element size along x and y of the active mesh.
-      std::array<double, 2>
+      /// Element size along each axis of the active mesh.
+      std::array<double, dim>
       element_size() const;
-      /// Solve the three load cases with geometric multigrid: fills the
-      /// solutions and the iteration counts.
+      /// The size of the box: the product of its extents.
+      double
+      measure() const;
+      /// Solve the load cases with geometric multigrid: fills the
+      /// solutions (locally owned values) and the iteration counts.
       void
-      solve_with_multigrid(
-        const BoundaryCondition                               bc,
-        std::array<dealii::TrilinosWrappers::MPI::Vector, 3> &solutions,
-        CellProblemResult                                    &result);
+      solve_with_multigrid(const BoundaryCondition bc,
+                           Solutions              &solutions,
+                           CellResult<dim>        &result);
       /// The same with AMG on the assembled matrix.
       void
-      solve_with_amg(
-        const BoundaryCondition                               bc,
-        std::array<dealii::TrilinosWrappers::MPI::Vector, 3> &solutions,
-        CellProblemResult                                    &result);
+      solve_with_amg(const BoundaryCondition bc,
+                     Solutions              &solutions,
+                     CellResult<dim>        &result);
       void
       make_constraints(const BoundaryCondition bc);
+      /// Whether the element integrals are tabulated once per phase
+      /// (element_tables) rather than evaluated on every cell; see
+      /// cell_assembly.cc.
+      static constexpr bool tabulated_elements = dim == 3;
+      /// The element matrix and the element loads per phase, and the
+      /// strain integrals of the shape functions, when tabulated.
+      void
+      tabulate_elements(const BoundaryCondition bc);
       void
       assemble(const BoundaryCondition bc);
       void
       setup_preconditioner();
-      /// Volume averages of the three load cases, in one pass over the
-      /// cells.
-      std::array<LoadCaseResult, 3>
-      postprocess(
-        const BoundaryCondition bc,
-        const std::array<dealii::LinearAlgebra::distributed::Vector<double>, 3>
-          &solutions) const;
+      /// The solutions with their ghosts, one per load case.
+      using Fields
+        = std::array<dealii::LinearAlgebra::distributed::Vector<double>,
+                     n_voigt>;
+      using LoadCases = std::array<CellLoadCase<dim>, n_voigt>;
+      /// Volume averages of the load cases, in one pass over the cells.
+      LoadCases
+      postprocess(const BoundaryCondition bc, const Fields &solutions) const;
+      /// The apparent properties of the averages of @p result.
+      static typename Traits::Properties
+      apparent_properties(const BoundaryCondition bc,
+                          const CellResult<dim>  &result);
       void
       write_fields(const BoundaryCondition                      bc,
                    const unsigned int                           load_case,
@@ -232,43 +397,50 @@ namespace tribodyn
                    const std::string &output_directory) const;
 
       /// Macroscopic strain (strain-driven) or stress (SUBC) of a load case.
-      static VoigtVector
+      static Voigt
       unit_load(const unsigned int load_case);
 
-      MPI_Comm          mpi_communicator;
-      const Morphology &morphology;
+      MPI_Comm        mpi_communicator;
+      const Geometry &geometry;
       /// The phases by material id (a copy: callers may pass temporaries).
-      const std::vector<ElasticPhase> phases;
-      const CellProblemParameters     parameters;
-      dealii::TimerOutput            &timer;
-      dealii::ConditionalOStream      pcout;
+      const std::vector<Phase>   phases;
+      const CellSolverParameters parameters;
+      dealii::TimerOutput       &timer;
+      dealii::ConditionalOStream pcout;
 
-      /// Coarse cells along x and y, and the refinements L from the coarse
-      /// mesh to the elements of 'Subdivisions per pixel'.
-      std::array<unsigned int, 2> n_coarse_cells   = {{0, 0}};
-      unsigned int                n_pixel_levels   = 0;
-      bool                        mesh_is_periodic = false;
+      /// Coarse cells along each axis, and the refinements L from the
+      /// coarse mesh to the elements (pixels or voxels, subdivided).
+      std::array<unsigned int, dim> n_coarse_cells   = {};
+      unsigned int                  n_element_levels = 0;
+      bool                          mesh_is_periodic = false;
 
-      dealii::parallel::distributed::Triangulation<2> triangulation;
-      dealii::FESystem<2>                             fe;
-      dealii::DoFHandler<2>                           dof_handler;
-      dealii::IndexSet                                locally_owned_dofs;
-      dealii::IndexSet                                locally_relevant_dofs;
+      dealii::parallel::distributed::Triangulation<dim> triangulation;
+      dealii::FESystem<dim>                             fe;
+      dealii::DoFHandler<dim>                           dof_handler;
+      dealii::IndexSet                                  locally_owned_dofs;
+      dealii::IndexSet                                  locally_relevant_dofs;
 
-      dealii::AffineConstraints<double>                    constraints;
-      dealii::TrilinosWrappers::SparseMatrix               system_matrix;
-      std::array<dealii::TrilinosWrappers::MPI::Vector, 3> system_rhs;
+      dealii::AffineConstraints<double>      constraints;
+      dealii::TrilinosWrappers::SparseMatrix system_matrix;
+      Solutions                              system_rhs;
       /// Norm of the unassembled element loads of each load case: the
       /// scale of the CG tolerance. The assembled right-hand side cancels
       /// between elements (to round-off for a single phase), so it is no
       /// scale for the accuracy of the averages.
-      std::array<double, 3>                     load_scale;
+      std::array<double, n_voigt>               load_scale;
       dealii::TrilinosWrappers::PreconditionAMG preconditioner;
       /// Near-null space of the AMG; must outlive the preconditioner setup.
       std::unique_ptr<Epetra_MultiVector> rigid_body_modes;
       /// What the multigrid solvers of the boundary conditions share;
       /// reset with the DoFs.
       std::shared_ptr<internal::MultigridCache> multigrid_cache;
+
+      /// Tabulated elements: per phase the element matrix and the element
+      /// loads of the unit loads; the integral over the element of the
+      /// Voigt strain of each shape function (n_voigt x dofs per cell).
+      std::vector<dealii::FullMatrix<double>>                  element_matrix;
+      std::vector<std::array<dealii::Vector<double>, n_voigt>> element_load;
+      dealii::FullMatrix<double>                               strain_integral;
     };
   } // namespace homogenization
 } // namespace tribodyn

@@ -4,7 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <tribodyn/core/phase_materials.h>
 #include <tribodyn/core/problem.h>
-#include <tribodyn/homogenization/volume_cell_problem.h>
+#include <tribodyn/homogenization/cell_problem.h>
 #include <tribodyn/homogenization/voxel_volume.h>
 
 namespace tribodyn

@@ -1,0 +1,341 @@
+// The assembly of the cell problems (declared in cell_problem.h): the
+// element integrals of linear elasticity in Voigt notation, the assembled
+// matrix and right-hand sides of the AMG path, and the volume averages of
+// the solutions. The same integrals serve both dimensions; what changes
+// is where they are evaluated (see tabulated_elements below).
+#include "cell_integrals.h"
+
+#include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <tribodyn/homogenization/cell_problem.h>
+
+namespace tribodyn
+{
+  namespace homogenization
+  {
+    using namespace dealii;
+
+    // @sect3{The element integrals}
+    //
+    // With Voigt vectors the strain of a vector-valued shape function
+    // phi_i = N e_c is B_i: the normal strain eps_cc = dN/dx_c and, for
+    // each shear of the plane of axes (j, k), gamma_jk = dN/dx_k when c =
+    // j and dN/dx_j when c = k. In 2D the only shear is xy (Voigt index
+    // 2); in 3D the shear of the plane normal to axis a is at index 3 + a
+    // (yz, xz, xy).
+
+    namespace
+    {
+      template <int dim>
+      Tensor<1, CellTraits<dim>::n_voigt>
+      shape_strain(const FEValues<dim>      &fe_values,
+                   const FiniteElement<dim> &fe,
+                   const unsigned int        i,
+                   const unsigned int        q)
+      {
+        const unsigned int    c = fe.system_to_component_index(i).first;
+        const Tensor<1, dim> &g = fe_values.shape_grad(i, q);
+        Tensor<1, CellTraits<dim>::n_voigt> B;
+        B[c] = g[c];
+        for (unsigned int a = (dim == 2 ? 2 : 0); a < 3; ++a)
+          {
+            const unsigned int j = (a + 1) % 3, k = (a + 2) % 3;
+            const unsigned int shear = dim == 2 ? 2 : 3 + a;
+            if (c == j)
+              B[shear] += g[k];
+            if (c == k)
+              B[shear] += g[j];
+          }
+        return B;
+      }
+
+
+      /// Add the integrals of the element matrix int B_i . C B_j and of
+      /// the element loads of the unit loads, int B_i . (-C E_k) for the
+      /// strain-driven conditions and int B_i . Sigma_k for SUBC, over the
+      /// cell @p fe_values was reinitialized on. @p B is scratch space.
+      template <int dim, typename Voigt, typename VoigtMatrixType>
+      void
+      add_element_integrals(
+        const FEValues<dim>                                  &fe_values,
+        const FiniteElement<dim>                             &fe,
+        const VoigtMatrixType                                &C,
+        const bool                                            strain_driven,
+        std::vector<Voigt>                                   &B,
+        FullMatrix<double>                                   &matrix,
+        std::array<Vector<double>, CellTraits<dim>::n_voigt> &loads)
+      {
+        constexpr unsigned int     n_voigt = CellTraits<dim>::n_voigt;
+        const unsigned int         n       = fe.n_dofs_per_cell();
+        std::array<Voigt, n_voigt> load;
+        for (unsigned int k = 0; k < n_voigt; ++k)
+          {
+            Voigt unit;
+            unit[k] = 1.;
+            load[k] = strain_driven ? Voigt(-(C * unit)) : unit;
+          }
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const double JxW = fe_values.JxW(q);
+            for (unsigned int i = 0; i < n; ++i)
+              B[i] = shape_strain(fe_values, fe, i, q);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const Voigt CB_i = C * B[i];
+                for (unsigned int j = 0; j < n; ++j)
+                  matrix(i, j) += (CB_i * B[j]) * JxW;
+                for (unsigned int k = 0; k < n_voigt; ++k)
+                  loads[k](i) += (B[i] * load[k]) * JxW;
+              }
+          }
+      }
+    } // namespace
+
+
+    // @sect3{Tabulated elements}
+    //
+    // Every element is the same box, so its matrix and loads depend on its
+    // phase only: in 3D they are computed once per phase here (integrating
+    // a 24 x 24 matrix on each of 10^6 cells would dominate the set-up),
+    // and the averages use the integrals over the element of the strains
+    // of the shape functions. In 2D they are still evaluated on every cell
+    // (tabulated_elements is false): the results are the same to
+    // round-off, not to the bit, and the 2D results are the reference of
+    // its tests and benches.
+
+    template <int dim>
+    void
+    CellProblem<dim>::tabulate_elements(const BoundaryCondition bc)
+    {
+      const QGauss<dim> quadrature(parameters.fe_degree + 1);
+      FEValues<dim>     fe_values(fe,
+                              quadrature,
+                              update_gradients | update_JxW_values);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            break;
+          }
+      const unsigned int n = fe.n_dofs_per_cell();
+      std::vector<Voigt> B(n);
+      element_matrix.assign(phases.size(), FullMatrix<double>(n, n));
+      element_load.resize(phases.size());
+      for (unsigned int m = 0; m < phases.size(); ++m)
+        {
+          for (auto &load : element_load[m])
+            load.reinit(n);
+          add_element_integrals(fe_values,
+                                fe,
+                                Traits::stiffness(phases[m]),
+                                bc != BoundaryCondition::subc,
+                                B,
+                                element_matrix[m],
+                                element_load[m]);
+        }
+      strain_integral.reinit(n_voigt, n);
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const Voigt B_i = shape_strain(fe_values, fe, i, q);
+            for (unsigned int a = 0; a < n_voigt; ++a)
+              strain_integral(a, i) += B_i[a] * fe_values.JxW(q);
+          }
+    }
+
+
+    // @sect3{The assembled system of the AMG path}
+
+    template <int dim>
+    void
+    CellProblem<dim>::assemble(const BoundaryCondition bc)
+    {
+      TimerOutput::Scope     scope(timer, "assemble");
+      DynamicSparsityPattern dsp(locally_relevant_dofs);
+      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+      SparsityTools::distribute_sparsity_pattern(dsp,
+                                                 locally_owned_dofs,
+                                                 mpi_communicator,
+                                                 locally_relevant_dofs);
+      system_matrix.reinit(locally_owned_dofs,
+                           locally_owned_dofs,
+                           dsp,
+                           mpi_communicator);
+      for (auto &rhs : system_rhs)
+        rhs.reinit(locally_owned_dofs, mpi_communicator);
+
+      const bool         strain_driven = bc != BoundaryCondition::subc;
+      const QGauss<dim>  quadrature(parameters.fe_degree + 1);
+      FEValues<dim>      fe_values(fe,
+                              quadrature,
+                              update_gradients | update_JxW_values);
+      const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+      FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+      std::array<Vector<double>, n_voigt> cell_rhs;
+      for (auto &r : cell_rhs)
+        r.reinit(dofs_per_cell);
+      std::vector<Voigt> B(dofs_per_cell);
+      load_scale.fill(0.);
+      std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const FullMatrix<double>                  *matrix = &cell_matrix;
+            const std::array<Vector<double>, n_voigt> *loads  = &cell_rhs;
+            if constexpr (tabulated_elements)
+              {
+                matrix = &element_matrix[cell->material_id()];
+                loads  = &element_load[cell->material_id()];
+              }
+            else
+              {
+                fe_values.reinit(cell);
+                cell_matrix = 0;
+                for (auto &r : cell_rhs)
+                  r = 0;
+                add_element_integrals(fe_values,
+                                      fe,
+                                      Traits::stiffness(
+                                        phases[cell->material_id()]),
+                                      strain_driven,
+                                      B,
+                                      cell_matrix,
+                                      cell_rhs);
+              }
+            for (unsigned int k = 0; k < n_voigt; ++k)
+              load_scale[k] += (*loads)[k].norm_sqr();
+            cell->get_dof_indices(dof_indices);
+            constraints.distribute_local_to_global(
+              *matrix, (*loads)[0], dof_indices, system_matrix, system_rhs[0]);
+            // The constraints are homogeneous, so the other right-hand
+            // sides need no matrix.
+            for (unsigned int k = 1; k < n_voigt; ++k)
+              constraints.distribute_local_to_global((*loads)[k],
+                                                     dof_indices,
+                                                     system_rhs[k]);
+          }
+      system_matrix.compress(VectorOperation::add);
+      for (auto &rhs : system_rhs)
+        rhs.compress(VectorOperation::add);
+      for (double &scale : load_scale)
+        scale = std::sqrt(Utilities::MPI::sum(scale, mpi_communicator));
+    }
+
+
+    // @sect3{The volume averages}
+    //
+    // Tabulated elements: on an element of phase m, int eps = G u_K + E |K|
+    // (E = 0 for SUBC) and int sigma = C_m int eps, G the strain integrals
+    // of the shape functions. Otherwise (2D) the strains are integrated at
+    // the quadrature points of every cell, with the plane-strain sigma_zz
+    // (cell_integrals.h, shared with the field output).
+
+    template <int dim>
+    typename CellProblem<dim>::LoadCases
+    CellProblem<dim>::postprocess(const BoundaryCondition bc,
+                                  const Fields           &solutions) const
+    {
+      const bool strain_driven = bc != BoundaryCondition::subc;
+      // Sums per load case: stress, strain (n_voigt each), sigma_zz.
+      constexpr unsigned int stride = 2 * n_voigt + 1;
+      std::vector<double>    sums(stride * n_voigt, 0.);
+      if constexpr (tabulated_elements)
+        {
+          const unsigned int                   n = fe.n_dofs_per_cell();
+          std::vector<types::global_dof_index> dofs(n);
+          Vector<double>                       u(n), eps(n_voigt);
+          const auto                           h            = element_size();
+          double                               cell_measure = h[0];
+          for (unsigned int d = 1; d < dim; ++d)
+            cell_measure *= h[d];
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
+              {
+                cell->get_dof_indices(dofs);
+                const VoigtMatrixType &C
+                  = Traits::stiffness(phases[cell->material_id()]);
+                for (unsigned int k = 0; k < n_voigt; ++k)
+                  {
+                    for (unsigned int i = 0; i < n; ++i)
+                      u[i] = solutions[k][dofs[i]];
+                    strain_integral.vmult(eps, u);
+                    Voigt e;
+                    for (unsigned int a = 0; a < n_voigt; ++a)
+                      e[a] = eps[a]
+                             + (strain_driven && a == k ? cell_measure : 0.);
+                    const Voigt s   = C * e;
+                    double     *sum = &sums[stride * k];
+                    for (unsigned int a = 0; a < n_voigt; ++a)
+                      {
+                        sum[a] += s[a];
+                        sum[n_voigt + a] += e[a];
+                      }
+                  }
+              }
+        }
+      else
+        {
+          static_assert(dim == 2, "per-cell averages: plane strain only");
+          std::vector<VoigtVector> macro_strains;
+          std::vector<const LinearAlgebra::distributed::Vector<double> *>
+            fields;
+          for (unsigned int k = 0; k < n_voigt; ++k)
+            {
+              macro_strains.push_back(strain_driven ? unit_load(k) : Voigt());
+              fields.push_back(&solutions[k]);
+            }
+          internal::for_each_owned_cell_integral(
+            dof_handler,
+            fe,
+            parameters.fe_degree,
+            phases,
+            fields,
+            macro_strains,
+            [&](const auto &,
+                const unsigned int             k,
+                const internal::CellIntegrals &integrals) {
+              double *sum = &sums[stride * k];
+              for (unsigned int a = 0; a < n_voigt; ++a)
+                {
+                  sum[a] += integrals.stress[a];
+                  sum[n_voigt + a] += integrals.strain[a];
+                }
+              sum[2 * n_voigt] += integrals.stress_zz;
+            });
+        }
+      Utilities::MPI::sum(sums, mpi_communicator, sums);
+      const double total = measure();
+      LoadCases    r;
+      for (unsigned int k = 0; k < n_voigt; ++k)
+        {
+          const double *sum = &sums[stride * k];
+          for (unsigned int a = 0; a < n_voigt; ++a)
+            {
+              r[k].mean_stress[a] = sum[a] / total;
+              r[k].mean_strain[a] = sum[n_voigt + a] / total;
+            }
+          r[k].mean_stress_zz = sum[2 * n_voigt] / total;
+        }
+      return r;
+    }
+
+
+#define TRIBODYN_INSTANTIATE(dim)                                     \
+  template void CellProblem<dim>::assemble(const BoundaryCondition);  \
+  template CellProblem<dim>::LoadCases CellProblem<dim>::postprocess( \
+    const BoundaryCondition, const CellProblem<dim>::Fields &) const;
+    TRIBODYN_INSTANTIATE(2)
+    TRIBODYN_INSTANTIATE(3)
+#undef TRIBODYN_INSTANTIATE
+    template void
+    CellProblem<2>::tabulate_elements(const BoundaryCondition);
+    template void
+    CellProblem<3>::tabulate_elements(const BoundaryCondition);
+  } // namespace homogenization
+} // namespace tribodyn
