@@ -47,6 +47,30 @@ namespace tribodyn
           n *= (upper[d] - lower[d]) / a;
         return n;
       }
+
+      /// Whether @p f(plane, reach) holds for a height where the size
+      /// changes across a band's face (the levels just below and above the
+      /// plane differ; the bands are half-open: z_lower belongs to the
+      /// band), @p reach being 3 times its larger size 2^L d: the automata
+      /// within it of the plane are near the change of size
+      /// (GeometryParameters::near_size_change()).
+      template <class F>
+      bool
+      any_size_change(const GeometryParameters &g, const F &f)
+      {
+        const double eps = 1e-9 * g.automaton_size;
+        for (const GeometryParameters::SizeBand &band : g.size_bands)
+          for (const double plane : {band.z_lower, band.z_upper})
+            {
+              const unsigned int below = g.size_level(plane - eps);
+              const unsigned int above = g.size_level(plane + eps);
+              if (below != above
+                  && f(plane,
+                       3. * (1u << std::max(below, above)) * g.automaton_size))
+                return true;
+            }
+        return false;
+      }
     } // namespace
 
     // ------------------------------------------------------------------
@@ -551,33 +575,26 @@ namespace tribodyn
       if (!rough_interface || size_bands.empty())
         return;
       const auto [lowest, highest] = rough_surface_range(*this);
-      const double eps             = 1e-9 * automaton_size;
-      for (const SizeBand &band : size_bands)
-        for (const double plane : {band.z_lower, band.z_upper})
-          {
-            const unsigned int below = size_level(plane - eps);
-            const unsigned int above = size_level(plane + eps);
-            if (below == above)
-              continue;
-            const double reach
-              = (3. * (1u << std::max(below, above)) + 1.) * automaton_size;
-            if (plane + reach <= lowest || plane - reach >= highest)
-              continue;
-            throw InputError(
-              "Parameter 'Geometry/Size bands': the change of size at z = "
-              + format_number(plane) + " m is within " + format_number(reach)
-              + " m of the rough interface, whose surface spans z = "
-              + format_number(lowest) + " to " + format_number(highest)
-              + " m. The automata within 3 times the larger size of a "
-                "change of size take their contact areas from the set-up "
-                "and a contact they make later is inert (doc/theory/mca.md "
-                "section 9), so they must stay one automaton d clear of the "
-                "other body: keep every change of size below z = "
-              + format_number(lowest - reach) + " m or above "
-              + format_number(highest + reach)
-              + " m (with 'interface N M': a larger N).");
-          }
+      any_size_change(*this, [&](const double plane, const double near) {
+        const double reach = near + automaton_size;
+        if (plane + reach <= lowest || plane - reach >= highest)
+          return false;
+        throw InputError(
+          "Parameter 'Geometry/Size bands': the change of size at z = "
+          + format_number(plane) + " m is within " + format_number(reach)
+          + " m of the rough interface, whose surface spans z = "
+          + format_number(lowest) + " to " + format_number(highest)
+          + " m. The automata within 3 times the larger size of a "
+            "change of size take their contact areas from the set-up "
+            "and a contact they make later is inert (doc/theory/mca.md "
+            "section 9), so they must stay one automaton d clear of the "
+            "other body: keep every change of size below z = "
+          + format_number(lowest - reach) + " m or above "
+          + format_number(highest + reach)
+          + " m (with 'interface N M': a larger N).");
+      });
     }
+
 
     std::string
     GeometryParameters::bands_around_interface(const std::string &text) const
@@ -768,22 +785,9 @@ namespace tribodyn
                   return true;
             }
         }
-      for (const SizeBand &band : size_bands)
-        for (const double plane : {band.z_lower, band.z_upper})
-          {
-            // the levels just below and above the plane (the bands are
-            // half-open: z_lower belongs to the band)
-            const double       eps   = 1e-9 * automaton_size;
-            const unsigned int below = size_level(plane - eps);
-            const unsigned int above = size_level(plane + eps);
-            if (below == above)
-              continue;
-            const double width
-              = 3. * (1u << std::max(below, above)) * automaton_size;
-            if (std::abs(z - plane) < width)
-              return true;
-          }
-      return false;
+      return any_size_change(*this, [z](const double plane, const double near) {
+        return std::abs(z - plane) < near;
+      });
     }
   } // namespace mca
 } // namespace tribodyn
