@@ -33,6 +33,10 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "scripts"))
+import plot_tools  # noqa: E402  (read_parameters)
+
 out = sys.argv[1]
 if os.path.isdir(os.path.join(out, "output")):
     out = os.path.join(out, "output")
@@ -45,22 +49,6 @@ def check(condition, what):
     print(("PASS  " if condition else "FAIL  ") + what)
     if not condition:
         failures.append(what)
-
-
-def parameter(path, default):
-    """A value of the run's parameters.prm (subsection/entry)."""
-    section, name = path.split("/")
-    inside = False
-    with open(os.path.join(out, "parameters.prm")) as f:
-        for line in f:
-            words = line.split()
-            if words[:2] == ["subsection", section]:
-                inside = True
-            elif inside and words[:1] == ["end"]:
-                inside = False
-            elif inside and words[:1] == ["set"] and line.split("=")[0].split(None, 1)[1].strip() == name:
-                return float(line.split("=", 1)[1].split("#")[0])
-    return default
 
 
 def fft(values):
@@ -94,8 +82,9 @@ def fft(values):
 AMPLITUDE_TOLERANCE = 1e-6
 
 
-t0 = parameter("Output/Averaging start time", 0.0)
-t1 = parameter("Output/Averaging end time", -1.0)
+prm = plot_tools.read_parameters(out)
+t0 = float(prm["Output/Averaging start time"])
+t1 = float(prm["Output/Averaging end time"])
 if t1 < 0:
     t1 = math.inf
 with open(os.path.join(out, "friction.csv")) as f:
@@ -106,7 +95,7 @@ check(len(window) == summary["n_samples_averaged"],
       % (len(window), t0, t1, summary["n_samples_averaged"]))
 # the samples of the regular cadence (the run's last step, sampled at its
 # end, is off that grid unless the step count is a multiple of it)
-interval = int(parameter("Output/Sample interval", 1))
+interval = int(prm["Output/Sample interval"])
 dt = summary["dt"]
 window = [r for r in window if round(float(r["time"]) / dt) % interval == 0]
 m = len(window)
