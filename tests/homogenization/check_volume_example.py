@@ -18,8 +18,9 @@ Hashin-Shtrikman bounds on the bulk and shear moduli. Checked:
   and S = C^-1 (1e-9);
 - the time per DoF per CG iteration of each solve (issue #51 item 3)
   equal to its CG time over DoFs x iterations (1e-12), their mean over the
-  six solves between 0.1 ns and 10 us (a unit error of 10^3 fails), and
-  the six CG times within the condition's wall time;
+  six solves between 0.1 ns and 10 us (a unit error of 10^3 fails;
+  measured 0.1-0.7 us on the loaded 2-core machine), and the six CG times
+  within the condition's wall time;
 - spheres: the periodic isotropic projection (k, mu) within the
   Hashin-Shtrikman bounds of the measured fraction (the spheres are
   statistically isotropic; measured anisotropy 0.013), and that anisotropy
@@ -36,9 +37,10 @@ Hashin-Shtrikman bounds on the bulk and shear moduli. Checked:
   (morphology.raw) equals, voxel for voxel, the fibres that
   scripts/make_synthetic_images draws in it (fibre_stack(), computed here
   again: the stack read, its rows turned to y up, its pages in z, and Otsu's
-  split of the noisy grey levels, all exact); E_z above 1.3 E_x and 1.3
-  E_y for every condition (three of the four fibres run through the
-  stack).
+  split of the noisy grey levels, all exact; measured 0 of 9600 voxels
+  differ); E_z above 1.3 E_x and 1.3 E_y for every condition (three of the
+  four fibres run through the stack; measured 2.63 (KUBC), 3.11
+  (periodic), 1.65 (SUBC)).
 """
 import importlib.util
 import json
