@@ -8,7 +8,9 @@ A script imports it from its own directory:
 It reads what tribodyn writes into an output directory (CSV series,
 summary.json, parameters.prm), builds the argparse parser of a script from
 its docstring, and provides the few numerical helpers of the plots (running
-mean, padded axis limits). Only the standard library and Debian's
+mean, padded axis limits); ctest_tests() lists a build's tests for the
+scripts that check the suite (tests/check_budget.py,
+scripts/verification_audit). Only the standard library and Debian's
 python3-matplotlib.
 """
 import argparse
@@ -182,3 +184,25 @@ def read_vtu(path):
             tuple(values[i:i + n]) if n > 1 else values[i]
             for i in range(0, len(values), n))
     return result
+
+
+def ctest_tests(build_dir, ctest="ctest"):
+    """ctest's own description of the tests of BUILD_DIR (`ctest
+    --show-only=json-v1`): a list of dicts with 'name', 'command' and
+    'properties'. ctest is run on a copy of the build's CTestTestfile.cmake
+    files in a temporary folder, because any ctest run in BUILD_DIR, even
+    --show-only, replaces Testing/Temporary/LastTest.log, the log of a suite
+    that may be running there (tests_budget and docs_verification_audit run
+    inside the suite; scripts/verification_audit harvests that log)."""
+    import shutil
+    import subprocess
+    import tempfile
+    with tempfile.TemporaryDirectory() as copy:
+        for folder, _, files in os.walk(build_dir):
+            if "CTestTestfile.cmake" in files:
+                target = os.path.join(copy, os.path.relpath(folder, build_dir))
+                os.makedirs(target, exist_ok=True)
+                shutil.copy(os.path.join(folder, "CTestTestfile.cmake"), target)
+        listing = subprocess.run([ctest, "--show-only=json-v1"], cwd=copy,
+                                 check=True, capture_output=True, text=True)
+    return json.loads(listing.stdout)["tests"]

@@ -9,16 +9,17 @@ a test without a TIMEOUT property would run for ctest's default of 1500 s
 before CI notices it hangs; a name in the slow list that no test has any
 more means the list is stale (and the quick suite may have grown).
 """
-import json
-import subprocess
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "scripts"))
+import plot_tools  # noqa: E402  (ctest_tests: leaves the build's LastTest.log alone)
 
 
 def main():
     ctest, build_dir, slow_file = sys.argv[1:4]
-    listing = subprocess.run([ctest, "--show-only=json-v1"], cwd=build_dir,
-                             check=True, capture_output=True, text=True)
-    tests = json.loads(listing.stdout)["tests"]
+    tests = plot_tools.ctest_tests(build_dir, ctest)
     names = set()
     without_timeout = []
     for test in tests:

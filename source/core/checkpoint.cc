@@ -23,44 +23,46 @@
 
 namespace tribodyn
 {
+  ParameterBinding
+  CheckpointParameters::binding()
+  {
+    ParameterBinding b("Checkpoint");
+    b.add("Interval",
+          interval,
+          "Simulated time between two checkpoints of the run's state (s), "
+          "written to 'Output directory'/checkpoint/ (two slots, switched "
+          "atomically: a crash while writing leaves the previous checkpoint "
+          "usable). A checkpoint is also written at the end of the run when "
+          "the interval is > 0, and always on SIGTERM or SIGINT. 0: no "
+          "periodic checkpoints.",
+          dealii::Patterns::Double(0.));
+    b.add("Resume",
+          resume,
+          "true: continue from the latest checkpoint in 'Output directory' "
+          "(same parameters except the end time, which may be larger, and "
+          "this subsection; any number of MPI ranks: the state is "
+          "redistributed when the count changed). The CSV series are "
+          "continued without duplicate or missing rows and the run reaches "
+          "the same result as an uninterrupted one. false: start afresh "
+          "(older checkpoints of the directory are forgotten).");
+    return b;
+  }
+
+
   void
   CheckpointParameters::declare_parameters(dealii::ParameterHandler &prm)
   {
-    prm.enter_subsection("Checkpoint");
-    prm.declare_entry(
-      "Interval",
-      "0",
-      dealii::Patterns::Double(0.),
-      "Simulated time between two checkpoints of the run's state (s), "
-      "written to 'Output directory'/checkpoint/ (two slots, switched "
-      "atomically: a crash while writing leaves the previous checkpoint "
-      "usable). A checkpoint is also written at the end of the run when "
-      "the interval is > 0, and always on SIGTERM or SIGINT. 0: no "
-      "periodic checkpoints.");
-    prm.declare_entry(
-      "Resume",
-      "false",
-      dealii::Patterns::Bool(),
-      "true: continue from the latest checkpoint in 'Output directory' "
-      "(same parameters except the end time, which may be larger, and this "
-      "subsection; any number of MPI ranks: the state is redistributed "
-      "when the count changed). The CSV series are continued without "
-      "duplicate or missing rows and the run reaches the same result as an "
-      "uninterrupted one. false: start afresh (older "
-      "checkpoints of the directory are forgotten).");
-    prm.leave_subsection();
+    CheckpointParameters().binding().declare(prm);
   }
 
 
   void
   CheckpointParameters::parse_parameters(dealii::ParameterHandler &prm)
   {
-    prm.enter_subsection("Checkpoint");
-    interval = prm.get_double("Interval");
-    resume   = prm.get_bool("Resume");
-    prm.leave_subsection();
+    const ParameterBinding b = binding();
+    b.parse(prm);
     check_parameter(std::isfinite(interval) && interval >= 0,
-                    "Checkpoint/Interval",
+                    b.path("Interval"),
                     "must be a finite time >= 0 (s); got "
                       + format_number(interval) + ".");
   }

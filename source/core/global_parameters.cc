@@ -3,8 +3,8 @@
 
 namespace tribodyn
 {
-  void
-  GlobalParameters::declare_parameters(dealii::ParameterHandler &prm)
+  ParameterBinding
+  GlobalParameters::binding()
   {
     std::string names;
     std::string documentation
@@ -15,34 +15,40 @@ namespace tribodyn
         names += (names.empty() ? "" : "|") + p.name;
         documentation += " '" + p.name + "': " + p.description + ".";
       }
+    ParameterBinding b("");
+    b.add("Problem",
+          problem,
+          documentation,
+          dealii::Patterns::Selection(names));
+    b.add("Output directory",
+          output_directory,
+          "Directory receiving every output of the run (created if missing; "
+          "relative paths are relative to the working directory).");
+    b.add("Progress interval",
+          progress_interval,
+          "Minimum wall time between two progress lines, in seconds.",
+          dealii::Patterns::Double(0.));
+    return b;
+  }
+
+
+  void
+  GlobalParameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    GlobalParameters defaults;
     // homogenization is the default when this build has it.
-    std::string default_problem = "homogenization";
-    if (names.find(default_problem) == std::string::npos
-        && !registered_problems().empty())
-      default_problem = registered_problems().front().name;
-    prm.declare_entry("Problem",
-                      default_problem,
-                      dealii::Patterns::Selection(names),
-                      documentation);
-    prm.declare_entry("Output directory",
-                      "output",
-                      dealii::Patterns::Anything(),
-                      "Directory receiving every output of the run "
-                      "(created if missing; relative paths are relative to "
-                      "the working directory).");
-    prm.declare_entry("Progress interval",
-                      "5",
-                      dealii::Patterns::Double(0.),
-                      "Minimum wall time between two progress lines, in "
-                      "seconds.");
+    bool has_default = false;
+    for (const auto &p : registered_problems())
+      has_default = has_default || p.name == defaults.problem;
+    if (!has_default && !registered_problems().empty())
+      defaults.problem = registered_problems().front().name;
+    defaults.binding().declare(prm);
   }
 
 
   void
   GlobalParameters::parse_parameters(dealii::ParameterHandler &prm)
   {
-    problem           = prm.get("Problem");
-    output_directory  = prm.get("Output directory");
-    progress_interval = prm.get_double("Progress interval");
+    binding().parse(prm);
   }
 } // namespace tribodyn

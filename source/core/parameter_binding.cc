@@ -11,7 +11,9 @@ namespace tribodyn
 {
 
 
-  ParameterBinding::ParameterBinding(const std::string &subsection)
+  ParameterBinding::ParameterBinding(const std::string &subsection,
+                                     const std::string &outer)
+      : outer(outer)
   {
     std::string part;
     for (const char c : subsection + "/")
@@ -247,7 +249,7 @@ namespace tribodyn
   std::string
   ParameterBinding::path(const std::string &name) const
   {
-    std::string p;
+    std::string p = outer.empty() ? "" : outer + "/";
     for (const std::string &s : subsections)
       p += s + "/";
     return p + name;

@@ -226,7 +226,7 @@ namespace tribodyn
                 > g.domain_upper[2]
               && !g.periodic[2])
             throw InputError(
-              "Parameter 'Geometry/Interface gap' moves the upper body "
+              "Parameter 'Geometry/Rough interface/Gap' moves the upper body "
               "through the top of the box (Geometry/Domain upper): raise "
               "the box's upper z by the gap, or lower the bodies.");
       std::vector<PackedAutomaton> packed;

@@ -20,10 +20,8 @@ namespace tribodyn
   namespace mca
   {
     using dealii::ParameterHandler;
-    using dealii::Patterns::Bool;
     using dealii::Patterns::Double;
     using dealii::Patterns::Integer;
-    using dealii::Patterns::Selection;
 
     namespace
     {
@@ -101,126 +99,136 @@ namespace tribodyn
     }
 
 
+    namespace
+    {
+      /// A point as the Geometry entries write it ("x, y, z").
+      std::string
+      point_text(const Point3 &p)
+      {
+        return format_number(p[0]) + ", " + format_number(p[1]) + ", "
+               + format_number(p[2]);
+      }
+    } // namespace
+
+
+    ParameterBinding
+    GeometryParameters::binding()
+    {
+      ParameterBinding b("Geometry");
+      b.add("Automaton size",
+            automaton_size,
+            "Automaton size d (m): the distance between neighbours of the FCC "
+            "packing; contact area S = d^2/(2 sqrt 2), volume V = d^3/sqrt 2.",
+            Double(),
+            Interval{0, inf, true, true});
+      for (Point3 *corner : {&domain_lower, &domain_upper})
+        {
+          const bool        lower = corner == &domain_lower;
+          const std::string name  = lower ? "Domain lower" : "Domain upper";
+          b.add(name,
+                point_text(*corner),
+                lower ? "Lower corner of the simulation box (m). In periodic "
+                        "directions the box is the period and its length "
+                        "must hold a whole number of FCC cells (a = d sqrt 2)."
+                      : "Upper corner of the simulation box (m). In "
+                        "non-periodic directions automata must stay inside it "
+                        "(leave room for the motion).",
+                Patterns::Anything(),
+                [corner, p = b.path(name)](const std::string &text) {
+                  *corner = parse_point(text, p);
+                });
+        }
+      for (unsigned int d = 0; d < 3; ++d)
+        b.add(std::string("Periodic ") + "xyz"[d],
+              periodic[d],
+              std::string("Periodic boundary in ") + "xyz"[d] + ".");
+      b.add("Bodies",
+            bodies_text,
+            "Boxes filled with automata on one FCC lattice (origin at 'Domain "
+            "lower' + a/4 in every direction), separated by ';': 'x0 y0 z0 x1 "
+            "y1 z1 MATERIAL'. Automata of different bodies are not bonded at "
+            "the start.");
+      b.add("Size bands",
+            size_bands_text,
+            "Graded packing, separated by ';': 'z0 z1 k' packs the sites with "
+            "z0 <= z < z1 with automata of size 2^k d (k = 1 or 2) on the FCC "
+            "lattice of that size, whose sites are also sites of the finer "
+            "lattices; elsewhere the size is d. Bands must not overlap, and "
+            "the size changes by a factor 2 at a time (d, 2d, 4d) where "
+            "bodies are on both sides (a band may end at a body's top or "
+            "bottom face with any size). Automata "
+            "near a change of size take their volumes and contact areas from "
+            "their Voronoi cells (doc/theory/mca.md section 9); with a rough "
+            "interface every change of size keeps (3 2^L + 1) d clear of its "
+            "surface (2^L d the larger size), or the run is refused. Or "
+            "'interface N M', the layout of a friction scene: d within N cells "
+            "(a = d sqrt 2) of the rough interface's mean height and in the "
+            "4 cells at the bodies' bottom and top (the loading layers), 2d "
+            "in the next M cells from the interface (M >= 4; 'interface N' "
+            "is M = 4) and in 4-cell transitions next to the loading layers, "
+            "4d elsewhere (the log prints the bands). "
+            "Plan a graded scene with tribodyn --partition-report N "
+            "FILE.prm.");
+      b.add("Size at free faces",
+            fine_free_faces,
+            "Graded packing at the free lateral faces of the bodies (faces in "
+            "x or y that are not periodic). fine: the FCC cells of size 2d "
+            "whose sites lie closer than a = d sqrt(2) to such a face, and "
+            "those of size 4d closer than 4a, are packed one size finer (a "
+            "skin of d, then of 2d, 1-2 layers thick), so a band has the "
+            "fine lattice's free surface (a free surface of coarse automata "
+            "is softer: its missing bonds reach twice as deep; "
+            "doc/theory/mca.md section 9); band: the band's size reaches the "
+            "face.",
+            free_face_table);
+      b.add("Regions",
+            regions_text,
+            "Regions applied in order after the packing, separated by ';': "
+            "'box x0 y0 z0 x1 y1 z1 M', 'sphere cx cy cz r M', 'cylinder ax "
+            "ay az bx by bz r M' (axis from a to b, any direction), where M "
+            "is a material name (sets the material) or 'void' (removes the "
+            "automata).");
+      return b;
+    }
+
+
+    ParameterBinding
+    GeometryParameters::rough_interface_binding()
+    {
+      ParameterBinding b("Geometry/Rough interface");
+      b.add("Enabled",
+            rough_interface,
+            "Split the packing into body 0 below and body 1 above a rough "
+            "surface z = Height + Amplitude * f(x, y), f a sum of "
+            "random-phase cosines with the given wavelength (periodic over "
+            "the box when the wavelength divides it).");
+      b.add("Height", interface_height, "Mean height (m).");
+      b.add("Amplitude",
+            roughness_amplitude,
+            "Roughness amplitude (m), >= 0.",
+            Double(),
+            Interval{0, inf, false, true});
+      // (its lower end, 2d with the interface on, is checked in
+      // parse_parameters())
+      b.add("Wavelength",
+            roughness_wavelength,
+            "Roughness wavelength (m), > 0.");
+      b.add("Seed", roughness_seed, "Seed of the random phases.", Integer(0));
+      b.add("Gap",
+            interface_gap,
+            "Initial gap: body 1 is shifted up by it (m).",
+            Double(),
+            Interval{0, inf, false, true});
+      return b;
+    }
+
+
     void
     GeometryParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Geometry");
-      {
-        prm.declare_entry("Automaton size",
-                          "1e-3",
-                          Double(),
-                          "Automaton size d (m): the distance between "
-                          "neighbours of the FCC packing; contact area "
-                          "S = d^2/(2 sqrt 2), volume V = d^3/sqrt 2.");
-        prm.declare_entry("Domain lower",
-                          "0, 0, 0",
-                          Patterns::Anything(),
-                          "Lower corner of the simulation box (m). In "
-                          "periodic directions the box is the period and "
-                          "its length must hold a whole number of FCC "
-                          "cells (a = d sqrt 2).");
-        prm.declare_entry("Domain upper",
-                          "0.01, 0.01, 0.01",
-                          Patterns::Anything(),
-                          "Upper corner of the simulation box (m). In "
-                          "non-periodic directions automata must stay "
-                          "inside it (leave room for the motion).");
-        prm.declare_entry("Periodic x",
-                          "false",
-                          Bool(),
-                          "Periodic boundary in x.");
-        prm.declare_entry("Periodic y",
-                          "false",
-                          Bool(),
-                          "Periodic boundary in y.");
-        prm.declare_entry("Periodic z",
-                          "false",
-                          Bool(),
-                          "Periodic boundary in z.");
-        prm.declare_entry(
-          "Bodies",
-          "0, 0, 0, 0.01, 0.01, 0.01, steel",
-          Patterns::Anything(),
-          "Boxes filled with automata on one FCC lattice (origin at "
-          "'Domain lower' + a/4 in every direction), separated by ';': "
-          "'x0 y0 z0 x1 y1 z1 MATERIAL'. Automata of different bodies are "
-          "not bonded at the start.");
-        prm.declare_entry(
-          "Size bands",
-          "",
-          Patterns::Anything(),
-          "Graded packing, separated by ';': 'z0 z1 k' packs the sites with "
-          "z0 <= z < z1 with automata of size 2^k d (k = 1 or 2) on the FCC "
-          "lattice of that size, whose sites are also sites of the finer "
-          "lattices; elsewhere the size is d. Bands must not overlap, and "
-          "the size changes by a factor 2 at a time (d, 2d, 4d) where "
-          "bodies are on both sides (a band may end at a body's top or "
-          "bottom face with any size). Automata "
-          "near a change of size take their volumes and contact areas from "
-          "their Voronoi cells (doc/theory/mca.md section 9); with a rough "
-          "interface every change of size keeps (3 2^L + 1) d clear of its "
-          "surface (2^L d the larger size), or the run is refused. Or "
-          "'interface N M', the layout of a friction scene: d within N cells "
-          "(a = d sqrt 2) of the rough interface's mean height and in the "
-          "4 cells at the bodies' bottom and top (the loading layers), 2d "
-          "in the next M cells from the interface (M >= 4; 'interface N' "
-          "is M = 4) and in 4-cell transitions next to the loading layers, "
-          "4d elsewhere (the log prints the bands). "
-          "Plan a graded scene with tribodyn --partition-report N "
-          "FILE.prm.");
-        prm.declare_entry(
-          "Size at free faces",
-          "fine",
-          selection_pattern(free_face_table),
-          "Graded packing at the free lateral faces of the bodies (faces in "
-          "x or y that are not periodic). fine: the FCC cells of size 2d "
-          "whose sites lie closer than a = d sqrt(2) to such a face, and "
-          "those of size 4d closer than 4a, are packed one size finer (a "
-          "skin of d, then of 2d, 1-2 layers thick), so a band has the "
-          "fine lattice's free surface (a free surface of coarse automata "
-          "is softer: its missing bonds reach twice as deep; "
-          "doc/theory/mca.md section 9); band: the band's size reaches the "
-          "face.");
-        prm.declare_entry(
-          "Regions",
-          "",
-          Patterns::Anything(),
-          "Regions applied in order after the packing, separated by ';': "
-          "'box x0 y0 z0 x1 y1 z1 M', 'sphere cx cy cz r M', 'cylinder "
-          "ax ay az bx by bz r M' (axis from a to b, any direction), where "
-          "M is a material name (sets the material) or 'void' (removes "
-          "the automata).");
-        prm.enter_subsection("Rough interface");
-        {
-          prm.declare_entry("Enabled",
-                            "false",
-                            Bool(),
-                            "Split the packing into body 0 below and body "
-                            "1 above a rough surface z = Height + "
-                            "Amplitude * f(x, y), f a sum of random-phase "
-                            "cosines with the given wavelength (periodic "
-                            "over the box when the wavelength divides it).");
-          prm.declare_entry("Height", "0", Double(), "Mean height (m).");
-          prm.declare_entry("Amplitude",
-                            "0",
-                            Double(),
-                            "Roughness amplitude (m), >= 0.");
-          prm.declare_entry("Wavelength",
-                            "1e-3",
-                            Double(),
-                            "Roughness wavelength (m), > 0.");
-          prm.declare_entry("Seed",
-                            "1",
-                            Integer(0),
-                            "Seed of the random phases.");
-          prm.declare_entry("Gap",
-                            "0",
-                            Double(),
-                            "Initial gap: body 1 is shifted up by it (m).");
-        }
-        prm.leave_subsection();
-      }
-      prm.leave_subsection();
+      GeometryParameters g;
+      g.binding().declare(prm);
+      g.rough_interface_binding().declare(prm);
       InclusionPackingParameters().binding().declare(prm);
     }
 
@@ -230,18 +238,20 @@ namespace tribodyn
       ParameterHandler               &prm,
       const std::vector<std::string> &material_names)
     {
-      prm.enter_subsection("Geometry");
+      const ParameterBinding b     = binding();
+      const ParameterBinding rough = rough_interface_binding();
+      b.parse(prm);
+      rough.parse(prm);
+      // (the fuzzer found a wavelength 1000 x below the automaton size
+      // hanging the set-up: a surface finer than the lattice cannot be
+      // represented)
+      check_parameter_range(rough.path("Wavelength"),
+                            roughness_wavelength,
+                            rough_interface ? 2 * automaton_size : 0.,
+                            inf,
+                            !rough_interface,
+                            true);
       {
-        automaton_size = prm.get_double("Automaton size");
-        check_parameter_range(
-          "Geometry/Automaton size", automaton_size, 0, inf, true, true);
-        domain_lower
-          = parse_point(prm.get("Domain lower"), "Geometry/Domain lower");
-        domain_upper
-          = parse_point(prm.get("Domain upper"), "Geometry/Domain upper");
-        periodic       = {{prm.get_bool("Periodic x"),
-                           prm.get_bool("Periodic y"),
-                           prm.get_bool("Periodic z")}};
         const double a = automaton_size * std::sqrt(2.);
         for (unsigned int d = 0; d < 3; ++d)
           {
@@ -262,8 +272,9 @@ namespace tribodyn
                   name,
                   "in a periodic direction the length must be a whole "
                   "number (>= 2) of FCC cells a = d sqrt(2) = "
-                    + format_number(a) + " m ('Geometry/Automaton size' d = "
-                    + format_number(automaton_size) + " m); the nearest is "
+                    + format_number(a) + " m ('" + b.path("Automaton size")
+                    + "' d = " + format_number(automaton_size)
+                    + " m); the nearest is "
                     + format_number(std::max(2., std::round(cells)) * a)
                     + " m.");
               }
@@ -276,62 +287,32 @@ namespace tribodyn
                         "Geometry/Domain lower and Domain upper",
                         "the box holds " + format_number(n_fcc_cells)
                           + " FCC cells of a = d sqrt(2) = " + format_number(a)
-                          + " m (limit 1e10): shrink the box or enlarge "
-                            "'Geometry/Automaton size'.");
+                          + " m (limit 1e10): shrink the box or enlarge '"
+                          + b.path("Automaton size") + "'.");
         bodies.clear();
-        for (const std::string &entry : split(prm.get("Bodies"), ';'))
+        for (const std::string &entry : split(bodies_text, ';'))
           {
-            const auto t = tokens(entry);
+            const std::string p = b.path("Bodies");
+            const auto        t = tokens(entry);
             if (t.size() != 7)
-              throw InputError("Parameter 'Geometry/Bodies': the entry '"
-                               + entry
+              throw InputError("Parameter '" + p + "': the entry '" + entry
                                + "' must read 'x0 y0 z0 x1 y1 z1 MATERIAL'.");
-            Body b;
-            b.lower = read_point(t, 0, "Geometry/Bodies", entry);
-            b.upper = read_point(t, 3, "Geometry/Bodies", entry);
-            b.material
-              = material_index(material_names, t[6], "Geometry/Bodies");
-            bodies.push_back(b);
+            Body body;
+            body.lower    = read_point(t, 0, p, entry);
+            body.upper    = read_point(t, 3, p, entry);
+            body.material = material_index(material_names, t[6], p);
+            bodies.push_back(body);
           }
         check_parameter(!bodies.empty(),
-                        "Geometry/Bodies",
+                        b.path("Bodies"),
                         "give at least one body.");
 
-        prm.enter_subsection("Rough interface");
-        {
-          rough_interface      = prm.get_bool("Enabled");
-          interface_height     = prm.get_double("Height");
-          roughness_amplitude  = prm.get_double("Amplitude");
-          roughness_wavelength = prm.get_double("Wavelength");
-          roughness_seed       = prm.get_integer("Seed");
-          interface_gap        = prm.get_double("Gap");
-          check_parameter_range("Geometry/Rough interface/Amplitude",
-                                roughness_amplitude,
-                                0,
-                                inf,
-                                false,
-                                true);
-          // (the fuzzer found a wavelength 1000 x below the automaton
-          // size hanging the set-up: a surface finer than the lattice
-          // cannot be represented)
-          check_parameter_range("Geometry/Rough interface/Wavelength",
-                                roughness_wavelength,
-                                rough_interface ? 2 * automaton_size : 0.,
-                                inf,
-                                !rough_interface,
-                                true);
-          check_parameter_range(
-            "Geometry/Rough interface/Gap", interface_gap, 0, inf, false, true);
-        }
-        prm.leave_subsection();
-        fine_free_faces
-          = get_selection(prm, "Size at free faces", free_face_table);
         size_bands.clear();
         for (const std::string &entry :
-             split(bands_around_interface(prm.get("Size bands")), ';'))
+             split(bands_around_interface(size_bands_text), ';'))
           {
             const auto        t = tokens(entry);
-            const std::string p = "Geometry/Size bands";
+            const std::string p = b.path("Size bands");
             if (t.size() != 3)
               throw InputError("Parameter '" + p + "': the entry '" + entry
                                + "' must read 'z0 z1 k' (heights in m, k = "
@@ -377,7 +358,7 @@ namespace tribodyn
               const int below = size_level(plane - eps);
               const int above = size_level(plane + eps);
               check_parameter(std::abs(below - above) <= 1,
-                              "Geometry/Size bands",
+                              b.path("Size bands"),
                               "at z = " + format_number(plane)
                                 + " m the size jumps from "
                                 + std::to_string(1 << below) + "d to "
@@ -401,7 +382,7 @@ namespace tribodyn
               check_parameter(
                 std::abs(cells - std::round(cells)) < 1e-6 * cells
                   && std::round(cells) >= 1,
-                "Geometry/Size bands",
+                b.path("Size bands"),
                 std::string("with automata of ") + std::to_string(1u << top)
                   + "d the periodic length in " + "xyz"[e]
                   + " must be a whole number of their FCC cells, "
@@ -415,11 +396,11 @@ namespace tribodyn
             }
 
         regions.clear();
-        for (const std::string &entry : split(prm.get("Regions"), ';'))
+        for (const std::string &entry : split(regions_text, ';'))
           {
             const auto        t = tokens(entry);
             Region            r;
-            const std::string p = "Geometry/Regions";
+            const std::string p = b.path("Regions");
             std::size_t       n = 0;
             if (!t.empty() && t[0] == "box")
               {
@@ -470,7 +451,6 @@ namespace tribodyn
             regions.push_back(r);
           }
       }
-      prm.leave_subsection();
       inclusions.parse_parameters(prm, material_names);
       generate_inclusion_layout();
     }

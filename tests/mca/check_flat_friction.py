@@ -34,12 +34,17 @@ ramp is over by then):
 3. the peak-to-peak relative rise of the layers equals d (1 - 1/sqrt 2)
    within RISE_TOLERANCE (the on-top path: the lattice geometry the
    derivation assumes).
-TOLERANCE = 0.01: the derivation is quasi-static with rigid automata;
+TOLERANCE: the derivation is quasi-static with rigid automata;
 measured deviations at +-1, +-2 m/s and Courant 0.1, 0.2 are <= 0.002
 (mu = 0 and 0.3), 0.007 at +-5 m/s (inertia of the bodies and the viscous
 drag of the damped layers change the normal force in time, not the
 ratio); an ignored mu (0.3 -> 0), a doubled one (0.3 -> 0.6: 0.85), or the
-plain mu without the geometric part (0.30) fail it. RISE_TOLERANCE = 2 %:
+plain mu without the geometric part (0.30) fail it. Per scene (issue #49:
+within 10x of the measured deviation; measured 2026-11-30, the larger of
+checks 1 and 2): mu = 0.3 2.5e-3 (0.0014, 0.0003), frictionless 5e-3 (0.0012); the
+rate-and-state scenes below 0.01 (0.0026, 0.0025, 0.0050). At 2.5e-3 a
+coefficient 2 % off (0.3 -> 0.306: mu_macro 0.3928) fails check 1
+(difference -0.0068; shown 2026-11-30). RISE_TOLERANCE = 2 %:
 measured 0.7 % below d (1 - 1/sqrt 2), the elastic overlap of the
 contacts (a few 1e-3 d at the ~1 GPa pair stresses).
 
@@ -84,7 +89,10 @@ import sys
 from check_tools import (energy_stored, energy_terms, finish,
                          output_directory, parameter, report)
 
-TOLERANCE = 0.01
+TOLERANCES = {"mca_flat_friction": 2.5e-3,
+              "mca_flat_friction_frictionless": 5e-3}
+TOLERANCE = TOLERANCES.get(os.path.basename(os.path.normpath(sys.argv[1])),
+                           0.01)
 RISE_TOLERANCE = 0.02
 ENERGY_TOLERANCES = {"mca_flat_friction": 5e-5,
                      "mca_flat_friction_frictionless": 4e-4,

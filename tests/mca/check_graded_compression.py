@@ -2,9 +2,10 @@
 block (issue #18, item 2): tests/mca/uniaxial_strain_uniform.prm and
 uniaxial_strain_graded.prm (4 x 4 x 10 FCC cells of d, periodic in x and y,
 the graded one with 2d automata in its lower and upper fifth) are
-compressed alike; the fitted P-wave moduli must agree within 0.1 % and the
+compressed alike; the fitted P-wave moduli must agree within 5e-5 and the
 yield stresses within 0.5 %. Measured 2026-11-25: M 262.998 against
-262.967 GPa (+0.012 %), sigma_y +0.13 %. With the pair forces of the
+262.967 GPa (+0.012 %), sigma_y +0.13 %; 2026-11-30 (since the background
+mesh and the moment arms of issue #48): M -8.6e-6, sigma_y +0.134 %. With the pair forces of the
 transitional automata on the line of centres instead of their face
 centroids the cells turn under load: M -0.65 %, sigma_y +1.0 % (fails). The graded
 run's summary.json gives the automata per size and its particles their
@@ -38,5 +39,5 @@ with tempfile.TemporaryDirectory() as work:
     report(os.path.exists(vtu) and 'Name="size"' in open(vtu).read(),
            "graded particles carry their size")
 u = results["uniform"]
-report_relative(g, u, (("youngs_modulus", 1e-3), ("yield_stress", 5e-3)))
+report_relative(g, u, (("youngs_modulus", 5e-5), ("yield_stress", 5e-3)))
 finish()

@@ -9,8 +9,8 @@ work - damped, round-off only: 1e-9 of the load work); that the loads drove
 the slab far into the plastic range (plastic work > half the load work, so
 a missing or doubled plastic term is a residual of the order of the load
 work); and the balance kinetic + elastic + plastic + switching + many-body
-work = load work (no contacts, no damping, no friction here) within 0.1 %
-of the load work. The plastic work is what the pair sides release at their
+work = load work (no contacts, no damping, no friction here) within
+TOLERANCES of the load work (below). The plastic work is what the pair sides release at their
 plastic returns (doc/theory/mca.md §8.4): measured -0.008 % (slab) and
 -0.017 % (twice as tall) on 2026-11-27, where the homogenized bookkeeping
 of before left -3.7 % and -1.8 %, a term of the held faces' half-empty
@@ -26,7 +26,16 @@ import sys
 from check_tools import (energy_stored, energy_terms, finish,
                          output_directory, report)
 
+# the balance's tolerance per run (issue #49: within 10x of the measured
+# residual, 2026-11-30: slab -8.2e-5, twice as tall -1.66e-4); a run not
+# listed: 0.1 % (the many-body work of the faces, too)
+TOLERANCES = {"mca_plastic_energy": 4e-4, "mca_plastic_energy_tall": 1e-3}
 TOLERANCE = 0.001
+
+
+def tolerance(directory):
+    return TOLERANCES.get(os.path.basename(os.path.normpath(directory)),
+                          TOLERANCE)
 
 
 def load(directory):
@@ -38,7 +47,7 @@ def residual(s):
     return (s["load_work"] - energy_stored(s)) / s["load_work"]
 
 
-def check_run(label, s):
+def check_run(label, s, balance_tolerance):
     W = s["load_work"]
     report(W > 0, "%s: the loads did work: %.6g J" % (label, W))
     identity = s["kinetic_energy"] - (s["pair_work"] + W - s["damped_work"])
@@ -49,20 +58,21 @@ def check_run(label, s):
     report(share > 0.5, "%s: plastic work %.3g of the load work (> 0.5)"
            % (label, share))
     print("      %s: %s" % (label, energy_terms(s)))
-    report(abs(residual(s)) <= TOLERANCE,
+    report(abs(residual(s)) <= balance_tolerance,
            "%s: energy balance, residual %+.4f %% of the load work "
-           "(tolerance %g %%)" % (label, 100 * residual(s), 100 * TOLERANCE))
+           "(tolerance %g %%)" % (label, 100 * residual(s),
+                                  100 * balance_tolerance))
 
 
 if sys.argv[1] == "--pair":
     short, tall = load(sys.argv[2]), load(sys.argv[3])
-    check_run("slab", short)
-    check_run("double slab", tall)
+    check_run("slab", short, tolerance(sys.argv[2]))
+    check_run("double slab", tall, tolerance(sys.argv[3]))
     for label, s in (("slab", short), ("double slab", tall)):
         mb = s["many_body_work"] / s["load_work"]
         report(abs(mb) <= TOLERANCE,
                "%s: many-body work %+.4f %% of the load work (tolerance "
                "%g %%)" % (label, 100 * mb, 100 * TOLERANCE))
 else:
-    check_run("slab", load(sys.argv[1]))
+    check_run("slab", load(sys.argv[1]), tolerance(sys.argv[1]))
 finish()

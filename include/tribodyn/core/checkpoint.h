@@ -8,6 +8,7 @@
 #include <istream>
 #include <stdexcept>
 #include <string>
+#include <tribodyn/core/parameter_binding.h>
 #include <vector>
 
 namespace boost
@@ -33,6 +34,9 @@ namespace tribodyn
     /// Continue from the latest checkpoint of the output directory.
     bool resume = false;
 
+    /// The entries, each written once (core/parameter_binding.h).
+    ParameterBinding
+    binding();
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     void

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <string>
+#include <tribodyn/core/parameter_binding.h>
 
 namespace tribodyn
 {
@@ -16,6 +17,9 @@ namespace tribodyn
     /// Minimum wall time between two progress lines (s).
     double progress_interval = 5.0;
 
+    /// The entries, each written once (core/parameter_binding.h).
+    ParameterBinding
+    binding();
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     void

@@ -7,12 +7,15 @@
 // A law type has `static constexpr const char *name` and a `struct
 // Parameters` with `static void declare_parameters(prm)` and `void
 // parse_parameters(prm)` (called in the subsection of the choice; a law
-// with constants of its own declares a subsection for them).
+// with constants of its own declares a subsection for them), which
+// BoundLawParameters derives from the struct's binding(): its entries
+// written once.
 #ifndef tribodyn_core_law_selection_h
 #define tribodyn_core_law_selection_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <string>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/selection.h>
 #include <tuple>
 #include <type_traits>
@@ -31,6 +34,25 @@ namespace tribodyn
     void
     parse_parameters(dealii::ParameterHandler &)
     {
+    }
+  };
+
+  /// The declare_parameters() and parse_parameters() of a law's
+  /// parameters @p Derived from its `ParameterBinding binding()`, where
+  /// each entry is written once (core/parameter_binding.h; the binding's
+  /// outer subsection is the one its law list declares it in).
+  template <class Derived>
+  struct BoundLawParameters
+  {
+    static void
+    declare_parameters(dealii::ParameterHandler &prm)
+    {
+      Derived().binding().declare(prm);
+    }
+    void
+    parse_parameters(dealii::ParameterHandler &prm)
+    {
+      static_cast<Derived &>(*this).binding().parse(prm);
     }
   };
 

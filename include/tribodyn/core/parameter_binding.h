@@ -60,8 +60,13 @@ namespace tribodyn
   {
   public:
     /// The entries of @p subsection ("A/B" for a nested one, "" for the
-    /// top level).
-    explicit ParameterBinding(const std::string &subsection);
+    /// top level), entered from the subsection the handler is in when
+    /// declare() and parse() are called, whose path is @p outer: "" (the
+    /// top level) unless the caller is itself inside a subsection, as a
+    /// law's parameters are, declared and read inside their engine's
+    /// ("Interaction", "Contact").
+    explicit ParameterBinding(const std::string &subsection,
+                              const std::string &outer = "");
 
     /// A number; its default is @p value's current value, written with
     /// the fewest digits that read back to it.
@@ -140,12 +145,12 @@ namespace tribodyn
         const dealii::Patterns::PatternBase            &pattern,
         const std::function<void(const std::string &)> &read);
 
-    /// Declare the entries in @p prm (which is at the top level).
+    /// Declare the entries in @p prm (which is at the subsection `outer`).
     void
     declare(dealii::ParameterHandler &prm) const;
 
-    /// Read the entries of @p prm (at the top level) into their members,
-    /// then check their ranges in the order they were added.
+    /// Read the entries of @p prm (at the subsection `outer`) into their
+    /// members, then check their ranges in the order they were added.
     void
     parse(dealii::ParameterHandler &prm) const;
 
@@ -179,6 +184,8 @@ namespace tribodyn
     void
     inside(dealii::ParameterHandler &prm, const Action &action) const;
 
+    /// The path of the subsection the handler is in (messages only).
+    std::string              outer;
     std::vector<std::string> subsections;
     std::vector<Entry>       entries;
   };

@@ -23,6 +23,7 @@
 #include <limits>
 #include <string>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/selection.h>
 
 namespace tribodyn
@@ -38,120 +39,75 @@ namespace tribodyn
     inline constexpr SelectionTable<StateLaw, 2> state_law_choices{
       {{"aging", StateLaw::aging}, {"slip", StateLaw::slip}}};
 
-    /// The constants of the law, declared in the caller's subsection.
+    /// The constants of the law, in the subsection `Rate and state
+    /// friction` of an engine's (the engine's law sets the defaults of mu0
+    /// and D_c, its scale, in its constructor).
     struct Parameters
     {
       double   mu0 = 0.3, a = 0.01, b = 0.005, V0 = 1, Dc = 1e-9, V_min = 1e-6;
       StateLaw state_law = StateLaw::aging;
-      /// A new contact starts at the steady state of this slip rate.
-      double V_initial = 1;
+      /// A new contact starts at the steady state of this slip rate (0:
+      /// V0).
+      double V_initial = 0;
 
-      /// Declare the entries in the current subsection; @p mu0, @p Dc:
-      /// their defaults (the scale of the engine).
-      static void
-      declare_entries(dealii::ParameterHandler &prm,
-                      const std::string        &mu0,
-                      const std::string        &Dc)
+      /// The entries, each written once, in the subsection `Rate and state
+      /// friction` of @p outer (the engine's subsection, which the handler
+      /// is in when they are declared and read).
+      ParameterBinding
+      binding(const std::string &outer)
       {
         using dealii::Patterns::Double;
-        prm.declare_entry("Reference friction coefficient",
-                          mu0,
-                          Double(),
-                          "mu0: the steady coefficient at the reference "
-                          "slip rate.");
-        prm.declare_entry("Direct effect",
-                          "0.01",
-                          Double(),
-                          "a >= 0: the jump of mu per unit of ln V at a "
-                          "step of the slip rate.");
-        prm.declare_entry("Evolution effect",
-                          "0.005",
-                          Double(),
-                          "b >= 0: the evolution of mu with the state; "
-                          "a - b > 0 is velocity strengthening, a - b < 0 "
-                          "velocity weakening.");
-        prm.declare_entry("Reference slip rate",
-                          "1",
-                          Double(),
-                          "V0 > 0 (m/s).");
-        prm.declare_entry("Critical slip distance",
-                          Dc,
-                          Double(),
-                          "D_c > 0 (m): the slip over which the state "
-                          "relaxes to its new steady value.");
-        prm.declare_entry("Minimum slip rate",
-                          "1e-6",
-                          Double(),
-                          "V_min > 0 (m/s): below it mu is evaluated at "
-                          "V_min (the static friction of a stuck contact, "
-                          "which grows with its age theta under the aging "
-                          "law).");
-        prm.declare_entry("State evolution law",
-                          "aging",
-                          selection_pattern(state_law_choices),
-                          "aging: dtheta/dt = 1 - V theta / D_c (a contact "
-                          "at rest strengthens); slip: dtheta/dt = -(V theta "
-                          "/ D_c) ln(V theta / D_c) (it evolves only with "
-                          "slip).");
-        prm.declare_entry("Initial slip rate",
-                          "0",
-                          Double(0),
-                          "A new contact starts at the steady state of this "
-                          "slip rate, theta = D_c / V (m/s); 0: the reference "
-                          "slip rate.");
-      }
-
-      /// Declare the entries in the subsection @p name of the current one.
-      static void
-      declare_in(dealii::ParameterHandler &prm,
-                 const std::string        &name,
-                 const std::string        &mu0,
-                 const std::string        &Dc)
-      {
-        prm.enter_subsection(name);
-        declare_entries(prm, mu0, Dc);
-        prm.leave_subsection();
-      }
-
-      /// Read them from the subsection @p name; @p path: as below.
-      void
-      parse_in(dealii::ParameterHandler &prm,
-               const std::string        &name,
-               const std::string        &path)
-      {
-        prm.enter_subsection(name);
-        parse_entries(prm, path);
-        prm.leave_subsection();
-      }
-
-      /// Read the entries of the current subsection; @p path (e.g.
-      /// "Interaction/Rate and state friction/") names them in errors.
-      void
-      parse_entries(dealii::ParameterHandler &prm, const std::string &path)
-      {
-        mu0   = prm.get_double("Reference friction coefficient");
-        a     = prm.get_double("Direct effect");
-        b     = prm.get_double("Evolution effect");
-        V0    = prm.get_double("Reference slip rate");
-        Dc    = prm.get_double("Critical slip distance");
-        V_min = prm.get_double("Minimum slip rate");
-        state_law
-          = get_selection(prm, "State evolution law", state_law_choices);
-        V_initial        = prm.get_double("Initial slip rate");
-        const double inf = std::numeric_limits<double>::infinity();
-        check_parameter_range(
-          path + "Reference friction coefficient", mu0, 0, inf, false, true);
-        check_parameter_range(path + "Direct effect", a, 0, inf, false, true);
-        check_parameter_range(
-          path + "Evolution effect", b, 0, inf, false, true);
-        check_parameter_range(
-          path + "Reference slip rate", V0, 0, inf, true, true);
-        check_parameter_range(
-          path + "Critical slip distance", Dc, 0, inf, true, true);
-        check_parameter_range(
-          path + "Minimum slip rate", V_min, 0, inf, true, true);
-        if (V_initial == 0)
-          V_initial = V0;
+        const double     inf = std::numeric_limits<double>::infinity();
+        ParameterBinding e("Rate and state friction", outer);
+        e.add("Reference friction coefficient",
+              mu0,
+              "mu0: the steady coefficient at the reference slip rate.",
+              Double(),
+              Interval{0, inf, false, true});
+        e.add("Direct effect",
+              a,
+              "a >= 0: the jump of mu per unit of ln V at a step of the slip "
+              "rate.",
+              Double(),
+              Interval{0, inf, false, true});
+        e.add_spelled(
+          "Evolution effect",
+          b,
+          "0.005",
+          "b >= 0: the evolution of mu with the state; a - b > 0 is "
+          "velocity strengthening, a - b < 0 velocity weakening.",
+          Double(),
+          Interval{0, inf, false, true});
+        e.add("Reference slip rate",
+              V0,
+              "V0 > 0 (m/s).",
+              Double(),
+              Interval{0, inf, true, true});
+        e.add("Critical slip distance",
+              Dc,
+              "D_c > 0 (m): the slip over which the state relaxes to its new "
+              "steady value.",
+              Double(),
+              Interval{0, inf, true, true});
+        e.add("Minimum slip rate",
+              V_min,
+              "V_min > 0 (m/s): below it mu is evaluated at V_min (the static "
+              "friction of a stuck contact, which grows with its age theta "
+              "under the aging law).",
+              Double(),
+              Interval{0, inf, true, true});
+        e.add("State evolution law",
+              state_law,
+              "aging: dtheta/dt = 1 - V theta / D_c (a contact at rest "
+              "strengthens); slip: dtheta/dt = -(V theta / D_c) ln(V theta / "
+              "D_c) (it evolves only with slip).",
+              state_law_choices);
+        e.add("Initial slip rate",
+              V_initial,
+              "A new contact starts at the steady state of this slip rate, "
+              "theta = D_c / V (m/s); 0: the reference slip rate.",
+              Double(0));
+        return e;
       }
     };
 
@@ -161,7 +117,7 @@ namespace tribodyn
     public:
       explicit Law(const Parameters &p)
           : prm(p)
-          , theta_new(p.Dc / p.V_initial)
+          , theta_new(p.Dc / (p.V_initial > 0 ? p.V_initial : p.V0))
           , mu_shift(p.mu0 - p.a * std::log(p.V0) + p.b * std::log(p.V0 / p.Dc))
       {
       }

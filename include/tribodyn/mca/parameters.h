@@ -174,16 +174,22 @@ namespace tribodyn
       /// Automaton size d (distance between neighbours in the FCC packing).
       double automaton_size = 1e-3;
       /// The simulation box; in periodic directions it is the period.
-      Point3              domain_lower, domain_upper;
+      Point3              domain_lower, domain_upper = Point3(0.01, 0.01, 0.01);
       std::array<bool, 3> periodic = {{false, false, false}};
       std::vector<Body>   bodies;
       std::vector<Region> regions;
+      /// The lists Geometry/Bodies, Size bands and Regions as written
+      /// (parse_parameters() reads them into bodies, size_bands and
+      /// regions: they need the material names, and the bands the bodies
+      /// and the rough interface).
+      std::string bodies_text = "0, 0, 0, 0.01, 0.01, 0.01, steel";
+      std::string size_bands_text, regions_text;
       /// Rough interface: sites of all bodies are assigned to body 0 below
       /// the surface z = height + amplitude * f(x, y) and to body 1 above.
       bool         rough_interface      = false;
       double       interface_height     = 0;
       double       roughness_amplitude  = 0;
-      double       roughness_wavelength = 1;
+      double       roughness_wavelength = 1e-3;
       unsigned int roughness_seed       = 1;
       /// Initial gap added between the two bodies of a rough interface
       /// (body 1 is shifted up by it).
@@ -297,6 +303,12 @@ namespace tribodyn
       void
       generate_inclusion_layout();
 
+      /// The entries of Geometry and of Geometry/Rough interface, each
+      /// written once (core/parameter_binding.h).
+      ParameterBinding
+      binding();
+      ParameterBinding
+      rough_interface_binding();
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void

@@ -33,6 +33,7 @@
 #include <cstdint>
 #include <deal.II/base/mpi.h>
 #include <tribodyn/contact/friction_law.h>
+#include <tribodyn/core/law_selection.h>
 #include <tribodyn/core/rate_state.h>
 
 namespace tribodyn
@@ -44,7 +45,7 @@ namespace tribodyn
       static constexpr const char *name = "rate and state";
 
       /// Subsection `Rate and state friction` of Contact.
-      struct Parameters : rate_state::Parameters
+      struct Parameters : rate_state::Parameters, BoundLawParameters<Parameters>
       {
         Parameters()
         {
@@ -52,18 +53,10 @@ namespace tribodyn
           Dc  = 1e-6;
         }
 
-        static void
-        declare_parameters(dealii::ParameterHandler &prm)
+        ParameterBinding
+        binding()
         {
-          declare_in(prm, "Rate and state friction", "0.25", "1e-6");
-        }
-
-        void
-        parse_parameters(dealii::ParameterHandler &prm)
-        {
-          parse_in(prm,
-                   "Rate and state friction",
-                   "Contact/Rate and state friction/");
+          return rate_state::Parameters::binding("Contact");
         }
       };
 

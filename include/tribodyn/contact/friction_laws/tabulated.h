@@ -15,6 +15,8 @@
 #include <tribodyn/contact/friction_law.h>
 #include <tribodyn/contact/friction_table.h>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/law_selection.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/selection.h>
 
 namespace tribodyn
@@ -36,80 +38,57 @@ namespace tribodyn
          {"plane speed", Speed::plane_speed}}};
 
       /// Subsection `Tabulated friction` of Contact.
-      struct Parameters
+      struct Parameters : BoundLawParameters<Parameters>
       {
         std::string file;
         Speed       speed          = Speed::slip_rate;
         double      pressure_scale = 1, speed_scale = 1;
 
-        static void
-        declare_parameters(dealii::ParameterHandler &prm)
+        /// The entries, each written once (the handler is in Contact).
+        ParameterBinding
+        binding()
         {
-          prm.enter_subsection("Tabulated friction");
-          prm.declare_entry(
-            "File",
-            "",
-            dealii::Patterns::Anything(),
-            "CSV table of mu for 'Friction law = tabulated': a header line "
-            "naming the columns pressure (Pa), speed (m/s) and mu (others "
-            "ignored), one row per point of a full grid (at least 2 x 2). "
-            "mu is bilinear between the points and clamped outside (the "
-            "share of the node-steps in contact read outside is "
-            "summary.json's tabulated_clamped_fraction; a warning above "
-            "1 %). Relative paths: from the working directory.");
-          prm.declare_entry("Speed",
-                            "local slip rate",
-                            selection_pattern(speed_choices),
-                            "The speed v of mu(p, v): 'local slip rate' "
-                            "(the node's slip rate of the previous step), "
-                            "or 'plane speed' (the plane's speed).");
-          prm.declare_entry(
-            "Pressure scale",
-            "1",
-            dealii::Patterns::Double(),
-            "The table is read at p = Pressure scale x (the node's "
-            "contact pressure lambda_n / tributary length): the map from "
-            "the pin's pressure to the table's (e.g. the automata scene's).");
-          prm.declare_entry("Speed scale",
-                            "1",
-                            dealii::Patterns::Double(),
-                            "The table is read at v = Speed scale x the "
-                            "speed above.");
-          prm.leave_subsection();
-        }
-
-        void
-        parse_parameters(dealii::ParameterHandler &prm)
-        {
-          prm.enter_subsection("Tabulated friction");
-          file           = prm.get("File");
-          speed          = get_selection(prm, "Speed", speed_choices);
-          pressure_scale = prm.get_double("Pressure scale");
-          speed_scale    = prm.get_double("Speed scale");
-          prm.leave_subsection();
-          check_parameter_range("Contact/Tabulated friction/Pressure scale",
-                                pressure_scale,
-                                0,
-                                1e300,
-                                true,
-                                false);
-          check_parameter_range("Contact/Tabulated friction/Speed scale",
-                                speed_scale,
-                                0,
-                                1e300,
-                                true,
-                                false);
+          ParameterBinding e("Tabulated friction", "Contact");
+          e.add("File",
+                file,
+                "CSV table of mu for 'Friction law = tabulated': a header line "
+                "naming the columns pressure (Pa), speed (m/s) and mu (others "
+                "ignored), one row per point of a full grid (at least 2 x 2). "
+                "mu is bilinear between the points and clamped outside (the "
+                "share of the node-steps in contact read outside is "
+                "summary.json's tabulated_clamped_fraction; a warning above "
+                "1 %). Relative paths: from the working directory.");
+          e.add("Speed",
+                speed,
+                "The speed v of mu(p, v): 'local slip rate' (the node's slip "
+                "rate of the previous step), or 'plane speed' (the plane's "
+                "speed).",
+                speed_choices);
+          e.add("Pressure scale",
+                pressure_scale,
+                "The table is read at p = Pressure scale x (the node's contact "
+                "pressure lambda_n / tributary length): the map from the pin's "
+                "pressure to the table's (e.g. the automata scene's).",
+                dealii::Patterns::Double(),
+                Interval{0, 1e300, true, false});
+          e.add("Speed scale",
+                speed_scale,
+                "The table is read at v = Speed scale x the speed above.",
+                dealii::Patterns::Double(),
+                Interval{0, 1e300, true, false});
+          return e;
         }
       };
 
       template <class ContactLawParameters>
       Tabulated(const ContactLawParameters &, const Parameters &p, const double)
-          : table(p.file.empty()
-                    ? throw InputError(
-                      "Parameter 'Contact/Tabulated friction/File' is "
-                      "empty: 'Friction law = tabulated' needs the path "
-                      "of a CSV table of mu(pressure, speed).")
-                    : FrictionTable(p.file, "Contact/Tabulated friction/File"))
+          : table(
+            p.file.empty()
+              ? throw InputError(
+                "Parameter '" + Parameters().binding().path("File")
+                + "' is empty: 'Friction law = tabulated' needs the "
+                  "path of a CSV table of mu(pressure, speed).")
+              : FrictionTable(p.file, Parameters().binding().path("File")))
           , speed(p.speed)
           , pressure_scale(p.pressure_scale)
           , speed_scale(p.speed_scale)

@@ -12,6 +12,7 @@
 #include <functional>
 #include <limits>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/law_selection.h>
 #include <tribodyn/mca/pair_fields.h>
 
 namespace tribodyn
@@ -24,39 +25,30 @@ namespace tribodyn
       static constexpr const char *name   = "plastic heat";
       static constexpr bool        active = true;
 
-      struct Parameters
+      struct Parameters : BoundLawParameters<Parameters>
       {
         bool on = false;
         /// Fraction of the bond-breaking energy the plastic heat of an
         /// unbonded pair must reach to bond (seed: one half).
         double heat_fraction = 0.5;
 
-        static void
-        declare_parameters(dealii::ParameterHandler &prm)
+        ParameterBinding
+        binding()
         {
-          prm.declare_entry("Bond formation",
-                            "false",
-                            dealii::Patterns::Bool(),
-                            "Unbonded pairs in compression at the yield "
-                            "stress whose plastic heat reaches the fraction "
-                            "below of the bond energy become bonded.");
-          prm.declare_entry("Bond formation heat fraction",
-                            "0.5",
-                            dealii::Patterns::Double(),
-                            "Plastic heat of a pair needed to bond, as a "
-                            "fraction of its bond energy (seed: 1/2), >= 0.");
-        }
-        void
-        parse_parameters(dealii::ParameterHandler &prm)
-        {
-          on            = prm.get_bool("Bond formation");
-          heat_fraction = prm.get_double("Bond formation heat fraction");
-          check_parameter_range("Interaction/Bond formation heat fraction",
-                                heat_fraction,
-                                0,
-                                std::numeric_limits<double>::infinity(),
-                                false,
-                                true);
+          ParameterBinding e("", "Interaction");
+          e.add("Bond formation",
+                on,
+                "Unbonded pairs in compression at the yield stress whose "
+                "plastic heat reaches the fraction below of the bond energy "
+                "become bonded.");
+          e.add(
+            "Bond formation heat fraction",
+            heat_fraction,
+            "Plastic heat of a pair needed to bond, as a fraction of its "
+            "bond energy (seed: 1/2), >= 0.",
+            dealii::Patterns::Double(),
+            Interval{0, std::numeric_limits<double>::infinity(), false, true});
+          return e;
         }
         bool
         chosen() const

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <deal.II/base/parameter_handler.h>
 #include <functional>
+#include <tribodyn/core/law_selection.h>
 #include <tribodyn/mca/pair_fields.h>
 #include <tribodyn/mca/vector_algebra.h>
 
@@ -25,23 +26,19 @@ namespace tribodyn
       static constexpr const char *name   = "von Mises";
       static constexpr bool        active = true;
 
-      struct Parameters
+      struct Parameters : BoundLawParameters<Parameters>
       {
         bool on = false;
 
-        static void
-        declare_parameters(dealii::ParameterHandler &prm)
+        ParameterBinding
+        binding()
         {
-          prm.declare_entry("Bond breaking",
-                            "false",
-                            dealii::Patterns::Bool(),
-                            "Bonded pairs break when the von Mises stress of "
-                            "the pair reaches the Bond breaking stress.");
-        }
-        void
-        parse_parameters(dealii::ParameterHandler &prm)
-        {
-          on = prm.get_bool("Bond breaking");
+          ParameterBinding e("", "Interaction");
+          e.add("Bond breaking",
+                on,
+                "Bonded pairs break when the von Mises stress of the pair "
+                "reaches the Bond breaking stress.");
+          return e;
         }
         bool
         chosen() const

@@ -7,6 +7,7 @@
 #include <functional>
 #include <limits>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/law_selection.h>
 #include <tribodyn/mca/pair_fields.h>
 
 namespace tribodyn
@@ -19,31 +20,22 @@ namespace tribodyn
       static constexpr const char *name     = "Coulomb";
       static constexpr bool        stateful = false;
 
-      struct Parameters
+      struct Parameters : BoundLawParameters<Parameters>
       {
         double mu = 0.3;
 
-        static void
-        declare_parameters(dealii::ParameterHandler &prm)
+        ParameterBinding
+        binding()
         {
-          prm.declare_entry("Friction coefficient",
-                            "0.3",
-                            dealii::Patterns::Double(),
-                            "Amontons-Coulomb coefficient of unbonded pairs "
-                            "(|tau| <= mu |sigma|), >= 0 (Friction law = "
-                            "Coulomb).");
-        }
-
-        void
-        parse_parameters(dealii::ParameterHandler &prm)
-        {
-          mu = prm.get_double("Friction coefficient");
-          check_parameter_range("Interaction/Friction coefficient",
-                                mu,
-                                0,
-                                std::numeric_limits<double>::infinity(),
-                                false,
-                                true);
+          ParameterBinding e("", "Interaction");
+          e.add(
+            "Friction coefficient",
+            mu,
+            "Amontons-Coulomb coefficient of unbonded pairs (|tau| <= mu "
+            "|sigma|), >= 0 (Friction law = Coulomb).",
+            dealii::Patterns::Double(),
+            Interval{0, std::numeric_limits<double>::infinity(), false, true});
+          return e;
         }
       };
 

@@ -16,6 +16,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <functional>
+#include <tribodyn/core/law_selection.h>
 #include <tribodyn/core/rate_state.h>
 #include <tribodyn/mca/pair_fields.h>
 #include <vector>
@@ -31,20 +32,12 @@ namespace tribodyn
       static constexpr bool        stateful = true;
 
       /// Subsection `Rate and state friction` of Interaction.
-      struct Parameters : rate_state::Parameters
+      struct Parameters : rate_state::Parameters, BoundLawParameters<Parameters>
       {
-        static void
-        declare_parameters(dealii::ParameterHandler &prm)
+        ParameterBinding
+        binding()
         {
-          declare_in(prm, "Rate and state friction", "0.3", "1e-9");
-        }
-
-        void
-        parse_parameters(dealii::ParameterHandler &prm)
-        {
-          parse_in(prm,
-                   "Rate and state friction",
-                   "Interaction/Rate and state friction/");
+          return rate_state::Parameters::binding("Interaction");
         }
       };
 

@@ -15,6 +15,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <functional>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/law_selection.h>
 #include <tribodyn/mca/pair_fields.h>
 #include <tribodyn/mca/series_springs.h>
 #include <tribodyn/mca/vector_algebra.h>
@@ -131,19 +132,25 @@ namespace tribodyn
       static constexpr bool        active          = true;
       static constexpr bool        needs_rotations = true;
 
-      struct Parameters
+      struct Parameters : BoundLawParameters<Parameters>
       {
         /// Factor lambda of the stiffnesses of K_ij: twisting lambda k J,
         /// bending lambda k I of the pair's contact face. 0: no K_ij.
         double stiffness = 0;
 
-        static void
-        declare_parameters(dealii::ParameterHandler &prm)
+        ParameterBinding
+        binding()
         {
-          prm.declare_entry(
+          ParameterBinding e("", "Interaction");
+          // Above pi d^2 / S = 2 sqrt(2) pi the moments' springs make the
+          // rotation of an automaton whose neighbours turn the other way
+          // stiffer than its shear springs make a rotation with them (the
+          // stiffest rotational mode without K_ij), and the step limit of
+          // Time/Courant factor no longer covers them (doc/theory/mca.md
+          // §3).
+          e.add(
             "Relative rotation stiffness",
-            "0",
-            dealii::Patterns::Double(),
+            stiffness,
             "Factor of the stiffnesses of the moment K_ij of the relative "
             "rotation of the two automata of a pair (seed eq. 1): an "
             "incremental elastic moment, twisting stiffness factor * k * J "
@@ -154,35 +161,17 @@ namespace tribodyn
             "the no-tension (bending) and Coulomb (twisting) limits. 0: no "
             "K_ij (as before); 1: the parallel-bond value. Needs Rotations; "
             "in [0, 2 sqrt(2) pi = 8.89] (above, the explicit step limit "
-            "would not cover the springs).");
-        }
-
-        void
-        parse_parameters(dealii::ParameterHandler &prm)
-        {
-          stiffness = prm.get_double("Relative rotation stiffness");
-          // Above pi d^2 / S = 2 sqrt(2) pi the moments' springs make the
-          // rotation of an automaton whose neighbours turn the other way
-          // stiffer than its shear springs make a rotation with them (the
-          // stiffest rotational mode without K_ij), and the step limit of
-          // Time/Courant factor no longer covers them (doc/theory/mca.md
-          // §3).
-          check_parameter_range(
-            "Interaction/Relative rotation stiffness",
-            stiffness,
-            0,
-            2 * std::sqrt(2.) * M_PI,
-            false,
-            false,
-            "Above 2 sqrt(2) pi the relative-rotation springs are stiffer "
-            "than the shear springs' rotational stiffness and the explicit "
-            "time step would not cover them; 1 is the parallel-bond value.");
-          if (stiffness > 0 && !prm.get_bool("Rotations"))
-            throw InputError(
-              "Parameter 'Interaction/Relative rotation stiffness' > 0 "
-              "needs 'Interaction/Rotations = true' (the moment follows the "
-              "relative rotation of the automata): switch rotations on, or "
-              "set the stiffness to 0.");
+            "would not cover the springs).",
+            dealii::Patterns::Double(),
+            Interval{0,
+                     2 * std::sqrt(2.) * M_PI,
+                     false,
+                     false,
+                     "Above 2 sqrt(2) pi the relative-rotation springs are "
+                     "stiffer than the shear springs' rotational stiffness "
+                     "and the explicit time step would not cover them; 1 "
+                     "is the parallel-bond value."});
+          return e;
         }
 
         bool
