@@ -26,24 +26,10 @@ namespace tribodyn
   } // namespace
 
 
-  ParameterBinding
-  ImageParameters::binding()
+  void
+  SegmentationParameters::add_to(ParameterBinding &b)
   {
     using dealii::Patterns::Anything;
-    ParameterBinding b("Morphology/Image");
-    b.add("File",
-          file,
-          "PNG or TIFF micrograph ('Generator = image'): 8- or 16-bit grey, "
-          "indexed (palette) or RGB; alpha is ignored; a TIFF must be in "
-          "strips (not tiles). Each image pixel is one pixel of the "
-          "morphology; the top row of the image is the top of the rectangle.");
-    b.add("Pixel size",
-          pixel_size,
-          "Size of an image pixel in m; 0 takes it from the image's "
-          "resolution tag (TIFF XResolution/YResolution with ResolutionUnit "
-          "inch or cm, PNG pHYs in pixels per metre). Sets the rectangle's "
-          "size: 'Width' and 'Height' are not used.",
-          dealii::Patterns::Double(0));
     b.add("Segmentation",
           segmentation,
           "How pixels become phases (material ids 0, 1, ...): 'thresholds' "
@@ -95,6 +81,50 @@ namespace tribodyn
                 colour_table.emplace_back(c.begin(), c.end());
               }
           });
+  }
+
+
+  void
+  SegmentationParameters::check(const ParameterBinding &b) const
+  {
+    if (segmentation == Segmentation::thresholds)
+      {
+        check_parameter(!thresholds.empty(),
+                        b.path("Thresholds"),
+                        "'Segmentation = thresholds' needs at least one "
+                        "grey level (two phases).");
+        for (unsigned int k = 1; k < thresholds.size(); ++k)
+          check_parameter(thresholds[k] > thresholds[k - 1],
+                          b.path("Thresholds"),
+                          "the thresholds must increase.");
+      }
+    if (segmentation == Segmentation::colour_table)
+      check_parameter(colour_table.size() >= 2,
+                      b.path("Colour table"),
+                      "'Segmentation = colour table' needs the colours of at "
+                      "least two phases, separated by ';'.");
+  }
+
+
+  ParameterBinding
+  ImageParameters::binding()
+  {
+    using dealii::Patterns::Anything;
+    ParameterBinding b("Morphology/Image");
+    b.add("File",
+          file,
+          "PNG or TIFF micrograph ('Generator = image'): 8- or 16-bit grey, "
+          "indexed (palette) or RGB; alpha is ignored; a TIFF must be in "
+          "strips (not tiles). Each image pixel is one pixel of the "
+          "morphology; the top row of the image is the top of the rectangle.");
+    b.add("Pixel size",
+          pixel_size,
+          "Size of an image pixel in m; 0 takes it from the image's "
+          "resolution tag (TIFF XResolution/YResolution with ResolutionUnit "
+          "inch or cm, PNG pHYs in pixels per metre). Sets the rectangle's "
+          "size: 'Width' and 'Height' are not used.",
+          dealii::Patterns::Double(0));
+    add_to(b);
     b.add("Crop",
           "",
           "Optional window of the image, in pixels: left column, top row "
@@ -145,22 +175,7 @@ namespace tribodyn
                     b.path("File"),
                     "'Generator = image' needs the path of a PNG or TIFF "
                     "file.");
-    if (segmentation == Segmentation::thresholds)
-      {
-        check_parameter(!thresholds.empty(),
-                        b.path("Thresholds"),
-                        "'Segmentation = thresholds' needs at least one "
-                        "grey level (two phases).");
-        for (unsigned int k = 1; k < thresholds.size(); ++k)
-          check_parameter(thresholds[k] > thresholds[k - 1],
-                          b.path("Thresholds"),
-                          "the thresholds must increase.");
-      }
-    if (segmentation == Segmentation::colour_table)
-      check_parameter(colour_table.size() >= 2,
-                      b.path("Colour table"),
-                      "'Segmentation = colour table' needs the colours of at "
-                      "least two phases, separated by ';'.");
+    check(b);
   }
 
 
@@ -223,6 +238,147 @@ namespace tribodyn
   }
 
 
+  PixelPhases
+  segment_pixels(const RasterImage            &image,
+                 const PixelWindow            &w,
+                 const SegmentationParameters &p,
+                 const std::string            &section,
+                 const std::string            &file)
+  {
+    // the image row (from the top of the first page) of row r of page z
+    // of the window
+    const auto row = [&](const unsigned int z, const unsigned int r) {
+      return (w.z0 + z) * image.height + w.y0 + r;
+    };
+    std::vector<unsigned int> grey(std::size_t(w.nx) * w.ny * w.nz);
+    for (unsigned int z = 0, k = 0; z < w.nz; ++z)
+      for (unsigned int r = 0; r < w.ny; ++r)
+        for (unsigned int i = 0; i < w.nx; ++i, ++k)
+          grey[k] = image.grey(w.x0 + i, row(z, r));
+
+    PixelPhases                s;
+    std::vector<unsigned int> &ids = s.ids;
+    ids.resize(grey.size());
+    std::ostringstream       how;
+    std::vector<std::string> phase_rule; // for the empty-phase message
+    if (p.segmentation == Segmentation::colour_table)
+      {
+        s.n_phases = p.colour_table.size();
+        for (const auto &c : p.colour_table)
+          phase_rule.push_back("colour '"
+                               + (c.size() == 1 ? std::to_string(c[0])
+                                                : std::to_string(c[0]) + " "
+                                                    + std::to_string(c[1]) + " "
+                                                    + std::to_string(c[2]))
+                               + "'");
+        for (unsigned int z = 0, n = 0; z < w.nz; ++z)
+          for (unsigned int r = 0; r < w.ny; ++r)
+            for (unsigned int i = 0; i < w.nx; ++i, ++n)
+              {
+                const std::size_t k
+                  = std::size_t(row(z, r)) * image.width + w.x0 + i;
+                std::array<unsigned int, 3> rgb;
+                unsigned int                single;
+                if (image.kind == RasterImage::Kind::rgb)
+                  {
+                    rgb    = {{image.samples[3 * k],
+                               image.samples[3 * k + 1],
+                               image.samples[3 * k + 2]}};
+                    single = (rgb[0] == rgb[1] && rgb[1] == rgb[2]) ? rgb[0]
+                                                                    : 1u << 20;
+                  }
+                else if (image.kind == RasterImage::Kind::indexed)
+                  {
+                    single = image.samples[k];
+                    rgb    = image.palette.at(single);
+                  }
+                else
+                  {
+                    single = image.samples[k];
+                    rgb    = {{single, single, single}};
+                  }
+                unsigned int phase = s.n_phases;
+                for (unsigned int q = 0; q < s.n_phases && phase == s.n_phases;
+                     ++q)
+                  {
+                    const auto &c = p.colour_table[q];
+                    if ((c.size() == 1 && c[0] == single)
+                        || (c.size() == 3 && c[0] == rgb[0] && c[1] == rgb[1]
+                            && c[2] == rgb[2]))
+                      phase = q;
+                  }
+                if (phase == s.n_phases)
+                  throw InputError(
+                    "Pixel (column " + std::to_string(w.x0 + i) + ", row "
+                    + std::to_string(w.y0 + r) + " from the top"
+                    + (image.n_pages > 1 ? ", page " + std::to_string(w.z0 + z)
+                                         : std::string())
+                    + ") of the image '" + file + "' has the colour "
+                    + (image.kind == RasterImage::Kind::grey
+                         ? "grey " + std::to_string(single)
+                         : std::to_string(rgb[0]) + " " + std::to_string(rgb[1])
+                             + " " + std::to_string(rgb[2])
+                             + (image.kind == RasterImage::Kind::indexed
+                                  ? " (index " + std::to_string(single) + ")"
+                                  : ""))
+                    + ", which is in no entry of '" + section
+                    + "Colour table'. Add it to the entry of its phase's "
+                      "colour or use 'Segmentation = thresholds'.");
+                ids[n] = phase;
+              }
+        how << "colour table of " << s.n_phases << " colours";
+      }
+    else
+      {
+        std::vector<double> t = p.thresholds;
+        if (p.segmentation == Segmentation::otsu)
+          {
+            t = otsu_thresholds(grey, image.max_grey(), p.n_otsu_phases);
+            how << "Otsu thresholds";
+          }
+        else
+          how << "thresholds";
+        for (unsigned int k = 0; k < t.size(); ++k)
+          how << (k == 0 ? " " : ", ") << t[k];
+        s.n_phases = t.size() + 1;
+        for (unsigned int k = 0; k <= t.size(); ++k)
+          phase_rule.push_back(
+            "grey levels "
+            + (k == 0 ? std::string("below ") + format_number(t[0])
+               : k == t.size()
+                 ? std::string("at or above ") + format_number(t[k - 1])
+                 : "in [" + format_number(t[k - 1]) + ", " + format_number(t[k])
+                     + ")"));
+        for (std::size_t k = 0; k < grey.size(); ++k)
+          ids[k]
+            = std::upper_bound(t.begin(), t.end(), double(grey[k])) - t.begin();
+      }
+    s.how = how.str();
+
+    const bool cropped
+      = w.nx < image.width || w.ny < image.height || w.nz < image.n_pages;
+    std::vector<std::size_t> count(s.n_phases, 0);
+    for (const unsigned int id : ids)
+      ++count[id];
+    for (unsigned int k = 0; k < s.n_phases; ++k)
+      if (count[k] == 0)
+        throw InputError(
+          "The segmentation of the image '" + file + "' (" + s.how
+          + ") leaves phase " + std::to_string(k) + " (" + phase_rule[k]
+          + ") empty: no pixel"
+          + (cropped ? " of the crop window" : std::string())
+          + " falls in it. Change '" + section
+          + (p.segmentation == Segmentation::colour_table ? "Colour table"
+             : p.segmentation == Segmentation::otsu       ? "Otsu phases"
+                                                          : "Thresholds")
+          + "' (the image's grey levels span "
+          + std::to_string(*std::min_element(grey.begin(), grey.end())) + " to "
+          + std::to_string(*std::max_element(grey.begin(), grey.end()))
+          + ") so that every phase has pixels.");
+    return s;
+  }
+
+
   SegmentedImage
   segment_image(const ImageParameters &p)
   {
@@ -261,122 +417,12 @@ namespace tribodyn
                         "pixel size is unknown. Give the size of a pixel in "
                         "m.");
 
-    std::vector<unsigned int> grey(std::size_t(nx) * ny);
-    for (unsigned int r = 0; r < ny; ++r)
-      for (unsigned int i = 0; i < nx; ++i)
-        grey[std::size_t(r) * nx + i] = image.grey(x0 + i, y0 + r);
-
-    // Ids in image order (top row first), then flipped to bottom-first.
-    std::vector<unsigned int> ids(grey.size());
-    std::ostringstream        how;
-    std::vector<std::string>  phase_rule; // for the empty-phase message
-    if (p.segmentation == Segmentation::colour_table)
-      {
-        s.n_phases = p.colour_table.size();
-        for (const auto &c : p.colour_table)
-          phase_rule.push_back("colour '"
-                               + (c.size() == 1 ? std::to_string(c[0])
-                                                : std::to_string(c[0]) + " "
-                                                    + std::to_string(c[1]) + " "
-                                                    + std::to_string(c[2]))
-                               + "'");
-        for (unsigned int r = 0; r < ny; ++r)
-          for (unsigned int i = 0; i < nx; ++i)
-            {
-              const std::size_t k = std::size_t(y0 + r) * image.width + x0 + i;
-              std::array<unsigned int, 3> rgb;
-              unsigned int                single;
-              if (image.kind == RasterImage::Kind::rgb)
-                {
-                  rgb    = {{image.samples[3 * k],
-                             image.samples[3 * k + 1],
-                             image.samples[3 * k + 2]}};
-                  single = (rgb[0] == rgb[1] && rgb[1] == rgb[2]) ? rgb[0]
-                                                                  : 1u << 20;
-                }
-              else if (image.kind == RasterImage::Kind::indexed)
-                {
-                  single = image.samples[k];
-                  rgb    = image.palette.at(single);
-                }
-              else
-                {
-                  single = image.samples[k];
-                  rgb    = {{single, single, single}};
-                }
-              unsigned int phase = s.n_phases;
-              for (unsigned int q = 0; q < s.n_phases && phase == s.n_phases;
-                   ++q)
-                {
-                  const auto &c = p.colour_table[q];
-                  if ((c.size() == 1 && c[0] == single)
-                      || (c.size() == 3 && c[0] == rgb[0] && c[1] == rgb[1]
-                          && c[2] == rgb[2]))
-                    phase = q;
-                }
-              if (phase == s.n_phases)
-                throw InputError(
-                  "Pixel (column " + std::to_string(x0 + i) + ", row "
-                  + std::to_string(y0 + r) + " from the top) of the image '"
-                  + p.file + "' has the colour "
-                  + (image.kind == RasterImage::Kind::grey
-                       ? "grey " + std::to_string(single)
-                       : std::to_string(rgb[0]) + " " + std::to_string(rgb[1])
-                           + " " + std::to_string(rgb[2])
-                           + (image.kind == RasterImage::Kind::indexed
-                                ? " (index " + std::to_string(single) + ")"
-                                : ""))
-                  + ", which is in no entry of '" + section
-                  + "Colour table'. Add it to the entry of its phase's colour "
-                    "or use 'Segmentation = thresholds'.");
-              ids[std::size_t(r) * nx + i] = phase;
-            }
-        how << "colour table of " << s.n_phases << " colours";
-      }
-    else
-      {
-        std::vector<double> t = p.thresholds;
-        if (p.segmentation == Segmentation::otsu)
-          {
-            t = otsu_thresholds(grey, image.max_grey(), p.n_otsu_phases);
-            how << "Otsu thresholds";
-          }
-        else
-          how << "thresholds";
-        for (unsigned int k = 0; k < t.size(); ++k)
-          how << (k == 0 ? " " : ", ") << t[k];
-        s.n_phases = t.size() + 1;
-        for (unsigned int k = 0; k <= t.size(); ++k)
-          phase_rule.push_back(
-            "grey levels "
-            + (k == 0 ? std::string("below ") + format_number(t[0])
-               : k == t.size()
-                 ? std::string("at or above ") + format_number(t[k - 1])
-                 : "in [" + format_number(t[k - 1]) + ", " + format_number(t[k])
-                     + ")"));
-        for (std::size_t k = 0; k < grey.size(); ++k)
-          ids[k]
-            = std::upper_bound(t.begin(), t.end(), double(grey[k])) - t.begin();
-      }
-
-    std::vector<std::size_t> count(s.n_phases, 0);
-    for (const unsigned int id : ids)
-      ++count[id];
-    for (unsigned int k = 0; k < s.n_phases; ++k)
-      if (count[k] == 0)
-        throw InputError(
-          "The segmentation of the image '" + p.file + "' (" + how.str()
-          + ") leaves phase " + std::to_string(k) + " (" + phase_rule[k]
-          + ") empty: no pixel"
-          + (p.crop[2] > 0 ? " of the crop window" : std::string())
-          + " falls in it. Change '" + section
-          + (p.segmentation == Segmentation::colour_table ? "Colour table"
-             : p.segmentation == Segmentation::otsu       ? "Otsu phases"
-                                                          : "Thresholds")
-          + "' (the image's grey levels span "
-          + std::to_string(*std::min_element(grey.begin(), grey.end())) + " to "
-          + std::to_string(*std::max_element(grey.begin(), grey.end()))
-          + ") so that every phase has pixels.");
+    // Ids in image order (top row first), then turned and flipped to
+    // bottom-first.
+    PixelPhases phases = segment_pixels(
+      image, PixelWindow{x0, y0, 0, nx, ny, 1}, p, section, p.file);
+    const std::vector<unsigned int> &ids = phases.ids;
+    s.n_phases                           = phases.n_phases;
 
     // Turned counter-clockwise by 'Rotation' (pixel (i, r) of the window,
     // r from the top, goes to (i', r') of the turned one), then stored from
@@ -407,7 +453,7 @@ namespace tribodyn
       d << ", crop " << x0 << " " << y0 << " " << nx << " " << ny;
     if (p.rotation != 0)
       d << ", turned " << p.rotation << " degrees counter-clockwise";
-    d << "; " << how.str() << ")";
+    d << "; " << phases.how << ")";
     s.description = d.str();
     return s;
   }

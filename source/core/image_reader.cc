@@ -57,6 +57,8 @@ namespace tribodyn
             : std::to_string(bit_depth) + "-bit "
                 + (kind == Kind::grey ? "grey" : "RGB"))
       << ", " << width << " x " << height << " pixels";
+    if (n_pages > 1)
+      s << ", " << n_pages << " pages";
     return s.str();
   }
 
@@ -232,26 +234,17 @@ namespace tribodyn
     }
 
 
+    /**
+     * Read the current page (directory) of @p tif. @p refuse makes the
+     * InputError of a layout tribodyn does not read (and closes the file),
+     * @p unreadable that of a row libtiff cannot decode.
+     */
+    template <typename Refuse, typename Unreadable>
     RasterImage
-    read_tiff(const std::string &file_name, const std::string &parameter)
+    read_tiff_page(TIFF             *tif,
+                   const Refuse     &refuse,
+                   const Unreadable &unreadable)
     {
-      TIFFSetErrorHandler(tiff_error_handler);
-      TIFFSetWarningHandler(tiff_warning_handler);
-      tiff_message.clear();
-      TIFF *tif = TIFFOpen(file_name.c_str(), "r");
-      if (!tif)
-        throw InputError(corrupt(file_name, "TIFF", parameter, tiff_message));
-      const auto refuse = [&](const std::string &cause) {
-        TIFFClose(tif);
-        return InputError("The image file '" + file_name + "' (parameter '"
-                          + parameter
-                          + "') is a TIFF that tribodyn does not "
-                            "read: "
-                          + cause
-                          + ". Save it as an uncompressed, LZW, Deflate "
-                            "or PackBits TIFF in strips with 8- or 16-bit "
-                            "grey, indexed or RGB pixels (or as a PNG).");
-      };
       std::uint32_t width = 0, height = 0;
       std::uint16_t bits = 1, samples_per_pixel = 1, photometric = 0,
                     planar = PLANARCONFIG_CONTIG, sample_format = 1, extra = 0;
@@ -322,14 +315,7 @@ namespace tribodyn
         {
           tiff_message.clear();
           if (TIFFReadScanline(tif, line.data(), r) < 0)
-            {
-              TIFFClose(tif);
-              throw InputError(
-                corrupt(file_name,
-                        "TIFF",
-                        parameter,
-                        "row " + std::to_string(r) + ": " + tiff_message));
-            }
+            throw unreadable(r);
           for (std::uint32_t i = 0; i < width; ++i)
             for (unsigned int c = 0; c < channels; ++c)
               {
@@ -357,6 +343,82 @@ namespace tribodyn
           image.pixel_width   = length / x_resolution;
           image.pixel_height  = length / y_resolution;
         }
+      return image;
+    }
+
+
+    /// Read the first page of a TIFF, or with @p all_pages every page, one
+    /// below the other (RasterImage::n_pages).
+    RasterImage
+    read_tiff(const std::string &file_name,
+              const std::string &parameter,
+              const bool         all_pages)
+    {
+      TIFFSetErrorHandler(tiff_error_handler);
+      TIFFSetWarningHandler(tiff_warning_handler);
+      tiff_message.clear();
+      TIFF *tif = TIFFOpen(file_name.c_str(), "r");
+      if (!tif)
+        throw InputError(corrupt(file_name, "TIFF", parameter, tiff_message));
+      unsigned int page  = 0;
+      const auto   where = [&]() {
+        return page > 0 ? "page " + std::to_string(page) + " (from 0): "
+                          : std::string();
+      };
+      const auto refuse = [&](const std::string &cause) {
+        TIFFClose(tif);
+        return InputError("The image file '" + file_name + "' (parameter '"
+                          + parameter
+                          + "') is a TIFF that tribodyn does not "
+                            "read: "
+                          + where() + cause
+                          + ". Save it as an uncompressed, LZW, Deflate "
+                            "or PackBits TIFF in strips with 8- or 16-bit "
+                            "grey, indexed or RGB pixels (or as a PNG).");
+      };
+      const auto unreadable = [&](const std::uint32_t row) {
+        TIFFClose(tif);
+        return InputError(corrupt(file_name,
+                                  "TIFF",
+                                  parameter,
+                                  where() + "row " + std::to_string(row) + ": "
+                                    + tiff_message));
+      };
+      RasterImage       image = read_tiff_page(tif, refuse, unreadable);
+      const std::string first = image.description();
+      while (all_pages && TIFFReadDirectory(tif))
+        {
+          ++page;
+          const RasterImage next = read_tiff_page(tif, refuse, unreadable);
+          if (next.width != image.width || next.height != image.height
+              || next.kind != image.kind || next.bit_depth != image.bit_depth
+              || next.palette != image.palette)
+            {
+              TIFFClose(tif);
+              throw InputError(
+                "The image file '" + file_name + "' (parameter '" + parameter
+                + "') is not a stack of equal pages: page "
+                + std::to_string(page) + " (from 0) is '" + next.description()
+                + "' but page 0 '" + first
+                + "'. Save every slice of the stack with the same "
+                  "width, height and pixel type (crop or pad the slices "
+                  "that differ).");
+            }
+          image.samples.insert(image.samples.end(),
+                               next.samples.begin(),
+                               next.samples.end());
+          ++image.n_pages;
+        }
+      if (all_pages && !tiff_message.empty())
+        {
+          TIFFClose(tif);
+          throw InputError(corrupt(file_name,
+                                   "TIFF",
+                                   parameter,
+                                   "the directory after page "
+                                     + std::to_string(page) + ": "
+                                     + tiff_message));
+        }
       TIFFClose(tif);
       return image;
     }
@@ -364,7 +426,9 @@ namespace tribodyn
 
 
   RasterImage
-  read_raster_image(const std::string &file_name, const std::string &parameter)
+  read_raster_image(const std::string &file_name,
+                    const std::string &parameter,
+                    const bool         all_pages)
   {
     std::FILE *fp = std::fopen(file_name.c_str(), "rb");
     if (!fp)
@@ -396,7 +460,7 @@ namespace tribodyn
              && signature[3] == 0)
             || (signature[0] == 'M' && signature[1] == 'M' && signature[2] == 0
                 && signature[3] == 42)))
-      return read_tiff(file_name, parameter);
+      return read_tiff(file_name, parameter, all_pages);
     throw InputError("The image file '" + file_name + "' (parameter '"
                      + parameter
                      + "') has an unsupported format: it is neither a PNG "

@@ -623,10 +623,11 @@ namespace tribodyn
         const auto averages = postprocess(bc, fields);
         for (unsigned int load_case = 0; load_case < n_voigt; ++load_case)
           {
-            const unsigned int iterations
-              = result.load_cases[load_case].cg_iterations;
-            result.load_cases[load_case]               = averages[load_case];
-            result.load_cases[load_case].cg_iterations = iterations;
+            const auto       &solved     = result.load_cases[load_case];
+            CellLoadCase<dim> averaged   = averages[load_case];
+            averaged.cg_iterations       = solved.cg_iterations;
+            averaged.cg_time             = solved.cg_time;
+            result.load_cases[load_case] = averaged;
             if constexpr (dim == 2)
               if (!output_directory.empty())
                 {

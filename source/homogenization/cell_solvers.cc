@@ -7,6 +7,7 @@
 
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
+#include <chrono>
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -26,9 +27,10 @@ namespace tribodyn
     namespace
     {
       /// Run @p solve (a CG solve), turning Trilinos's and deal.II's
-      /// failures into errors that say what to change.
+      /// failures into errors that say what to change; returns its wall
+      /// time (s).
       template <typename F>
-      void
+      double
       run_cg(const BoundaryCondition bc,
              const unsigned int      load_case,
              const double            rhs_norm,
@@ -37,6 +39,7 @@ namespace tribodyn
         const std::string which = "The " + to_string(bc)
                                   + " cell problem, load case "
                                   + std::to_string(load_case);
+        const auto start = std::chrono::steady_clock::now();
         try
           {
             solve();
@@ -60,6 +63,9 @@ namespace tribodyn
                              "tolerance' is below what double precision "
                              "can reach; raise it (1e-10 is ample).");
           }
+        return std::chrono::duration<double>(std::chrono::steady_clock::now()
+                                             - start)
+          .count();
       }
     } // namespace
 
@@ -152,12 +158,13 @@ namespace tribodyn
                                 /*log_history = */ false,
                                 /*log_result = */ false);
           TrilinosWrappers::SolverCG cg(control);
-          run_cg(bc, load_case, rhs_norm, [&]() {
-            cg.solve(system_matrix,
-                     solutions[load_case],
-                     system_rhs[load_case],
-                     preconditioner);
-          });
+          result.load_cases[load_case].cg_time
+            = run_cg(bc, load_case, rhs_norm, [&]() {
+                cg.solve(system_matrix,
+                         solutions[load_case],
+                         system_rhs[load_case],
+                         preconditioner);
+              });
           result.load_cases[load_case].cg_iterations = control.last_step();
         }
     }
@@ -226,9 +233,10 @@ namespace tribodyn
                                 parameters.solver_tolerance * rhs_norm,
                                 /*log_history = */ false,
                                 /*log_result = */ false);
-          run_cg(bc, load_case, rhs_norm, [&]() {
-            solver->solve(control, solutions[load_case]);
-          });
+          result.load_cases[load_case].cg_time
+            = run_cg(bc, load_case, rhs_norm, [&]() {
+                solver->solve(control, solutions[load_case]);
+              });
           result.load_cases[load_case].cg_iterations = control.last_step();
         }
     }

@@ -263,9 +263,31 @@ namespace tribodyn
           results.push_back(r);
           JsonValue j          = to_json(r.properties);
           JsonValue iterations = JsonValue::array();
+          JsonValue cg_times   = JsonValue::array();
+          JsonValue per_dof    = JsonValue::array();
+          // time per DoF per CG iteration: of each solve (null when CG
+          // took no iteration) and over the six
+          const double n_dofs           = cell_problem.n_dofs();
+          double       total_time       = 0;
+          unsigned int total_iterations = 0;
           for (const auto &lc : r.load_cases)
-            iterations.push_back(lc.cg_iterations);
-          j["cg_iterations"]     = iterations;
+            {
+              iterations.push_back(lc.cg_iterations);
+              cg_times.push_back(lc.cg_time);
+              per_dof.push_back(lc.cg_iterations > 0 ? JsonValue(
+                                  lc.cg_time / (n_dofs * lc.cg_iterations))
+                                                     : JsonValue());
+              total_time += lc.cg_time;
+              total_iterations += lc.cg_iterations;
+            }
+          const double mean_per_dof
+            = total_iterations > 0 ? total_time / (n_dofs * total_iterations)
+                                   : 0.;
+          j["cg_iterations"]                = iterations;
+          j["cg_time_s"]                    = cg_times;
+          j["time_per_dof_per_iteration_s"] = per_dof;
+          j["mean_time_per_dof_per_iteration_s"]
+            = total_iterations > 0 ? JsonValue(mean_per_dof) : JsonValue();
           j["wall_time_s"]       = r.wall_time;
           j["preconditioner"]    = r.multigrid ? "multigrid" : "AMG";
           summary[to_string(bc)] = j;
@@ -275,7 +297,9 @@ namespace tribodyn
                 << std::setprecision(2) << r.wall_time << " s (CG iterations";
           for (const auto &lc : r.load_cases)
             pcout << " " << lc.cg_iterations;
-          pcout << ")" << std::endl;
+          pcout << "; CG " << total_time << " s, " << std::setprecision(1)
+                << 1e9 * mean_per_dof << " ns per DoF per iteration)"
+                << std::endl;
         }
 
       const VolumeProperties voigt  = voigt_estimate_3d(stiffness, fractions);

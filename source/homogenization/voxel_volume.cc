@@ -19,12 +19,14 @@ namespace tribodyn
 
     namespace
     {
-      constexpr SelectionTable<VolumeMorphologyParameters::Generator, 4>
+      constexpr SelectionTable<VolumeMorphologyParameters::Generator, 5>
         generator_choices{
           {{"laminate", VolumeMorphologyParameters::Generator::laminate},
            {"spheres", VolumeMorphologyParameters::Generator::spheres},
            {"fibres", VolumeMorphologyParameters::Generator::fibres},
-           {"raw file", VolumeMorphologyParameters::Generator::raw_file}}};
+           {"raw file", VolumeMorphologyParameters::Generator::raw_file},
+           {"image stack",
+            VolumeMorphologyParameters::Generator::image_stack}}};
       constexpr SelectionTable<unsigned int, 3> axis_choices{
         {{"x", 0u}, {"y", 1u}, {"z", 2u}}};
     } // namespace
@@ -41,19 +43,22 @@ namespace tribodyn
             "non-overlapping spheres of the heterogeneity, placed "
             "periodically), 'fibres' (the same with short cylinders aligned "
             "with 'Fibre axis'), 'raw file' (material ids read from the raw "
-            "volume that 'Raw header' describes).",
+            "volume that 'Raw header' describes), 'image stack' (a "
+            "multi-page TIFF segmented into phases, subsection 'Image "
+            "stack').",
             generator_choices);
       const char *axes[3] = {"x", "y", "z"};
       for (unsigned int d = 0; d < 3; ++d)
         b.add(std::string("Voxels in ") + axes[d],
               n_voxels[d],
               std::string("Number of voxels along ") + axes[d]
-                + " (generators; a raw file gives its own size).",
+                + " (generators; a raw file or an image stack gives its "
+                  "own size).",
               Patterns::Integer(2));
       b.add("Voxel size",
             voxel_size,
-            "Edge of a cubic voxel of the generators (m); a raw file's "
-            "header gives its own.",
+            "Edge of a cubic voxel of the generators and of an image stack "
+            "(m); a raw file's header gives its own.",
             Patterns::Double(),
             Interval{0, 1e3, true, false});
       b.add("Volume fraction",
@@ -106,6 +111,7 @@ namespace tribodyn
     VolumeMorphologyParameters::declare_parameters(ParameterHandler &prm)
     {
       VolumeMorphologyParameters().binding().declare(prm);
+      ImageStackParameters::declare_parameters(prm);
     }
 
 
@@ -114,6 +120,7 @@ namespace tribodyn
     {
       const ParameterBinding b = binding();
       b.parse(prm);
+      image_stack.parse_parameters(prm, generator == Generator::image_stack);
       if (generator == Generator::raw_file)
         check_parameter(!raw_header.empty(),
                         b.path("Raw header"),
@@ -372,6 +379,9 @@ namespace tribodyn
           case VolumeMorphologyParameters::Generator::spheres:
           case VolumeMorphologyParameters::Generator::fibres:
             return make_inclusions(parameters);
+          case VolumeMorphologyParameters::Generator::image_stack:
+            return read_image_stack(parameters.image_stack,
+                                    parameters.voxel_size);
           case VolumeMorphologyParameters::Generator::raw_file:
             break;
         }

@@ -170,6 +170,72 @@ def run(tribodyn, directory, prm_text, ranks=1):
         return json.load(f)
 
 
+def check_laminate(check, s, given, fractions, normal, max_iterations=30):
+    """The checks of a laminate's summary.json `s` (layers normal to the
+    axis `normal`, phases of (E, nu) `given` at `fractions`) against its
+    exact stiffness laminate_exact(), used by check_volume_laminate.py and
+    check_volume_image_laminate.py:
+    - periodic C and S = the exact ones, |dC|/|C| <= 1e-10: the exact field
+      is piecewise affine, in the Q1 space, and periodic (the CG tolerance
+      1e-12 allows ~1e-12);
+    - Huet: C^KUBC - C_exact and C_exact - C^SUBC positive semi-definite
+      (to -1e-9 |C|);
+    - the exact load cases of KUBC and SUBC: under the shear in the layers'
+      plane the uniform strain is the solution (KUBC: that diagonal entry
+      = <mu>, its column diagonal), under the two shears of the planes
+      across the layers the uniform stress is (SUBC: S = <1/mu>), 1e-10.
+    - fewer than `max_iterations` CG iterations per load case (a guard
+      against a preconditioner gone wrong; the bound depends on the
+      contrast).
+    Voigt order xx, yy, zz, yz, xz, xy: the shear in the plane normal to
+    axis a is 3 + a."""
+    C_phase = [isotropic_stiffness(E, nu) for E, nu in given]
+    exact = laminate_exact(C_phase, fractions, normal)
+    scale = norm(exact)
+    per = s["periodic"]["C"]
+    error = norm(sub(per, exact)) / scale
+    check(error <= 1e-10,
+          "periodic C = exact laminate C: |dC|/|C| = %.2e <= 1e-10" % error)
+    S_exact = inverse(exact)
+    error_S = norm(sub(s["periodic"]["S"], S_exact)) / norm(S_exact)
+    check(error_S <= 1e-10, "periodic S = exact laminate S: %.2e <= 1e-10"
+          % error_S)
+    axis = "xyz"[normal]
+    E_n = 1 / S_exact[normal][normal]
+    check(abs(s["periodic"]["E_" + axis] - E_n) <= 1e-10 * E_n,
+          "periodic E_%s = %.6g GPa (exact %.6g)"
+          % (axis, s["periodic"]["E_" + axis] / 1e9, E_n / 1e9))
+
+    kubc, subc = s["KUBC"]["C"], s["SUBC"]["C"]
+    lower = min_eigenvalue(sub(kubc, exact)) / scale
+    upper = min_eigenvalue(sub(exact, subc)) / scale
+    check(lower >= -1e-9,
+          "C^KUBC - C_exact >= 0 (min eigenvalue / |C| = %.2e)" % lower)
+    check(upper >= -1e-9,
+          "C_exact - C^SUBC >= 0 (min eigenvalue / |C| = %.2e)" % upper)
+    mu = [E / (2 * (1 + nu)) for E, nu in given]
+    mu_voigt = sum(f * m for f, m in zip(fractions, mu))
+    inv_mu_reuss = sum(f / m for f, m in zip(fractions, mu))
+    q = 3 + normal
+    check(abs(kubc[q][q] - mu_voigt) <= 1e-10 * mu_voigt,
+          "KUBC C_%d%d = <mu> = %.6g GPa (got %.6g)"
+          % (q + 1, q + 1, mu_voigt / 1e9, kubc[q][q] / 1e9))
+    off = max(abs(kubc[i][q]) for i in range(6) if i != q) / scale
+    check(off <= 1e-10, "KUBC column %d diagonal (%.1e)" % (q + 1, off))
+    S_subc = s["SUBC"]["S"]
+    for i in (3 + (normal + 1) % 3, 3 + (normal + 2) % 3):
+        check(abs(S_subc[i][i] - inv_mu_reuss) <= 1e-10 * inv_mu_reuss,
+              "SUBC S_%d%d = <1/mu> (relative error %.1e)"
+              % (i + 1, i + 1, abs(S_subc[i][i] / inv_mu_reuss - 1)))
+    check(s["huet"]["KUBC_minus_SUBC_holds"] is True,
+          "summary.json reports Huet's ordering KUBC >= SUBC")
+    check(all(0 <= n < max_iterations for bc in ("KUBC", "SUBC", "periodic")
+              for n in s[bc]["cg_iterations"]),
+          "CG iterations below %d: %s"
+          % (max_iterations, {bc: s[bc]["cg_iterations"]
+                              for bc in ("KUBC", "SUBC", "periodic")}))
+
+
 class Checks:
     """PASS/FAIL lines and the exit code."""
 

@@ -232,6 +232,9 @@ namespace tribodyn
       /// <sigma_zz> (Pa) of plane strain (2D only)
       double       mean_stress_zz = 0;
       unsigned int cg_iterations  = 0;
+      /// Wall time of its CG solve (s; the preconditioner's setup and the
+      /// right-hand side not included).
+      double cg_time = 0;
     };
 
     /// The load cases of one boundary condition (one per Voigt component)

@@ -6,6 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <string>
 #include <tribodyn/core/parameter_binding.h>
+#include <tribodyn/homogenization/image_stack.h>
 #include <vector>
 
 namespace tribodyn
@@ -16,21 +17,22 @@ namespace tribodyn
      * Parameters of the subsection "Morphology" of the 3D problem (`set
      * Problem = volume_homogenization`): a box of voxels, generated
      * (laminate, random spheres or aligned fibres) or read from a raw volume
-     * described by a small header file.
+     * described by a small header file or from a multi-page TIFF.
      */
     struct VolumeMorphologyParameters
     {
       enum class Generator
       {
-        laminate, ///< layers through the whole box, normal to x, y or z
-        spheres,  ///< random non-overlapping spheres (periodic placement)
-        fibres,   ///< the same with short aligned cylinders
-        raw_file  ///< material ids read from a raw volume with a header
+        laminate,   ///< layers through the whole box, normal to x, y or z
+        spheres,    ///< random non-overlapping spheres (periodic placement)
+        fibres,     ///< the same with short aligned cylinders
+        raw_file,   ///< material ids read from a raw volume with a header
+        image_stack ///< a multi-page TIFF, segmented (ImageStackParameters)
       };
 
       Generator                   generator = Generator::spheres;
       std::array<unsigned int, 3> n_voxels  = {{32, 32, 32}};
-      /// Edge of a (cubic) voxel of the generators (m).
+      /// Edge of a (cubic) voxel of the generators and image stacks (m).
       double voxel_size = 1e-5;
       /// Target volume fraction of the heterogeneity (phase 1).
       double volume_fraction = 0.2;
@@ -46,6 +48,8 @@ namespace tribodyn
       unsigned int  fibre_axis   = 2;
       /// Raw file: path of the header file.
       std::string raw_header;
+      /// Image stack: the subsection "Morphology/Image stack".
+      ImageStackParameters image_stack;
 
       /// The entries of "Morphology", bound to the members above.
       ParameterBinding
