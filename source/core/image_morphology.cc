@@ -110,7 +110,7 @@ namespace tribodyn
   ImageParameters::binding()
   {
     using dealii::Patterns::Anything;
-    ParameterBinding b("Morphology/Image");
+    ParameterBinding b(section);
     b.add("File",
           file,
           "PNG or TIFF micrograph ('Generator = image'): 8- or 16-bit grey, "

@@ -13,10 +13,18 @@ namespace tribodyn
 {
   namespace homogenization
   {
+    namespace
+    {
+      /// The subsection of the stack's entries (the binding's and the
+      /// messages' path).
+      const std::string section = "Morphology/Image stack/";
+    } // namespace
+
+
     ParameterBinding
     ImageStackParameters::binding()
     {
-      ParameterBinding b("Morphology/Image stack");
+      ParameterBinding b(section);
       b.add("File",
             file,
             "Multi-page TIFF ('Generator = image stack'), one page per "
@@ -81,7 +89,6 @@ namespace tribodyn
     VoxelVolume
     read_image_stack(const ImageStackParameters &p, const double voxel_size)
     {
-      const std::string section = "Morphology/Image stack/";
       const RasterImage image
         = read_raster_image(p.file, section + "File", true);
       check_parameter(image.n_pages >= 2 && image.width >= 2

@@ -121,23 +121,28 @@ namespace tribodyn
             "packing; contact area S = d^2/(2 sqrt 2), volume V = d^3/sqrt 2.",
             Double(),
             Interval{0, inf, true, true});
-      for (Point3 *corner : {&domain_lower, &domain_upper})
-        {
-          const bool        lower = corner == &domain_lower;
-          const std::string name  = lower ? "Domain lower" : "Domain upper";
-          b.add(name,
-                point_text(*corner),
-                lower ? "Lower corner of the simulation box (m). In periodic "
-                        "directions the box is the period and its length "
-                        "must hold a whole number of FCC cells (a = d sqrt 2)."
-                      : "Upper corner of the simulation box (m). In "
-                        "non-periodic directions automata must stay inside it "
-                        "(leave room for the motion).",
-                Patterns::Anything(),
-                [corner, p = b.path(name)](const std::string &text) {
-                  *corner = parse_point(text, p);
-                });
-        }
+      // a corner of the box: its entry reads "x, y, z" into the member
+      const auto add_corner = [&b](const std::string &name,
+                                   Point3            &corner,
+                                   const std::string &documentation) {
+        b.add(name,
+              point_text(corner),
+              documentation,
+              Patterns::Anything(),
+              [&corner, p = b.path(name)](const std::string &text) {
+                corner = parse_point(text, p);
+              });
+      };
+      add_corner("Domain lower",
+                 domain_lower,
+                 "Lower corner of the simulation box (m). In periodic "
+                 "directions the box is the period and its length must hold a "
+                 "whole number of FCC cells (a = d sqrt 2).");
+      add_corner("Domain upper",
+                 domain_upper,
+                 "Upper corner of the simulation box (m). In non-periodic "
+                 "directions automata must stay inside it (leave room for the "
+                 "motion).");
       for (unsigned int d = 0; d < 3; ++d)
         b.add(std::string("Periodic ") + "xyz"[d],
               periodic[d],
