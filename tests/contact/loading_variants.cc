@@ -24,7 +24,7 @@
 //       slip at about |V|), so only a change of the mean by more than 1e-4
 //       (a parameter parsed but not used would leave it to round-off);
 // (4) the initial velocity perturbation has the kinetic energy of its
-//     distribution (10 %).
+//     distribution (5 %: the held dofs and 3 sampling sd; measured 0.66 %).
 
 #include "contact_test_tools.h"
 
@@ -161,9 +161,12 @@ main(int argc, char **argv)
         "Regularization rate = local slip rate changes mu's mean by > 1e-4");
 
   // (4) The initial velocity perturbation: uniform in [-a, a] per free dof,
-  // so the initial kinetic energy is about M a^2 / 3 (both components; the
-  // held top x dofs, 1/17 of the x dofs, and the sampling fluctuation
-  // (~1 %) make up less than 10 %).
+  // so the initial kinetic energy is about M a^2 / 3 (both components). The
+  // held top x dofs (1/17 of the x dofs, carrying half an interior node's
+  // mass: about -1.5 %) and the sampling fluctuation (v^2 of a uniform
+  // variable has a relative standard deviation of 0.89 per dof: about
+  // 1.1 % over the 7 458 dofs; 3 sd 3.3 %) make up less than 5 %
+  // (measured -0.66 %: the seeded sample is fixed).
   ContactRun   noisy(common + R"(
     subsection Loading
       set Initial velocity perturbation = 0.01
@@ -172,7 +175,7 @@ main(int argc, char **argv)
   const auto  &series = noisy.run();
   check_relative(series.front().kinetic_energy,
                  noisy.solver->total_mass() * amp * amp / 3,
-                 0.1,
+                 0.05,
                  "initial kinetic energy of the velocity perturbation");
   return result();
 }

@@ -10,8 +10,10 @@ The constants are fitted again here from series.csv, as doc/theory/mca.md
 describes (E, nu: least squares on the loading branch below 'Elastic fit
 fraction' of sigma_y; sigma_y: where that line meets the fit of the last
 40 % of the strain; H = E E_t / (E - E_t)); the summary must agree with
-this fit within 2e-3 (measured: E 1.9e-4, nu 4.8e-4, sigma_y 1e-5, H 6e-5,
-the code's window keeps slightly fewer points) and the fit with the
+this fit within E 1e-3, nu 2e-3, sigma_y 1e-4, H 2e-4 (measured: E 1.9e-4 and
+2.1e-4, nu 4.8e-4 and 4.5e-4, sigma_y 1e-5 and 1.1e-5, H 6e-5 and 1.9e-5 on
+two builds whose pair arithmetic differs by round-off: the code's window
+keeps slightly fewer points) and the fit with the
 references within: E 2 %, nu 3 %, sigma_y 2 %, H 5 %. The nominal modulus
 (reaction over the nominal section) is lower because of the free surface
 layer: within 15 % here (see compare_resolution.py for its convergence).
@@ -73,11 +75,11 @@ plastic = [i for i in range(len(eps)) if eps[i] >= 0.6 * max(eps)]
 Et, s1 = line([eps[i] for i in plastic], [sig[i] for i in plastic])
 sy = E * (s1 - s0) / (E - Et) + s0
 H = E * Et / (E - Et)
-for key, value in [("youngs_modulus", E), ("poisson_ratio", nu),
-                   ("yield_stress", sy), ("hardening_modulus", H)]:
+for key, value, tol in [("youngs_modulus", E, 1e-3), ("poisson_ratio", nu, 2e-3),
+                        ("yield_stress", sy, 1e-4), ("hardening_modulus", H, 2e-4)]:
     v = s.get(key)
-    check(v is not None and abs(v / value - 1) <= 2e-3,
-          "%s = %s, fitted here from series.csv %.6g (tolerance 2e-3)" % (key, v, value))
+    check(v is not None and abs(v / value - 1) <= tol,
+          "%s = %s, fitted here from series.csv %.6g (tolerance %g)" % (key, v, value, tol))
 for name, value, ref, tol in [("E", E, E_ref, 0.02), ("nu", nu, nu_ref, 0.03),
                               ("sigma_y", sy, sy_ref, 0.02), ("H", H, H_ref, 0.05)]:
     check(abs(value - ref) <= tol * abs(ref),

@@ -2,9 +2,10 @@
 // section 2.2: R = 10 nm, L = 70 nm, ~2 % of the contacting part).
 //
 // Checks and tolerances:
-// - the achieved cylinder fraction is within 10 % of the 2 % target (the
-//   count is rounded to the nearest whole cylinder: here 0.5 / n < 1 %), and
-//   it is reported exactly: n pi R^2 L / V to round-off (1e-12), and a
+// - the achieved cylinder fraction is the 2 % target to within half a
+//   cylinder, 0.5 pi R^2 L / V (the count is round(target V / pi R^2 L):
+//   here 0.5 / n < 1 % of the target; measured 0.73 %), and it is reported
+//   exactly: n pi R^2 L / V to round-off (1e-12), and a
 //   Monte Carlo estimate over the box through the index (images included)
 //   agrees within 4 binomial standard deviations sqrt(f (1 - f) / N);
 // - no two cylinders, over all pairs of primaries and all periodic shifts,
@@ -81,12 +82,14 @@ main(int argc, char **argv)
   std::cout << set.n_cylinders << " cylinders, " << set.n_voids << " voids, "
             << set.shapes.size() << " shapes with images" << std::endl;
 
+  const double one_cylinder = M_PI * R * R * L / V;
   check_relative(set.cylinder_volume_fraction,
                  0.02,
-                 0.10,
-                 "achieved cylinder fraction vs the 2 % target");
+                 (0.5 * one_cylinder / 0.02) * (1 + 1e-12),
+                 "achieved cylinder fraction vs the 2 % target (within half "
+                 "a cylinder)");
   check_relative(set.cylinder_volume_fraction,
-                 set.n_cylinders * M_PI * R * R * L / V,
+                 set.n_cylinders * one_cylinder,
                  1e-12,
                  "reported fraction = n pi R^2 L / V");
   const InclusionIndex index(set.shapes, p.lower, p.upper, p.periodic);

@@ -16,11 +16,16 @@
 // 0.8 MPa, carbon 32 kPa, yield strains ~1e-6) with the seed's E, nu and
 // hardening moduli; rate-independent J2 plasticity depends on the stress
 // level only through sigma_y/E, so the return mapping is the same.
-// Checked: axial stress against the analytic curve within 0.1 % of the
-// current stress; lateral stresses below 0.1 % of the axial one; the first
-// yield (kink) at sigma_y within 0.1 %; the fitted slope of each hardening
-// branch equal to E_t within 1 %; the plastic strain within 0.1 % of the
-// analytic one at the end.
+// Checked (measured errors, steel / carbon, in brackets): axial stress
+// against the analytic curve within 2e-4 of the current stress (1.2e-5 /
+// 4.1e-5); lateral stresses below 2e-4 of the axial one (9.8e-6 /
+// 4.1e-5); the first yield (kink) at sigma_y within 1e-3 (3.7e-4 / 3.0e-4:
+// the kink is the first increment with plastic strain, one increment's
+// E de past sigma_y); the fitted slope of the first hardening branch equal
+// to E_t within 1e-3 (9.5e-5 / 1.5e-4), of carbon's second, flat branch
+// within 1 % (3.7e-3: the finite kinematics amplified by E/E_t = 400); the
+// plastic strain within 1e-4 of the analytic one at the end (1.7e-5 /
+// 5.9e-6).
 
 #include "mca_test_tools.h"
 
@@ -149,9 +154,9 @@ namespace
     const std::string name
       = m.name + (c.bilinear ? " (bilinear)" : " (linear)");
     check_relative(
-      worst_axial, 0, 1e-3, name + ": max |sigma_zz - analytic| / sigma", 1.);
+      worst_axial, 0, 2e-4, name + ": max |sigma_zz - analytic| / sigma", 1.);
     check_relative(
-      worst_lateral, 0, 1e-3, name + ": max lateral |sigma| / sigma_zz", 1.);
+      worst_lateral, 0, 2e-4, name + ": max lateral |sigma| / sigma_zz", 1.);
     check_relative(kink, c.sy, 1e-3, name + ": stress at first yield");
     // slopes of the hardening branches (fit on the middle of each)
     auto slope = [&](const double lo, const double hi) {
@@ -172,7 +177,7 @@ namespace
     if (!c.bilinear)
       check_relative(slope(1.5 * ey, e_max),
                      Et1,
-                     1e-2,
+                     1e-3,
                      name + ": hardening slope E H/(E + H)");
     else
       {
@@ -181,14 +186,14 @@ namespace
         const double Et2 = c.E * c.H2 / (c.E + c.H2);
         check_relative(slope(1.5 * ey, 0.9 * e1),
                        Et1,
-                       1e-2,
+                       1e-3,
                        name + ": first hardening slope E H1/(E + H1)");
         check_relative(slope(1.2 * e1, e_max),
                        Et2,
                        1e-2,
                        name + ": second hardening slope E H2/(E + H2)");
       }
-    check_relative(ep_end, ep_ref, 1e-3, name + ": final plastic strain");
+    check_relative(ep_end, ep_ref, 1e-4, name + ": final plastic strain");
   }
 } // namespace
 

@@ -7,7 +7,8 @@
 // contact points including the automata's rotations, so no stress may
 // appear. Over a finite increment the chord (2 sin(d/2)) and the arc (d)
 // of the contact-point motion differ by d^3/24: the stress left is
-// O(G d^2 theta), ~1e-7 G theta. Tolerance: max |sigma| <= 1e-6 G theta.
+// O(G d^2 theta), ~1e-7 G theta (200 d^3 / 24 = 4e-8 of theta; measured
+// 7.8e-8 G theta). Tolerance: max |sigma| <= 3e-7 G theta.
 // Control: the same motion with 'Rotations = false' (no rotational term)
 // must produce a stress of the order of G theta (> 1e-2 G theta).
 
@@ -73,7 +74,7 @@ main(int argc, char **argv)
   const double without = max_stress_after_rotation(false);
   check_relative(with,
                  0,
-                 1e-6,
+                 3e-7,
                  "max |stress| after a rigid rotation of 0.2 rad, relative "
                  "to G theta",
                  G * theta);
