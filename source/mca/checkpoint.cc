@@ -46,8 +46,9 @@ namespace tribodyn
       // 8: which automata are many-body uniform; 9: that derived from
       // lambda on resume (sync_many_body_shapes()), not saved; 10: the
       // per-automaton arrays from their table (automaton_fields), after the
-      // group reactions
-      constexpr unsigned int state_version = 10;
+      // group reactions; 11: the works of the physical balance
+      // (plastic_work_flow_rule, friction_work_law)
+      constexpr unsigned int state_version = 11;
 
       // Scalars and vectors of trivially copyable types as raw bytes (fast
       // and exact); anything else through Boost's own serialization.

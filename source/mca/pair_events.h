@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <tribodyn/mca/automaton_system.h>
+#include <tribodyn/mca/plasticity.h>
 
 namespace tribodyn
 {
@@ -146,6 +147,8 @@ namespace tribodyn
         {
           // no tension; the friction law's limit on each side
           const double mu = friction_coefficient(law, p);
+          // (read once, before the stores to the pair's stresses)
+          const double limit_factor = verification::coulomb_limit_factor;
           for (const unsigned int side : {0u, 1u})
             {
               double &sigma = side ? sig_j[p] : sig_i[p];
@@ -176,13 +179,20 @@ namespace tribodyn
             {
               double      &a     = side == 0 ? ai : aj;
               const double sigma = side == 0 ? sig_i[p] : sig_j[p];
-              const double limit = -mu * sigma;
+              const double limit = -mu * sigma * limit_factor;
               const double tn    = std::abs(a) * t_norm;
               if (tn > limit)
                 {
                   const double s = tn > 0 ? limit / tn : 0;
                   if (owned(side == 0 ? i : j))
-                    dw[friction_work] += released(side, sigma, sigma, a, a * s);
+                    {
+                      dw[friction_work]
+                        += released(side, sigma, sigma, a, a * s);
+                      // the law's traction times the slip (tn - limit)/k
+                      // (the physical balance, §8.4)
+                      dw[friction_work_law]
+                        += Sp * (-mu * sigma) * (tn - limit) * inv_k_of(side);
+                    }
                   a *= s;
                 }
             }

@@ -471,7 +471,10 @@ namespace tribodyn
                     if (bonded[p])
                       dw[plastic_work] += (owned(i) + owned(j)) * lost;
                     else
-                      dw[friction_work] += (owned(i) + owned(j)) * lost;
+                      {
+                        dw[friction_work] += (owned(i) + owned(j)) * lost;
+                        dw[friction_work_law] += (owned(i) + owned(j)) * lost;
+                      }
                   }
                 // this step's increments, for the releases of pass C
                 if (plastic || !bonded[p] || mat[i] != mat[j]) [[unlikely]]
@@ -549,6 +552,26 @@ namespace tribodyn
     }
 
 
+    namespace
+    {
+      /// The dissipation V sigma_y,mid d eps_p of the flow rule of an
+      /// automaton of stress @p s, over the share of it its sides hold.
+      double
+      flow_rule_work(const Sym3  &inverse_fabric,
+                     const Sym3  &s,
+                     const double volume,
+                     const double sy_old,
+                     const double sy_new,
+                     const double de)
+      {
+        const double sm = (s[0] + s[1] + s[2]) / 3;
+        const Sym3   dev{{s[0] - sm, s[1] - sm, s[2] - sm, s[3], s[4], s[5]}};
+        return volume * 0.5 * (sy_old + sy_new) * de
+               * sides_energy_share(inverse_fabric, dev);
+      }
+    } // namespace
+
+
     void
     AutomatonSystem::radial_returns()
     {
@@ -572,7 +595,11 @@ namespace tribodyn
             {
               const double de     = plastic_increment(m.m, m.G, eps_p[k], q);
               const double sy_new = m.m.yield_stress_at(eps_p[k] + de);
-              M                   = sy_new / q;
+              M = sy_new / q * verification::radial_return_factor;
+              // the dissipation of the flow rule, apart from what the
+              // sides release (the physical balance, §8.4)
+              work[plastic_work_flow_rule] += flow_rule_work(
+                fabric_inverse[k], s, volume[k], sigma_y[k], sy_new, de);
               eps_p[k] += de;
               sigma_y[k] = sy_new;
             }
@@ -731,7 +758,10 @@ namespace tribodyn
                                                 geometry.moment_scale(p),
                                                 K);
                       if (owned(i))
-                        dw[friction_work] += slip_work;
+                        {
+                          dw[friction_work] += slip_work;
+                          dw[friction_work_law] += slip_work;
+                        }
                     }
                   if (owned(i))
                     for (unsigned int c = 0; c < 3; ++c)

@@ -18,13 +18,20 @@ neighbourhoods. The pair: the same for the two slabs, whose faces are the
 same and whose bulk doubles: the faces' many-body work (the part of the
 many-body law that is not conservative where the weights are not equal
 shares) must stay within 0.1 % of the load work in both.
+
+The physical balance (doc/theory/mca.md §8.4, "What the balance checks"):
+the same with the automata's J2 dissipation by the flow rule, sum V
+(sigma_y + sigma_y')/2 d eps_p over the share of it their sides hold, in
+place of what the sides release; it fails on a radial return that does not
+dissipate what the flow rule says, which the balance above cannot see
+(tolerance and measurements: check_tools.PHYSICAL_TOLERANCE).
 """
 import json
 import os
 import sys
 
-from check_tools import (energy_stored, energy_terms, finish,
-                         output_directory, report)
+from check_tools import (PHYSICAL_TOLERANCE, energy_stored, energy_terms,
+                         finish, output_directory, physical_residual, report)
 
 # the balance's tolerance per run (issue #49: within 10x of the measured
 # residual, 2026-11-30: slab -8.2e-5, twice as tall -1.66e-4); a run not
@@ -62,6 +69,16 @@ def check_run(label, s, balance_tolerance):
            "%s: energy balance, residual %+.4f %% of the load work "
            "(tolerance %g %%)" % (label, 100 * residual(s),
                                   100 * balance_tolerance))
+    # the same with the flow rule's plastic work in place of what the sides
+    # release: catches a radial return that does not dissipate what the
+    # flow rule says (check_tools.PHYSICAL_TOLERANCE)
+    physical = physical_residual(s)
+    report(abs(physical) <= PHYSICAL_TOLERANCE["plastic"],
+           "%s: physical energy balance (the flow rule's plastic work "
+           "%.6g J against %.6g J released), residual %+.4f %% of the load "
+           "work (tolerance %g %%)"
+           % (label, s["plastic_work_flow_rule"], s["plastic_work"],
+              100 * physical, 100 * PHYSICAL_TOLERANCE["plastic"]))
 
 
 if sys.argv[1] == "--pair":

@@ -118,10 +118,12 @@ main(int argc, char **argv)
     return -1;
   };
   const int mine = column("plugin_steps");
-  check(mine >= 0 && mine == column("many_body_work") + 1
+  // (the energies' last column: the ledger's last term)
+  const std::string last_energy = energy_ledger.back().name;
+  check(mine >= 0 && mine == column(last_energy) + 1
           && column("top_fx") == mine + 1,
-        "series.csv: plugin_steps (order 15) between many_body_work (energies, "
-        "10) and top_fx (boundary groups, 20); at column "
+        "series.csv: plugin_steps (order 15) between " + last_energy
+          + " (energies, 10) and top_fx (boundary groups, 20); at column "
           + std::to_string(mine));
 
   nlohmann::json summary;

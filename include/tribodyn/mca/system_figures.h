@@ -31,6 +31,15 @@ namespace tribodyn
       load_work,
       damped_work,
       pair_work,
+      /// The dissipation the constitutive laws prescribe, computed apart
+      /// from the stress updates that the held terms book (doc/theory/
+      /// mca.md §8.4, "What the balance checks"): the automata's J2
+      /// dissipation sum V (sigma_y + sigma_y')/2 d eps_p of their radial
+      /// returns (the flow rule), and the friction law's traction times
+      /// the slip at the Coulomb limits (with the shear mixing and the
+      /// moments' slip of unbonded pairs, booked alike in both)
+      plastic_work_flow_rule,
+      friction_work_law,
       n_works
     };
     /// One value per Work.
@@ -64,6 +73,8 @@ namespace tribodyn
       pair,
       switching,
       many_body,
+      plastic_flow_rule,
+      friction_law,
       n
     };
 
@@ -103,6 +114,8 @@ namespace tribodyn
         {Energy::pair,       "pair_work",           "pair work",         EnergyRole::diagnostic, pair_work},
         {Energy::switching,  "switching_work",      "switching",         EnergyRole::held,       switching_work},
         {Energy::many_body,  "many_body_work",      "many-body",         EnergyRole::held,       many_body_work},
+        {Energy::plastic_flow_rule, "plastic_work_flow_rule", "plastic (flow rule)", EnergyRole::diagnostic, plastic_work_flow_rule},
+        {Energy::friction_law, "friction_work_law",  "friction (law)",    EnergyRole::diagnostic, friction_work_law},
       }};
     // clang-format on
 
@@ -148,6 +161,22 @@ namespace tribodyn
           else if (entry.role == EnergyRole::supplied)
             supplied += (*this)[entry.term];
         return held - supplied;
+      }
+      /// The balance with the dissipation the laws prescribe (the
+      /// diagnostics plastic_flow_rule and friction_law) in place of the
+      /// plastic and friction work the events book: it fails where a stress
+      /// update does not dissipate what its law says (a wrong radial return
+      /// or Coulomb limit), which balance_residual() cannot see. Close in a
+      /// plastic bulk and in elastic friction (to the step's first order);
+      /// not where plastic flow is localized at rough contacts, whose
+      /// returns dissipate more than the flow rule says (doc/theory/mca.md
+      /// §8.4, "What the balance checks").
+      double
+      physical_balance_residual() const
+      {
+        return balance_residual() - (*this)[Energy::plastic]
+               - (*this)[Energy::friction] + (*this)[Energy::plastic_flow_rule]
+               + (*this)[Energy::friction_law];
       }
     };
 

@@ -4,7 +4,10 @@
 // starts at rest and unstressed): the held terms of the energy ledger
 // (system_figures.h: kinetic + elastic + plastic + friction + damped +
 // switching + many-body) = its supplied one (the work of the loads), in
-// summary.json and on the screen (doc/theory/mca.md §8.4).
+// summary.json and on the screen (doc/theory/mca.md §8.4); and the same
+// balance with the dissipation the laws prescribe (the flow rule's plastic
+// work, the friction law's traction times the slip) in place of the booked
+// plastic and friction work.
 #include <tribodyn/mca/postprocessor.h>
 
 namespace tribodyn
@@ -84,7 +87,22 @@ namespace tribodyn
                 figures << plus << entry.label << " " << e[entry.term];
                 plus = " + ";
               }
-          figures << " J + residual " << -residual << " J" << std::endl;
+          // (the residual as summary.json gives it: held - load work)
+          figures << " J; residual (held - load work) " << residual << " J"
+                  << std::endl;
+          // the balance with the dissipation the laws prescribe in place
+          // of the booked plastic and friction work (§8.4): it sees a
+          // stress update that does not dissipate what its law says
+          const double physical = e.physical_balance_residual();
+          summary["energy_balance_residual_physical"] = physical;
+          summary["energy_balance_relative_physical"]
+            = W != 0 ? physical / std::abs(W) : 0.;
+          if (e[Energy::plastic] != 0 || e[Energy::friction] != 0)
+            figures << "Energy with the laws' dissipation (plastic "
+                    << e[Energy::plastic_flow_rule] << " J by the flow rule, "
+                    << "friction " << e[Energy::friction_law]
+                    << " J by the law): residual " << physical << " J"
+                    << std::endl;
         }
 
       private:
