@@ -137,11 +137,7 @@ namespace tribodyn
     {
       ContactMaterialParameters p;
       p.binding().declare(prm);
-      prm.enter_subsection("Materials");
-      prm.enter_subsection("Isotropic");
-      IsotropicElasticMaterial::declare_parameters(prm, 30e9, 0.2, 1770.);
-      prm.leave_subsection();
-      prm.leave_subsection();
+      p.isotropic.binding("Materials/Isotropic").declare(prm);
       for (const ParameterBinding &b : p.subsection_bindings())
         b.declare(prm);
       MorphologyMaterials::declare_parameters(prm);
@@ -153,11 +149,7 @@ namespace tribodyn
     {
       const ParameterBinding b = binding();
       b.parse(prm);
-      prm.enter_subsection("Materials");
-      prm.enter_subsection("Isotropic");
-      isotropic.parse_parameters(prm, "Materials/Isotropic");
-      prm.leave_subsection();
-      prm.leave_subsection();
+      isotropic.binding("Materials/Isotropic").parse(prm);
       const std::vector<ParameterBinding> subsections = subsection_bindings();
       for (const ParameterBinding &s : subsections)
         s.parse(prm);

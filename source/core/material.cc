@@ -3,28 +3,43 @@
 #include <limits>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/material.h>
+#include <tuple>
 
 namespace tribodyn
 {
-  void
-  IsotropicElasticMaterial::declare_parameters(
-    dealii::ParameterHandler &prm,
-    const double              default_youngs_modulus,
-    const double              default_poisson_ratio,
-    const double              default_density)
+  Interval
+  youngs_modulus_range()
   {
-    prm.declare_entry("Young modulus",
-                      format_number(default_youngs_modulus),
-                      dealii::Patterns::Double(),
-                      "Young's modulus E in Pa; must be > 0.");
-    prm.declare_entry("Poisson ratio",
-                      format_number(default_poisson_ratio),
-                      dealii::Patterns::Double(),
-                      "Poisson's ratio nu; must lie in (-1, 0.5).");
-    prm.declare_entry("Density",
-                      format_number(default_density),
-                      dealii::Patterns::Double(),
-                      "Mass density rho in kg/m^3; must be > 0.");
+    return {0,
+            max_youngs_modulus,
+            true,
+            false,
+            "Young's modulus is in Pa and must be positive (the limit, 10 "
+            "TPa, is eight times diamond's)."};
+  }
+
+
+  Interval
+  poisson_ratio_range()
+  {
+    return {-1,
+            0.5,
+            true,
+            true,
+            "An isotropic elastic material needs -1 < nu < 0.5 to be "
+            "stable."};
+  }
+
+
+  Interval
+  density_range()
+  {
+    return {0,
+            max_density,
+            true,
+            false,
+            "The density is in kg/m^3 and must be positive (the limit is "
+            "four times osmium's)."};
   }
 
 
@@ -34,44 +49,41 @@ namespace tribodyn
                                     const double       poisson_ratio,
                                     const double       density)
   {
-    check_parameter_range(section + "/Young modulus",
-                          youngs_modulus,
-                          0,
-                          max_youngs_modulus,
-                          true,
-                          false,
-                          "Young's modulus is in Pa and must be positive "
-                          "(the limit, 10 TPa, is eight times diamond's).");
-    check_parameter_range(section + "/Poisson ratio",
-                          poisson_ratio,
-                          -1,
-                          0.5,
-                          true,
-                          true,
-                          "An isotropic elastic material needs "
-                          "-1 < nu < 0.5 to be stable.");
-    check_parameter_range(section + "/Density",
-                          density,
-                          0,
-                          max_density,
-                          true,
-                          false,
-                          "The density is in kg/m^3 and must be positive "
-                          "(the limit is four times osmium's).");
+    for (const auto &[name, value, range] :
+         {std::tuple{"/Young modulus", youngs_modulus, youngs_modulus_range()},
+          std::tuple{"/Poisson ratio", poisson_ratio, poisson_ratio_range()},
+          std::tuple{"/Density", density, density_range()}})
+      check_parameter_range(section + name,
+                            value,
+                            range.lower,
+                            range.upper,
+                            range.lower_open,
+                            range.upper_open,
+                            range.hint);
   }
 
 
-  void
-  IsotropicElasticMaterial::parse_parameters(dealii::ParameterHandler &prm,
-                                             const std::string        &section)
+  ParameterBinding
+  IsotropicElasticMaterial::binding(const std::string &subsection,
+                                    const std::string &outer)
   {
-    youngs_modulus = prm.get_double("Young modulus");
-    poisson_ratio  = prm.get_double("Poisson ratio");
-    density        = prm.get_double("Density");
-    check_isotropic_elastic_constants(section,
-                                      youngs_modulus,
-                                      poisson_ratio,
-                                      density);
+    ParameterBinding b(subsection, outer);
+    b.add("Young modulus",
+          youngs_modulus,
+          "Young's modulus E in Pa; must be > 0.",
+          dealii::Patterns::Double(),
+          youngs_modulus_range());
+    b.add("Poisson ratio",
+          poisson_ratio,
+          "Poisson's ratio nu; must lie in (-1, 0.5).",
+          dealii::Patterns::Double(),
+          poisson_ratio_range());
+    b.add("Density",
+          density,
+          "Mass density rho in kg/m^3; must be > 0.",
+          dealii::Patterns::Double(),
+          density_range());
+    return b;
   }
 
 

@@ -34,12 +34,10 @@ namespace tribodyn
   void
   TwoPhaseMaterials::declare_parameters(dealii::ParameterHandler &prm)
   {
-    prm.enter_subsection("Matrix");
-    IsotropicElasticMaterial::declare_parameters(prm, 30e9, 0.2, 1770.);
-    prm.leave_subsection();
-    prm.enter_subsection("Heterogeneity");
-    IsotropicElasticMaterial::declare_parameters(prm, 80e9, 0.2, 1770.);
-    prm.leave_subsection();
+    // (the defaults: those of the members)
+    TwoPhaseMaterials defaults;
+    defaults.matrix.binding("Matrix").declare(prm);
+    defaults.heterogeneity.binding("Heterogeneity").declare(prm);
   }
 
 
@@ -47,12 +45,8 @@ namespace tribodyn
   TwoPhaseMaterials::parse_parameters(dealii::ParameterHandler &prm,
                                       const std::string        &section)
   {
-    prm.enter_subsection("Matrix");
-    matrix.parse_parameters(prm, section + "/Matrix");
-    prm.leave_subsection();
-    prm.enter_subsection("Heterogeneity");
-    heterogeneity.parse_parameters(prm, section + "/Heterogeneity");
-    prm.leave_subsection();
+    matrix.binding("Matrix", section).parse(prm);
+    heterogeneity.binding("Heterogeneity", section).parse(prm);
   }
 
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 #include <string>
+#include <tribodyn/core/parameter_binding.h>
 
 namespace tribodyn
 {
@@ -17,6 +18,15 @@ namespace tribodyn
   /// are unit mistakes and make the critical time step vanish.
   constexpr double max_youngs_modulus = 1e13;
   constexpr double max_density        = 1e5;
+
+  /// The accepted ranges of E, nu and rho, each with the hint its refusal
+  /// gives: written once, for the bindings and for the check below.
+  Interval
+  youngs_modulus_range();
+  Interval
+  poisson_ratio_range();
+  Interval
+  density_range();
 
   /// Throw InputError naming `@p section/...` unless E > 0, -1 < nu < 0.5
   /// and rho > 0 (and E, rho below the limits above).
@@ -32,16 +42,12 @@ namespace tribodyn
     double poisson_ratio  = 0.2;
     double density        = 1770.;
 
-    /// Declare E, nu, rho in the current subsection with these defaults.
-    static void
-    declare_parameters(dealii::ParameterHandler &prm,
-                       const double              default_youngs_modulus,
-                       const double              default_poisson_ratio,
-                       const double              default_density);
-    /// Parse and check (E > 0, -1 < nu < 0.5, rho > 0); @p section names
-    /// the subsection in error messages.
-    void
-    parse_parameters(dealii::ParameterHandler &prm, const std::string &section);
+    /// E, nu and rho in @p subsection (entered from the handler's current
+    /// subsection, whose path is @p outer), each written once: their
+    /// defaults are this object's values, their ranges (E > 0, -1 < nu <
+    /// 0.5, rho > 0) checked when parsed.
+    ParameterBinding
+    binding(const std::string &subsection, const std::string &outer = "");
 
     /// Lamé's first parameter lambda = E nu / ((1 + nu)(1 - 2 nu)).
     double
