@@ -555,17 +555,18 @@ namespace tribodyn
     namespace
     {
       /// The dissipation V sigma_y,mid d eps_p of the flow rule of an
-      /// automaton of stress @p s, over the share of it its sides hold.
+      /// automaton of stress @p s (mean stress @p sm), over the share of it
+      /// its sides hold.
       double
       flow_rule_work(const Sym3  &inverse_fabric,
                      const Sym3  &s,
+                     const double sm,
                      const double volume,
                      const double sy_old,
                      const double sy_new,
                      const double de)
       {
-        const double sm = (s[0] + s[1] + s[2]) / 3;
-        const Sym3   dev{{s[0] - sm, s[1] - sm, s[2] - sm, s[3], s[4], s[5]}};
+        const Sym3 dev{{s[0] - sm, s[1] - sm, s[2] - sm, s[3], s[4], s[5]}};
         return volume * 0.5 * (sy_old + sy_new) * de
                * sides_energy_share(inverse_fabric, dev);
       }
@@ -599,7 +600,7 @@ namespace tribodyn
               // the dissipation of the flow rule, apart from what the
               // sides release (the physical balance, §8.4)
               work[plastic_work_flow_rule] += flow_rule_work(
-                fabric_inverse[k], s, volume[k], sigma_y[k], sy_new, de);
+                fabric_inverse[k], s, sm, volume[k], sigma_y[k], sy_new, de);
               eps_p[k] += de;
               sigma_y[k] = sy_new;
             }

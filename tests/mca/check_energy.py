@@ -36,12 +36,13 @@ import json
 import os
 import sys
 
-from check_tools import (PHYSICAL_TOLERANCE, energy_stored, energy_terms,
-                         finish, output_directory, parameter,
+from check_tools import (BOOKED_TOLERANCE, PHYSICAL_TOLERANCE, energy_stored,
+                         energy_terms, finish, output_directory, parameter,
                          physical_residual, report)
 
 out = output_directory(sys.argv[1])
-TOLERANCE = 0.005 if parameter(out, "Bond breaking") == "true" else 1e-4
+TOLERANCE = (0.005 if parameter(out, "Bond breaking") == "true"
+             else BOOKED_TOLERANCE["friction"])
 with open(os.path.join(out, "summary.json")) as f:
     s = json.load(f)
 W = s["load_work"]

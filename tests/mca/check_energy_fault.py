@@ -16,17 +16,15 @@ import json
 import os
 import sys
 
-from check_tools import (PHYSICAL_TOLERANCE, energy_stored, finish,
-                         output_directory, physical_residual, report)
+from check_tools import (BOOKED_TOLERANCE, PHYSICAL_TOLERANCE, energy_stored,
+                         finish, output_directory, physical_residual, report)
 
 out = output_directory(sys.argv[1])
 with open(os.path.join(out, "summary.json")) as f:
     s = json.load(f)
 kind = "plastic" if "plastic" in os.path.basename(
     os.path.normpath(sys.argv[1])) else "friction"
-# the booked balance's tolerances of check_plastic_energy.py and
-# check_energy.py for these scenes
-booked_tolerance = 4e-4 if kind == "plastic" else 1e-4
+booked_tolerance = BOOKED_TOLERANCE[kind]
 W = s["load_work"]
 booked = (energy_stored(s) - W) / W
 report(abs(booked) <= booked_tolerance,
