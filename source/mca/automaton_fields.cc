@@ -76,8 +76,12 @@ namespace tribodyn
       for (const AutomatonField &field : fields)
         if (field.to_ghosts)
           {
-            field.array->pack(k, out);
-            out += field.array->width();
+            const unsigned int w = field.array->width();
+            if (!field.in_use || field.in_use())
+              field.array->pack(k, out);
+            else
+              std::fill(out, out + w, field.new_value);
+            out += w;
           }
     }
 
@@ -89,7 +93,8 @@ namespace tribodyn
       for (const AutomatonField &field : fields)
         if (field.to_ghosts)
           {
-            field.array->unpack(k, in);
+            if (!field.in_use || field.in_use())
+              field.array->unpack(k, in);
             in += field.array->width();
           }
     }

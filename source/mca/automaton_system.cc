@@ -53,8 +53,14 @@ namespace tribodyn
       V             = d * d * d / std::sqrt(2.);
       range         = d * (1 + prm.interaction.skin);
       graded        = !g.size_bands.empty();
-      graded_range  = pair_list_ranges(prm);
-      rotations     = prm.interaction.rotations;
+      // (one volume for all outside graded scenes)
+      if (!graded)
+        {
+          volume.assign(1, V);
+          volume_mask = 0;
+        }
+      graded_range = pair_list_ranges(prm);
+      rotations    = prm.interaction.rotations;
       for (const auto &m : prm.materials)
         {
           MaterialConstants k;
@@ -129,8 +135,13 @@ namespace tribodyn
                        {}});
       // the many-body part of each side's normal stress (its offset from
       // D mu of the side's automaton, which a rebuild folds into it)
-      pair_fields.add(
-        {"many_body", Relabel::sides, 0, {&mb_i, &mb_j}, nullptr, {}, {}});
+      pair_fields.add({"many_body",
+                       Relabel::sides,
+                       0,
+                       {&mb_i, &mb_j},
+                       nullptr,
+                       [this] { return mb_stored; },
+                       {}});
       pair_fields.add({"tau", Relabel::odd, 0, c(tau), nullptr, {}, {}});
       pair_fields.add({"tau_scale",
                        Relabel::sides,
@@ -195,14 +206,25 @@ namespace tribodyn
       t.add("material", Kind::carried, mat).to_ghosts          = true;
       t.add("body", Kind::carried, body).to_ghosts             = true;
       t.add("size level", Kind::carried, size_level).to_ghosts = true;
-      // (a new automaton of the uniform packing: d^3 / sqrt 2)
-      t.add("volume", Kind::carried, volume, V);
+      // (graded scenes: one for all elsewhere, automaton_volume(); a new
+      // automaton of the uniform packing: d^3 / sqrt 2)
+      t.add("volume", Kind::carried, volume, V, [this] { return graded; });
       t.add("groups", Kind::carried, groups);
-      t.add("plastic strain", Kind::carried, eps_p);
+      t.add("plastic strain", Kind::carried, eps_p, 0, [this] {
+        return plastic_scene;
+      });
       t.add("yield stress", Kind::carried, sigma_y, 0, [this] {
         return plastic_scene;
       });
       t.add("many-body mean stress", Kind::step, mb_mu);
+      // (the sides' common many-body offset while the pairs store none)
+      t.add("many-body offset",
+            Kind::carried,
+            mb_offset,
+            0,
+            [this] { return !mb_stored; })
+        .to_ghosts
+        = true;
       t.add("many-body state", Kind::step, mb_state);
       t.add("inverse fabric", Kind::step, fabric_inverse);
       t.add("neighbourhood changed", Kind::step, changed);
@@ -250,8 +272,10 @@ namespace tribodyn
           mat[k]        = a.material;
           body[k]       = a.body;
           size_level[k] = a.level | (a.transitional ? transitional_flag : 0);
-          // (near a change of size: the Voronoi volume, at set-up)
-          volume[k] = V * (1u << (3 * a.level));
+          // (graded scenes; near a change of size: the Voronoi volume, at
+          // set-up)
+          if (graded)
+            volume[k] = V * (1u << (3 * a.level));
           for (const Region &r : prm.interaction.elastic_regions)
             if (r.contains(a.position))
               body[k] |= elastic_flag;
@@ -354,13 +378,14 @@ namespace tribodyn
             q_stored = q_stored || mc[m].two_G != mc[first].two_G;
           }
       bond_scene = prm.interaction.bond_switching_on();
-      // current yield stresses: plastic scenes only (otherwise the initial
-      // ones of the materials)
+      // current yield stresses and plastic strains: plastic scenes only
+      // (otherwise the initial ones of the materials, and none)
       if (plastic_scene)
         {
           sigma_y.resize(n_owned);
           for (unsigned int k = 0; k < n_owned; ++k)
             sigma_y[k] = mc[mat[k]].yield0;
+          eps_p.assign(n_owned, 0.);
         }
       critical_dt = d / c_max;
       if (prm.time.time_step == 0)

@@ -48,7 +48,7 @@ namespace tribodyn
       // per-automaton arrays from their table (automaton_fields), after the
       // group reactions; 11: the works of the physical balance
       // (plastic_work_flow_rule, friction_work_law)
-      constexpr unsigned int state_version = 11;
+      constexpr unsigned int state_version = 12;
 
       // Scalars and vectors of trivially copyable types as raw bytes (fast
       // and exact); anything else through Boost's own serialization.
@@ -103,6 +103,9 @@ namespace tribodyn
   /* counters and accumulators */                                             \
   apply(n_owned) apply(n_local) apply(current_time) apply(n_steps_done)       \
   apply(rebuild_count) apply(work)                                            \
+  /* whether the pairs store their sides' many-body offsets (every rank or  \
+     none: decided together at each rebuild) */                               \
+  apply(mb_stored)                                                            \
   apply(dropped_bonds) apply(any_changed)                                     \
   /* the partition: weights of each rebalance (replayed on resume) */         \
   apply(rebalance_count) apply(partition_imbalance) apply(rebalance_history)  \

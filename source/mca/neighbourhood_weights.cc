@@ -197,7 +197,8 @@ namespace tribodyn
         const Vec3            n = unit_normal(p, r);
         const double          q = moment_arm(p, r, side);
         const Eigen::Vector3d nv(n[0], n[1], n[2]);
-        B.noalias() += (q * area_of(p) / volume[k]) * nv * nv.transpose();
+        B.noalias() += (q * area_of(p) / automaton_volume(*this, k)) * nv
+                       * nv.transpose();
       });
       const double tr3 = B.trace() / 3;
       if (B.determinant() > 0.1 * tr3 * tr3 * tr3)
@@ -253,7 +254,7 @@ namespace tribodyn
         Vec3         traction;
         for (unsigned int c = 0; c < 3; ++c)
           traction[c] = sg * n[c] + shear[c];
-        add_outer(t, q * area_of(p) / volume[k], n, traction);
+        add_outer(t, q * area_of(p) / automaton_volume(*this, k), n, traction);
       });
       return fabric_corrected(k, t);
     }

@@ -171,11 +171,16 @@ namespace tribodyn
     void
     AutomatonSystem::fold_many_body_stress()
     {
-      for (unsigned int p = 0; p < pi.size(); ++p)
-        {
-          mb_i[p] += mc[mat[pi[p]]].D * mb_mu[pi[p]];
-          mb_j[p] += mc[mat[pj[p]]].D * mb_mu[pj[p]];
-        }
+      if (mb_stored)
+        for (unsigned int p = 0; p < pi.size(); ++p)
+          {
+            mb_i[p] += mc[mat[pi[p]]].D * mb_mu[pi[p]];
+            mb_j[p] += mc[mat[pj[p]]].D * mb_mu[pj[p]];
+          }
+      else
+        // (the same sums as the sides', once per automaton)
+        for (unsigned int k = 0; k < mb_mu.size(); ++k)
+          mb_offset[k] += mc[mat[k]].D * mb_mu[k];
       std::fill(mb_mu.begin(), mb_mu.end(), 0.);
     }
 

@@ -104,6 +104,18 @@ namespace tribodyn
     AutomatonSystem::side_many_body(const unsigned int p,
                                     const unsigned int s) const
     {
+      if (mb_stored)
+        return stored_side_many_body(p, s);
+      const unsigned int a = s ? pj[p] : pi[p];
+      return mc[mat[a]].D * mb_mu[a] + mb_offset[a];
+    }
+
+
+    inline double
+    AutomatonSystem::stored_side_many_body(const unsigned int p,
+                                           const unsigned int s) const
+    {
+      Assert(mb_stored, dealii::ExcInternalError());
       const unsigned int a = s ? pj[p] : pi[p];
       return mc[mat[a]].D * mb_mu[a] + (s ? mb_j : mb_i)[p];
     }

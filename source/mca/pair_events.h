@@ -66,7 +66,7 @@ namespace tribodyn
                                 const double       alpha_new) {
         return pair_energy::release(Sp,
                                     inv_k_of(s),
-                                    side_many_body(p, s),
+                                    stored_side_many_body(p, s),
                                     sigma,
                                     sigma_new,
                                     alpha,
@@ -105,7 +105,7 @@ namespace tribodyn
               double      &alpha = s ? aj : ai;
               const double sm = plast[2 * a], dev = sigma - sm;
               const double s_new = sm + M * dev, c = c_of(s),
-                           m = side_many_body(p, s);
+                           m = stored_side_many_body(p, s);
               const double heat_s
                 = c * (1 - M * M) * (dev * dev + alpha * alpha * dot(t, t))
                   - 0.25 * Sp * (1 - M)
@@ -124,6 +124,7 @@ namespace tribodyn
               if (bonded[p])
                 {
                   const double D = mc[mat[a]].D, m_new = D * sm;
+                  Assert(mb_stored, dealii::ExcInternalError());
                   (s ? mb_j : mb_i)[p] = m_new - D * mb_mu[a];
                   if (owned(a))
                     {
@@ -158,7 +159,7 @@ namespace tribodyn
                   // with it (the side as when it touched): its
                   // energy, and that of m in kappa G^2
                   const unsigned int a = side ? j : i;
-                  const double       m = side_many_body(p, side);
+                  const double       m = stored_side_many_body(p, side);
                   if (owned(a))
                     {
                       const double alpha = side ? aj : ai;
@@ -170,6 +171,7 @@ namespace tribodyn
                         -m);
                       dw[switching_work] += w;
                     }
+                  Assert(mb_stored, dealii::ExcInternalError());
                   (side ? mb_j : mb_i)[p] = -mc[mat[a]].D * mb_mu[a];
                   sigma                   = 0;
                 }

@@ -370,6 +370,8 @@ namespace tribodyn
                       // automaton changes
                       Assert(beta_i[p] == 0 && beta_j[p] == 0,
                              dealii::ExcInternalError());
+                      // (an unbonded pair: its scene stores the offsets)
+                      Assert(mb_stored, dealii::ExcInternalError());
                       if (sig_i[p] == 0 && sig_j[p] == 0)
                         {
                           mb_i[p] = -mc[mat[i]].D * mb_mu[i];
@@ -499,7 +501,8 @@ namespace tribodyn
               const auto book_side = [&](const unsigned int         a,
                                          const std::vector<double> &beta_s,
                                          const double               dq,
-                                         const std::vector<double> &mb_s) {
+                                         const std::vector<double> &mb_s,
+                                         const unsigned int         mb_k) {
                 if (!owned(a))
                   return;
                 const double beta = beta_s[p];
@@ -508,11 +511,16 @@ namespace tribodyn
                   [[unlikely]]
                   {
                     side_dq[a] += Sp * dq;
-                    dw[many_body_work] += Sp * dq * mb_s[p];
+                    dw[many_body_work] += Sp * dq * mb_s[mb_k];
                   }
               };
-              book_side(i, beta_i, dqi, mb_i);
-              book_side(j, beta_j, dr_p - dqi, mb_j);
+              // (the sides' offsets: the pair's own, which plastic scenes
+              // always store, or their automata's while the pairs store
+              // none)
+              const bool own = plastic || mb_stored;
+              book_side(i, beta_i, dqi, own ? mb_i : mb_offset, own ? p : i);
+              book_side(
+                j, beta_j, dr_p - dqi, own ? mb_j : mb_offset, own ? p : j);
             }
         }
     }
@@ -599,8 +607,14 @@ namespace tribodyn
               M = sy_new / q * verification::radial_return_factor;
               // the dissipation of the flow rule, apart from what the
               // sides release (the physical balance, §8.4)
-              work[plastic_work_flow_rule] += flow_rule_work(
-                fabric_inverse[k], s, sm, volume[k], sigma_y[k], sy_new, de);
+              work[plastic_work_flow_rule]
+                += flow_rule_work(fabric_inverse[k],
+                                  s,
+                                  sm,
+                                  automaton_volume(*this, k),
+                                  sigma_y[k],
+                                  sy_new,
+                                  de);
               eps_p[k] += de;
               sigma_y[k] = sy_new;
             }

@@ -30,7 +30,8 @@ namespace tribodyn
           for (unsigned int c = 0; c < 3; ++c)
             t[c] = sig_i[p] * n[c] + tau_scale_i[p] * tau.component[c][p];
           add_outer(target[pi[p]],
-                    moment_arm(p, r, 0) * area_of(p) / volume[pi[p]],
+                    moment_arm(p, r, 0) * area_of(p)
+                      / automaton_volume(*this, pi[p]),
                     n,
                     t);
         }
@@ -40,7 +41,8 @@ namespace tribodyn
           for (unsigned int c = 0; c < 3; ++c)
             t[c] = sig_j[p] * n[c] + tau_scale_j[p] * tau.component[c][p];
           add_outer(target[pj[p]],
-                    moment_arm(p, r, 1) * area_of(p) / volume[pj[p]],
+                    moment_arm(p, r, 1) * area_of(p)
+                      / automaton_volume(*this, pj[p]),
                     n,
                     t);
         }

@@ -562,6 +562,23 @@ namespace tribodyn
           tau_scale_j.assign(n_pairs, 1.);
         }
       shear_factors = needed;
+      // The sides' many-body offsets from then on too, once the new pairs
+      // are in place (the old ones are not at the first call): each side
+      // the common offset of its automaton, the ghosts' as their owners
+      // sent it.
+      if (check_pairs && shear_factors && !mb_stored)
+        {
+          Assert(mb_offset.size() >= n_local, dealii::ExcInternalError());
+          mb_i.resize(n_pairs);
+          mb_j.resize(n_pairs);
+          for (unsigned int p = 0; p < n_pairs; ++p)
+            {
+              mb_i[p] = mb_offset[pi[p]];
+              mb_j[p] = mb_offset[pj[p]];
+            }
+          std::vector<double>().swap(mb_offset);
+          mb_stored = true;
+        }
     }
   } // namespace mca
 } // namespace tribodyn

@@ -181,6 +181,14 @@ namespace tribodyn
                < cells.n_owned_cells();
       };
 
+      // Whether the pairs store their sides' many-body offsets, as the
+      // writers did (all of them alike; a rank that read no state takes it
+      // from rank 0): it decides what the records below carry, the
+      // automata's common offsets or the pairs' own.
+      mb_stored = dealii::Utilities::MPI::broadcast(comm, mb_stored, 0);
+      if (mb_stored)
+        std::vector<double>().swap(mb_offset);
+
       // The automata of the owned cells, at their positions of the last
       // rebuild (the migration's unpacking); the rest of each record by id.
       std::vector<std::size_t> mine;

@@ -71,7 +71,7 @@ namespace
     for (unsigned int k = 0; k < system.n_owned_automata(); ++k)
       {
         s.stress[system.ids()[k]]         = system.automaton_stress(k);
-        s.plastic_strain[system.ids()[k]] = system.plastic_strains()[k];
+        s.plastic_strain[system.ids()[k]] = system.plastic_strain(k);
       }
     return s;
   }

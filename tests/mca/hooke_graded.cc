@@ -69,7 +69,7 @@ namespace
         r.stress.push_back(system.automaton_stress(k));
         r.force.push_back(system.forces()[k]);
         r.torque.push_back(system.torques()[k]);
-        r.volume.push_back(system.volumes()[k]);
+        r.volume.push_back(system.volume_of(k));
         r.level.push_back(levels[k]);
         r.position.push_back(system.positions()[k]);
       }

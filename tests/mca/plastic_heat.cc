@@ -79,7 +79,9 @@ main(int argc, char **argv)
           dtheta = {{0, 0, 0}};
         },
         1e-12);
-      const auto &eps = system.plastic_strains();
+      std::vector<double> eps(system.n_owned_automata());
+      for (unsigned int k = 0; k < eps.size(); ++k)
+        eps[k] = system.plastic_strain(k);
       // plastic work of each automaton in this increment
       std::vector<double> dW(n, 0.);
       double              total = 0;

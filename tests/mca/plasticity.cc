@@ -137,7 +137,7 @@ namespace
               sx = std::max(sx,
                             std::max(std::abs(stress[q][0]),
                                      std::abs(stress[q][1])));
-              epm += system.plastic_strains()[q];
+              epm += system.plastic_strain(q);
               nd += 1;
             }
         sz /= nd;

@@ -61,9 +61,14 @@ namespace tribodyn
       std::vector<unsigned char> mat, body;
       /// size level L (size 2^L d), with transitional_flag
       std::vector<unsigned char> size_level;
-      /// Volume of each owned automaton (d^3/sqrt 2 in a uniform packing;
-      /// its Voronoi cell's near a change of size).
+      /// Volume of each owned automaton in graded scenes (2^3L d^3/sqrt 2
+      /// of its size level L; its Voronoi cell's near a change of size);
+      /// elsewhere the one volume V = d^3/sqrt 2 of all, volume_mask 0:
+      /// automaton k's is volume[k & volume_mask] either way (a load, no
+      /// branch: the kernel's arithmetic compiles as with a stored volume
+      /// per automaton; SystemScalars::automaton_volume()).
       std::vector<double>        volume;
+      unsigned int               volume_mask = ~0u;
       std::vector<std::uint32_t> groups;
       std::vector<double>        eps_p, sigma_y;
       /// Per-step exchange buffers (stride given by their use).
@@ -80,7 +85,14 @@ namespace tribodyn
       /// of each local automaton since the last rebuild (mu_a; a side's
       /// many-body stress is D mu_a + its offset, PairArrays::mb_i), and
       /// the many-body state of each owned one.
-      std::vector<double>        mb_mu;
+      std::vector<double> mb_mu;
+      /// The offset c of the many-body stress of every side of each local
+      /// automaton (its sides' many-body part is D mu_a + c), while the
+      /// pairs do not store their sides' own (PairArrays::mb_stored
+      /// false): until a scene can have an event that moves one side's
+      /// offset, all sides of an automaton share it (a rebuild folds D mu
+      /// into it as into the pairs' offsets). Empty once they do.
+      std::vector<double>        mb_offset;
       std::vector<ManyBodyState> mb_state;
       /// Per owned automaton: its ManyBodyShape. The many-body work of
       /// the weighted sides of a uniform automaton over a step is the
@@ -188,10 +200,12 @@ namespace tribodyn
       {
         return v;
       }
-      const std::vector<double> &
-      plastic_strains() const
+      /// Plastic strain of local automaton @p k (0 in elastic scenes,
+      /// which do not store it).
+      double
+      plastic_strain(const unsigned int k) const
       {
-        return eps_p;
+        return eps_p.empty() ? 0. : eps_p[k];
       }
       const std::vector<unsigned char> &
       materials() const
@@ -210,8 +224,7 @@ namespace tribodyn
       {
         return f;
       }
-      /// Size level L (size 2^L d) of each local automaton, and the volume
-      /// of each owned one (Voronoi cell near a change of size).
+      /// Size level L (size 2^L d) of each local automaton.
       std::vector<unsigned int>
       size_levels() const
       {
@@ -219,11 +232,6 @@ namespace tribodyn
         for (unsigned int k = 0; k < out.size(); ++k)
           out[k] = size_level[k] & ~transitional_flag;
         return out;
-      }
-      const std::vector<double> &
-      volumes() const
-      {
-        return volume;
       }
       /// Pair torques on the local automata at the last evaluation (owned:
       /// complete).

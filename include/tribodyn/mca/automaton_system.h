@@ -225,12 +225,11 @@ namespace tribodyn
       using AutomatonArrays::forces;
       using AutomatonArrays::ids;
       using AutomatonArrays::materials;
-      using AutomatonArrays::plastic_strains;
+      using AutomatonArrays::plastic_strain;
       using AutomatonArrays::positions;
       using AutomatonArrays::size_levels;
       using AutomatonArrays::torques;
       using AutomatonArrays::velocities;
-      using AutomatonArrays::volumes;
       /// Stress tensors of the owned automata (seed eq. 4, with the fabric
       /// correction), computed now from the pair stresses: not stored, so
       /// that an elastic scene keeps no tensor per automaton.
@@ -269,6 +268,13 @@ namespace tribodyn
       automaton_size(const unsigned int k) const
       {
         return SystemScalars::automaton_size(*this, k);
+      }
+      /// Volume of owned automaton @p k (its Voronoi cell's near a change
+      /// of size).
+      double
+      volume_of(const unsigned int k) const
+      {
+        return automaton_volume(*this, k);
       }
 
       /// Set velocity and angular velocity of every local automaton from a
@@ -533,6 +539,11 @@ namespace tribodyn
       release_opening(const unsigned int p, const double dr);
       double
       side_many_body(const unsigned int p, const unsigned int s) const;
+      /// The same where the pairs store their offsets (mb_stored): the
+      /// events of a step (plastic returns, the limits of unbonded pairs),
+      /// which only such scenes have.
+      double
+      stored_side_many_body(const unsigned int p, const unsigned int s) const;
       double
       side_compliance(const unsigned int p, const unsigned int s) const;
       double

@@ -48,8 +48,17 @@ namespace tribodyn
       std::vector<double> q_i, sig_i, sig_j, heat;
       bool                q_stored = true;
       /// Many-body part m of each side's normal stress, as its offset from
-      /// D mu of the side's automaton (doc/theory/mca.md §8.4).
+      /// D mu of the side's automaton (doc/theory/mca.md §8.4). Stored
+      /// (mb_stored) together with the shear factors, from the rebuild at
+      /// which a scene can first have an event that moves one side's
+      /// offset apart from the other sides of its automaton (a plastic
+      /// return, a bond switch, a contact that starts or opens); until
+      /// then every side of automaton a has the offset
+      /// AutomatonArrays::mb_offset[a] and the arrays stay empty (16
+      /// bytes per pair neither kept nor moved: an elastic bulk of one
+      /// material, all bonded).
       std::vector<double> mb_i, mb_j;
+      bool                mb_stored = false;
       /// This step's normal increment dr and t . du of the pairs that may
       /// release energy in pass C (2 per pair; pair_kernel.cc).
       std::vector<double> pair_dr;

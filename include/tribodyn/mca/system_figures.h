@@ -207,7 +207,10 @@ namespace tribodyn
       /// elastic block on one rank (815 B), and the increase on two ranks
       /// divided by the ghosts (948 B per owned automaton with 0.119
       /// ghosts per owned one: 1 113 B per ghost, its own arrays and its
-      /// pairs, stored on both ranks).
+      /// pairs, stored on both ranks). Measured while the block stored its
+      /// sides' many-body offsets (16 B a pair), as the scenes the report
+      /// is for (friction: plastic, with contacts) do; the elastic block
+      /// no longer does (PairArrays::mb_stored).
       constexpr double bytes_per_owned_automaton = 815;
       constexpr double bytes_per_ghost_automaton = 1115;
       /// Added per automaton (owned or ghost) by the relative-rotation

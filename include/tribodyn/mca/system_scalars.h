@@ -51,11 +51,17 @@ namespace tribodyn
       double                     partition_imbalance = 1;
       std::vector<std::uint64_t> rebalance_history;
 
+      /// Volume of local automaton @p k of @p a (AutomatonArrays::volume).
+      double
+      automaton_volume(const AutomatonArrays &a, const unsigned int k) const
+      {
+        return a.volume[k & a.volume_mask];
+      }
       /// Mass rho V of local automaton @p k of @p a.
       double
       automaton_mass(const AutomatonArrays &a, const unsigned int k) const
       {
-        return mc[a.mat[k]].rho * a.volume[k];
+        return mc[a.mat[k]].rho * automaton_volume(a, k);
       }
       /// Size 2^L d of local automaton @p k of @p a.
       double

@@ -220,14 +220,13 @@ namespace tribodyn
         const unsigned int  n    = system.n_owned_automata();
         const auto         &x    = system.positions();
         const auto          free = system.unbonded_contact_counts();
-        const auto         &eps  = system.plastic_strains();
         std::vector<double> z(n), contacts(n), strain(n);
         double              lo = 1e300, hi = -1e300;
         for (unsigned int k = 0; k < n; ++k)
           {
             z[k]        = x[k][a];
             contacts[k] = free[k];
-            strain[k]   = eps[k];
+            strain[k]   = system.plastic_strain(k);
             lo          = std::min(lo, z[k]);
             hi          = std::max(hi, z[k]);
           }

@@ -88,7 +88,7 @@ namespace tribodyn
           // (automata of several sizes: their own volumes)
           double volume = 0;
           for (unsigned int k = 0; k < s.n_owned_automata(); ++k)
-            volume += s.volumes()[k];
+            volume += s.volume_of(k);
           area = dealii::Utilities::MPI::sum(volume, comm) / height;
           // distance between the centroids of the two groups
           const auto u0 = centroid();
@@ -192,8 +192,8 @@ namespace tribodyn
                   || yt > upper[third] - 2 * layer)
                 continue;
               // (volume-weighted: automata of several sizes)
-              in[0] += -st[k][axis] * system.volumes()[k];
-              in[1] += system.volumes()[k];
+              in[0] += -st[k][axis] * system.volume_of(k);
+              in[1] += system.volume_of(k);
             }
           MPI_Allreduce(MPI_IN_PLACE, in, 2, MPI_DOUBLE, MPI_SUM, comm);
           strains.push_back(strain);

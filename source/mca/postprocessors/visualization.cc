@@ -268,7 +268,7 @@ namespace tribodyn
             set(c_body, system.body_index(k));
             set(c_nb, nbonded[k]);
             set(c_nu, nfree[k]);
-            set(c_ep, system.plastic_strains()[k]);
+            set(c_ep, system.plastic_strain(k));
             if (with_elastic)
               set(c_el, system.elastic(k));
             if (graded)
