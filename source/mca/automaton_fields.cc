@@ -40,11 +40,18 @@ namespace tribodyn
 
 
     bool
+    AutomatonFieldTable::in_use(const AutomatonField &field)
+    {
+      return !field.in_use || field.in_use();
+    }
+
+
+    bool
     AutomatonFieldTable::sized(const AutomatonField &field) const
     {
       return (field.kind == AutomatonFieldKind::identity
               || field.kind == AutomatonFieldKind::carried)
-             && (!field.in_use || field.in_use());
+             && in_use(field);
     }
 
 
@@ -77,7 +84,7 @@ namespace tribodyn
         if (field.to_ghosts)
           {
             const unsigned int w = field.array->width();
-            if (!field.in_use || field.in_use())
+            if (in_use(field))
               field.array->pack(k, out);
             else
               std::fill(out, out + w, field.new_value);
@@ -93,7 +100,7 @@ namespace tribodyn
       for (const AutomatonField &field : fields)
         if (field.to_ghosts)
           {
-            if (!field.in_use || field.in_use())
+            if (in_use(field))
               field.array->unpack(k, in);
             in += field.array->width();
           }

@@ -174,7 +174,7 @@ namespace tribodyn
       const bool         keep_normals = step.keep_normals;
       const double       step_dt      = step.dt;
       // (the shear factors: all 1 and not stored until the scene can have
-      // an event, allocate_shear_factors(); plastic kernels always store
+      // an event, allocate_side_states(); plastic kernels always store
       // them and read them as before)
       const bool factors = plastic || shear_factors;
       // Contact and bond changes of this step mark both automata.

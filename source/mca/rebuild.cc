@@ -509,7 +509,7 @@ namespace tribodyn
       // list of them and of their relabelling rules); the shear factors
       // carried once any rank stores them (the old pairs' factors, all 1
       // where this rank did not).
-      allocate_shear_factors(bonded.size(), false);
+      allocate_side_states(bonded.size(), false);
       pair_fields.remap(source, swap, kept_states, [this](const unsigned p) {
         return pair_distance(p);
       });
@@ -534,13 +534,13 @@ namespace tribodyn
             setup_graded_geometry();
           drop_inert_pairs();
         }
-      allocate_shear_factors(pi.size(), true);
+      allocate_side_states(pi.size(), true);
     }
 
 
     void
-    AutomatonSystem::allocate_shear_factors(const std::size_t n_pairs,
-                                            const bool        check_pairs)
+    AutomatonSystem::allocate_side_states(const std::size_t n_pairs,
+                                          const bool        check_pairs)
     {
       // Plastic and bond scenes store them from the start, on every rank
       // alike (no message at their rebuilds); otherwise the ranks agree

@@ -197,6 +197,9 @@ namespace tribodyn
         std::vector<std::pair<std::string, std::size_t>> &parts) const;
 
     private:
+      /// Does the scene use @p field (allocate it)?
+      static bool
+      in_use(const AutomatonField &field);
       /// Is @p field an identity or carried field the scene uses (sized,
       /// moved and ordered with the automata)?
       bool

@@ -413,12 +413,14 @@ namespace tribodyn
       /// Restore the pair states kept over a rebuild.
       void
       restore_pair_states(const bool initial);
-      /// Store the pairs' shear factors (all 1 until then) once any rank
-      /// has them or a pair that can have an event: a plastic or bond
+      /// Store the pairs' own side states — shear factors (all 1 until
+      /// then) and, once the new pairs are in place (@p check_pairs), the
+      /// sides' many-body offsets (their automata's until then) — once any
+      /// rank has them or a pair that can have an event: a plastic or bond
       /// scene, an unbonded pair, a pair of two materials (collective;
       /// @p n_pairs: the size of the pair arrays now).
       void
-      allocate_shear_factors(const std::size_t n_pairs, const bool check_pairs);
+      allocate_side_states(const std::size_t n_pairs, const bool check_pairs);
 
       // --- dynamics (pair_kernel.cc)
       /// Ghosts' x, v, w from their owners.

@@ -76,7 +76,7 @@ namespace tribodyn
       /// a factor other than 1: until a scene can have one, the factors
       /// are all 1 and their arrays stay empty (shear_factors false; 16
       /// bytes per pair saved and not streamed: an elastic bulk of one
-      /// material, all bonded; AutomatonSystem::allocate_shear_factors()).
+      /// material, all bonded; AutomatonSystem::allocate_side_states()).
       VectorArray         tau;
       std::vector<double> tau_scale_i, tau_scale_j;
       bool                shear_factors = false;
