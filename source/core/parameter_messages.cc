@@ -166,8 +166,9 @@ namespace tribodyn
         const std::string name
           = (where.empty() ? "" : where + "/") + trim(m[4].str());
         return "Error in the parameter file '" + m[2].str() + "', line "
-               + m[1].str() + ": the value '" + trim(m[3].str())
-               + "' of parameter '" + name + "' is not valid: it must be "
+               + m[1].str() + ": the value '" + trim(m[3].str()) + "' of "
+               + (where.empty() ? "the top-level parameter '" : "parameter '")
+               + name + "' is not valid: it must be "
                + pattern_in_words(m[5].str())
                + renamed_choice_hint(name, trim(m[3].str())) + "." + hint;
       }
@@ -183,10 +184,11 @@ namespace tribodyn
               e,
               std::regex(R"(No entry with name <([^>]*)> was declared)")))
           {
+            // Named by its full path, as every other refusal names it.
             const std::string renamed = renamed_hint(where, e[1].str());
-            cause = "there is no parameter '" + e[1].str() + "' in "
-                    + (where.empty() ? std::string("the top level")
-                                     : "subsection '" + where + "'")
+            cause                     = "there is no parameter '"
+                    + (where.empty() ? e[1].str() + "' in the top level"
+                                     : where + "/" + e[1].str() + "'")
                     + (renamed.empty() ? " (check its spelling and the "
                                          "subsection it is in)."
                                        : renamed + ".");
@@ -199,9 +201,9 @@ namespace tribodyn
           {
             const std::string name    = trim(e[1].str());
             const std::string renamed = renamed_hint(where, name);
-            cause = "there is no subsection '" + name + "' in "
-                    + (where.empty() ? std::string("the top level")
-                                     : "subsection '" + where + "'")
+            cause                     = "there is no subsection '"
+                    + (where.empty() ? name + "' in the top level"
+                                     : where + "/" + name + "'")
                     + (!renamed.empty() ? renamed + "."
                        : where == "Materials"
                          ? " (a material's subsection exists for the names "
