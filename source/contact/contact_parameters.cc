@@ -453,7 +453,7 @@ namespace tribodyn
     {
       binding().parse(prm);
       prm.enter_subsection("Contact");
-      friction.parse_parameters(prm, "Friction law");
+      friction.parse_parameters(prm, FrictionLaws::entry);
       prm.leave_subsection();
     }
 

@@ -26,6 +26,7 @@
 #include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/core/plugin_states.h>
 #include <tribodyn/core/time_loop.h>
 
 namespace tribodyn
@@ -324,16 +325,7 @@ namespace tribodyn
         if (!store)
           return;
         flush_outputs(true);
-        loop.outputs.clear();
-        for (std::size_t k = 0; k < outputs.size(); ++k)
-          {
-            std::ostringstream text(std::ios::binary);
-            {
-              boost::archive::binary_oarchive ar(text);
-              outputs[k]->save(ar);
-            }
-            loop.outputs.emplace_back(output_names[k], text.str());
-          }
+        loop.outputs = save_plugin_states(outputs, output_names);
         store->write(solver.save_state(loop),
                      solver.step_count,
                      solver.step_count * solver.dt,
@@ -457,21 +449,9 @@ namespace tribodyn
       std::vector<std::string>                    output_names;
       if (write)
         {
-          const PostprocessorInputs in{
-            *this, prm, output_directory, comm, root};
-          for (const auto &entry : PostprocessorRegistry::list())
-            if (auto made = entry.create(in))
-              {
-                for (const auto &[name, state] : loop.outputs)
-                  if (name == entry.name)
-                    {
-                      std::istringstream              text(state);
-                      boost::archive::binary_iarchive ar(text);
-                      made->load(ar);
-                    }
-                output_names.push_back(entry.name);
-                outputs.push_back(std::move(made));
-              }
+          outputs = PostprocessorRegistry::create_all(
+            {*this, prm, output_directory, comm, root}, output_names);
+          load_plugin_states(loop.outputs, outputs, output_names);
           for (auto &o : outputs)
             o->open(resumed);
         }

@@ -1,7 +1,9 @@
 // Reading a parameter file for its problem, and entries addressed by path.
 
+#include <algorithm>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <tribodyn/core/errors.h>
@@ -9,6 +11,8 @@
 #include <tribodyn/core/parameter_file.h>
 #include <tribodyn/core/parameter_messages.h>
 #include <tribodyn/core/parameter_renames.h>
+#include <utility>
+#include <vector>
 
 namespace tribodyn
 {
@@ -106,46 +110,101 @@ namespace tribodyn
         }
     }
 
-    /// The text of @p file with each 'include NAME' whose NAME is a
-    /// relative path made relative to the directory of @p file (deal.II
-    /// looks for it in the working directory), so that a parameter file
-    /// can build on a neighbour wherever it is run from. Lines keep their
-    /// numbers: messages point at the file's own lines.
-    std::string
-    with_includes_beside(const std::string &file)
+    /// A parameter file with its includes expanded in place: its text,
+    /// and for each line of it the file and line it came from (messages
+    /// name those). deal.II's ParameterHandler reads 'include NAME' from
+    /// the working directory; here NAME is relative to the directory of
+    /// the file that names it, at every depth, so that a parameter file can
+    /// build on its neighbours wherever it is run from.
+    struct ExpandedFile
     {
-      std::ifstream      in(file);
-      std::ostringstream text;
-      const auto         slash = file.find_last_of('/');
-      const std::string  dir   = slash == std::string::npos
-                                   ? std::string()
-                                   : file.substr(0, slash + 1);
+      std::string                              text;
+      std::vector<std::pair<std::string, int>> origin;
+    };
+
+    /// @p chain: the files being expanded, outermost first (as named, and
+    /// their canonical paths to recognize a loop).
+    void
+    expand_includes(const std::string                                &file,
+                    ExpandedFile                                     &out,
+                    std::vector<std::pair<std::string, std::string>> &chain)
+    {
+      std::error_code   error;
+      const std::string canonical
+        = std::filesystem::weakly_canonical(file, error).string();
+      for (const auto &[named, seen] : chain)
+        if (seen == canonical)
+          {
+            std::string loop;
+            for (const auto &link : chain)
+              loop += "'" + link.first + "' -> ";
+            throw InputError("The parameter file '" + named
+                             + "' includes itself (" + loop + "'" + file
+                             + "'): remove the include that closes the loop.");
+          }
+      chain.emplace_back(file, canonical);
+      std::ifstream     in(file);
+      const auto        slash = file.find_last_of('/');
+      const std::string dir   = slash == std::string::npos
+                                  ? std::string()
+                                  : file.substr(0, slash + 1);
+      int               n     = 0;
       for (std::string line; std::getline(in, line);)
         {
+          ++n;
           const std::string trimmed = dealii::Utilities::trim(line);
           if (trimmed.rfind("include ", 0) == 0
               || trimmed.rfind("INCLUDE ", 0) == 0)
             {
+              const std::string rest = trimmed.substr(8);
               const std::string name
-                = dealii::Utilities::trim(trimmed.substr(8));
-              if (!name.empty() && name[0] != '/' && name[0] != '#')
-                line = trimmed.substr(0, 8) + dir + name;
+                = dealii::Utilities::trim(rest.substr(0, rest.find('#')));
+              if (!name.empty())
+                {
+                  const std::string path = name[0] == '/' ? name : dir + name;
+                  if (!std::ifstream(path))
+                    throw InputError(
+                      "Cannot read the file '" + path + "' included at line "
+                      + std::to_string(n) + " of the parameter file '" + file
+                      + "': it does not exist or is not readable (an include "
+                        "names a file relative to the file that includes "
+                        "it).");
+                  expand_includes(path, out, chain);
+                  continue;
+                }
             }
-          text << line << '\n';
+          out.text += line + '\n';
+          out.origin.emplace_back(file, n);
         }
-      return text.str();
+      chain.pop_back();
     }
 
 
     /// ParameterHandler::parse_input() on @p file with its includes
-    /// resolved beside it; messages name @p file.
+    /// expanded; a refusal names the file and line the entry came from.
     void
     parse_file(dealii::ParameterHandler &prm,
                const std::string        &file,
                const bool                skip_undefined)
     {
-      std::istringstream text(with_includes_beside(file));
-      prm.parse_input(text, file, "", skip_undefined);
+      ExpandedFile                                     expanded;
+      std::vector<std::pair<std::string, std::string>> chain;
+      expand_includes(file, expanded, chain);
+      std::istringstream text(expanded.text);
+      try
+        {
+          prm.parse_input(text, file, "", skip_undefined);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          throw InputError(
+            describe_parameter_error(e, file, [&](const int line) {
+              return line >= 1
+                         && line <= static_cast<int>(expanded.origin.size())
+                       ? expanded.origin[line - 1]
+                       : std::make_pair(file, line);
+            }));
+        }
     }
   } // namespace
 
@@ -162,35 +221,21 @@ namespace tribodyn
     {
       dealii::ParameterHandler first;
       GlobalParameters::declare_parameters(first);
-      try
-        {
-          parse_file(first, file, true);
-        }
-      catch (const dealii::ExceptionBase &e)
-        {
-          throw InputError(describe_parameter_error(e, file));
-        }
+      parse_file(first, file, true);
       problem_name = first.get("Problem");
     }
     const ProblemDescription &description = find_problem(problem_name);
 
     GlobalParameters::declare_parameters(prm);
     description.declare_parameters(prm);
-    try
+    // parameters that depend on the file's values (e.g. a list of names): a
+    // lenient first reading, then their declaration
+    if (description.declare_dependent_parameters)
       {
-        // parameters that depend on the file's values (e.g. a list of
-        // names): a lenient first reading, then their declaration
-        if (description.declare_dependent_parameters)
-          {
-            parse_file(prm, file, true);
-            description.declare_dependent_parameters(prm);
-          }
-        parse_file(prm, file, false);
+        parse_file(prm, file, true);
+        description.declare_dependent_parameters(prm);
       }
-    catch (const dealii::ExceptionBase &e)
-      {
-        throw InputError(describe_parameter_error(e, file));
-      }
+    parse_file(prm, file, false);
     return description;
   }
 

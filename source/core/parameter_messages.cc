@@ -143,9 +143,16 @@ namespace tribodyn
 
 
   std::string
-  describe_parameter_error(const dealii::ExceptionBase &exception,
-                           const std::string           &file)
+  describe_parameter_error(
+    const dealii::ExceptionBase                           &exception,
+    const std::string                                     &file,
+    const std::function<std::pair<std::string, int>(int)> &origin)
   {
+    // The file and line an entry came from (deal.II names the parsed text).
+    const auto from = [&](const std::string &line, const std::string &name) {
+      return origin ? origin(std::stoi(line))
+                    : std::make_pair(name, std::stoi(line));
+    };
     std::ostringstream info;
     exception.print_info(info);
     const std::string text = one_paragraph(info.str());
@@ -162,11 +169,13 @@ namespace tribodyn
                      R"(for the entry named (.*) does not match the given )"
                      R"(pattern: (\[.*\]))")))
       {
-        const std::string where = subsection_at(m[2], std::stoi(m[1]));
+        const auto [at_file, at_line] = from(m[1], m[2]);
+        const std::string where       = subsection_at(at_file, at_line);
         const std::string name
           = (where.empty() ? "" : where + "/") + trim(m[4].str());
-        return "Error in the parameter file '" + m[2].str() + "', line "
-               + m[1].str() + ": the value '" + trim(m[3].str()) + "' of "
+        return "Error in the parameter file '" + at_file + "', line "
+               + std::to_string(at_line) + ": the value '" + trim(m[3].str())
+               + "' of "
                + (where.empty() ? "the top-level parameter '" : "parameter '")
                + name + "' is not valid: it must be "
                + pattern_in_words(m[5].str())
@@ -176,8 +185,9 @@ namespace tribodyn
     if (std::regex_search(
           text, m, std::regex(R"(Line <(\d+)> of file <([^>:]*)>?: (.*))")))
       {
-        const std::string where = subsection_at(m[2], std::stoi(m[1]));
-        std::string       cause = m[3];
+        const auto [at_file, at_line] = from(m[1], m[2]);
+        const std::string where       = subsection_at(at_file, at_line);
+        std::string       cause       = m[3];
         std::smatch       e;
         if (std::regex_search(
               cause,
@@ -213,8 +223,8 @@ namespace tribodyn
           }
         else if (!where.empty())
           cause += " (in subsection '" + where + "')";
-        return "Error in the parameter file '" + m[2].str() + "', line "
-               + m[1].str() + ": " + cause + hint;
+        return "Error in the parameter file '" + at_file + "', line "
+               + std::to_string(at_line) + ": " + cause + hint;
       }
     return "Error in the parameter file '" + file + "': " + text + hint;
   }

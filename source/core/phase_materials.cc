@@ -6,6 +6,7 @@
 #include <limits>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/number_list.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/phase_materials.h>
 
 namespace tribodyn
@@ -16,102 +17,103 @@ namespace tribodyn
   }
 
 
+  namespace
+  {
+    /// The entries of "Phases" and of "Phases/Transversely isotropic",
+    /// each written once (core/parameter_binding.h): the lists as their
+    /// text, which PhaseMaterials::parse_parameters() splits and checks
+    /// against each other.
+    struct PhaseEntries
+    {
+      std::string names, young_moduli, poisson_ratios, densities;
+      double      pore_stiffness_ratio = 1e-6;
+      std::string transverse_phases, axes, axial_young_moduli,
+        axial_poisson_ratios, axial_shear_moduli;
+
+      /// @p outer: the path of the subsection that holds "Phases".
+      ParameterBinding
+      phases(const std::string &outer)
+      {
+        ParameterBinding b("Phases", outer);
+        b.add("Names",
+              names,
+              "Names of the phases, comma-separated: phase k is "
+              "material id k of the morphology (for an image: "
+              "the k-th class of its segmentation, darkest first, "
+              "or the k-th colour of its colour table). Empty: "
+              "the two phases 'Matrix' (id 0) and "
+              "'Heterogeneity' (id 1) are used instead; when "
+              "given, those two subsections are ignored.");
+        b.add("Young moduli",
+              young_moduli,
+              "Young's modulus of each phase (Pa), in the order of "
+              "'Names'; 0 makes the phase a pore.");
+        b.add("Poisson ratios",
+              poisson_ratios,
+              "Poisson's ratio of each phase, in (-1, 0.5) (not "
+              "used for a pore).");
+        b.add("Densities",
+              densities,
+              "Density of each phase (kg/m^3); 0 is allowed for "
+              "a pore.");
+        b.add("Pore stiffness ratio",
+              pore_stiffness_ratio,
+              "Pores (Young modulus 0) get an ersatz stiffness so "
+              "that every cell problem stays well posed: E = this "
+              "ratio times the smallest Young modulus of the solid "
+              "phases, nu = 0. In (0, 1e-2]; the apparent moduli "
+              "change by about this ratio (relative) when no pore "
+              "touches a boundary loaded by SUBC.",
+              dealii::Patterns::Double(),
+              Interval{0,
+                       1e-2,
+                       true,
+                       false,
+                       "It is the ersatz Young modulus of pores relative "
+                       "to the softest solid phase."});
+        return b;
+      }
+
+      ParameterBinding
+      transversely_isotropic(const std::string &outer)
+      {
+        ParameterBinding b("Phases/Transversely isotropic", outer);
+        b.add("Phases",
+              transverse_phases,
+              "Names (from 'Names') of the phases that are transversely "
+              "isotropic, comma-separated; empty: every phase is isotropic. "
+              "For these phases the entries of 'Young moduli' and 'Poisson "
+              "ratios' are E_T and nu_TT of their plane of isotropy, and the "
+              "lists below give, in the order of this list, the axis and the "
+              "axial constants.");
+        b.add("Axes",
+              axes,
+              "Direction of the axis L of each phase of "
+              "'Phases': x or y (in the plane of the problem) or "
+              "z (normal to it: the fibres of a cross-section).");
+        b.add("Axial Young moduli",
+              axial_young_moduli,
+              "E_L of each phase of 'Phases' (Pa).");
+        b.add("Axial Poisson ratios",
+              axial_poisson_ratios,
+              "nu_LT of each phase of 'Phases': -eps_T / eps_L "
+              "under a uniaxial stress along L.");
+        b.add("Axial shear moduli",
+              axial_shear_moduli,
+              "G_LT of each phase of 'Phases' (Pa): the shear "
+              "modulus of planes that contain L.");
+        return b;
+      }
+    };
+  } // namespace
+
+
   void
   PhaseMaterials::declare_parameters(dealii::ParameterHandler &prm)
   {
-    using dealii::Patterns::Anything;
-    prm.enter_subsection("Phases");
-    {
-      prm.declare_entry("Names",
-                        "",
-                        Anything(),
-                        "Names of the phases, comma-separated: phase k is "
-                        "material id k of the morphology (for an image: "
-                        "the k-th class of its segmentation, darkest first, "
-                        "or the k-th colour of its colour table). Empty: "
-                        "the two phases 'Matrix' (id 0) and "
-                        "'Heterogeneity' (id 1) are used instead; when "
-                        "given, those two subsections are ignored.");
-      prm.declare_entry("Young moduli",
-                        "",
-                        Anything(),
-                        "Young's modulus of each phase (Pa), in the order of "
-                        "'Names'; 0 makes the phase a pore.");
-      prm.declare_entry("Poisson ratios",
-                        "",
-                        Anything(),
-                        "Poisson's ratio of each phase, in (-1, 0.5) (not "
-                        "used for a pore).");
-      prm.declare_entry("Densities",
-                        "",
-                        Anything(),
-                        "Density of each phase (kg/m^3); 0 is allowed for "
-                        "a pore.");
-      prm.declare_entry("Pore stiffness ratio",
-                        "1e-6",
-                        dealii::Patterns::Double(),
-                        "Pores (Young modulus 0) get an ersatz stiffness so "
-                        "that every cell problem stays well posed: E = this "
-                        "ratio times the smallest Young modulus of the solid "
-                        "phases, nu = 0. In (0, 1e-2]; the apparent moduli "
-                        "change by about this ratio (relative) when no pore "
-                        "touches a boundary loaded by SUBC.");
-      prm.enter_subsection("Transversely isotropic");
-      {
-        prm.declare_entry(
-          "Phases",
-          "",
-          Anything(),
-          "Names (from 'Names') of the phases that are transversely "
-          "isotropic, comma-separated; empty: every phase is isotropic. For "
-          "these phases the entries of 'Young moduli' and 'Poisson ratios' "
-          "are E_T and nu_TT of their plane of isotropy, and the lists below "
-          "give, in the order of this list, the axis and the axial "
-          "constants.");
-        prm.declare_entry("Axes",
-                          "",
-                          Anything(),
-                          "Direction of the axis L of each phase of "
-                          "'Phases': x or y (in the plane of the problem) or "
-                          "z (normal to it: the fibres of a cross-section).");
-        prm.declare_entry("Axial Young moduli",
-                          "",
-                          Anything(),
-                          "E_L of each phase of 'Phases' (Pa).");
-        prm.declare_entry("Axial Poisson ratios",
-                          "",
-                          Anything(),
-                          "nu_LT of each phase of 'Phases': -eps_T / eps_L "
-                          "under a uniaxial stress along L.");
-        prm.declare_entry("Axial shear moduli",
-                          "",
-                          Anything(),
-                          "G_LT of each phase of 'Phases' (Pa): the shear "
-                          "modulus of planes that contain L.");
-      }
-      prm.leave_subsection();
-    }
-    prm.leave_subsection();
-  }
-
-
-  PhaseMaterials::TransverseLists
-  PhaseMaterials::read_transverse_lists(dealii::ParameterHandler &prm,
-                                        const std::string        &section)
-  {
-    const std::string s = section + "Transversely isotropic/";
-    prm.enter_subsection("Transversely isotropic");
-    TransverseLists l;
-    l.which = dealii::Utilities::split_string_list(prm.get("Phases"));
-    l.axes  = dealii::Utilities::split_string_list(prm.get("Axes"));
-    l.E_L   = parse_number_list(prm.get("Axial Young moduli"),
-                              s + "Axial Young moduli");
-    l.nu_LT = parse_number_list(prm.get("Axial Poisson ratios"),
-                                s + "Axial Poisson ratios");
-    l.G_LT  = parse_number_list(prm.get("Axial shear moduli"),
-                               s + "Axial shear moduli");
-    prm.leave_subsection();
-    return l;
+    PhaseEntries e;
+    e.phases("").declare(prm);
+    e.transversely_isotropic("").declare(prm);
   }
 
 
@@ -195,17 +197,28 @@ namespace tribodyn
                                    const std::string        &section)
   {
     const std::string s = section + "/Phases/";
-    prm.enter_subsection("Phases");
-    names = dealii::Utilities::split_string_list(prm.get("Names"));
+    PhaseEntries      e;
+    e.phases(section).parse(prm);
+    e.transversely_isotropic(section).parse(prm);
+    names = dealii::Utilities::split_string_list(e.names);
     const std::vector<double> E
-      = parse_number_list(prm.get("Young moduli"), s + "Young moduli");
+      = parse_number_list(e.young_moduli, s + "Young moduli");
     const std::vector<double> nu
-      = parse_number_list(prm.get("Poisson ratios"), s + "Poisson ratios");
+      = parse_number_list(e.poisson_ratios, s + "Poisson ratios");
     const std::vector<double> rho
-      = parse_number_list(prm.get("Densities"), s + "Densities");
-    pore_stiffness_ratio             = prm.get_double("Pore stiffness ratio");
-    const TransverseLists transverse = read_transverse_lists(prm, s);
-    prm.leave_subsection();
+      = parse_number_list(e.densities, s + "Densities");
+    pore_stiffness_ratio = e.pore_stiffness_ratio;
+    const std::string t  = s + "Transversely isotropic/";
+    TransverseLists   transverse;
+    transverse.which
+      = dealii::Utilities::split_string_list(e.transverse_phases);
+    transverse.axes = dealii::Utilities::split_string_list(e.axes);
+    transverse.E_L
+      = parse_number_list(e.axial_young_moduli, t + "Axial Young moduli");
+    transverse.nu_LT
+      = parse_number_list(e.axial_poisson_ratios, t + "Axial Poisson ratios");
+    transverse.G_LT
+      = parse_number_list(e.axial_shear_moduli, t + "Axial shear moduli");
     materials.clear();
     pore.clear();
     axial.clear();
@@ -242,14 +255,6 @@ namespace tribodyn
     check_size(E, "Young moduli");
     check_size(nu, "Poisson ratios");
     check_size(rho, "Densities");
-    check_parameter_range(s + "Pore stiffness ratio",
-                          pore_stiffness_ratio,
-                          0,
-                          1e-2,
-                          true,
-                          false,
-                          "It is the ersatz Young modulus of pores relative "
-                          "to the softest solid phase.");
     for (unsigned int k = 0; k < names.size(); ++k)
       {
         IsotropicElasticMaterial m;

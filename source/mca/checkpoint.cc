@@ -47,8 +47,10 @@ namespace tribodyn
       // lambda on resume (sync_many_body_shapes()), not saved; 10: the
       // per-automaton arrays from their table (automaton_fields), after the
       // group reactions; 11: the works of the physical balance
-      // (plastic_work_flow_rule, friction_work_law)
-      constexpr unsigned int state_version = 12;
+      // (plastic_work_flow_rule, friction_work_law); 12: the sides'
+      // many-body offsets stored once the side states are; 13: the
+      // postprocessors' states by name (core/plugin_states.h)
+      constexpr unsigned int state_version = 13;
 
       // Scalars and vectors of trivially copyable types as raw bytes (fast
       // and exact); anything else through Boost's own serialization.

@@ -204,20 +204,51 @@ namespace tribodyn
         return m;
       }
 
+      /// Materials/Names, written once: the list as its text.
+      struct MaterialNames
+      {
+        std::string names = "steel, carbon";
+
+        ParameterBinding
+        binding()
+        {
+          ParameterBinding b("Materials");
+          b.add(
+            "Names",
+            names,
+            "The materials of the scene, by name (any number): each gets its "
+            "subsection Materials/<Name>, the name with its first letter in "
+            "upper case (steel: 'subsection Steel', oxide: 'subsection "
+            "Oxide'), and bodies, regions and inclusions refer to it by name. "
+            "A material named carbon starts from carbon's defaults, any other "
+            "from steel's: set what differs. Example of a third material: "
+            "'set Names = steel, carbon, oxide' and 'subsection Oxide / set "
+            "Density = 5200 / set Young modulus = 150e9 ... end'.",
+            dealii::Patterns::List(dealii::Patterns::Anything()));
+          return b;
+        }
+
+        /// The names as the handler (at the top level) has them now.
+        std::vector<std::string>
+        read(ParameterHandler &prm)
+        {
+          binding().parse(prm);
+          return dealii::Utilities::split_string_list(names);
+        }
+      };
+
       /// The names of Materials/Names, checked.
       std::vector<std::string>
       material_names(ParameterHandler &prm)
       {
-        prm.enter_subsection("Materials");
-        const auto names
-          = dealii::Utilities::split_string_list(prm.get("Names"));
-        prm.leave_subsection();
+        const auto        names = MaterialNames().read(prm);
+        const std::string path  = MaterialNames().binding().path("Names");
         check_parameter(!names.empty(),
-                        "Materials/Names",
+                        path,
                         "must name at least one material (e.g. 'steel, "
                         "carbon').");
         check_parameter(names.size() <= 64,
-                        "Materials/Names",
+                        path,
                         "names " + std::to_string(names.size())
                           + " materials; at most 64 are supported.");
         std::vector<std::string> seen;
@@ -230,14 +261,14 @@ namespace tribodyn
             check_parameter(
               !n.empty() && n.find_first_of(" \t/") == std::string::npos
                 && lower != "void",
-              "Materials/Names",
+              path,
               "'" + n
                 + "' is not a material name: use letters, digits and "
                   "'_' (no spaces or '/'; 'void' is reserved for the voids of "
                   "Geometry/Regions).");
             check_parameter(std::find(seen.begin(), seen.end(), lower)
                               == seen.end(),
-                            "Materials/Names",
+                            path,
                             "names '" + n
                               + "' twice (names differing only in case "
                                 "count as the same: their subsections "
@@ -250,13 +281,18 @@ namespace tribodyn
 
 
     void
+    Parameters::declare_material_names(ParameterHandler &prm)
+    {
+      MaterialNames().binding().declare(prm);
+    }
+
+
+    void
     Parameters::declare_material_sections(ParameterHandler &prm)
     {
       // each named material's subsection (declared again for a name that
       // already has one: same entries, same defaults)
-      prm.enter_subsection("Materials");
-      const auto names = dealii::Utilities::split_string_list(prm.get("Names"));
-      prm.leave_subsection();
+      const auto names = MaterialNames().read(prm);
       for (const auto &name : names)
         if (!name.empty())
           material_defaults(name)

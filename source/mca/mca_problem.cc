@@ -16,6 +16,7 @@
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/core/plugin_states.h>
 #include <tribodyn/core/time_loop.h>
 #include <tribodyn/mca/automaton_system.h>
 #include <tribodyn/mca/mca_problem.h>
@@ -88,34 +89,52 @@ namespace tribodyn
     {
       using PostprocessorList = std::vector<std::unique_ptr<Postprocessor>>;
 
+      /// A run's postprocessors with their registered names (their states
+      /// are saved by name: core/plugin_states.h).
+      struct Postprocessors
+      {
+        PostprocessorList        list;
+        std::vector<std::string> names;
+
+        auto
+        begin() const
+        {
+          return list.begin();
+        }
+        auto
+        end() const
+        {
+          return list.end();
+        }
+      };
+
       /// What follows the automata in a rank's checkpoint: the rows of
-      /// series.csv so far and the postprocessors' states, in list order
-      /// (the same on every rank).
+      /// series.csv so far and the postprocessors' states, by name (the
+      /// same on every rank).
       void
       write_run_state(boost::archive::binary_oarchive &ar,
-                      const PostprocessorList         &postprocessors,
+                      const Postprocessors            &postprocessors,
                       const std::size_t                series_rows)
       {
-        ar << series_rows;
-        for (const auto &pp : postprocessors)
-          pp->save(ar);
+        ar << series_rows
+           << save_plugin_states(postprocessors.list, postprocessors.names);
       }
       void
       read_run_state(boost::archive::binary_iarchive &ar,
-                     const PostprocessorList         &postprocessors,
+                     const Postprocessors            &postprocessors,
                      std::size_t                     &series_rows)
       {
-        ar >> series_rows;
-        for (const auto &pp : postprocessors)
-          pp->load(ar);
+        PluginStates states;
+        ar >> series_rows >> states;
+        load_plugin_states(states, postprocessors.list, postprocessors.names);
       }
 
 
       /// This rank's checkpoint: the automata, then the run's state.
       std::string
-      save_checkpoint_blob(const AutomatonSystem   &system,
-                           const PostprocessorList &postprocessors,
-                           const std::size_t        series_rows)
+      save_checkpoint_blob(const AutomatonSystem &system,
+                           const Postprocessors  &postprocessors,
+                           const std::size_t      series_rows)
       {
         std::ostringstream out(std::ios::binary);
         {
@@ -138,7 +157,7 @@ namespace tribodyn
       load_checkpoint(const std::vector<std::string> &blobs,
                       const bool                      same_ranks,
                       AutomatonSystem                &system,
-                      const PostprocessorList        &postprocessors,
+                      const Postprocessors           &postprocessors,
                       std::size_t                    &series_rows,
                       const MPI_Comm                  comm)
       {
@@ -189,7 +208,7 @@ namespace tribodyn
         };
 
         AutomataRun(AutomatonSystem                &system,
-                    const PostprocessorList        &postprocessors,
+                    const Postprocessors           &postprocessors,
                     CsvWriter                      &series,
                     CheckpointStore                &store,
                     const std::vector<std::string> &checkpoint_lines,
@@ -349,7 +368,7 @@ namespace tribodyn
         }
 
         AutomatonSystem                &system;
-        const PostprocessorList        &postprocessors;
+        const Postprocessors           &postprocessors;
         CsvWriter                      &series;
         CheckpointStore                &store;
         const std::vector<std::string> &checkpoint_lines;
@@ -427,8 +446,10 @@ namespace tribodyn
 
       // The outputs of this run (source/mca/postprocessors/), in order:
       // their series columns side by side in series.csv.
-      const PostprocessorList postprocessors
-        = PostprocessorRegistry::create_all({system, p, comm, out_dir, root});
+      Postprocessors postprocessors;
+      postprocessors.list
+        = PostprocessorRegistry::create_all({system, p, comm, out_dir, root},
+                                            postprocessors.names);
       std::vector<std::string> columns;
       for (const auto &pp : postprocessors)
         for (const auto &c : pp->series_columns())

@@ -269,20 +269,7 @@ namespace tribodyn
     void
     Parameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.enter_subsection("Materials");
-      prm.declare_entry(
-        "Names",
-        "steel, carbon",
-        Patterns::List(Patterns::Anything()),
-        "The materials of the scene, by name (any number): each gets its "
-        "subsection Materials/<Name>, the name with its first letter in "
-        "upper case (steel: 'subsection Steel', oxide: 'subsection Oxide'), "
-        "and bodies, regions and inclusions refer to it by name. A material "
-        "named carbon starts from carbon's defaults, any other from "
-        "steel's: set what differs. Example of a third material: 'set Names "
-        "= steel, carbon, oxide' and 'subsection Oxide / set Density = 5200 "
-        "/ set Young modulus = 150e9 ... end'.");
-      prm.leave_subsection();
+      declare_material_names(prm);
       declare_material_sections(prm);
       GeometryParameters::declare_parameters(prm);
       InteractionParameters::declare_parameters(prm);

@@ -198,12 +198,15 @@ namespace tribodyn
       /// The law of a run (monostate until made).
       using Variant = std::variant<std::monostate, Laws...>;
 
+      /// The entry that chooses the law, in subsection Contact.
+      static constexpr const char *entry = "Friction law";
+
       static void
       declare_parameters(dealii::ParameterHandler &prm)
       {
         Parameters::declare_parameters(
           prm,
-          "Friction law",
+          entry,
           "regularized",
           "Friction law of the contact nodes (doc/theory/contact.md Sec. "
           "4); each law's constants are in its own entries.");

@@ -2,7 +2,9 @@
 #define tribodyn_core_parameter_messages_h
 
 #include <deal.II/base/exceptions.h>
+#include <functional>
 #include <string>
+#include <utility>
 
 namespace tribodyn
 {
@@ -11,11 +13,15 @@ namespace tribodyn
    * ParameterHandler refused with @p exception: the file and line, the
    * subsection the offending line is in, the parameter, and for a value
    * the expected form in words (pattern_in_words()); then how to list the
-   * valid parameters.
+   * valid parameters. @p origin, when given, maps a line of the text that
+   * was parsed to the file and line it came from (a file with its includes
+   * expanded).
    */
   std::string
-  describe_parameter_error(const dealii::ExceptionBase &exception,
-                           const std::string           &file);
+  describe_parameter_error(
+    const dealii::ExceptionBase                           &exception,
+    const std::string                                     &file,
+    const std::function<std::pair<std::string, int>(int)> &origin = {});
 
   /// deal.II's pattern description (e.g. "[Double 0...MAX_DOUBLE
   /// (inclusive)]") in words ("a number of at least 0").

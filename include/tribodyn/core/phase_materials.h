@@ -83,10 +83,6 @@ namespace tribodyn
       std::vector<std::string> which, axes;
       std::vector<double>      E_L, nu_LT, G_LT;
     };
-    /// Read them (in "Phases"); @p section is the path of "Phases/".
-    static TransverseLists
-    read_transverse_lists(dealii::ParameterHandler &prm,
-                          const std::string        &section);
     /// Check them against the phases and fill 'axial'.
     void
     set_transversely_isotropic(const TransverseLists &lists,

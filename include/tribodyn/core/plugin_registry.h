@@ -59,14 +59,19 @@ namespace tribodyn
       return entries();
     }
 
-    /// The plugins this run needs, in order.
+    /// The plugins this run needs, in order; their registered names in
+    /// @p names (for states saved by name: core/plugin_states.h).
     static std::vector<std::unique_ptr<Base>>
-    create_all(const Inputs &inputs)
+    create_all(const Inputs &inputs, std::vector<std::string> &names)
     {
       std::vector<std::unique_ptr<Base>> made;
+      names.clear();
       for (const Entry &e : entries())
         if (auto plugin = e.create(inputs))
-          made.push_back(std::move(plugin));
+          {
+            made.push_back(std::move(plugin));
+            names.push_back(e.name);
+          }
       return made;
     }
 

@@ -64,12 +64,15 @@ namespace tribodyn
       /// parameters.
       struct Parameters : Selection::Parameters
       {
+        /// The entry that chooses the law, in subsection Interaction.
+        static constexpr const char *entry = "Friction law";
+
         static void
         declare_parameters(dealii::ParameterHandler &prm)
         {
           Selection::Parameters::declare_parameters(
             prm,
-            "Friction law",
+            entry,
             table()[0].first,
             "Friction law of the unbonded pairs in contact "
             "(doc/theory/mca.md Sec. 5); each law's constants are in its "
@@ -79,7 +82,7 @@ namespace tribodyn
         void
         parse_parameters(dealii::ParameterHandler &prm)
         {
-          Selection::Parameters::parse_parameters(prm, "Friction law");
+          Selection::Parameters::parse_parameters(prm, entry);
         }
       };
 

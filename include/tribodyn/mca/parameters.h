@@ -586,6 +586,10 @@ namespace tribodyn
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
+      /// Materials/Names (source/mca/material_parameters.cc, where it is
+      /// read).
+      static void
+      declare_material_names(dealii::ParameterHandler &prm);
       /// The subsections of the materials named in Materials/Names (its
       /// value now): called by declare_parameters() for the default list,
       /// and again once the parameter file's list is known (the problem's
