@@ -1,7 +1,8 @@
 """Small helpers of the homogenization tests: linear algebra of small
 matrices in plain Python (no numpy on the test machines; the 2D checks
 take inverse() too), and for the 3D tests (issue #51) the isotropic
-stiffness, the exact laminate, raw volumes and runs of tribodyn.
+stiffness and its isotropic projection, the exact laminate, raw volumes and
+runs of tribodyn.
 
 Voigt order (xx, yy, zz, yz, xz, xy), engineering shears, as tribodyn's
 summary.json writes C and S.
@@ -79,6 +80,30 @@ def isotropic_stiffness(E, nu):
             C[i][j] = lam + (2 * mu if i == j else 0.0)
         C[3 + i][3 + i] = mu
     return C
+
+
+def isotropic_projection(C):
+    """(k, mu) of a 6 x 6 stiffness, exact for an isotropic one:
+    k = (C11 + C22 + C33 + 2 (C12 + C13 + C23)) / 9,
+    mu = (C11 + C22 + C33 - C12 - C13 - C23 + 3 (C44 + C55 + C66)) / 15."""
+    k = (C[0][0] + C[1][1] + C[2][2] + 2 * (C[0][1] + C[0][2] + C[1][2])) / 9
+    mu = (C[0][0] + C[1][1] + C[2][2] - C[0][1] - C[0][2] - C[1][2]
+          + 3 * (C[3][3] + C[4][4] + C[5][5])) / 15
+    return k, mu
+
+
+def anisotropy(C):
+    """|C - C_iso| / |C| with C_iso the isotropic stiffness of the
+    projection (k, mu): lambda + 2 mu and lambda = k - 2 mu / 3 in the
+    normal block, mu on the engineering shears."""
+    k, mu = isotropic_projection(C)
+    lam = k - 2 * mu / 3
+    iso = [[0.0] * 6 for _ in range(6)]
+    for i in range(3):
+        for j in range(3):
+            iso[i][j] = lam + (2 * mu if i == j else 0.0)
+        iso[3 + i][3 + i] = mu
+    return norm(sub(C, iso)) / norm(C)
 
 
 def laminate_exact(stiffnesses, fractions, normal):

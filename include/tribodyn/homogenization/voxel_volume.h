@@ -16,8 +16,9 @@ namespace tribodyn
     /**
      * Parameters of the subsection "Morphology" of the 3D problem (`set
      * Problem = volume_homogenization`): a box of voxels, generated
-     * (laminate, random spheres or aligned fibres) or read from a raw volume
-     * described by a small header file or from a multi-page TIFF.
+     * (laminate, random spheres, aligned or misaligned fibres) or read from
+     * a raw volume described by a small header file or from a multi-page
+     * TIFF.
      */
     struct VolumeMorphologyParameters
     {
@@ -25,7 +26,7 @@ namespace tribodyn
       {
         laminate,   ///< layers through the whole box, normal to x, y or z
         spheres,    ///< random non-overlapping spheres (periodic placement)
-        fibres,     ///< the same with short aligned cylinders
+        fibres,     ///< the same with short cylinders (aligned or in a cone)
         raw_file,   ///< material ids read from a raw volume with a header
         image_stack ///< a multi-page TIFF, segmented (ImageStackParameters)
       };
@@ -46,6 +47,10 @@ namespace tribodyn
       std::uint64_t random_seed  = 1;
       double        fibre_length = 16;
       unsigned int  fibre_axis   = 2;
+      /// Fibres: half-angle (degrees) of the cone about fibre_axis within
+      /// which their axes are drawn uniformly over the spherical cap; 0 =
+      /// all aligned with fibre_axis, 90 = uniformly random in 3D.
+      double fibre_cone_angle = 0;
       /// Raw file: path of the header file.
       std::string raw_header;
       /// Image stack: the subsection "Morphology/Image stack".
