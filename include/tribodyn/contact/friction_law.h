@@ -207,7 +207,7 @@ namespace tribodyn
         Parameters::declare_parameters(
           prm,
           entry,
-          "regularized",
+          Selection::name(0),
           "Friction law of the contact nodes (doc/theory/contact.md Sec. "
           "4); each law's constants are in its own entries.");
       }

@@ -13,9 +13,10 @@ namespace tribodyn
 {
   namespace contact
   {
-    using FrictionLaws = FrictionLawList<Frictionless,
+    /// The first is the default.
+    using FrictionLaws = FrictionLawList<Regularized,
+                                         Frictionless,
                                          Coulomb,
-                                         Regularized,
                                          Tabulated,
                                          RateAndState>;
   } // namespace contact
