@@ -1,6 +1,5 @@
 // Reading a parameter file for its problem, and entries addressed by path.
 
-#include <algorithm>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
@@ -129,9 +128,11 @@ namespace tribodyn
                     ExpandedFile                                     &out,
                     std::vector<std::pair<std::string, std::string>> &chain)
     {
-      std::error_code   error;
-      const std::string canonical
-        = std::filesystem::weakly_canonical(file, error).string();
+      // (the name as given when the path cannot be resolved: an empty
+      // one would make every such file look like the same)
+      std::error_code error;
+      const auto      resolved = std::filesystem::weakly_canonical(file, error);
+      const std::string canonical = error ? file : resolved.string();
       for (const auto &[named, seen] : chain)
         if (seen == canonical)
           {

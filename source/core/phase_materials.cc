@@ -26,7 +26,7 @@ namespace tribodyn
     struct PhaseEntries
     {
       std::string names, young_moduli, poisson_ratios, densities;
-      double      pore_stiffness_ratio = 1e-6;
+      double      pore_stiffness_ratio = PhaseMaterials().pore_stiffness_ratio;
       std::string transverse_phases, axes, axial_young_moduli,
         axial_poisson_ratios, axial_shear_moduli;
 

@@ -241,8 +241,9 @@ namespace tribodyn
       std::vector<std::string>
       material_names(ParameterHandler &prm)
       {
-        const auto        names = MaterialNames().read(prm);
-        const std::string path  = MaterialNames().binding().path("Names");
+        MaterialNames     entry;
+        const auto        names = entry.read(prm);
+        const std::string path  = entry.binding().path("Names");
         check_parameter(!names.empty(),
                         path,
                         "must name at least one material (e.g. 'steel, "

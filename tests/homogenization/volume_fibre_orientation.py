@@ -84,21 +84,12 @@ subsection Morphology
   set Fibre cone half-angle = %s
   set Seed                  = 7
 end
-subsection Materials
-  subsection Matrix
-    set Young modulus = 3e9
-    set Poisson ratio = 0.35
-  end
-  subsection Heterogeneity
-    set Young modulus = 70e9
-    set Poisson ratio = 0.22
-  end
-end
+%s
 subsection Cell problem
   set Boundary conditions = %s
   set Solver tolerance    = 1e-10
 end
-""" % (target, axis, angle, conditions)
+""" % (target, axis, angle, v.GLASS_EPOXY_MATERIALS, conditions)
 
 
 def voxels(name):

@@ -158,6 +158,20 @@ def laminate_exact(stiffnesses, fractions, normal):
     return C_eff
 
 
+# The two phases the glass/epoxy volume tests use (matrix id 0, glass id 1).
+GLASS_EPOXY_MATERIALS = """subsection Materials
+  subsection Matrix
+    set Young modulus = 3e9
+    set Poisson ratio = 0.35
+  end
+  subsection Heterogeneity
+    set Young modulus = 70e9
+    set Poisson ratio = 0.22
+  end
+end
+"""
+
+
 def write_raw(directory, name, ids, n, h):
     """Write ids (a dict or function (i, j, k) -> id, x fastest) as
     NAME.raw with its header NAME.hdr; returns the header's path."""

@@ -56,17 +56,7 @@ header = v.write_raw(work, "extruded", lambda i, j, k: pixel(i, j),
 fraction = sum(pixel(i, j) for i in range(nx) for j in range(ny)) / (nx * ny)
 print("glass fraction %.4f" % fraction)
 
-materials = """subsection Materials
-  subsection Matrix
-    set Young modulus = 3e9
-    set Poisson ratio = 0.35
-  end
-  subsection Heterogeneity
-    set Young modulus = 70e9
-    set Poisson ratio = 0.22
-  end
-end
-"""
+materials = v.GLASS_EPOXY_MATERIALS
 s2 = v.run(tribodyn, os.path.join(work, "2d"), """set Problem = homogenization
 set Output directory = output
 subsection Morphology
