@@ -33,7 +33,7 @@ namespace tribodyn
       parameters.parse_parameters(prm);
       checkpoint.parse_parameters(prm);
       parameters.check_averaging_window(checkpoint.interval > 0);
-      checkpoint_lines = resumable_parameter_lines(prm, "Time/End time");
+      checkpoint_lines = resumable_parameters(prm, "Time/End time");
       checkpoints_on   = true;
     }
 

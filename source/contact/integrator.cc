@@ -173,8 +173,8 @@ namespace tribodyn
 
     void
     ContactSolver::enable_checkpoints(
-      const CheckpointParameters     &parameters,
-      const std::vector<std::string> &parameter_lines)
+      const CheckpointParameters &parameters,
+      const ResumableParameters  &parameter_lines)
     {
       checkpoints_on        = true;
       checkpoint            = parameters;

@@ -11,7 +11,9 @@
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
+#include <functional>
 #include <iomanip>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <tribodyn/core/checkpoint.h>
@@ -166,6 +168,60 @@ namespace tribodyn
   }
 
 
+  ResumableParameters
+  resumable_parameters(dealii::ParameterHandler &prm,
+                       const std::string        &end_time_entry)
+  {
+    ResumableParameters r;
+    r.lines = resumable_parameter_lines(prm, end_time_entry);
+    // Every entry's default, from deal.II's JSON description of the
+    // declared tree (an entry is an object with a "default_value").
+    std::ostringstream json;
+    prm.print_parameters(json, dealii::ParameterHandler::JSON);
+    std::vector<std::string>                                       lines;
+    const std::function<void(const nlohmann::json &, std::string)> walk
+      = [&](const nlohmann::json &node, const std::string &path) {
+          for (auto it = node.begin(); it != node.end(); ++it)
+            if (it.value().is_object())
+              {
+                if (it.value().contains("default_value"))
+                  lines.push_back(
+                    path + it.key() + " = "
+                    + it.value()["default_value"].get<std::string>());
+                else
+                  walk(it.value(), path + it.key() + "/");
+              }
+        };
+    walk(nlohmann::json::parse(json.str()), "");
+    r.defaults = comparable_lines(lines);
+    return r;
+  }
+
+
+  std::vector<std::string>
+  ResumableParameters::differing(const std::vector<std::string> &stored) const
+  {
+    // Both sides without the lines that say "this entry is at its
+    // default": what remains is each run's choices.
+    const auto choices = [this](const std::vector<std::string> &all) {
+      std::set<std::string> kept;
+      for (const std::string &l : comparable_lines(all))
+        if (!std::binary_search(defaults.begin(), defaults.end(), l))
+          kept.insert(l);
+      return kept;
+    };
+    const std::set<std::string> a = choices(stored), b = choices(lines);
+    std::set<std::string>       names;
+    for (const auto &s : a)
+      if (!b.count(s))
+        names.insert(s.substr(0, s.find(" = ")));
+    for (const auto &s : b)
+      if (!a.count(s))
+        names.insert(s.substr(0, s.find(" = ")));
+    return {names.begin(), names.end()};
+  }
+
+
   namespace
   {
     // Format 2 frames each rank's file (frame_of() below); format 1 files
@@ -310,10 +366,10 @@ namespace tribodyn
 
 
   void
-  CheckpointStore::write(const std::string              &blob,
-                         const unsigned long             step,
-                         const double                    time,
-                         const std::vector<std::string> &parameters)
+  CheckpointStore::write(const std::string         &blob,
+                         const unsigned long        step,
+                         const double               time,
+                         const ResumableParameters &parameters)
   {
     const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
     const unsigned int slot = next_slot;
@@ -347,7 +403,7 @@ namespace tribodyn
              << time
              << "\nranks = " << dealii::Utilities::MPI::n_mpi_processes(comm)
              << "\n";
-        for (const auto &p : parameters)
+        for (const auto &p : parameters.lines)
           text << "parameter " << p << "\n";
         try
           {
@@ -417,8 +473,8 @@ namespace tribodyn
 
 
   std::vector<std::string>
-  CheckpointStore::read(const std::vector<std::string> &parameters,
-                        CheckpointInfo                 &info)
+  CheckpointStore::read(const ResumableParameters &parameters,
+                        CheckpointInfo            &info)
   {
     const unsigned int rank    = dealii::Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
@@ -448,17 +504,9 @@ namespace tribodyn
                        + "' does not say how many MPI ranks wrote it (file "
                          "'latest' damaged). Start afresh with "
                          "'Checkpoint/Resume = false'.");
-    if (stored != parameters)
+    const std::vector<std::string> names = parameters.differing(stored);
+    if (!names.empty())
       {
-        const std::set<std::string> a(stored.begin(), stored.end()),
-          b(parameters.begin(), parameters.end());
-        std::set<std::string> names;
-        for (const auto &s : a)
-          if (!b.count(s))
-            names.insert(s.substr(0, s.find(" = ")));
-        for (const auto &s : b)
-          if (!a.count(s))
-            names.insert(s.substr(0, s.find(" = ")));
         std::string list;
         for (const auto &n : names)
           list += (list.empty() ? "'" : ", '") + n + "'";

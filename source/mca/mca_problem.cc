@@ -81,7 +81,7 @@ namespace tribodyn
     {
       parameters.parse_parameters(prm);
       checkpoint.parse_parameters(prm);
-      checkpoint_lines = resumable_parameter_lines(prm, "Time/End time");
+      checkpoint_lines = resumable_parameters(prm, "Time/End time");
     }
 
 
@@ -207,14 +207,14 @@ namespace tribodyn
           double v_limit;
         };
 
-        AutomataRun(AutomatonSystem                &system,
-                    const Postprocessors           &postprocessors,
-                    CsvWriter                      &series,
-                    CheckpointStore                &store,
-                    const std::vector<std::string> &checkpoint_lines,
-                    dealii::TimerOutput            &timer,
-                    const MPI_Comm                  comm,
-                    const Cadence                  &cadence)
+        AutomataRun(AutomatonSystem           &system,
+                    const Postprocessors      &postprocessors,
+                    CsvWriter                 &series,
+                    CheckpointStore           &store,
+                    const ResumableParameters &checkpoint_lines,
+                    dealii::TimerOutput       &timer,
+                    const MPI_Comm             comm,
+                    const Cadence             &cadence)
             : system(system)
             , postprocessors(postprocessors)
             , series(series)
@@ -367,15 +367,15 @@ namespace tribodyn
           series.flush();
         }
 
-        AutomatonSystem                &system;
-        const Postprocessors           &postprocessors;
-        CsvWriter                      &series;
-        CheckpointStore                &store;
-        const std::vector<std::string> &checkpoint_lines;
-        dealii::TimerOutput            &timer;
-        const MPI_Comm                  comm;
-        const Cadence                   cadence;
-        std::string                     key_figure;
+        AutomatonSystem           &system;
+        const Postprocessors      &postprocessors;
+        CsvWriter                 &series;
+        CheckpointStore           &store;
+        const ResumableParameters &checkpoint_lines;
+        dealii::TimerOutput       &timer;
+        const MPI_Comm             comm;
+        const Cadence              cadence;
+        std::string                key_figure;
       };
     } // namespace
 

@@ -169,24 +169,23 @@ namespace tribodyn
     McaStudyProblem::scene_start(const McaScene   &scene,
                                  ParameterHandler &prm) const
     {
-      const std::string              dir = scene_directory(scene);
-      const std::vector<std::string> wanted
-        = resumable_parameter_lines(prm, McaStudyParameters::end_time_path);
+      const std::string         dir = scene_directory(scene);
+      const ResumableParameters wanted
+        = resumable_parameters(prm, McaStudyParameters::end_time_path);
       const double end_time = std::stod(get_parameter_by_path(
         prm, McaStudyParameters::end_time_path, "Time/End time"));
 
       // A finished run of these parameters to this end time: reused. Its
       // parameters.prm is read as text, so that a scene written by a
-      // version before a parameter was renamed is still recognised.
+      // version before a parameter was renamed or added (at its default
+      // here) is still recognised.
       if (file_exists(join_path(dir, "summary.json"))
           && file_exists(join_path(dir, "parameters.prm")))
         {
           std::ifstream in(join_path(dir, "parameters.prm"));
           double        old_end = -1;
-          if (resumable_parameter_lines(in,
-                                        McaStudyParameters::end_time_path,
-                                        &old_end)
-                == wanted
+          if (wanted.same_as(resumable_parameter_lines(
+                in, McaStudyParameters::end_time_path, &old_end))
               && std::abs(old_end - end_time) <= 1e-12 * end_time)
             return Start::reuse;
         }
@@ -194,7 +193,8 @@ namespace tribodyn
       // of these parameters before the end time: resumed.
       CheckpointInfo info;
       if (read_latest_checkpoint_info(dir, info) && info.problem == "mca"
-          && info.parameters == wanted && info.time < end_time * (1 - 1e-12))
+          && wanted.same_as(info.parameters)
+          && info.time < end_time * (1 - 1e-12))
         return Start::resume;
       return Start::fresh;
     }

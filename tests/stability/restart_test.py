@@ -24,7 +24,8 @@ engine); FILE are the CSV files to compare. With
 With --written-before-renames (issue #52 item 3), the checkpoint of the
 first part is rewritten as a version before the parameter renames would
 have written it: its parameter lines in the old names (OLD_NAMES, the
-names tribodyn used up to commit 6969d3e). The resumed run must accept it
+names tribodyn used up to commit 6969d3e), without the lines of entries
+added since at their defaults (ADDED_SINCE). The resumed run must accept it
 and still equal the uninterrupted run.
 
 With --resume-launcher (restart on another number of ranks, issue #21), A
@@ -74,12 +75,22 @@ OLD_NAMES = [
 ]
 
 
+# (engine, a checkpoint's parameter line of an entry added since, at its
+# default: a version before it wrote no such line)
+ADDED_SINCE = [
+    ("mca", "parameter Partition/Mesh cells per rank = 1000"),
+]
+
+
 def write_old_names(latest_path):
     """Rewrite the parameter lines of a checkpoint's 'latest' file in the
-    names before the renames; returns the number of lines changed."""
+    names before the renames, without the entries added since; returns the
+    number of lines changed or removed."""
     lines = open(latest_path).read().split("\n")
     problem = [l for l in lines if l.startswith("problem = ")][0][10:]
-    changed = 0
+    added = [l for engine, l in ADDED_SINCE if engine == problem]
+    changed = sum(l in added for l in lines)
+    lines = [l for l in lines if l not in added]
     for k, line in enumerate(lines):
         if not line.startswith("parameter "):
             continue

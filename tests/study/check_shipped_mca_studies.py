@@ -1,6 +1,6 @@
 """The shipped automata studies run (issue #49 item 2), cut short:
-prm/study/mca_laptop.prm, mca_seed_heights.prm, mca_fibre_content.prm and
-mca_time_step_lever.prm, each with an
+prm/study/mca_laptop.prm, mca_seed_heights.prm, mca_fibre_content.prm,
+mca_time_step_lever.prm and mca_time_step_lever_composite.prm, each with an
 override block appended (as a user continues a prm: later entries win; the
 shipped text is not edited) for one roughness seed, 2e-11 s (the bodies
 are still approaching) and an output directory of the test's; the bases
@@ -14,7 +14,7 @@ prm documents (the laptop scene: 16 x 16 x 12 FCC cells = 12 288; the seed
 heights with the fine band at 8 cells and 16 of 2d: 35 136, the count
 mca_size_bands_interface derives from the layout), and the seed-heights
 scenes really run the study's setting (their parameters.prm reads
-'interface 8 16'); the time-step lever's two bases differ in dt by the
+'interface 8 16'); the time-step levers' two bases differ in dt by the
 ratio of their Courant factors, 0.5/0.35 (the same d and c_p: to 1e-12)."""
 import csv
 import json
@@ -29,7 +29,11 @@ from check_tools import finish, report  # noqa: E402
 tribodyn, folder, scratch = sys.argv[1], os.path.abspath(sys.argv[2]), sys.argv[3]
 os.makedirs(scratch, exist_ok=True)
 AUTOMATA = {"mca_laptop": 12288, "mca_seed_heights": 35136,
-            "mca_fibre_content": 12288, "mca_time_step_lever": 12288}
+            "mca_fibre_content": 12288, "mca_time_step_lever": 12288,
+            "mca_time_step_lever_composite": 12288}
+# the two bases of each time-step lever: Courant factor 0.35 and 0.5
+LEVERS = {"mca_time_step_lever": ("courant_035", "courant_050"),
+          "mca_time_step_lever_composite": ("composite_035", "composite_050")}
 # the generated fibres' share of each contacting part's box (the set-up's
 # 'Inclusions:' line), per base of the fibre-content study: the 4 % base
 # reads friction_composite.prm through an include beside it, run from the
@@ -93,13 +97,14 @@ end
             report(abs(fraction - FIBRES[base]) < 1e-3,
                    f"{name} {base}: fibres {fraction:.5f} % of the part's box "
                    f"(the generator's {FIBRES[base]} %)")
-    if name == "mca_time_step_lever":
+    if name in LEVERS:
         dts = {}
         for base in bases_run:
             with open(os.path.join(out, "scenes", f"{base}_seed1",
                                    "summary.json")) as f:
                 dts[base] = json.load(f)["dt"]
-        ratio = dts["courant_050"] / dts["courant_035"]
+        small, large = LEVERS[name]
+        ratio = dts[large] / dts[small]
         report(abs(ratio / (0.5 / 0.35) - 1) < 1e-12,
                f"{name}: dt ratio {ratio:.15f} = 0.5 / 0.35 (Courant factors)")
 finish()

@@ -56,11 +56,11 @@ namespace tribodyn
       ContactParameters parameters;
       /// Checkpoints (runs read from a parameter file only; the study
       /// driver's cases have none).
-      bool                     checkpoints_on = false;
-      CheckpointParameters     checkpoint;
-      std::vector<std::string> checkpoint_lines;
-      std::vector<Sample>      recorded_samples;
-      RunSummary               run_summary;
+      bool                 checkpoints_on = false;
+      CheckpointParameters checkpoint;
+      ResumableParameters  checkpoint_lines;
+      std::vector<Sample>  recorded_samples;
+      RunSummary           run_summary;
     };
   } // namespace contact
 } // namespace tribodyn

@@ -115,11 +115,11 @@ namespace tribodyn
        * every @p parameters.interval of simulated time, one at the end and
        * on SIGTERM/SIGINT; with @p parameters.resume, run() continues from
        * the latest checkpoint of its output directory. @p parameter_lines
-       * identify the run (resumable_parameter_lines()).
+       * identify the run (resumable_parameters()).
        */
       void
-      enable_checkpoints(const CheckpointParameters     &parameters,
-                         const std::vector<std::string> &parameter_lines);
+      enable_checkpoints(const CheckpointParameters &parameters,
+                         const ResumableParameters  &parameter_lines);
 
       /**
        * Called by run() once the run has passed its last check (the resume
@@ -435,10 +435,10 @@ namespace tribodyn
       std::string                                progress_label = "contact";
       std::function<std::string(const Sample &)> progress_key
         = &friction_progress_key;
-      CheckpointParameters     checkpoint;
-      std::vector<std::string> checkpoint_parameters;
-      double                   mass_total = 0;
-      std::string              material_text;
+      CheckpointParameters checkpoint;
+      ResumableParameters  checkpoint_parameters;
+      double               mass_total = 0;
+      std::string          material_text;
       /// The friction law of the run (Contact/Friction law).
       FrictionLaws::Variant friction_law;
       // Plane motion over the current step (t_n -> t_{n+1}): displacement

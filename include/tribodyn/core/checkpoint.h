@@ -59,6 +59,43 @@ namespace tribodyn
   resumable_parameter_lines(dealii::ParameterHandler &prm,
                             const std::string        &end_time_entry);
 
+  /**
+   * What identifies a run for a resume or a reuse: its resumable parameter
+   * lines (resumable_parameter_lines(), what a checkpoint stores) and the
+   * lines of every entry at its default value in this version. A stored
+   * run (a checkpoint, a finished study scene's parameters.prm) is the
+   * same run where the two agree but for entries at their defaults: an
+   * entry a later version added (absent from the stored lines) is the
+   * same as long as this run leaves it at its default, and an entry a
+   * stored run left at a default that is still the default is the same
+   * whether or not this version lists it.
+   */
+  struct ResumableParameters
+  {
+    /// resumable_parameter_lines() of the run (sorted).
+    std::vector<std::string> lines;
+    /// Every entry at its default, as comparable lines (sorted).
+    std::vector<std::string> defaults;
+
+    /// The names of the entries in which the stored lines @p stored
+    /// (resumable_parameter_lines() of a stored run, any version) differ
+    /// from this run's: empty for the same run.
+    std::vector<std::string>
+    differing(const std::vector<std::string> &stored) const;
+
+    /// The same run as @p stored?
+    bool
+    same_as(const std::vector<std::string> &stored) const
+    {
+      return differing(stored).empty();
+    }
+  };
+
+  /// The ResumableParameters of @p prm (declared and read).
+  ResumableParameters
+  resumable_parameters(dealii::ParameterHandler &prm,
+                       const std::string        &end_time_entry);
+
   /// The same lines from the text @p short_prm of a run's parameters.prm
   /// (ShortPRM, as the application writes it), whatever names its version
   /// used; @p end_time, if given, receives the value of @p end_time_entry.
@@ -111,12 +148,12 @@ namespace tribodyn
     discard();
 
     /// Collective: store this rank's @p blob as the checkpoint of
-    /// (@p step, @p time) with the run's @p parameters.
+    /// (@p step, @p time) with the run's @p parameters (their lines).
     void
-    write(const std::string              &blob,
-          const unsigned long             step,
-          const double                    time,
-          const std::vector<std::string> &parameters);
+    write(const std::string         &blob,
+          const unsigned long        step,
+          const double               time,
+          const ResumableParameters &parameters);
 
     /**
      * Collective: this rank's share of the latest checkpoint, which may
@@ -126,10 +163,11 @@ namespace tribodyn
      * one blob this rank wrote. Throws InputError with the fix when there
      * is no checkpoint, when it belongs to another problem, when a rank's
      * file is missing or damaged, or when @p parameters differ from the
-     * checkpointed run's (naming the parameters).
+     * checkpointed run's (naming the parameters; entries at their defaults
+     * as ResumableParameters::differing() says).
      */
     std::vector<std::string>
-    read(const std::vector<std::string> &parameters, CheckpointInfo &info);
+    read(const ResumableParameters &parameters, CheckpointInfo &info);
 
     /// Directory of the checkpoints.
     const std::string &

@@ -38,10 +38,10 @@ namespace tribodyn
       void
       run_with_timer(dealii::TimerOutput &timer);
 
-      RunContext               context;
-      Parameters               parameters;
-      CheckpointParameters     checkpoint;
-      std::vector<std::string> checkpoint_lines;
+      RunContext           context;
+      Parameters           parameters;
+      CheckpointParameters checkpoint;
+      ResumableParameters  checkpoint_lines;
     };
   } // namespace mca
 } // namespace tribodyn
