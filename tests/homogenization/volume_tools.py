@@ -290,3 +290,18 @@ class Checks:
         if self.failures:
             print("%d check(s) failed" % len(self.failures))
         raise SystemExit(1 if self.failures else 0)
+
+
+def synthetic_images():
+    """scripts/make_synthetic_images as a module (the drawings of the
+    shipped and test images, and its PNG and TIFF writers)."""
+    import importlib.util
+    from importlib.machinery import SourceFileLoader
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                          "..", "scripts", "make_synthetic_images")
+    loader = SourceFileLoader("make_synthetic_images", script)
+    module = importlib.util.module_from_spec(
+        importlib.util.spec_from_loader(loader.name, loader))
+    loader.exec_module(module)
+    return module
+
