@@ -76,6 +76,9 @@ end
 subsection Cell problem
   set Boundary conditions = KUBC
 end
+subsection Output
+  set Write slices = false
+end
 """ % (path, pixel_size, v.GLASS_EPOXY_MATERIALS)
 
 
