@@ -404,6 +404,27 @@ namespace tribodyn
                   "width, height and pixel type (crop or pad the slices "
                   "that differ).");
             }
+          // (a stack's voxel size in x and y, read by image_stack.cc)
+          if (next.pixel_width != image.pixel_width
+              || next.pixel_height != image.pixel_height)
+            {
+              TIFFClose(tif);
+              const auto resolution = [](const RasterImage &i) {
+                return i.pixel_width > 0 && i.pixel_height > 0
+                         ? "pixels of " + format_number(i.pixel_width) + " x "
+                             + format_number(i.pixel_height)
+                             + " m in its resolution tags"
+                         : std::string("no resolution tags");
+              };
+              throw InputError(
+                "The image file '" + file_name + "' (parameter '" + parameter
+                + "') is not a stack of equal pages: page "
+                + std::to_string(page) + " (from 0) has " + resolution(next)
+                + " but page 0 " + resolution(image)
+                + ". Write the same XResolution, YResolution and "
+                  "ResolutionUnit (inch or cm) into every page, or none into "
+                  "any.");
+            }
           image.samples.insert(image.samples.end(),
                                next.samples.begin(),
                                next.samples.end());

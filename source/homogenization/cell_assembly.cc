@@ -230,85 +230,39 @@ namespace tribodyn
 
     // @sect3{The volume averages}
     //
-    // Tabulated elements: on an element of phase m, int eps = G u_K + E |K|
-    // (E = 0 for SUBC) and int sigma = C_m int eps, G the strain integrals
-    // of the shape functions. Otherwise (2D) the strains are integrated at
-    // the quadrature points of every cell, with the plane-strain sigma_zz
-    // (cell_integrals.h, shared with the field output).
+    // The sums over the cells of the element integrals
+    // (for_each_element_integral() in cell_integrals.h, shared with the
+    // field output).
 
     template <int dim>
     typename CellProblem<dim>::LoadCases
     CellProblem<dim>::postprocess(const BoundaryCondition bc,
                                   const Fields           &solutions) const
     {
-      const bool strain_driven = bc != BoundaryCondition::subc;
       // Sums per load case: stress, strain (n_voigt each), sigma_zz.
-      constexpr unsigned int stride = 2 * n_voigt + 1;
-      std::vector<double>    sums(stride * n_voigt, 0.);
-      if constexpr (tabulated_elements)
+      constexpr unsigned int    stride = 2 * n_voigt + 1;
+      std::vector<double>       sums(stride * n_voigt, 0.);
+      std::vector<unsigned int> load_cases;
+      std::vector<const LinearAlgebra::distributed::Vector<double> *> fields;
+      for (unsigned int k = 0; k < n_voigt; ++k)
         {
-          const unsigned int                   n = fe.n_dofs_per_cell();
-          std::vector<types::global_dof_index> dofs(n);
-          Vector<double>                       u(n), eps(n_voigt);
-          const auto                           h            = element_size();
-          double                               cell_measure = h[0];
-          for (unsigned int d = 1; d < dim; ++d)
-            cell_measure *= h[d];
-          for (const auto &cell : dof_handler.active_cell_iterators())
-            if (cell->is_locally_owned())
-              {
-                cell->get_dof_indices(dofs);
-                const VoigtMatrixType &C
-                  = Traits::stiffness(phases[cell->material_id()]);
-                for (unsigned int k = 0; k < n_voigt; ++k)
-                  {
-                    for (unsigned int i = 0; i < n; ++i)
-                      u[i] = solutions[k][dofs[i]];
-                    strain_integral.vmult(eps, u);
-                    Voigt e;
-                    for (unsigned int a = 0; a < n_voigt; ++a)
-                      e[a] = eps[a]
-                             + (strain_driven && a == k ? cell_measure : 0.);
-                    const Voigt s   = C * e;
-                    double     *sum = &sums[stride * k];
-                    for (unsigned int a = 0; a < n_voigt; ++a)
-                      {
-                        sum[a] += s[a];
-                        sum[n_voigt + a] += e[a];
-                      }
-                  }
-              }
+          load_cases.push_back(k);
+          fields.push_back(&solutions[k]);
         }
-      else
-        {
-          static_assert(dim == 2, "per-cell averages: plane strain only");
-          std::vector<VoigtVector> macro_strains;
-          std::vector<const LinearAlgebra::distributed::Vector<double> *>
-            fields;
-          for (unsigned int k = 0; k < n_voigt; ++k)
-            {
-              macro_strains.push_back(strain_driven ? unit_load(k) : Voigt());
-              fields.push_back(&solutions[k]);
-            }
-          internal::for_each_owned_cell_integral(
-            dof_handler,
-            fe,
-            parameters.fe_degree,
-            phases,
-            fields,
-            macro_strains,
-            [&](const auto &,
-                const unsigned int             k,
-                const internal::CellIntegrals &integrals) {
-              double *sum = &sums[stride * k];
-              for (unsigned int a = 0; a < n_voigt; ++a)
-                {
-                  sum[a] += integrals.stress[a];
-                  sum[n_voigt + a] += integrals.strain[a];
-                }
-              sum[2 * n_voigt] += integrals.stress_zz;
-            });
-        }
+      for_each_element_integral(bc,
+                                load_cases,
+                                fields,
+                                [&](const auto &,
+                                    const unsigned int      k,
+                                    const ElementIntegrals &integrals) {
+                                  double *sum = &sums[stride * k];
+                                  for (unsigned int a = 0; a < n_voigt; ++a)
+                                    {
+                                      sum[a] += integrals.stress[a];
+                                      sum[n_voigt + a] += integrals.strain[a];
+                                    }
+                                  sum[2 * n_voigt] += integrals.stress_zz;
+                                });
       Utilities::MPI::sum(sums, mpi_communicator, sums);
       const double total = measure();
       LoadCases    r;

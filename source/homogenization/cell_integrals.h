@@ -1,5 +1,5 @@
 // Integration of a cell problem's fields over one cell, shared by the
-// postprocessing (source/homogenization/cell_problem.cc) and the field
+// volume averages (source/homogenization/cell_assembly.cc) and the field
 // output (source/homogenization/cell_output.cc). Private to the
 // homogenization sources.
 #ifndef tribodyn_source_homogenization_cell_integrals_h
@@ -29,44 +29,47 @@ namespace tribodyn
       namespace FEValuesExtractors = dealii::FEValuesExtractors;
       namespace TrilinosWrappers   = dealii::TrilinosWrappers;
 
-      /// u = E x for the Voigt strain E = (e_xx, e_yy, gamma_xy).
-      class AffineDisplacement : public Function<2>
+      /// u = E x for the Voigt strain E (engineering shears): (e_xx, e_yy,
+      /// gamma_xy) in 2D, (e_xx, e_yy, e_zz, gamma_yz, gamma_xz, gamma_xy)
+      /// in 3D.
+      template <int dim>
+      class AffineDisplacement : public Function<dim>
       {
       public:
-        explicit AffineDisplacement(const VoigtVector &strain)
-            : Function<2>(2)
+        using Voigt = typename CellProblem<dim>::Voigt;
+
+        explicit AffineDisplacement(const Voigt &strain)
+            : Function<dim>(dim)
             , strain(strain)
         {
         }
 
         double
-        value(const Point<2> &p, const unsigned int component) const override
+        value(const Point<dim> &p, const unsigned int component) const override
         {
-          const double e_xy = 0.5 * strain[2];
-          return component == 0 ? strain[0] * p[0] + e_xy * p[1]
-                                : e_xy * p[0] + strain[1] * p[1];
+          double u = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            // the shear of the axes (component, d): in 3D that of the
+            // plane normal to the third axis a = 3 - component - d, Voigt
+            // index 3 + a
+            u += (d == component
+                    ? strain[d]
+                    : 0.5 * strain[dim == 2 ? 2 : 6 - component - d])
+                 * p[d];
+          return u;
         }
 
       private:
-        const VoigtVector strain;
-      };
-
-
-      /// Integrals over one cell of the strain, the stress and sigma_zz.
-      struct CellIntegrals
-      {
-        VoigtVector strain;
-        VoigtVector stress;
-        double      stress_zz = 0;
-        double      measure   = 0;
+        const Voigt strain;
       };
 
 
       /// Integrate eps = E + eps(solution) (E = 0 for SUBC), sigma = C eps
-      /// and sigma_zz = c_z . eps over the cell @p fe_values
-      /// was reinitialized on. @p strains is scratch space.
+      /// and sigma_zz = c_z . eps of plane strain over the cell
+      /// @p fe_values was reinitialized on (Voigt vectors of 3 entries).
+      /// @p strains is scratch space.
       template <typename VectorType>
-      inline CellIntegrals
+      inline ElementIntegrals<3>
       integrate_cell(const FEValues<2>                  &fe_values,
                      const VectorType                   &solution,
                      const VoigtVector                  &macro_strain,
@@ -76,8 +79,8 @@ namespace tribodyn
         const FEValuesExtractors::Vector displacement(0);
         fe_values[displacement].get_function_symmetric_gradients(solution,
                                                                  strains);
-        const VoigtMatrix &C = phase.C;
-        CellIntegrals      integrals;
+        const VoigtMatrix  &C = phase.C;
+        ElementIntegrals<3> integrals;
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
             const VoigtVector eps
@@ -92,44 +95,84 @@ namespace tribodyn
           }
         return integrals;
       }
-
-
-      /// Call @p f(cell, k, integrals) for every locally owned cell of
-      /// @p dof_handler and every field k of @p solutions (with its
-      /// macroscopic strain @p macro_strains[k]) with the integrals of
-      /// integrate_cell() (Gauss quadrature of degree + 1 points per
-      /// direction): one pass over the cells for all fields.
-      template <typename VectorType, typename F>
-      void
-      for_each_owned_cell_integral(
-        const dealii::DoFHandler<2>           &dof_handler,
-        const dealii::FiniteElement<2>        &fe,
-        const unsigned int                     degree,
-        const std::vector<ElasticPhase>       &phases,
-        const std::vector<const VectorType *> &solutions,
-        const std::vector<VoigtVector>        &macro_strains,
-        const F                               &f)
-      {
-        const dealii::QGauss<2> quadrature(degree + 1);
-        FEValues<2>             fe_values(
-          fe, quadrature, dealii::update_gradients | dealii::update_JxW_values);
-        std::vector<SymmetricTensor<2, 2>> strains(quadrature.size());
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              fe_values.reinit(cell);
-              for (unsigned int k = 0; k < solutions.size(); ++k)
-                f(cell,
-                  k,
-                  integrate_cell(fe_values,
-                                 *solutions[k],
-                                 macro_strains[k],
-                                 phases[cell->material_id()],
-                                 strains));
-            }
-      }
     } // namespace internal
-  }   // namespace homogenization
+
+
+    // Tabulated elements (3D): on an element of phase m, int eps = G u_K +
+    // E |K| and int sigma = C_m int eps, G the strain integrals of the
+    // shape functions (tabulate_elements()). Otherwise (2D) the strains
+    // are integrated at the Gauss points (degree + 1 per direction) of
+    // every cell, with the plane-strain sigma_zz.
+    template <int dim>
+    template <typename F>
+    void
+    CellProblem<dim>::for_each_element_integral(
+      const BoundaryCondition          bc,
+      const std::vector<unsigned int> &load_cases,
+      const std::vector<
+        const dealii::LinearAlgebra::distributed::Vector<double> *> &fields,
+      const F                                                       &f) const
+    {
+      const bool strain_driven = bc != BoundaryCondition::subc;
+      if constexpr (tabulated_elements)
+        {
+          const unsigned int                           n = fe.n_dofs_per_cell();
+          std::vector<dealii::types::global_dof_index> dofs(n);
+          dealii::Vector<double>                       u(n), eps(n_voigt);
+          const auto                                   h = element_size();
+          double                                       cell_measure = h[0];
+          for (unsigned int d = 1; d < dim; ++d)
+            cell_measure *= h[d];
+          ElementIntegrals integrals;
+          integrals.measure = cell_measure;
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
+              {
+                cell->get_dof_indices(dofs);
+                const VoigtMatrixType &C
+                  = Traits::stiffness(phases[cell->material_id()]);
+                for (unsigned int k = 0; k < fields.size(); ++k)
+                  {
+                    for (unsigned int i = 0; i < n; ++i)
+                      u[i] = (*fields[k])[dofs[i]];
+                    strain_integral.vmult(eps, u);
+                    for (unsigned int a = 0; a < n_voigt; ++a)
+                      integrals.strain[a]
+                        = eps[a]
+                          + (strain_driven && a == load_cases[k] ? cell_measure
+                                                                 : 0.);
+                    integrals.stress = C * integrals.strain;
+                    f(cell, k, integrals);
+                  }
+              }
+        }
+      else
+        {
+          static_assert(dim == 2, "per-cell integrals: plane strain only");
+          const dealii::QGauss<2> quadrature(parameters.fe_degree + 1);
+          dealii::FEValues<2>     fe_values(fe,
+                                        quadrature,
+                                        dealii::update_gradients
+                                          | dealii::update_JxW_values);
+          std::vector<dealii::SymmetricTensor<2, 2>> strains(quadrature.size());
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
+              {
+                fe_values.reinit(cell);
+                for (unsigned int k = 0; k < fields.size(); ++k)
+                  f(cell,
+                    k,
+                    internal::integrate_cell(fe_values,
+                                             *fields[k],
+                                             strain_driven
+                                               ? unit_load(load_cases[k])
+                                               : Voigt(),
+                                             phases[cell->material_id()],
+                                             strains));
+              }
+        }
+    }
+  } // namespace homogenization
 } // namespace tribodyn
 
 #endif

@@ -1,5 +1,8 @@
-// Output of the cell problems: the displacement, stress and strain fields
-// of each load case (VTU with a .pvd index) and the material map.
+// Output of the cell problems: the cell fields of a load case (the
+// averages over each element of the stress, von Mises stress and strain,
+// and the material id), written with the displacement as VTU with a .pvd
+// index of the load cases, or cut along planes of elements (the slices of
+// a 3D volume); and the material map.
 #include "cell_integrals.h"
 
 #include <cmath>
@@ -17,94 +20,130 @@ namespace tribodyn
   {
     using namespace dealii;
     using internal::AffineDisplacement;
-    using internal::CellIntegrals;
-    using internal::for_each_owned_cell_integral;
+
+    namespace
+    {
+      /// The Voigt components of @p dim dimensions: the names of the load
+      /// cases and of the fields' components.
+      template <int dim>
+      const char *
+      voigt_name(const unsigned int a)
+      {
+        static const char *const names2[3] = {"xx", "yy", "xy"};
+        static const char *const names3[6]
+          = {"xx", "yy", "zz", "yz", "xz", "xy"};
+        return dim == 2 ? names2[a] : names3[a];
+      }
+    } // namespace
+
+
+    template <int dim>
+    std::vector<std::string>
+    CellProblem<dim>::cell_field_names()
+    {
+      std::vector<std::string> names;
+      for (unsigned int a = 0; a < n_voigt; ++a)
+        names.push_back(std::string("stress_") + voigt_name<dim>(a));
+      if (dim == 2)
+        names.push_back("stress_zz");
+      names.push_back("von_mises");
+      for (unsigned int a = 0; a < n_voigt; ++a)
+        names.push_back(std::string(a < dim ? "strain_" : "strain_gamma_")
+                        + voigt_name<dim>(a));
+      names.push_back("material_id");
+      return names;
+    }
+
+
+    template <int dim>
+    std::vector<Vector<float>>
+    CellProblem<dim>::cell_fields(
+      const BoundaryCondition                           bc,
+      const unsigned int                                load_case,
+      const LinearAlgebra::distributed::Vector<double> &field) const
+    {
+      const unsigned int         n_cells = triangulation.n_active_cells();
+      std::vector<Vector<float>> values(cell_field_names().size(),
+                                        Vector<float>(n_cells));
+      for_each_element_integral(
+        bc,
+        {load_case},
+        {&field},
+        [&](const auto &cell, unsigned int, const ElementIntegrals &integrals) {
+          const Voigt eps   = integrals.strain / integrals.measure;
+          const Voigt sigma = integrals.stress / integrals.measure;
+          // the normal stresses and the shears of the planes normal to x,
+          // y, z (plane strain: sigma_zz, and the one shear xy)
+          double normal[3], shear[3] = {0, 0, 0};
+          for (unsigned int d = 0; d < dim; ++d)
+            normal[d] = sigma[d];
+          if constexpr (dim == 2)
+            {
+              normal[2] = integrals.stress_zz / integrals.measure;
+              shear[2]  = sigma[2];
+            }
+          else
+            for (unsigned int d = 0; d < 3; ++d)
+              shear[d] = sigma[3 + d];
+          const double von_mises = std::sqrt(
+            0.5
+              * ((normal[0] - normal[1]) * (normal[0] - normal[1])
+                 + (normal[1] - normal[2]) * (normal[1] - normal[2])
+                 + (normal[2] - normal[0]) * (normal[2] - normal[0]))
+            + 3
+                * (shear[0] * shear[0] + shear[1] * shear[1]
+                   + shear[2] * shear[2]));
+          const unsigned int k = cell->active_cell_index();
+          unsigned int       f = 0;
+          for (unsigned int a = 0; a < n_voigt; ++a)
+            values[f++][k] = sigma[a];
+          if (dim == 2)
+            values[f++][k] = normal[2];
+          values[f++][k] = von_mises;
+          for (unsigned int a = 0; a < n_voigt; ++a)
+            values[f++][k] = eps[a];
+          values[f][k] = cell->material_id();
+        });
+      return values;
+    }
 
 
     template <int dim>
     void
     CellProblem<dim>::write_fields(
-      const BoundaryCondition              bc,
-      const unsigned int                   load_case,
-      const TrilinosWrappers::MPI::Vector &solution,
-      const std::string                   &output_directory) const
+      const BoundaryCondition                           bc,
+      const unsigned int                                load_case,
+      const LinearAlgebra::distributed::Vector<double> &field,
+      const std::vector<Vector<float>>                 &values,
+      const std::string                                &output_directory) const
     {
       TimerOutput::Scope scope(timer, "output");
-      const bool         strain_driven = bc != BoundaryCondition::subc;
-      const VoigtVector  macro_strain
-        = strain_driven ? unit_load(load_case) : VoigtVector();
 
       // Total displacement u = E x + w (strain-driven) or u (SUBC).
-      TrilinosWrappers::MPI::Vector total(locally_owned_dofs, mpi_communicator);
-      if (strain_driven)
+      LinearAlgebra::distributed::Vector<double> total(locally_owned_dofs,
+                                                       locally_relevant_dofs,
+                                                       mpi_communicator);
+      if (bc != BoundaryCondition::subc)
         VectorTools::interpolate(dof_handler,
-                                 AffineDisplacement(macro_strain),
+                                 AffineDisplacement<dim>(unit_load(load_case)),
                                  total);
-      TrilinosWrappers::MPI::Vector owned(locally_owned_dofs, mpi_communicator);
-      owned = solution;
-      total += owned;
-      TrilinosWrappers::MPI::Vector total_ghosted(locally_owned_dofs,
-                                                  locally_relevant_dofs,
-                                                  mpi_communicator);
-      total_ghosted = total;
-
-      // Cell averages of stress and strain.
-      const unsigned int           n_cells = triangulation.n_active_cells();
-      std::array<Vector<float>, 9> cell_data;
-      for (auto &v : cell_data)
-        v.reinit(n_cells);
-      for_each_owned_cell_integral(
-        dof_handler,
-        fe,
-        parameters.fe_degree,
-        phases,
-        std::vector<const TrilinosWrappers::MPI::Vector *>{&solution},
-        {macro_strain},
-        [&](const auto &cell, unsigned int, const CellIntegrals &integrals) {
-          const VoigtVector mean_eps   = integrals.strain / integrals.measure;
-          const VoigtVector mean_sigma = integrals.stress / integrals.measure;
-          const double      mean_szz = integrals.stress_zz / integrals.measure;
-          const double      sxx = mean_sigma[0], syy = mean_sigma[1],
-                       sxy       = mean_sigma[2];
-          const double von_mises = std::sqrt(
-            0.5
-              * ((sxx - syy) * (sxx - syy) + (syy - mean_szz) * (syy - mean_szz)
-                 + (mean_szz - sxx) * (mean_szz - sxx))
-            + 3 * sxy * sxy);
-          const unsigned int k = cell->active_cell_index();
-          cell_data[0][k]      = sxx;
-          cell_data[1][k]      = syy;
-          cell_data[2][k]      = sxy;
-          cell_data[3][k]      = mean_szz;
-          cell_data[4][k]      = von_mises;
-          cell_data[5][k]      = mean_eps[0];
-          cell_data[6][k]      = mean_eps[1];
-          cell_data[7][k]      = mean_eps[2];
-          cell_data[8][k]      = cell->material_id();
-        });
+      total += field;
+      total.update_ghost_values();
 
       DataOut<dim> data_out;
       data_out.attach_dof_handler(dof_handler);
       const std::vector<
         DataComponentInterpretation::DataComponentInterpretation>
         interpretation(
-          2, DataComponentInterpretation::component_is_part_of_vector);
-      data_out.add_data_vector(total_ghosted,
-                               std::vector<std::string>(2, "displacement"),
-                               DataOut<2>::type_dof_data,
+          dim, DataComponentInterpretation::component_is_part_of_vector);
+      data_out.add_data_vector(total,
+                               std::vector<std::string>(dim, "displacement"),
+                               DataOut<dim>::type_dof_data,
                                interpretation);
-      const char *names[9] = {"stress_xx",
-                              "stress_yy",
-                              "stress_xy",
-                              "stress_zz",
-                              "von_mises",
-                              "strain_xx",
-                              "strain_yy",
-                              "strain_gamma_xy",
-                              "material_id"};
-      for (unsigned int i = 0; i < 9; ++i)
-        data_out.add_data_vector(cell_data[i],
-                                 names[i],
+      const std::vector<std::string> names = cell_field_names();
+      for (unsigned int f = 0; f < names.size(); ++f)
+        data_out.add_data_vector(values[f],
+                                 names[f],
                                  DataOut<dim>::type_cell_data);
       data_out.build_patches();
       DataOutBase::VtkFlags flags;
@@ -113,30 +152,88 @@ namespace tribodyn
       // costs several times the solve here.
       flags.compression_level = DataOutBase::VtkFlags::best_speed;
       data_out.set_flags(flags);
-      // One file per load case, written collectively with MPI I/O, and a
-      // .pvd index of the three load cases (xx, yy, xy) as pseudo-times
-      // 0, 1, 2.
-      const std::string base          = "fields_" + to_string(bc);
-      const char       *case_names[3] = {"xx", "yy", "xy"};
-      data_out.write_vtu_in_parallel(
-        join_path(output_directory,
-                  base + "_" + case_names[load_case] + ".vtu"),
-        mpi_communicator);
+
+      // The file of load case k: in 2D one file written collectively with
+      // MPI I/O, named by the load case; in 3D (volumes of 10^6 to 10^8
+      // voxels) one piece per rank and its .pvtu record, numbered by the
+      // load case (deal.II's convention: fields_<BC>_<k>.<rank>.vtu).
+      const std::string base = "fields_" + to_string(bc);
+      const auto        file = [&](const unsigned int k) {
+        return dim == 2 ? base + "_" + voigt_name<dim>(k) + ".vtu"
+                               : base + "_" + std::to_string(k) + ".pvtu";
+      };
+      if constexpr (dim == 2)
+        data_out.write_vtu_in_parallel(join_path(output_directory,
+                                                 file(load_case)),
+                                       mpi_communicator);
+      else
+        data_out.write_vtu_with_pvtu_record(
+          output_directory + "/", base, load_case, mpi_communicator, 1);
+      // The .pvd index of the load cases as pseudo-times 0, 1, ...
       if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
         {
+          std::string cases;
+          for (unsigned int k = 0; k < n_voigt; ++k)
+            cases += (k > 0 ? ", " : "") + std::to_string(k) + " = "
+                     + voigt_name<dim>(k);
           std::string pvd;
           pvd += "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
                  "version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                 "  <!-- load cases: 0 = xx, 1 = yy, 2 = xy -->\n"
-                 "  <Collection>\n";
+                 "  <!-- load cases: "
+                 + cases + " -->\n  <Collection>\n";
           for (unsigned int k = 0; k <= load_case; ++k)
             pvd += "    <DataSet timestep=\"" + std::to_string(k)
-                   + "\" group=\"\" part=\"0\" file=\"" + base + "_"
-                   + case_names[k] + ".vtu\"/>\n";
+                   + "\" group=\"\" part=\"0\" file=\"" + file(k) + "\"/>\n";
           pvd += "  </Collection>\n</VTKFile>\n";
           write_file_atomically(join_path(output_directory, base + ".pvd"),
                                 pvd);
         }
+    }
+
+
+    template <int dim>
+    FieldSlice
+    CellProblem<dim>::slice(const SlicePlane                 &plane,
+                            const std::vector<Vector<float>> &values) const
+    {
+      FieldSlice s;
+      s.plane                         = plane;
+      s.names                         = cell_field_names();
+      const auto                    h = element_size();
+      std::array<unsigned int, dim> n_elements;
+      for (unsigned int d = 0; d < dim; ++d)
+        n_elements[d] = static_cast<unsigned int>(
+          std::lround(Traits::extent(geometry, d) / h[d]));
+      for (unsigned int d = 0, a = 0; d < dim; ++d)
+        if (d != plane.axis && a < 2)
+          {
+            s.axes[a] = d;
+            s.n[a]    = n_elements[d];
+            ++a;
+          }
+      if (dim == 2)
+        s.n[1] = 1;
+      s.values.assign(s.names.size(),
+                      std::vector<double>(std::size_t(s.n[0]) * s.n[1], 0.));
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const Point<dim> centre = cell->center();
+            const auto       index  = [&](const unsigned int d) {
+              return static_cast<unsigned int>(std::floor(centre[d] / h[d]));
+            };
+            if (index(plane.axis) != plane.index)
+              continue;
+            const std::size_t at
+              = index(s.axes[0])
+                + (dim == 3 ? std::size_t(s.n[0]) * index(s.axes[1]) : 0);
+            for (unsigned int f = 0; f < s.names.size(); ++f)
+              s.values[f][at] = values[f][cell->active_cell_index()];
+          }
+      // each element is owned by one rank, zero on the others
+      for (auto &v : s.values)
+        Utilities::MPI::sum(v, mpi_communicator, v);
+      return s;
     }
 
 
@@ -169,16 +266,23 @@ namespace tribodyn
                                      mpi_communicator);
     }
 
-    // The field output is that of plane strain (the 3D fields are still to
-    // come, issue #51 item 6).
-    template void
-    CellProblem<2>::write_fields(const BoundaryCondition,
-                                 const unsigned int,
-                                 const TrilinosWrappers::MPI::Vector &,
-                                 const std::string &) const;
-    template void
-    CellProblem<2>::write_material_map(const std::string &) const;
-    template void
-    CellProblem<3>::write_material_map(const std::string &) const;
+#define TRIBODYN_INSTANTIATE(dim)                                           \
+  template std::vector<std::string>   CellProblem<dim>::cell_field_names(); \
+  template std::vector<Vector<float>> CellProblem<dim>::cell_fields(        \
+    const BoundaryCondition,                                                \
+    const unsigned int,                                                     \
+    const LinearAlgebra::distributed::Vector<double> &) const;              \
+  template void CellProblem<dim>::write_fields(                             \
+    const BoundaryCondition,                                                \
+    const unsigned int,                                                     \
+    const LinearAlgebra::distributed::Vector<double> &,                     \
+    const std::vector<Vector<float>> &,                                     \
+    const std::string &) const;                                             \
+  template FieldSlice CellProblem<dim>::slice(                              \
+    const SlicePlane &, const std::vector<Vector<float>> &) const;          \
+  template void CellProblem<dim>::write_material_map(const std::string &) const;
+    TRIBODYN_INSTANTIATE(2)
+    TRIBODYN_INSTANTIATE(3)
+#undef TRIBODYN_INSTANTIATE
   } // namespace homogenization
 } // namespace tribodyn

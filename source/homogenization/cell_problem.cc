@@ -3,7 +3,6 @@
 // constraints of each boundary condition and the solve of one condition.
 // The assembly and the averages are in cell_assembly.cc, the solvers in
 // cell_solvers.cc, the field output in cell_output.cc.
-#include "cell_integrals.h"
 #include "cell_multigrid.h"
 
 #include <algorithm>
@@ -32,9 +31,6 @@ namespace tribodyn
   namespace homogenization
   {
     using namespace dealii;
-    using internal::AffineDisplacement;
-    using internal::CellIntegrals;
-    using internal::for_each_owned_cell_integral;
 
     namespace
     {
@@ -576,8 +572,9 @@ namespace tribodyn
 
     template <int dim>
     CellResult<dim>
-    CellProblem<dim>::solve(const BoundaryCondition bc,
-                            const std::string      &output_directory)
+    CellProblem<dim>::solve(const BoundaryCondition        bc,
+                            const std::string             &output_directory,
+                            const std::vector<SlicePlane> &slices)
     {
       const auto start = std::chrono::steady_clock::now();
       // The periodic problem needs the periodic faces registered in the
@@ -628,16 +625,16 @@ namespace tribodyn
             averaged.cg_iterations       = solved.cg_iterations;
             averaged.cg_time             = solved.cg_time;
             result.load_cases[load_case] = averaged;
-            if constexpr (dim == 2)
-              if (!output_directory.empty())
-                {
-                  constraints.distribute(solutions[load_case]);
-                  TrilinosWrappers::MPI::Vector ghosted(locally_owned_dofs,
-                                                        locally_relevant_dofs,
-                                                        mpi_communicator);
-                  ghosted = solutions[load_case];
-                  write_fields(bc, load_case, ghosted, output_directory);
-                }
+            const bool sliced            = load_case == 0 && !slices.empty();
+            if (output_directory.empty() && !sliced)
+              continue;
+            const auto values = cell_fields(bc, load_case, fields[load_case]);
+            if (!output_directory.empty())
+              write_fields(
+                bc, load_case, fields[load_case], values, output_directory);
+            if (sliced)
+              for (const SlicePlane &plane : slices)
+                result.slices.push_back(slice(plane, values));
           }
       }
 

@@ -2,6 +2,7 @@
 // parameters, the crop box, and the segmentation of the 2D images
 // (segment_pixels() in source/core/image_morphology.cc) applied to every
 // page.
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <tribodyn/core/errors.h>
@@ -32,9 +33,21 @@ namespace tribodyn
             "and RGB pages are read as in 2D), uncompressed, LZW, Deflate or "
             "PackBits, in strips; every page of the same size and pixel "
             "type. Voxel (i, j, k) is column i of page k, row j counted from "
-            "the bottom of the page (y up, as in 2D). The voxels are cubes of "
-            "edge 'Morphology/Voxel size'.",
+            "the bottom of the page (y up, as in 2D). The voxels are 'Pixel "
+            "size' wide in x and y and 'Morphology/Voxel size' (the spacing "
+            "of the pages) deep in z.",
             dealii::Patterns::FileName());
+      b.add("Pixel size",
+            pixel_size,
+            "Size of a pixel of the pages in m: the voxel size in x and y. 0 "
+            "takes it from the stack's resolution tags (TIFF "
+            "XResolution/YResolution with ResolutionUnit inch or cm, the "
+            "same on every page), as 'Morphology/Image/Pixel size' does in "
+            "2D; a stack without them is refused. A size given here must "
+            "agree with the tags when the stack has them (to 0.1 %). The "
+            "spacing of the pages (z), which no TIFF tag holds, is "
+            "'Morphology/Voxel size'.",
+            dealii::Patterns::Double(0));
       add_to(b);
       b.add("Crop",
             "",
@@ -86,6 +99,48 @@ namespace tribodyn
     }
 
 
+    namespace
+    {
+      /// The voxel size of the stack @p image: 'Pixel size' or the
+      /// resolution tags in x and y, @p slice_spacing in z.
+      std::array<double, 3>
+      stack_voxel_size(const RasterImage          &image,
+                       const ImageStackParameters &p,
+                       const double                slice_spacing)
+      {
+        const bool tagged = image.pixel_width > 0 && image.pixel_height > 0;
+        const std::string tags
+          = tagged ? format_number(image.pixel_width) + " x "
+                       + format_number(image.pixel_height) + " m"
+                   : std::string();
+        check_parameter(p.pixel_size > 0 || tagged,
+                        section + "Pixel size",
+                        "the image stack '" + p.file
+                          + "' has no resolution tags (XResolution and "
+                            "YResolution with ResolutionUnit inch or cm), so "
+                            "the size of its voxels in x and y is unknown. "
+                            "Give the size of a pixel in m (the spacing of "
+                            "the pages, z, is 'Morphology/Voxel size'), or "
+                            "write the tags into every page of the stack.");
+        if (p.pixel_size > 0 && tagged)
+          for (const double tag : {image.pixel_width, image.pixel_height})
+            check_parameter(std::abs(tag - p.pixel_size) <= 1e-3 * p.pixel_size,
+                            section + "Pixel size",
+                            format_number(p.pixel_size)
+                              + " m disagrees with the resolution tags of "
+                                "the image stack '"
+                              + p.file + "', pixels of " + tags
+                              + ". Set 'Pixel size = 0' to take the tags' "
+                                "size, or correct the tags (XResolution, "
+                                "YResolution, ResolutionUnit) of every page "
+                                "if the size given is the right one.");
+        if (p.pixel_size > 0)
+          return {{p.pixel_size, p.pixel_size, slice_spacing}};
+        return {{image.pixel_width, image.pixel_height, slice_spacing}};
+      }
+    } // namespace
+
+
     VoxelVolume
     read_image_stack(const ImageStackParameters &p, const double voxel_size)
     {
@@ -119,6 +174,7 @@ namespace tribodyn
               + " pages. Give first column, first row, first page, columns, "
                 "rows and pages inside the stack.");
         }
+      const std::array<double, 3> h = stack_voxel_size(image, p, voxel_size);
       const PixelPhases phases = segment_pixels(image, w, p, section, p.file);
       check_parameter(phases.n_phases <= 256,
                       section + "Segmentation",
@@ -138,11 +194,11 @@ namespace tribodyn
       if (p.crop[3] > 0)
         d << ", crop " << w.x0 << " " << w.y0 << " " << w.z0 << " " << w.nx
           << " " << w.ny << " " << w.nz;
-      d << "; " << phases.how << ")";
-      return VoxelVolume({{w.nx, w.ny, w.nz}},
-                         {{voxel_size, voxel_size, voxel_size}},
-                         std::move(ids),
-                         d.str());
+      d << "; voxels " << format_number(h[0]) << " x " << format_number(h[1])
+        << " x " << format_number(h[2]) << " m, "
+        << (p.pixel_size > 0 ? "x and y given" : "x and y from its tags")
+        << "; " << phases.how << ")";
+      return VoxelVolume({{w.nx, w.ny, w.nz}}, h, std::move(ids), d.str());
     }
   } // namespace homogenization
 } // namespace tribodyn

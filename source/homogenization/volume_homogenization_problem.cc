@@ -31,6 +31,34 @@ namespace tribodyn
             "Write the voxel volume as morphology.raw (one byte per voxel, "
             "its material id, x fastest) with its header morphology.hdr, "
             "readable by 'Morphology/Generator = raw file'.");
+      b.add("Write fields",
+            write_fields,
+            "Write the displacement, the stress (with the von Mises stress) "
+            "and the strain averaged over each voxel, and its material id, "
+            "of every load case of every boundary condition as compressed "
+            "binary VTU: fields_<BC>.pvd indexes fields_<BC>_<k>.pvtu, load "
+            "case k = 0 to 5 (xx, yy, zz, yz, xz, xy), each made of one "
+            "piece per MPI rank (fields_<BC>_<k>.<rank>.vtu). Off by "
+            "default: the files take about 145 B per voxel and load case "
+            "(36 MB per load case, 0.65 GB for the 18 load cases of a 64^3 "
+            "volume), and writing them takes about as long as the solve and "
+            "raises the peak memory by some 60 % (64^3 voxels, KUBC: 761 to "
+            "1198 MiB).");
+      b.add("Write slices",
+            write_slices,
+            "Write slices.json, the mid-x, mid-y and mid-z slices of the "
+            "volume (material ids) and of the von Mises stress and sigma_xx "
+            "of the first load case (xx) of KUBC (of the first boundary "
+            "condition when KUBC is not solved), and draw them with 'Plot "
+            "script' (slice_<axis>_phases.png, slice_z_von_mises.png, "
+            "slice_z_stress_xx.png, "
+            "volume_slices.png).");
+      b.add("Plot script",
+            plot_script,
+            "Python script drawing the slices (slices.json) as PNG at the "
+            "end: 'auto' looks for scripts/plot_volume next to the build "
+            "directory (skipped when python3 or matplotlib is missing), "
+            "'none' draws nothing, or a path.");
       return b;
     }
 
@@ -105,6 +133,17 @@ namespace tribodyn
           for (unsigned int j = i; j < 6; ++j)
             v.push_back(p.C[i][j]);
         return v;
+      }
+
+      /// The keys n_voxels and voxel_size of @p volume in @p j.
+      void
+      add_geometry(JsonValue &j, const VoxelVolume &volume)
+      {
+        j["n_voxels"]   = json_array({double(volume.n_voxels(0)),
+                                      double(volume.n_voxels(1)),
+                                      double(volume.n_voxels(2))});
+        j["voxel_size"] = json_array(
+          {volume.voxel_size(0), volume.voxel_size(1), volume.voxel_size(2)});
       }
 
       void
@@ -201,11 +240,7 @@ namespace tribodyn
 
       JsonValue summary     = summary_header("volume_homogenization", comm);
       summary["morphology"] = volume.description();
-      summary["n_voxels"]   = json_array({double(volume.n_voxels(0)),
-                                          double(volume.n_voxels(1)),
-                                          double(volume.n_voxels(2))});
-      summary["voxel_size"] = json_array(
-        {volume.voxel_size(0), volume.voxel_size(1), volume.voxel_size(2)});
+      add_geometry(summary, volume);
       {
         JsonValue  list  = JsonValue::array();
         const auto given = materials.given();
@@ -255,11 +290,29 @@ namespace tribodyn
         table << std::setw(9) << name;
       table << "\n";
 
+      // The slices: of the first load case of KUBC (of the first condition
+      // when KUBC is not solved), across the middle of each axis.
+      const auto &conditions = parameters.cell_problem.boundary_conditions;
+      const BoundaryCondition sliced_bc = std::find(conditions.begin(),
+                                                    conditions.end(),
+                                                    BoundaryCondition::kubc)
+                                              != conditions.end()
+                                            ? BoundaryCondition::kubc
+                                            : conditions.front();
+      std::vector<SlicePlane> planes;
+      if (parameters.output.write_slices)
+        for (const unsigned int axis : {2u, 0u, 1u})
+          planes.push_back({axis, volume.n_voxels(axis) / 2});
+
       std::vector<CellResult<3>> results;
-      for (const BoundaryCondition bc :
-           parameters.cell_problem.boundary_conditions)
+      for (const BoundaryCondition bc : conditions)
         {
-          const CellResult<3> r = cell_problem.solve(bc);
+          const CellResult<3> r = cell_problem.solve(
+            bc,
+            parameters.output.write_fields ? out_dir : std::string(),
+            bc == sliced_bc ? planes : std::vector<SlicePlane>());
+          if (bc == sliced_bc && parameters.output.write_slices)
+            write_slices(volume, bc, r.slices);
           results.push_back(r);
           JsonValue j          = to_json(r.properties);
           JsonValue iterations = JsonValue::array();
@@ -399,12 +452,66 @@ namespace tribodyn
           write_file_atomically(join_path(out_dir, "summary.json"),
                                 summary.dump() + "\n");
         }
+      const auto &output = parameters.output;
       pcout << "Results written to " << out_dir
             << "/ (summary.json, effective_properties.csv"
-            << (parameters.output.write_morphology
-                  ? ", morphology.hdr, morphology.raw"
+            << (output.write_morphology ? ", morphology.hdr, morphology.raw"
+                                        : "")
+            << (output.write_fields ? ", fields_*.pvd" : "")
+            << (output.write_slices ? ", slices.json" : "")
+            << (output.write_slices && output.plot_script != "none"
+                  ? ", slice_*.png, volume_slices.png"
                   : "")
             << ")" << std::endl;
+      if (root && output.write_slices)
+        run_plot_script(output.plot_script,
+                        "plot_volume",
+                        "Output/Plot script",
+                        out_dir);
+    }
+
+
+    void
+    VolumeHomogenizationProblem::write_slices(
+      const VoxelVolume             &volume,
+      const BoundaryCondition        bc,
+      const std::vector<FieldSlice> &slices) const
+    {
+      if (dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator)
+          != 0)
+        return;
+      const char *const axis_names[3] = {"x", "y", "z"};
+      JsonValue         j             = JsonValue::object();
+      add_geometry(j, volume);
+      JsonValue names = JsonValue::array();
+      for (const std::string &name : parameters.materials.names())
+        names.push_back(name);
+      j["phases"]             = names;
+      j["boundary_condition"] = to_string(bc);
+      j["load_case"]          = "xx";
+      JsonValue list          = JsonValue::array();
+      for (const FieldSlice &s : slices)
+        {
+          JsonValue o = JsonValue::object();
+          o["axis"]   = axis_names[s.plane.axis];
+          o["index"]  = s.plane.index;
+          o["axes"]   = JsonValue::array();
+          o["axes"].push_back(axis_names[s.axes[0]]);
+          o["axes"].push_back(axis_names[s.axes[1]]);
+          o["n"] = json_array({double(s.n[0]), double(s.n[1])});
+          // values[a + n0 b], a along axes[0], b along axes[1]
+          for (const std::string field :
+               {"material_id", "von_mises", "stress_xx"})
+            {
+              const auto f = std::find(s.names.begin(), s.names.end(), field)
+                             - s.names.begin();
+              o[field] = json_array(s.values[f]);
+            }
+          list.push_back(o);
+        }
+      j["slices"] = list;
+      write_file_atomically(join_path(context.output_directory, "slices.json"),
+                            j.dump() + "\n");
     }
 
 

@@ -59,8 +59,9 @@ namespace tribodyn
               Patterns::Integer(2));
       b.add("Voxel size",
             voxel_size,
-            "Edge of a cubic voxel of the generators and of an image stack "
-            "(m); a raw file's header gives its own.",
+            "Edge of a cubic voxel of the generators (m); of an image stack "
+            "the spacing of its pages (z; x and y: 'Image stack/Pixel "
+            "size'); a raw file's header gives its own.",
             Patterns::Double(),
             Interval{0, 1e3, true, false});
       b.add("Volume fraction",

@@ -42,11 +42,9 @@ Hashin-Shtrikman bounds on the bulk and shear moduli. Checked:
   four fibres run through the stack; measured 2.63 (KUBC), 3.11
   (periodic), 1.65 (SUBC)).
 """
-import importlib.util
 import json
 import os
 import sys
-from importlib.machinery import SourceFileLoader
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import volume_tools as v  # noqa: E402
@@ -72,13 +70,7 @@ fractions = [1 - f1, f1]
 check(abs(s["phases"][1]["fraction"] - f1) < 1e-12,
       "glass fraction %.4f (counted from morphology.raw)" % f1)
 if example == "volume_image":
-    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
-                          "..", "scripts", "make_synthetic_images")
-    loader = SourceFileLoader("make_synthetic_images", script)
-    images = importlib.util.module_from_spec(
-        importlib.util.spec_from_loader(loader.name, loader))
-    loader.exec_module(images)
-    phase, _ = images.fibre_stack()
+    phase, _ = v.synthetic_images().fibre_stack()
     drawn = bytes(phase[k][j][i] for k in range(n[2]) for j in range(n[1])
                   for i in range(n[0]))
     wrong = sum(a != b for a, b in zip(voxels, drawn))

@@ -6,7 +6,7 @@
 // method into three phases, must give that map voxel for voxel with voxel
 // (i, j, k) = column i, row 9 - j, page k (y up); grey-level thresholds
 // give the same; a crop box gives the window of the full volume; the voxel
-// size is the one given.
+// size is the one given ('Pixel size' in x and y, the slice spacing in z).
 
 #include "image_test_tools.h"
 
@@ -30,6 +30,7 @@ main(int argc, char **argv)
     p.file          = image_path(name);
     p.segmentation  = ImageStackParameters::Segmentation::otsu;
     p.n_otsu_phases = 3;
+    p.pixel_size    = 2e-6; // (the stacks have no resolution tags)
     return p;
   };
   // voxels of v that differ from the drawn map of the box (x0, y0, z0)
@@ -58,7 +59,8 @@ main(int argc, char **argv)
             name + ": 12 x 10 x 4 voxels, the drawn map ("
               + std::to_string(differences(v, 0, 0, 0)) + " voxels differ; "
               + v.description() + ")");
-      check_relative(v.voxel_size(2), 2e-6, 1e-15, name + ": voxel size");
+      for (unsigned int d = 0; d < 3; ++d)
+        check_relative(v.voxel_size(d), 2e-6, 1e-15, name + ": voxel size");
     }
   {
     ImageStackParameters p = parameters("stack_formats_lzw.tif");

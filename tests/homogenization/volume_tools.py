@@ -290,3 +290,114 @@ class Checks:
         if self.failures:
             print("%d check(s) failed" % len(self.failures))
         raise SystemExit(1 if self.failures else 0)
+
+
+def synthetic_images():
+    """scripts/make_synthetic_images as a module (the drawings of the
+    shipped and test images, and its PNG and TIFF writers)."""
+    import importlib.util
+    from importlib.machinery import SourceFileLoader
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                          "..", "scripts", "make_synthetic_images")
+    loader = SourceFileLoader("make_synthetic_images", script)
+    module = importlib.util.module_from_spec(
+        importlib.util.spec_from_loader(loader.name, loader))
+    loader.exec_module(module)
+    return module
+
+
+def read_pvd(directory, name):
+    """The files a .pvd lists, by timestep: [(timestep, file), ...]."""
+    import re
+    with open(os.path.join(directory, name)) as f:
+        text = f.read()
+    return [(int(t), f) for t, f in
+            re.findall(r'<DataSet timestep="(\d+)"[^>]* file="([^"]+)"', text)]
+
+
+def read_pvtu_cells(directory, name, h):
+    """The cells of the pieces a .pvtu lists (deal.II's VTU: one patch of 8
+    points per hexahedron, the cell fields repeated on its points), read
+    with scripts/plot_tools.read_vtu: (pieces, cells), cells a dict
+    (i, j, k) -> {field: value, "points": [8 points], "displacement":
+    [8 vectors]}, (i, j, k) the voxel of the cell's centre for the voxel
+    size h."""
+    import re
+    import sys
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(
+        __file__)), "..", "..", "scripts"))
+    import plot_tools
+    with open(os.path.join(directory, name)) as f:
+        pieces = re.findall(r'<Piece Source="([^"]+)"', f.read())
+    cells = {}
+    duplicates = 0
+    for piece in pieces:
+        if not os.path.isfile(os.path.join(directory, piece)):
+            continue  # (the caller checks that every piece is there)
+        data = plot_tools.read_vtu(os.path.join(directory, piece))
+        points = data.pop("points")
+        # (not the field data, e.g. TIME: one value per file)
+        data = {k: x for k, x in data.items() if len(x) == len(points)}
+        for c in range(len(points) // 8):
+            p = points[8 * c:8 * c + 8]
+            key = tuple(int(sum(q[d] for q in p) / 8 / h[d]) for d in range(3))
+            duplicates += key in cells
+            cell = {"points": p}
+            for field, values in data.items():
+                cell[field] = values[8 * c:8 * c + 8] if field == \
+                    "displacement" else values[8 * c]
+            cells[key] = cell
+    return pieces, cells, duplicates
+
+
+def read_png(path, pixels=True):
+    """Width, height and rows of (R, G, B[, A]) tuples of an 8-bit RGB(A)
+    or grey PNG, decoded here (zlib and the five filters of the PNG
+    specification), independently of the writer; with pixels=False the
+    size only (rows None)."""
+    import struct
+    import zlib
+    with open(path, "rb") as f:
+        data = f.read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", "%s is not a PNG" % path
+    position, idat = 8, b""
+    while position < len(data):
+        length, kind = struct.unpack(">I4s", data[position:position + 8])
+        body = data[position + 8:position + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, colour, _, _, interlace = struct.unpack(
+                ">IIBBBBB", body)
+        elif kind == b"IDAT":
+            idat += body
+        position += 12 + length
+    if not pixels:
+        return width, height, None
+    assert depth == 8 and interlace == 0 and colour in (0, 2, 6), \
+        "%s: depth %d, colour type %d, interlace %d" % (path, depth, colour,
+                                                        interlace)
+    channels = {0: 1, 2: 3, 6: 4}[colour]
+    raw = zlib.decompress(idat)
+    stride = width * channels
+    rows, previous = [], bytearray(stride)
+    for r in range(height):
+        kind = raw[r * (stride + 1)]
+        line = bytearray(raw[r * (stride + 1) + 1:(r + 1) * (stride + 1)])
+        for x in range(stride):
+            a = line[x - channels] if x >= channels else 0
+            b = previous[x]
+            c = previous[x - channels] if x >= channels else 0
+            if kind == 1:
+                line[x] = (line[x] + a) & 255
+            elif kind == 2:
+                line[x] = (line[x] + b) & 255
+            elif kind == 3:
+                line[x] = (line[x] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[x] = (line[x] + (a if pa <= pb and pa <= pc else
+                                      b if pb <= pc else c)) & 255
+        rows.append([tuple(line[i:i + channels])
+                     for i in range(0, stride, channels)])
+        previous = line
+    return width, height, rows

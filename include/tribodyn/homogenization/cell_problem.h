@@ -36,7 +36,19 @@ namespace tribodyn
     namespace internal
     {
       struct MultigridCache; // source/homogenization/cell_multigrid.h
-    }
+
+      /// Integrals over one element of the strain, the stress (Voigt
+      /// vectors of @p n_voigt entries) and, in plane strain, sigma_zz of a
+      /// load case.
+      template <unsigned int n_voigt>
+      struct ElementIntegrals
+      {
+        dealii::Tensor<1, n_voigt> strain;
+        dealii::Tensor<1, n_voigt> stress;
+        double                     stress_zz = 0;
+        double                     measure   = 0;
+      };
+    } // namespace internal
 
     /// The boundary conditions of a cell problem.
     enum class BoundaryCondition
@@ -237,6 +249,31 @@ namespace tribodyn
       double cg_time = 0;
     };
 
+    /// A plane of elements: the axis it is normal to and the index of its
+    /// layer of elements along that axis (3D: a slice of the voxels).
+    struct SlicePlane
+    {
+      unsigned int axis  = 2;
+      unsigned int index = 0;
+    };
+
+    /// The cell fields of one load case (those of the VTU output, the
+    /// averages over each element) on a plane of elements.
+    struct FieldSlice
+    {
+      SlicePlane plane;
+      /// The two axes along the plane, in increasing order, and the
+      /// number of elements along each.
+      std::array<unsigned int, 2> axes = {{0, 1}};
+      std::array<unsigned int, 2> n    = {{0, 0}};
+      /// The fields' names (as in the VTU: stress_xx, ..., von_mises,
+      /// strain_xx, ..., material_id).
+      std::vector<std::string> names;
+      /// values[f][a + n[0] b]: field f of the element at index a along
+      /// axes[0] and b along axes[1].
+      std::vector<std::vector<double>> values;
+    };
+
     /// The load cases of one boundary condition (one per Voigt component)
     /// and what follows from them.
     template <int dim>
@@ -250,6 +287,9 @@ namespace tribodyn
       double wall_time = 0;
       /// Whether CG was preconditioned by geometric multigrid (else AMG).
       bool multigrid = false;
+      /// The cell fields of the first load case on the planes solve() was
+      /// asked for.
+      std::vector<FieldSlice> slices;
     };
 
     using LoadCaseResult          = CellLoadCase<2>;
@@ -278,7 +318,8 @@ namespace tribodyn
      *   space) or with the matrix-free geometric multigrid of
      *   cell_multigrid.h, one preconditioner per boundary condition,
      *   reused for its load cases;
-     * - cell_output.cc: the fields and the material map (2D).
+     * - cell_output.cc: the cell fields of a load case, written as VTU
+     *   or cut along planes, and the material map.
      */
     template <int dim>
     class CellProblem
@@ -301,11 +342,15 @@ namespace tribodyn
                   dealii::TimerOutput        &timer);
 
       /// Solve the load cases of @p bc. When @p output_directory is not
-      /// empty (2D), write the fields of each load case there
-      /// (fields_<BC>.pvd indexing fields_<BC>_<case>.vtu).
+      /// empty, write the fields of each load case there (fields_<BC>.pvd
+      /// indexing, in 2D, fields_<BC>_<case>.vtu, one file through MPI
+      /// I/O; in 3D fields_<BC>_<k>.pvtu, k = 0 to 5, each of one piece
+      /// per rank, fields_<BC>_<k>.<rank>.vtu). The cell fields of the first
+      /// load case on each of @p slices go to CellResult::slices.
       CellResult<dim>
-      solve(const BoundaryCondition bc,
-            const std::string      &output_directory = "");
+      solve(const BoundaryCondition        bc,
+            const std::string             &output_directory = "",
+            const std::vector<SlicePlane> &slices           = {});
 
       /// Write the material map (morphology.vtu; 2D).
       void
@@ -385,19 +430,57 @@ namespace tribodyn
       using Fields
         = std::array<dealii::LinearAlgebra::distributed::Vector<double>,
                      n_voigt>;
-      using LoadCases = std::array<CellLoadCase<dim>, n_voigt>;
+      using LoadCases        = std::array<CellLoadCase<dim>, n_voigt>;
+      using ElementIntegrals = internal::ElementIntegrals<n_voigt>;
+      /// Call @p f(cell, k, integrals) for every locally owned cell and
+      /// every @p fields[k], the solution of load case @p load_cases[k]
+      /// of @p bc (its ghosts and constrained values set), with the
+      /// integrals over the cell of eps = E + eps(w) (E = 0 for SUBC),
+      /// sigma = C eps and sigma_zz: one pass over the cells for all
+      /// fields. Defined in cell_integrals.h.
+      template <typename F>
+      void
+      for_each_element_integral(
+        const BoundaryCondition          bc,
+        const std::vector<unsigned int> &load_cases,
+        const std::vector<
+          const dealii::LinearAlgebra::distributed::Vector<double> *> &fields,
+        const F                                                       &f) const;
       /// Volume averages of the load cases, in one pass over the cells.
       LoadCases
       postprocess(const BoundaryCondition bc, const Fields &solutions) const;
+      /// The averages over each element of the stress, von Mises stress
+      /// and strain of load case @p load_case of @p bc, and the material
+      /// id: one vector per field, indexed by active cell (the locally
+      /// owned ones set), named by cell_field_names().
+      std::vector<dealii::Vector<float>>
+      cell_fields(
+        const BoundaryCondition                                   bc,
+        const unsigned int                                        load_case,
+        const dealii::LinearAlgebra::distributed::Vector<double> &field) const;
+      /// stress_xx, ... (the Voigt components; in 2D then stress_zz),
+      /// von_mises, strain_xx, ... (engineering shears strain_gamma_xy,
+      /// ...), material_id.
+      static std::vector<std::string>
+      cell_field_names();
+      /// The cell fields @p values on @p plane, summed over the ranks.
+      FieldSlice
+      slice(const SlicePlane                         &plane,
+            const std::vector<dealii::Vector<float>> &values) const;
       /// The apparent properties of the averages of @p result.
       static typename Traits::Properties
       apparent_properties(const BoundaryCondition bc,
                           const CellResult<dim>  &result);
+      /// Write the displacement u = E x + w (or u, SUBC) of load case
+      /// @p load_case and its cell fields @p values (cell_fields()) as
+      /// VTU, and the .pvd index of the load cases up to it.
       void
-      write_fields(const BoundaryCondition                      bc,
-                   const unsigned int                           load_case,
-                   const dealii::TrilinosWrappers::MPI::Vector &solution,
-                   const std::string &output_directory) const;
+      write_fields(
+        const BoundaryCondition                                   bc,
+        const unsigned int                                        load_case,
+        const dealii::LinearAlgebra::distributed::Vector<double> &field,
+        const std::vector<dealii::Vector<float>>                 &values,
+        const std::string &output_directory) const;
 
       /// Macroscopic strain (strain-driven) or stress (SUBC) of a load case.
       static Voigt

@@ -19,12 +19,15 @@ namespace tribodyn
      * a multi-page TIFF, one page per z-slice, segmented into phases as the
      * 2D images are (SegmentationParameters: thresholds, Otsu's method or a
      * colour table), optionally cropped to a box of voxels. The voxel size
-     * is 'Morphology/Voxel size'.
+     * in x and y is 'Pixel size' or the stack's resolution tags, in z
+     * 'Morphology/Voxel size'.
      */
     struct ImageStackParameters : SegmentationParameters
     {
       /// Path of the multi-page TIFF (relative to the working directory).
       std::string file;
+      /// Voxel size in x and y (m); 0 takes it from the resolution tags.
+      double pixel_size = 0;
       /// Crop box in voxels: first column, first row (from the top of a
       /// page), first page, then the numbers of columns, rows and pages;
       /// all zero: the whole stack.
@@ -45,14 +48,18 @@ namespace tribodyn
 
     /**
      * Read the stack @p parameters name, crop and segment it into a voxel
-     * volume of cubic voxels of edge @p voxel_size: voxel (i, j, k) is
+     * volume whose voxels are parameters.pixel_size (or, when it is 0, the
+     * stack's resolution tags) wide in x and y and @p voxel_size deep in
+     * z: voxel (i, j, k) is
      * column i, row n_y - 1 - j (rows counted from the top of the window)
      * of page k of the window, so that x runs along the rows, y up the
      * pages as they are displayed and z through the stack. Throws
      * InputError naming 'Morphology/Image stack/...' for a missing,
      * corrupt or unsupported file, pages of different sizes, fewer than two
      * pages, columns or rows in the window, a crop box outside the stack, a
-     * phase left empty, or more than 255 phases.
+     * phase left empty, or more than 255 phases; naming 'Pixel size' a
+     * stack without resolution tags when it is 0, and one whose tags
+     * disagree with it by more than 0.1 % otherwise.
      */
     VoxelVolume
     read_image_stack(const ImageStackParameters &parameters,

@@ -16,6 +16,14 @@ namespace tribodyn
     {
       /// Write the volume as morphology.raw with its header morphology.hdr.
       bool write_morphology = true;
+      /// Write the fields of every load case as VTU (fields_<BC>.pvd); off
+      /// by default: they take more memory and disk than the solve.
+      bool write_fields = false;
+      /// Write the mid-x, mid-y and mid-z slices of the volume and of a
+      /// field (slices.json) and draw them (plot_script).
+      bool write_slices = true;
+      /// Script drawing the slices as PNG: "auto", "none" or a path.
+      std::string plot_script = "auto";
 
       /// The entries of "Output", bound to the member above.
       ParameterBinding
@@ -42,7 +50,10 @@ namespace tribodyn
      * solves the six load cases of each boundary condition and reports the
      * apparent 6x6 stiffness and compliance, the engineering constants,
      * the Voigt/Reuss and Hashin-Shtrikman bounds and Huet's ordering
-     * (screen table, effective_properties.csv, summary.json).
+     * (screen table, effective_properties.csv, summary.json); optionally
+     * the volume (morphology.raw), the fields (VTU) and slices of the
+     * volume and of a field (slices.json and the PNGs of
+     * scripts/plot_volume).
      */
     class VolumeHomogenizationProblem : public Problem
     {
@@ -55,6 +66,13 @@ namespace tribodyn
       run() override;
 
     private:
+      /// Write slices.json: @p slices of the volume and of the fields of
+      /// the first load case of @p bc.
+      void
+      write_slices(const VoxelVolume             &volume,
+                   const BoundaryCondition        bc,
+                   const std::vector<FieldSlice> &slices) const;
+
       RunContext                     context;
       VolumeHomogenizationParameters parameters;
     };
