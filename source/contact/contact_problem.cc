@@ -164,6 +164,7 @@ namespace tribodyn
       summary["wall_time_s"] = wall_time;
       std::ostringstream law_figures;
       solver.report_friction_law(summary, law_figures);
+      solver.finish_outputs(summary, law_figures);
       if (root)
         write_file_atomically(join_path(context.output_directory,
                                         "summary.json"),

@@ -445,8 +445,8 @@ namespace tribodyn
 
       // The outputs (source/contact/postprocessors/): made for runs that
       // write, each with its state from the checkpoint (by name).
-      std::vector<std::unique_ptr<Postprocessor>> outputs;
-      std::vector<std::string>                    output_names;
+      outputs.clear();
+      std::vector<std::string> output_names;
       if (write)
         {
           outputs = PostprocessorRegistry::create_all(
@@ -479,6 +479,15 @@ namespace tribodyn
       run_wall_time = std::chrono::duration<double>(
                         std::chrono::steady_clock::now() - start)
                         .count();
+    }
+
+
+    void
+    ContactSolver::finish_outputs(JsonValue    &summary,
+                                  std::ostream &figures) const
+    {
+      for (const auto &o : outputs)
+        o->finish(summary, figures);
     }
 
 

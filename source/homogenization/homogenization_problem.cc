@@ -1,5 +1,3 @@
-#include "moduli_table.h"
-
 #include <algorithm>
 #include <chrono>
 #include <deal.II/base/conditional_ostream.h>
@@ -11,6 +9,7 @@
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/homogenization/homogenization_problem.h>
+#include <tribodyn/homogenization/postprocessor.h>
 #include <tuple>
 
 namespace tribodyn
@@ -156,31 +155,6 @@ namespace tribodyn
       }
 
 
-      void
-      print_table_row(std::ostream               &out,
-                      const std::string          &label,
-                      const EngineeringConstants &c)
-      {
-        out << std::left << std::setw(10) << label << std::right << std::fixed
-            << std::setprecision(3) << std::setw(10) << c.E_L / 1e9
-            << std::setw(10) << c.E_T / 1e9 << std::setw(10) << c.G_LT / 1e9
-            << std::setprecision(4) << std::setw(10) << c.nu_LT << std::setw(10)
-            << c.nu_TT << "\n";
-      }
-
-
-      std::vector<double>
-      csv_values(const ApparentProperties &p)
-      {
-        const auto         &c = p.constants;
-        std::vector<double> v = {c.E_L, c.E_T, c.G_LT, c.nu_LT, c.nu_TT};
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = 0; j < 3; ++j)
-            v.push_back(p.C[i][j]);
-        v.push_back(p.c_z[0]);
-        v.push_back(p.c_z[1]);
-        return v;
-      }
     } // namespace
 
 
@@ -224,64 +198,6 @@ namespace tribodyn
 
 
     void
-    HomogenizationProblem::report_isotropic_moduli(
-      const std::vector<CellProblemResult> &results,
-      const std::vector<ElasticPhase>      &phases,
-      const std::vector<double>            &fractions,
-      JsonValue                            &summary,
-      std::ostream                         &table) const
-    {
-      // The Hashin-Shtrikman bounds need isotropic phases; with a
-      // transversely isotropic one they are not computed (null in
-      // summary.json).
-      const bool              isotropic = all_isotropic(phases);
-      const PlaneModuliBounds hs
-        = isotropic ? hashin_shtrikman_bounds(phases, fractions)
-                    : PlaneModuliBounds{};
-      const PlaneModuli voigt
-        = isotropic_projection(voigt_estimate(phases, fractions).C);
-      const PlaneModuli reuss
-        = isotropic_projection(reuss_estimate(phases, fractions).C);
-      JsonValue j; // null
-      if (isotropic)
-        {
-          j                = JsonValue::object();
-          j["kappa_lower"] = hs.lower.kappa;
-          j["kappa_upper"] = hs.upper.kappa;
-          j["mu_lower"]    = hs.lower.mu;
-          j["mu_upper"]    = hs.upper.mu;
-        }
-      summary["bounds"]["hashin_shtrikman"] = j;
-
-      table << "\nIn-plane isotropic moduli (GPa): 2D bulk kappa = (C11 + C22 "
-               "+ 2 C12)/4, shear mu = ((C11 + C22 - 2 C12)/4 + C66)/2;\n"
-            << (isotropic ? "Hashin-Shtrikman bounds apply to an in-plane "
-                            "isotropic microstructure (see anisotropy):\n"
-                          : "no Hashin-Shtrikman bounds: a phase is "
-                            "transversely isotropic.\n")
-            << std::left << std::setw(10) << "estimate" << std::right
-            << std::setw(10) << "kappa" << std::setw(10) << "mu"
-            << std::setw(12) << "anisotropy"
-            << "\n";
-      const auto row = [&](const std::string &label, const PlaneModuli &m) {
-        internal::write_moduli_row(table, label, m.kappa, m.mu);
-      };
-      internal::write_result_rows(
-        table, summary, results, "kappa", [](const VoigtMatrix &C) {
-          const PlaneModuli m = isotropic_projection(C);
-          return std::tuple(m.kappa, m.mu, anisotropy(C));
-        });
-      if (isotropic)
-        {
-          row("HS upper", hs.upper);
-          row("HS lower", hs.lower);
-        }
-      row("Voigt", voigt);
-      row("Reuss", reuss);
-    }
-
-
-    void
     HomogenizationProblem::run()
     {
       const auto     start = std::chrono::steady_clock::now();
@@ -315,12 +231,6 @@ namespace tribodyn
       const std::string &out_dir = context.output_directory;
       // Every check passed (morphology, mesh): the directory may be touched.
       context.claim_output();
-      if (output_parameters.write_morphology)
-        {
-          cell_problem.write_material_map(out_dir);
-          if (root)
-            morphology.write_grid_file(join_path(out_dir, "morphology.txt"));
-        }
 
       JsonValue summary            = summary_header("homogenization", comm);
       summary["morphology"]        = morphology.description();
@@ -332,88 +242,41 @@ namespace tribodyn
       summary["n_dofs"]
         = static_cast<unsigned long long>(cell_problem.n_dofs());
 
-      CsvWriter csv(join_path(out_dir, "effective_properties.csv"),
-                    {"estimate",
-                     "E_L",
-                     "E_T",
-                     "G_LT",
-                     "nu_LT",
-                     "nu_TT",
-                     "C11",
-                     "C12",
-                     "C16",
-                     "C21",
-                     "C22",
-                     "C26",
-                     "C61",
-                     "C62",
-                     "C66",
-                     "C13",
-                     "C23"},
-                    root);
-
+      // The outputs (source/homogenization/postprocessors/), in their
+      // order: each adds its rows to the screen's table and its keys to
+      // summary.json.
+      const HomogenizationParameters parameters{morphology_parameters,
+                                                materials,
+                                                cell_problem_parameters,
+                                                output_parameters};
+      std::vector<std::string>       output_names;
+      const auto outputs = PostprocessorRegistry::create_all({parameters,
+                                                              morphology,
+                                                              cell_problem,
+                                                              phases,
+                                                              fractions,
+                                                              out_dir,
+                                                              comm,
+                                                              root},
+                                                             output_names);
       std::ostringstream table;
-      table << "\nEffective properties (moduli in GPa), axes L = x, T = y:\n"
-            << std::left << std::setw(10) << "estimate" << std::right
-            << std::setw(10) << "E_L" << std::setw(10) << "E_T" << std::setw(10)
-            << "G_LT" << std::setw(10) << "nu_LT" << std::setw(10) << "nu_TT"
-            << "\n";
+      for (const auto &o : outputs)
+        o->started(table);
 
-      std::vector<CellProblemResult> results;
       for (const BoundaryCondition bc :
            cell_problem_parameters.boundary_conditions)
         {
           const CellProblemResult r = cell_problem.solve(
             bc, output_parameters.write_fields ? out_dir : std::string());
-          results.push_back(r);
-          JsonValue j          = to_json(r.properties);
-          JsonValue iterations = JsonValue::array();
-          for (const auto &lc : r.load_cases)
-            iterations.push_back(lc.cg_iterations);
-          j["cg_iterations"]     = iterations;
-          summary[to_string(bc)] = j;
-          print_table_row(table, to_string(bc), r.properties.constants);
-          csv.add_row({to_string(bc)}, csv_values(r.properties));
+          for (const auto &o : outputs)
+            o->solved(r, summary, table);
           pcout << to_string(bc) << ": solved 3 load cases (CG iterations "
                 << r.load_cases[0].cg_iterations << ", "
                 << r.load_cases[1].cg_iterations << ", "
                 << r.load_cases[2].cg_iterations << ")" << std::endl;
         }
-
-      const ApparentProperties voigt  = voigt_estimate(phases, fractions);
-      const ApparentProperties reuss  = reuss_estimate(phases, fractions);
-      JsonValue                bounds = JsonValue::object();
-      bounds["voigt"]                 = to_json(voigt);
-      bounds["reuss"]                 = to_json(reuss);
-      summary["bounds"]               = bounds;
-      print_table_row(table, "Voigt", voigt.constants);
-      print_table_row(table, "Reuss", reuss.constants);
-      csv.add_row({"Voigt"}, csv_values(voigt));
-      csv.add_row({"Reuss"}, csv_values(reuss));
-
-      // Huet's ordering of the apparent stiffnesses: C^K - (S^S)^-1 >= 0.
-      const CellProblemResult *kubc = nullptr, *subc = nullptr;
-      for (const auto &r : results)
-        {
-          if (r.boundary_condition == BoundaryCondition::kubc)
-            kubc = &r;
-          if (r.boundary_condition == BoundaryCondition::subc)
-            subc = &r;
-        }
-      if (kubc && subc)
-        {
-          const double min_eigenvalue = min_eigenvalue_of_symmetric_part(
-            kubc->properties.C - subc->properties.C);
-          summary["kubc_minus_subc_min_eigenvalue"] = min_eigenvalue;
-          table << "Huet ordering C^KUBC - C^SUBC >= 0: smallest eigenvalue "
-                << std::scientific << std::setprecision(3)
-                << min_eigenvalue / 1e9 << " GPa ("
-                << (min_eigenvalue >= -1e-8 * kubc->properties.C.norm()
-                      ? "holds"
-                      : "VIOLATED")
-                << ")\n";
-        }
-      report_isotropic_moduli(results, phases, fractions, summary, table);
+      for (const auto &o : outputs)
+        o->finish(summary, table);
       pcout << table.str() << std::endl;
 
       const double wall_time = std::chrono::duration<double>(
@@ -421,11 +284,8 @@ namespace tribodyn
                                  .count();
       summary["wall_time_s"] = wall_time;
       if (root)
-        {
-          csv.flush(true);
-          write_file_atomically(join_path(out_dir, "summary.json"),
-                                summary.dump() + "\n");
-        }
+        write_file_atomically(join_path(out_dir, "summary.json"),
+                              summary.dump() + "\n");
       pcout << "Results written to " << out_dir
             << "/ (summary.json, effective_properties.csv"
             << (output_parameters.write_fields ? ", fields_*.pvd" : "")

@@ -11,7 +11,10 @@
 //   equal time / dt + 1 exactly (a sample of step n has the time t_n and
 //   comes after that step), across the restart (save()/load() carry the
 //   count: without them the second leg would count from 0);
-// - open() is told whether the run resumes; close() ends each leg.
+// - open() is told whether the run resumes; close() ends each leg;
+// - finish() (core/postprocessor.h) adds its keys to summary.json after
+//   the run's own: the steps of the whole run, equal to the end time / dt
+//   exactly, the last key before the wall time.
 #include "../test_utilities.h"
 
 #include <boost/archive/binary_iarchive.hpp>
@@ -68,6 +71,11 @@ namespace
     close() override
     {
       ++closed;
+    }
+    void
+    finish(tribodyn::JsonValue &summary, std::ostream &) const override
+    {
+      summary["plugin_steps"] = steps;
     }
     void
     save(boost::archive::binary_oarchive &ar) const override
@@ -176,5 +184,13 @@ main(int argc, char **argv)
           + std::to_string(friction.size()) + " in friction.csv; "
           + std::to_string(misaligned)
           + " rows off the sample times or with steps != time / dt + 1");
+
+  std::ifstream        in(dir + "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(in);
+  const auto           steps   = summary.value("plugin_steps", -1.);
+  check(steps == std::round(20e-6 / dt),
+        "summary.json: plugin_steps = " + std::to_string(steps)
+          + " from finish(), the steps of both legs (20 us / dt = "
+          + std::to_string(std::round(20e-6 / dt)) + ")");
   return tribodyn_test::result();
 }

@@ -16,6 +16,7 @@
 #include <string>
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/contact/friction_laws.h>
+#include <tribodyn/contact/postprocessor.h>
 #include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output_directory.h>
@@ -143,6 +144,11 @@ namespace tribodyn
       /// The friction law's figures at the end of the run (collective).
       void
       report_friction_law(JsonValue &summary, std::ostream &figures) const;
+
+      /// The summary.json keys and screen figures of the last run's
+      /// outputs (their finish(), in the list's order; collective).
+      void
+      finish_outputs(JsonValue &summary, std::ostream &figures) const;
 
       /// The default key figure of the progress lines: mu_global and the
       /// stick/slip/separation fractions of the contact nodes.
@@ -437,8 +443,11 @@ namespace tribodyn
         = &friction_progress_key;
       CheckpointParameters checkpoint;
       ResumableParameters  checkpoint_parameters;
-      double               mass_total = 0;
-      std::string          material_text;
+      /// The last run's outputs (source/contact/postprocessors/), kept
+      /// for finish_outputs().
+      std::vector<std::unique_ptr<Postprocessor>> outputs;
+      double                                      mass_total = 0;
+      std::string                                 material_text;
       /// The friction law of the run (Contact/Friction law).
       FrictionLaws::Variant friction_law;
       // Plane motion over the current step (t_n -> t_{n+1}): displacement

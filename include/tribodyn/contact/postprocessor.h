@@ -19,6 +19,7 @@
 #include <mpi.h>
 #include <string>
 #include <tribodyn/core/plugin_registry.h>
+#include <tribodyn/core/postprocessor.h>
 
 namespace tribodyn
 {
@@ -41,11 +42,9 @@ namespace tribodyn
       bool root;
     };
 
-    class Postprocessor
+    class Postprocessor : public PostprocessorBase
     {
     public:
-      virtual ~Postprocessor() = default;
-
       /// Open the files: anew, or (@p resumed, after load()) continuing
       /// those of the checkpointed run.
       virtual void
@@ -81,17 +80,10 @@ namespace tribodyn
       {
       }
 
-      /// The state a resumed run needs to continue the files (rows
-      /// written, entries of a PVD, ...), the same on every rank; the
-      /// checkpoint keeps it under the postprocessor's registered name.
-      virtual void
-      save(boost::archive::binary_oarchive &) const
-      {
-      }
-      virtual void
-      load(boost::archive::binary_iarchive &)
-      {
-      }
+      /// (PostprocessorBase: save() and load(), the state a resumed run
+      /// needs to continue the files, rows written, entries of a PVD, ...;
+      /// finish(), the summary.json keys, called after close() and after
+      /// the run's own keys.)
     };
 
     using PostprocessorRegistry

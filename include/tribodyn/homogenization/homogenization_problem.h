@@ -87,14 +87,6 @@ namespace tribodyn
       /// Name, constants and area fraction of each phase (summary.json).
       JsonValue
       phases_to_json(const std::vector<double> &fractions) const;
-      /// The isotropic projections (kappa, mu) of the apparent stiffnesses
-      /// next to the Hashin-Shtrikman bounds: @p table and @p summary.
-      void
-      report_isotropic_moduli(const std::vector<CellProblemResult> &results,
-                              const std::vector<ElasticPhase>      &phases,
-                              const std::vector<double>            &fractions,
-                              JsonValue                            &summary,
-                              std::ostream &table) const;
 
       RunContext                     context;
       MorphologyParameters           morphology_parameters;

@@ -7,6 +7,7 @@
 #include <tribodyn/core/archive_fwd.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/plugin_registry.h>
+#include <tribodyn/core/postprocessor.h>
 #include <tribodyn/mca/automaton_system.h>
 #include <tribodyn/mca/parameters.h>
 #include <vector>
@@ -64,11 +65,9 @@ namespace tribodyn
      * collective ones (record(), write_output(), after_step(), finish())
      * are called on every rank.
      */
-    class Postprocessor
+    class Postprocessor : public PostprocessorBase
     {
     public:
-      virtual ~Postprocessor() = default;
-
       /// The columns of series.csv this postprocessor owns.
       virtual std::vector<std::string>
       series_columns() const
@@ -116,13 +115,13 @@ namespace tribodyn
       /// Save and restore the state a resumed run needs (the same on every
       /// rank; the checkpoint of writer 0 is read on another rank count).
       /// Default: saved_series().
-      virtual void
-      save(boost::archive::binary_oarchive &ar) const
+      void
+      save(boost::archive::binary_oarchive &ar) const override
       {
         save_series(ar, const_cast<Postprocessor *>(this)->saved_series());
       }
-      virtual void
-      load(boost::archive::binary_iarchive &ar)
+      void
+      load(boost::archive::binary_iarchive &ar) override
       {
         load_series(ar, saved_series());
       }
@@ -141,14 +140,9 @@ namespace tribodyn
       {
       }
 
-      /// At the end: the files of the whole run, the summary.json keys and
-      /// a line of headline figures for the screen.
-      virtual void
-      finish(JsonValue &summary, std::ostream &figures) const
-      {
-        (void)summary;
-        (void)figures;
-      }
+      /// At the end (PostprocessorBase::finish()): the files of the whole
+      /// run, the summary.json keys and a line of headline figures for the
+      /// screen.
     };
 
     using PostprocessorRegistry

@@ -1,0 +1,48 @@
+// Postprocessor "morphology map" of 2D homogenization: with `Output/Write
+// morphology`, the material map the cell problems solve on
+// (morphology.vtu, one cell per element with its material id) and the
+// morphology as a grid file (morphology.txt, readable by `Generator =
+// grid file`), written once the mesh is made.
+#include <memory>
+#include <tribodyn/core/output.h>
+#include <tribodyn/homogenization/homogenization_problem.h>
+#include <tribodyn/homogenization/postprocessor.h>
+
+namespace tribodyn
+{
+  namespace homogenization
+  {
+    namespace
+    {
+      class MorphologyMap : public Postprocessor
+      {
+      public:
+        explicit MorphologyMap(const PostprocessorInputs &in)
+            : in(in)
+        {
+        }
+
+        void
+        started(std::ostream &) override
+        {
+          in.cell_problem.write_material_map(in.output_directory);
+          if (in.root)
+            in.morphology.write_grid_file(
+              join_path(in.output_directory, "morphology.txt"));
+        }
+
+      private:
+        const PostprocessorInputs in;
+      };
+
+      const bool morphology_map_registered = PostprocessorRegistry::add(
+        {"morphology map",
+         0,
+         [](const PostprocessorInputs &in) -> std::unique_ptr<Postprocessor> {
+           if (!in.parameters.output.write_morphology)
+             return nullptr;
+           return std::make_unique<MorphologyMap>(in);
+         }});
+    } // namespace
+  }   // namespace homogenization
+} // namespace tribodyn
