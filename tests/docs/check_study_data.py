@@ -12,7 +12,10 @@ whose folder name README.md or doc/performance.md names in a marker line
 follow the marker; `scripts/mca_study_data figures data/NAME WORK` must
 draw seeds.png, mu.png and layer.png from the data alone. Also checked on
 each kept study: PROVENANCE names a commit; every scene of scenes.csv has
-its summary.json and its series of at most 2000 rows.
+its summary.json and its series of at most 2000 rows. A marker line
+'<!-- common: data/A data/B (scripts/mca_study_data common data/A data/B)
+-->' (a lever on two bases) must likewise be followed by exactly what
+that command prints.
 """
 import csv
 import os
@@ -77,4 +80,18 @@ for document, name in markers:
         os.path.exists(os.path.join(images, f))
         for f in ("seeds.png", "mu.png", "layer.png")),
           "%s: figures drawn from the data alone" % name)
+common = [(d, a, b) for d, text in documents.items()
+          for a, b in re.findall(
+              r"<!-- common: (data/[\w./-]+) (data/[\w./-]+) "
+              r"\(scripts/mca_study_data common \1 \2\) -->\n", text)]
+for document, a, b in common:
+    table = subprocess.run([script, "common", os.path.join(source, a),
+                            os.path.join(source, b)], capture_output=True,
+                           text=True).stdout
+    marker = "<!-- common: %s %s (scripts/mca_study_data common %s %s) -->\n" \
+        % (a, b, a, b)
+    start = documents[document].index(marker) + len(marker)
+    check(table and documents[document][start:start + len(table)] == table,
+          "%s: the lever's table on %s and %s is what the data gives, byte "
+          "for byte" % (document, a, b))
 sys.exit(1 if failures else 0)
