@@ -250,15 +250,15 @@ namespace tribodyn
                                                 cell_problem_parameters,
                                                 output_parameters};
       std::vector<std::string>       output_names;
-      const auto outputs = PostprocessorRegistry::create_all({parameters,
-                                                              morphology,
-                                                              cell_problem,
-                                                              phases,
-                                                              fractions,
-                                                              out_dir,
-                                                              comm,
-                                                              root},
-                                                             output_names);
+      const auto outputs = PostprocessorRegistry<2>::create_all({parameters,
+                                                                 morphology,
+                                                                 cell_problem,
+                                                                 phases,
+                                                                 fractions,
+                                                                 out_dir,
+                                                                 comm,
+                                                                 root},
+                                                                output_names);
       std::ostringstream table;
       for (const auto &o : outputs)
         o->started(table);

@@ -1,7 +1,5 @@
 // `set Problem = volume_homogenization` (issue #51): the cell problems of
 // a 3D voxel volume and their report.
-#include "moduli_table.h"
-
 #include <algorithm>
 #include <chrono>
 #include <deal.II/base/conditional_ostream.h>
@@ -13,6 +11,7 @@
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/homogenization/postprocessor.h>
 #include <tribodyn/homogenization/volume_homogenization_problem.h>
 #include <tuple>
 
@@ -92,77 +91,6 @@ namespace tribodyn
     }
 
 
-    namespace
-    {
-      const char *const volume_constant_names[12] = {"E_x",
-                                                     "E_y",
-                                                     "E_z",
-                                                     "nu_xy",
-                                                     "nu_xz",
-                                                     "nu_yx",
-                                                     "nu_yz",
-                                                     "nu_zx",
-                                                     "nu_zy",
-                                                     "G_yz",
-                                                     "G_xz",
-                                                     "G_xy"};
-
-      std::vector<double>
-      constant_values(const EngineeringConstants3D &c)
-      {
-        return {c.E_x,
-                c.E_y,
-                c.E_z,
-                c.nu_xy,
-                c.nu_xz,
-                c.nu_yx,
-                c.nu_yz,
-                c.nu_zx,
-                c.nu_zy,
-                c.G_yz,
-                c.G_xz,
-                c.G_xy};
-      }
-
-      /// The CSV row: the twelve constants, then C_ij for i <= j.
-      std::vector<double>
-      volume_csv_values(const VolumeProperties &p)
-      {
-        std::vector<double> v = constant_values(p.constants);
-        for (unsigned int i = 0; i < 6; ++i)
-          for (unsigned int j = i; j < 6; ++j)
-            v.push_back(p.C[i][j]);
-        return v;
-      }
-
-      /// The keys n_voxels and voxel_size of @p volume in @p j.
-      void
-      add_geometry(JsonValue &j, const VoxelVolume &volume)
-      {
-        j["n_voxels"]   = json_array({double(volume.n_voxels(0)),
-                                      double(volume.n_voxels(1)),
-                                      double(volume.n_voxels(2))});
-        j["voxel_size"] = json_array(
-          {volume.voxel_size(0), volume.voxel_size(1), volume.voxel_size(2)});
-      }
-
-      void
-      print_volume_row(std::ostream                 &out,
-                       const std::string            &label,
-                       const EngineeringConstants3D &c)
-      {
-        out << std::left << std::setw(10) << label << std::right << std::fixed
-            << std::setprecision(3);
-        for (const double E : {c.E_x, c.E_y, c.E_z, c.G_yz, c.G_xz, c.G_xy})
-          out << std::setw(9) << E / 1e9;
-        out << std::setprecision(4);
-        for (const double nu : {c.nu_xy, c.nu_xz, c.nu_yz})
-          out << std::setw(9) << nu;
-        out << "\n";
-      }
-    } // namespace
-
-
     void
     VolumeHomogenizationProblem::run()
     {
@@ -234,13 +162,17 @@ namespace tribodyn
         }
       context.claim_output();
       const std::string &out_dir = context.output_directory;
-      if (root && parameters.output.write_morphology)
-        volume.write_raw(join_path(out_dir, "morphology.hdr"),
-                         join_path(out_dir, "morphology.raw"));
 
-      JsonValue summary     = summary_header("volume_homogenization", comm);
-      summary["morphology"] = volume.description();
-      add_geometry(summary, volume);
+      JsonValue summary      = summary_header("volume_homogenization", comm);
+      summary["morphology"]  = volume.description();
+      JsonValue geometry     = JsonValue::object();
+      geometry["n_voxels"]   = json_array({double(volume.n_voxels(0)),
+                                           double(volume.n_voxels(1)),
+                                           double(volume.n_voxels(2))});
+      geometry["voxel_size"] = json_array(
+        {volume.voxel_size(0), volume.voxel_size(1), volume.voxel_size(2)});
+      summary["n_voxels"]   = geometry["n_voxels"];
+      summary["voxel_size"] = geometry["voxel_size"];
       {
         JsonValue  list  = JsonValue::array();
         const auto given = materials.given();
@@ -263,174 +195,61 @@ namespace tribodyn
       summary["n_dofs"]
         = static_cast<unsigned long long>(cell_problem.n_dofs());
 
-      std::vector<std::string> columns = {"estimate"};
-      for (const char *name : volume_constant_names)
-        columns.push_back(name);
-      for (unsigned int i = 0; i < 6; ++i)
-        for (unsigned int j = i; j < 6; ++j)
-          columns.push_back("C" + std::to_string(i + 1)
-                            + std::to_string(j + 1));
-      CsvWriter csv(join_path(out_dir, "effective_properties.csv"),
-                    columns,
-                    root);
-
+      // The outputs (source/homogenization/postprocessors/volume_*.cc), in
+      // their order: each adds its rows to the screen's table and its keys
+      // to summary.json.
+      std::vector<std::string> output_names;
+      const auto outputs = PostprocessorRegistry<3>::create_all({parameters,
+                                                                 volume,
+                                                                 cell_problem,
+                                                                 phases,
+                                                                 stiffness,
+                                                                 fractions,
+                                                                 geometry,
+                                                                 out_dir,
+                                                                 comm,
+                                                                 root},
+                                                                output_names);
       std::ostringstream table;
-      table << "\nEffective properties (moduli in GPa), Voigt order xx, yy, "
-               "zz, yz, xz, xy:\n"
-            << std::left << std::setw(10) << "estimate" << std::right;
-      for (const char *name : {"E_x",
-                               "E_y",
-                               "E_z",
-                               "G_yz",
-                               "G_xz",
-                               "G_xy",
-                               "nu_xy",
-                               "nu_xz",
-                               "nu_yz"})
-        table << std::setw(9) << name;
-      table << "\n";
+      for (const auto &o : outputs)
+        o->started(table);
 
-      // The slices: of the first load case of KUBC (of the first condition
-      // when KUBC is not solved), across the middle of each axis.
-      const auto &conditions = parameters.cell_problem.boundary_conditions;
-      const BoundaryCondition sliced_bc = std::find(conditions.begin(),
-                                                    conditions.end(),
-                                                    BoundaryCondition::kubc)
-                                              != conditions.end()
-                                            ? BoundaryCondition::kubc
-                                            : conditions.front();
-      std::vector<SlicePlane> planes;
-      if (parameters.output.write_slices)
-        for (const unsigned int axis : {2u, 0u, 1u})
-          planes.push_back({axis, volume.n_voxels(axis) / 2});
-
-      std::vector<CellResult<3>> results;
-      for (const BoundaryCondition bc : conditions)
+      for (const BoundaryCondition bc :
+           parameters.cell_problem.boundary_conditions)
         {
-          const CellResult<3> r = cell_problem.solve(
-            bc,
-            parameters.output.write_fields ? out_dir : std::string(),
-            bc == sliced_bc ? planes : std::vector<SlicePlane>());
-          if (bc == sliced_bc && parameters.output.write_slices)
-            write_slices(volume, bc, r.slices);
-          results.push_back(r);
-          JsonValue j          = to_json(r.properties);
-          JsonValue iterations = JsonValue::array();
-          JsonValue cg_times   = JsonValue::array();
-          JsonValue per_dof    = JsonValue::array();
-          // time per DoF per CG iteration: of each solve (null when CG
-          // took no iteration) and over the six
-          const double n_dofs           = cell_problem.n_dofs();
+          std::vector<SlicePlane> planes;
+          for (const auto &o : outputs)
+            for (const SlicePlane &plane : o->slice_planes(bc))
+              planes.push_back(plane);
+          const CellResult<3> r
+            = cell_problem.solve(bc,
+                                 parameters.output.write_fields ? out_dir
+                                                                : std::string(),
+                                 planes);
+          for (const auto &o : outputs)
+            o->solved(r, summary, table);
+          // (the progress line; summary.json's timings are the effective
+          // properties')
           double       total_time       = 0;
           unsigned int total_iterations = 0;
           for (const auto &lc : r.load_cases)
             {
-              iterations.push_back(lc.cg_iterations);
-              cg_times.push_back(lc.cg_time);
-              per_dof.push_back(lc.cg_iterations > 0 ? JsonValue(
-                                  lc.cg_time / (n_dofs * lc.cg_iterations))
-                                                     : JsonValue());
               total_time += lc.cg_time;
               total_iterations += lc.cg_iterations;
             }
-          const double mean_per_dof
-            = total_iterations > 0 ? total_time / (n_dofs * total_iterations)
-                                   : 0.;
-          j["cg_iterations"]                = iterations;
-          j["cg_time_s"]                    = cg_times;
-          j["time_per_dof_per_iteration_s"] = per_dof;
-          j["mean_time_per_dof_per_iteration_s"]
-            = total_iterations > 0 ? JsonValue(mean_per_dof) : JsonValue();
-          j["wall_time_s"]       = r.wall_time;
-          j["preconditioner"]    = r.multigrid ? "multigrid" : "AMG";
-          summary[to_string(bc)] = j;
-          print_volume_row(table, to_string(bc), r.properties.constants);
-          csv.add_row({to_string(bc)}, volume_csv_values(r.properties));
           pcout << to_string(bc) << ": solved 6 load cases in " << std::fixed
                 << std::setprecision(2) << r.wall_time << " s (CG iterations";
           for (const auto &lc : r.load_cases)
             pcout << " " << lc.cg_iterations;
           pcout << "; CG " << total_time << " s, " << std::setprecision(1)
-                << 1e9 * mean_per_dof << " ns per DoF per iteration)"
-                << std::endl;
+                << (total_iterations > 0
+                      ? 1e9 * total_time
+                          / (double(cell_problem.n_dofs()) * total_iterations)
+                      : 0.)
+                << " ns per DoF per iteration)" << std::endl;
         }
-
-      const VolumeProperties voigt  = voigt_estimate_3d(stiffness, fractions);
-      const VolumeProperties reuss  = reuss_estimate_3d(stiffness, fractions);
-      JsonValue              bounds = JsonValue::object();
-      bounds["voigt"]               = to_json(voigt);
-      bounds["reuss"]               = to_json(reuss);
-      print_volume_row(table, "Voigt", voigt.constants);
-      print_volume_row(table, "Reuss", reuss.constants);
-      csv.add_row({"Voigt"}, volume_csv_values(voigt));
-      csv.add_row({"Reuss"}, volume_csv_values(reuss));
-
-      // Huet's ordering: C^SUBC <= C^periodic <= C^KUBC in the sense of
-      // positive semi-definite differences (to the solver's round-off).
-      const auto find = [&](const BoundaryCondition bc) {
-        for (const auto &r : results)
-          if (r.boundary_condition == bc)
-            return &r.properties;
-        return static_cast<const VolumeProperties *>(nullptr);
-      };
-      JsonValue huet = JsonValue::object();
-      table << "\nHuet's ordering (smallest eigenvalue of the difference, "
-               "GPa):\n";
-      const std::pair<BoundaryCondition, BoundaryCondition> pairs[3]
-        = {{BoundaryCondition::kubc, BoundaryCondition::subc},
-           {BoundaryCondition::kubc, BoundaryCondition::periodic},
-           {BoundaryCondition::periodic, BoundaryCondition::subc}};
-      for (const auto &[upper, lower] : pairs)
-        if (find(upper) && find(lower))
-          {
-            const double e = min_eigenvalue6(find(upper)->C - find(lower)->C);
-            const bool   holds = e >= -1e-8 * find(upper)->C.norm();
-            const std::string key
-              = to_string(upper) + "_minus_" + to_string(lower);
-            huet[key + "_min_eigenvalue"] = e;
-            huet[key + "_holds"]          = holds;
-            table << "  C^" << to_string(upper) << " - C^" << to_string(lower)
-                  << ": " << std::scientific << std::setprecision(3) << e / 1e9
-                  << " (" << (holds ? "holds" : "VIOLATED") << ")\n";
-          }
-      summary["huet"] = huet;
-
-      // Isotropic projections next to the Hashin-Shtrikman bounds (which
-      // need isotropic phases and bound a statistically isotropic volume).
-      bool                         isotropic = true;
-      std::vector<IsotropicModuli> moduli;
-      for (const auto &phase : phases)
-        if (phase.isotropic)
-          moduli.push_back(
-            {phase.isotropic->bulk_modulus(), phase.isotropic->mu()});
-        else
-          isotropic = false;
-      table << "\nIsotropic projections (GPa): k = (C11 + C22 + C33 + 2 (C12 "
-               "+ C13 + C23))/9, mu = (C11 + C22 + C33 - C12 - C13 - C23 + 3 "
-               "(C44 + C55 + C66))/15\n"
-            << std::left << std::setw(10) << "estimate" << std::right
-            << std::setw(10) << "k" << std::setw(10) << "mu" << std::setw(12)
-            << "anisotropy\n";
-      internal::write_result_rows(
-        table, summary, results, "k", [](const VoigtMatrix6 &C) {
-          const IsotropicModuli m = isotropic_projection_3d(C);
-          return std::tuple(m.k, m.mu, anisotropy_3d(C));
-        });
-      JsonValue hs; // null unless every phase is isotropic
-      if (isotropic)
-        {
-          const auto [lower, upper]
-            = hashin_shtrikman_bounds_3d(moduli, fractions);
-          internal::write_moduli_row(table, "HS upper", upper.k, upper.mu);
-          internal::write_moduli_row(table, "HS lower", lower.k, lower.mu);
-          hs             = JsonValue::object();
-          hs["k_lower"]  = lower.k;
-          hs["k_upper"]  = upper.k;
-          hs["mu_lower"] = lower.mu;
-          hs["mu_upper"] = upper.mu;
-        }
-      bounds["hashin_shtrikman"] = hs;
-      summary["bounds"]          = bounds;
+      for (const auto &o : outputs)
+        o->finish(summary, table);
       pcout << table.str() << std::endl;
 
       // Peak resident memory of the ranks, summed, over the DoFs.
@@ -447,11 +266,8 @@ namespace tribodyn
             << peak / 1048576. << " MiB (" << std::setprecision(0)
             << peak / cell_problem.n_dofs() << " B per DoF)" << std::endl;
       if (root)
-        {
-          csv.flush(true);
-          write_file_atomically(join_path(out_dir, "summary.json"),
-                                summary.dump() + "\n");
-        }
+        write_file_atomically(join_path(out_dir, "summary.json"),
+                              summary.dump() + "\n");
       const auto &output = parameters.output;
       pcout << "Results written to " << out_dir
             << "/ (summary.json, effective_properties.csv"
@@ -463,55 +279,8 @@ namespace tribodyn
                   ? ", slice_*.png, volume_slices.png"
                   : "")
             << ")" << std::endl;
-      if (root && output.write_slices)
-        run_plot_script(output.plot_script,
-                        "plot_volume",
-                        "Output/Plot script",
-                        out_dir);
-    }
-
-
-    void
-    VolumeHomogenizationProblem::write_slices(
-      const VoxelVolume             &volume,
-      const BoundaryCondition        bc,
-      const std::vector<FieldSlice> &slices) const
-    {
-      if (dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator)
-          != 0)
-        return;
-      const char *const axis_names[3] = {"x", "y", "z"};
-      JsonValue         j             = JsonValue::object();
-      add_geometry(j, volume);
-      JsonValue names = JsonValue::array();
-      for (const std::string &name : parameters.materials.names())
-        names.push_back(name);
-      j["phases"]             = names;
-      j["boundary_condition"] = to_string(bc);
-      j["load_case"]          = "xx";
-      JsonValue list          = JsonValue::array();
-      for (const FieldSlice &s : slices)
-        {
-          JsonValue o = JsonValue::object();
-          o["axis"]   = axis_names[s.plane.axis];
-          o["index"]  = s.plane.index;
-          o["axes"]   = JsonValue::array();
-          o["axes"].push_back(axis_names[s.axes[0]]);
-          o["axes"].push_back(axis_names[s.axes[1]]);
-          o["n"] = json_array({double(s.n[0]), double(s.n[1])});
-          // values[a + n0 b], a along axes[0], b along axes[1]
-          for (const std::string field :
-               {"material_id", "von_mises", "stress_xx"})
-            {
-              const auto f = std::find(s.names.begin(), s.names.end(), field)
-                             - s.names.begin();
-              o[field] = json_array(s.values[f]);
-            }
-          list.push_back(o);
-        }
-      j["slices"] = list;
-      write_file_atomically(join_path(context.output_directory, "slices.json"),
-                            j.dump() + "\n");
+      for (const auto &o : outputs)
+        o->closed();
     }
 
 

@@ -32,10 +32,10 @@ namespace
 {
   unsigned int n_started = 0;
 
-  class Traces : public Postprocessor
+  class Traces : public Postprocessor<2>
   {
   public:
-    explicit Traces(const PostprocessorInputs &in)
+    explicit Traces(const PostprocessorInputs<2> &in)
         : directory(in.output_directory)
         , root(in.root)
     {
@@ -72,8 +72,8 @@ namespace
     std::vector<double>      traces;
   };
 
-  const bool registered = PostprocessorRegistry::add(
-    {"traces", 15, [](const PostprocessorInputs &in) {
+  const bool registered = PostprocessorRegistry<2>::add(
+    {"traces", 15, [](const PostprocessorInputs<2> &in) {
        return std::make_unique<Traces>(in);
      }});
 

@@ -1,11 +1,14 @@
-// The outputs of a 2D homogenization run as postprocessors (issue #52
-// item 2; core/postprocessor.h): each registers itself from its own file
-// in source/homogenization/postprocessors/ and owns its files, its rows of
-// the screen table and its summary.json keys. HomogenizationProblem::run()
-// solves the cell problems and calls the list: started() once the mesh is
-// made, solved() after each boundary condition, finish() at the end, in
-// the list's order (the order keys of their registrations). A new output
-// is one file.
+// The outputs of a homogenization run as postprocessors (issue #52 item 2;
+// core/postprocessor.h): each registers itself from its own file in
+// source/homogenization/postprocessors/ and owns its files, its rows of the
+// screen table and its summary.json keys. The 2D problem
+// (HomogenizationProblem, dim = 2) and the 3D voxel volumes
+// (VolumeHomogenizationProblem, dim = 3) solve their cell problems and call
+// their lists: started() once the mesh is made and the output directory
+// claimed, slice_planes() and solved() for each boundary condition,
+// finish() at the end, closed() once summary.json is written, in the
+// list's order (the order keys of the registrations). A new output is one
+// file.
 #ifndef tribodyn_homogenization_postprocessor_h
 #define tribodyn_homogenization_postprocessor_h
 
@@ -17,6 +20,7 @@
 #include <tribodyn/core/plugin_registry.h>
 #include <tribodyn/core/postprocessor.h>
 #include <tribodyn/homogenization/cell_problem.h>
+#include <tribodyn/homogenization/voxel_volume.h>
 #include <vector>
 
 namespace tribodyn
@@ -24,10 +28,16 @@ namespace tribodyn
   namespace homogenization
   {
     struct HomogenizationParameters;
+    struct VolumeHomogenizationParameters;
 
     /// What a postprocessor is made from (it keeps the references: they
     /// live for the run).
-    struct PostprocessorInputs
+    template <int dim>
+    struct PostprocessorInputs;
+
+    /// 2D: a morphology (pixels) in plane strain.
+    template <>
+    struct PostprocessorInputs<2>
     {
       const HomogenizationParameters  &parameters;
       const Morphology                &morphology;
@@ -42,6 +52,26 @@ namespace tribodyn
       bool root;
     };
 
+    /// 3D: a voxel volume.
+    template <>
+    struct PostprocessorInputs<3>
+    {
+      const VolumeHomogenizationParameters &parameters;
+      const VoxelVolume                    &volume;
+      const CellProblem<3>                 &cell_problem;
+      const std::vector<ElasticPhase>      &phases;
+      /// The phases' 6 x 6 stiffnesses, by material id.
+      const std::vector<VoigtMatrix6> &stiffness;
+      /// Volume fraction of each phase on the mesh.
+      const std::vector<double> &fractions;
+      /// The keys n_voxels and voxel_size of the volume (summary.json).
+      const JsonValue   &geometry;
+      const std::string &output_directory;
+      MPI_Comm           comm;
+      bool               root;
+    };
+
+    template <int dim>
     class Postprocessor : public PostprocessorBase
     {
     public:
@@ -54,22 +84,41 @@ namespace tribodyn
         (void)table;
       }
 
+      /// The planes whose cell fields (of the first load case) solve()
+      /// should gather for this postprocessor, for boundary condition
+      /// @p bc (CellResult::slices; the lists of all postprocessors are
+      /// joined).
+      virtual std::vector<SlicePlane>
+      slice_planes(const BoundaryCondition bc) const
+      {
+        (void)bc;
+        return {};
+      }
+
       /// Boundary condition @p result.boundary_condition was solved (in
       /// the order of `Cell problem/Boundary conditions`): its keys in
       /// @p summary, its row in @p table.
       virtual void
-      solved(const CellProblemResult &result,
-             JsonValue               &summary,
-             std::ostream            &table)
+      solved(const CellResult<dim> &result,
+             JsonValue             &summary,
+             std::ostream          &table)
       {
         (void)result;
         (void)summary;
         (void)table;
       }
+
+      /// After summary.json is written (and the screen table shown): draw
+      /// the figures from the files.
+      virtual void
+      closed()
+      {
+      }
     };
 
+    template <int dim>
     using PostprocessorRegistry
-      = PluginRegistry<Postprocessor, PostprocessorInputs>;
+      = PluginRegistry<Postprocessor<dim>, PostprocessorInputs<dim>>;
   } // namespace homogenization
 } // namespace tribodyn
 

@@ -66,13 +66,6 @@ namespace tribodyn
       run() override;
 
     private:
-      /// Write slices.json: @p slices of the volume and of the fields of
-      /// the first load case of @p bc.
-      void
-      write_slices(const VoxelVolume             &volume,
-                   const BoundaryCondition        bc,
-                   const std::vector<FieldSlice> &slices) const;
-
       RunContext                     context;
       VolumeHomogenizationParameters parameters;
     };

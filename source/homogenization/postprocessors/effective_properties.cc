@@ -45,10 +45,10 @@ namespace tribodyn
       }
 
 
-      class EffectiveProperties : public Postprocessor
+      class EffectiveProperties : public Postprocessor<2>
       {
       public:
-        explicit EffectiveProperties(const PostprocessorInputs &in)
+        explicit EffectiveProperties(const PostprocessorInputs<2> &in)
             : in(in)
             , csv(join_path(in.output_directory, "effective_properties.csv"),
                   {"estimate",
@@ -121,17 +121,19 @@ namespace tribodyn
         }
 
       private:
-        const PostprocessorInputs in;
+        const PostprocessorInputs<2> in;
         /// (rows are added at the end too: finish() completes the file)
         mutable CsvWriter csv;
       };
 
-      const bool effective_properties_registered = PostprocessorRegistry::add(
-        {"effective properties",
-         10,
-         [](const PostprocessorInputs &in) -> std::unique_ptr<Postprocessor> {
-           return std::make_unique<EffectiveProperties>(in);
-         }});
+      const bool effective_properties_registered
+        = PostprocessorRegistry<2>::add(
+          {"effective properties",
+           10,
+           [](const PostprocessorInputs<2> &in)
+             -> std::unique_ptr<Postprocessor<2>> {
+             return std::make_unique<EffectiveProperties>(in);
+           }});
     } // namespace
   }   // namespace homogenization
 } // namespace tribodyn

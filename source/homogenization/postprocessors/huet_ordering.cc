@@ -15,7 +15,7 @@ namespace tribodyn
   {
     namespace
     {
-      class HuetOrdering : public Postprocessor
+      class HuetOrdering : public Postprocessor<2>
       {
       public:
         void
@@ -47,10 +47,11 @@ namespace tribodyn
         std::optional<VoigtMatrix> kubc, subc;
       };
 
-      const bool huet_ordering_registered = PostprocessorRegistry::add(
+      const bool huet_ordering_registered = PostprocessorRegistry<2>::add(
         {"Huet ordering",
          20,
-         [](const PostprocessorInputs &) -> std::unique_ptr<Postprocessor> {
+         [](const PostprocessorInputs<2> &)
+           -> std::unique_ptr<Postprocessor<2>> {
            return std::make_unique<HuetOrdering>();
          }});
     } // namespace

@@ -19,10 +19,10 @@ namespace tribodyn
   {
     namespace
     {
-      class IsotropicModuli : public Postprocessor
+      class InPlaneIsotropicModuli : public Postprocessor<2>
       {
       public:
-        explicit IsotropicModuli(const PostprocessorInputs &in)
+        explicit InPlaneIsotropicModuli(const PostprocessorInputs<2> &in)
             : phases(in.phases)
             , fractions(in.fractions)
         {
@@ -93,11 +93,12 @@ namespace tribodyn
         std::vector<CellProblemResult>   results;
       };
 
-      const bool isotropic_moduli_registered = PostprocessorRegistry::add(
+      const bool isotropic_moduli_registered = PostprocessorRegistry<2>::add(
         {"isotropic moduli",
          30,
-         [](const PostprocessorInputs &in) -> std::unique_ptr<Postprocessor> {
-           return std::make_unique<IsotropicModuli>(in);
+         [](const PostprocessorInputs<2> &in)
+           -> std::unique_ptr<Postprocessor<2>> {
+           return std::make_unique<InPlaneIsotropicModuli>(in);
          }});
     } // namespace
   }   // namespace homogenization

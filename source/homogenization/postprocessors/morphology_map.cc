@@ -14,10 +14,10 @@ namespace tribodyn
   {
     namespace
     {
-      class MorphologyMap : public Postprocessor
+      class MorphologyMap : public Postprocessor<2>
       {
       public:
-        explicit MorphologyMap(const PostprocessorInputs &in)
+        explicit MorphologyMap(const PostprocessorInputs<2> &in)
             : in(in)
         {
         }
@@ -32,13 +32,14 @@ namespace tribodyn
         }
 
       private:
-        const PostprocessorInputs in;
+        const PostprocessorInputs<2> in;
       };
 
-      const bool morphology_map_registered = PostprocessorRegistry::add(
+      const bool morphology_map_registered = PostprocessorRegistry<2>::add(
         {"morphology map",
          0,
-         [](const PostprocessorInputs &in) -> std::unique_ptr<Postprocessor> {
+         [](const PostprocessorInputs<2> &in)
+           -> std::unique_ptr<Postprocessor<2>> {
            if (!in.parameters.output.write_morphology)
              return nullptr;
            return std::make_unique<MorphologyMap>(in);
