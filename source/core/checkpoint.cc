@@ -157,23 +157,15 @@ namespace tribodyn
   }
 
 
-  std::vector<std::string>
-  resumable_parameter_lines(dealii::ParameterHandler &prm,
-                            const std::string        &end_time_entry)
-  {
-    std::ostringstream text;
-    prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
-    std::istringstream in(text.str());
-    return resumable_parameter_lines(in, end_time_entry);
-  }
-
-
   ResumableParameters
   resumable_parameters(dealii::ParameterHandler &prm,
                        const std::string        &end_time_entry)
   {
     ResumableParameters r;
-    r.lines = resumable_parameter_lines(prm, end_time_entry);
+    std::ostringstream  text;
+    prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
+    std::istringstream short_prm(text.str());
+    r.lines = resumable_parameter_lines(short_prm, end_time_entry);
     // Every entry's default, from deal.II's JSON description of the
     // declared tree (an entry is an object with a "default_value").
     std::ostringstream json;
@@ -202,16 +194,18 @@ namespace tribodyn
   ResumableParameters::differing(const std::vector<std::string> &stored) const
   {
     // Both sides without the lines that say "this entry is at its
-    // default": what remains is each run's choices.
-    const auto choices = [this](const std::vector<std::string> &all) {
+    // default": what remains is each run's choices (the stored lines in
+    // today's names and spellings first; this run's are already).
+    const auto choices = [this](const std::vector<std::string> &comparable) {
       std::set<std::string> kept;
-      for (const std::string &l : comparable_lines(all))
+      for (const std::string &l : comparable)
         if (!std::binary_search(defaults.begin(), defaults.end(), l))
           kept.insert(l);
       return kept;
     };
-    const std::set<std::string> a = choices(stored), b = choices(lines);
-    std::set<std::string>       names;
+    const std::set<std::string> a = choices(comparable_lines(stored)),
+                                b = choices(lines);
+    std::set<std::string> names;
     for (const auto &s : a)
       if (!b.count(s))
         names.insert(s.substr(0, s.find(" = ")));

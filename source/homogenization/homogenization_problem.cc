@@ -109,14 +109,11 @@ namespace tribodyn
       const HomogenizationParameters &parameters,
       const RunContext               &context)
         : context(context)
-        , morphology_parameters(parameters.morphology)
-        , materials(parameters.materials)
-        , cell_problem_parameters(parameters.cell_problem)
-        , output_parameters(parameters.output)
+        , parameters(parameters)
     {
       // A map read from a file (image or grid) may hold other phases than
       // those named: refuse it now, with the other parameter errors.
-      materials.check(morphology_parameters);
+      parameters.materials.check(parameters.morphology);
     }
 
 
@@ -162,10 +159,10 @@ namespace tribodyn
     HomogenizationProblem::phases_to_json(
       const std::vector<double> &fractions) const
     {
-      const auto names = materials.names();
-      const auto pores = materials.pores();
-      const auto given = materials.given();
-      const auto used  = materials.phases();
+      const auto names = parameters.materials.names();
+      const auto pores = parameters.materials.pores();
+      const auto given = parameters.materials.given();
+      const auto used  = parameters.materials.phases();
       JsonValue  list  = JsonValue::array();
       for (unsigned int k = 0; k < names.size(); ++k)
         {
@@ -209,15 +206,15 @@ namespace tribodyn
                                 dealii::TimerOutput::summary,
                                 dealii::TimerOutput::wall_times);
 
-      const Morphology morphology = Morphology::create(morphology_parameters);
+      const Morphology morphology = Morphology::create(parameters.morphology);
       pcout << "Morphology: " << morphology.description() << std::endl;
-      const std::vector<ElasticPhase> phases = materials.phases();
-      materials.check(morphology,
-                      morphology_parameters.generator
-                        == MorphologyParameters::Generator::image);
+      const std::vector<ElasticPhase> phases = parameters.materials.phases();
+      parameters.materials.check(morphology,
+                                 parameters.morphology.generator
+                                   == MorphologyParameters::Generator::image);
 
       CellProblem<2> cell_problem(
-        comm, morphology, phases, cell_problem_parameters, timer);
+        comm, morphology, phases, parameters.cell_problem, timer);
       pcout << "Mesh: " << cell_problem.n_cells() << " cells, "
             << cell_problem.n_dofs() << " degrees of freedom, "
             << dealii::Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
@@ -225,8 +222,8 @@ namespace tribodyn
 
       const std::vector<double> fractions = cell_problem.phase_fractions();
       warn_about_boundary_pores(morphology,
-                                materials.pores(),
-                                cell_problem_parameters.boundary_conditions,
+                                parameters.materials.pores(),
+                                parameters.cell_problem.boundary_conditions,
                                 pcout);
       const std::string &out_dir = context.output_directory;
       // Every check passed (morphology, mesh): the directory may be touched.
@@ -245,11 +242,7 @@ namespace tribodyn
       // The outputs (source/homogenization/postprocessors/), in their
       // order: each adds its rows to the screen's table and its keys to
       // summary.json.
-      const HomogenizationParameters parameters{morphology_parameters,
-                                                materials,
-                                                cell_problem_parameters,
-                                                output_parameters};
-      std::vector<std::string>       output_names;
+      std::vector<std::string> output_names;
       const auto outputs = PostprocessorRegistry<2>::create_all({parameters,
                                                                  morphology,
                                                                  cell_problem,
@@ -264,10 +257,10 @@ namespace tribodyn
         o->started(table);
 
       for (const BoundaryCondition bc :
-           cell_problem_parameters.boundary_conditions)
+           parameters.cell_problem.boundary_conditions)
         {
           const CellProblemResult r = cell_problem.solve(
-            bc, output_parameters.write_fields ? out_dir : std::string());
+            bc, parameters.output.write_fields ? out_dir : std::string());
           for (const auto &o : outputs)
             o->solved(r, summary, table);
           pcout << to_string(bc) << ": solved 3 load cases (CG iterations "
@@ -288,8 +281,8 @@ namespace tribodyn
                               summary.dump() + "\n");
       pcout << "Results written to " << out_dir
             << "/ (summary.json, effective_properties.csv"
-            << (output_parameters.write_fields ? ", fields_*.pvd" : "")
-            << (output_parameters.write_morphology
+            << (parameters.output.write_fields ? ", fields_*.pvd" : "")
+            << (parameters.output.write_morphology
                   ? ", morphology.vtu, morphology.txt"
                   : "")
             << ")" << std::endl;

@@ -228,23 +228,14 @@ namespace tribodyn
                                  planes);
           for (const auto &o : outputs)
             o->solved(r, summary, table);
-          // (the progress line; summary.json's timings are the effective
-          // properties')
-          double       total_time       = 0;
-          unsigned int total_iterations = 0;
-          for (const auto &lc : r.load_cases)
-            {
-              total_time += lc.cg_time;
-              total_iterations += lc.cg_iterations;
-            }
           pcout << to_string(bc) << ": solved 6 load cases in " << std::fixed
                 << std::setprecision(2) << r.wall_time << " s (CG iterations";
           for (const auto &lc : r.load_cases)
             pcout << " " << lc.cg_iterations;
-          pcout << "; CG " << total_time << " s, " << std::setprecision(1)
-                << (total_iterations > 0
-                      ? 1e9 * total_time
-                          / (double(cell_problem.n_dofs()) * total_iterations)
+          pcout << "; CG " << r.cg_time() << " s, " << std::setprecision(1)
+                << (r.cg_iterations() > 0
+                      ? 1e9 * r.cg_time()
+                          / (double(cell_problem.n_dofs()) * r.cg_iterations())
                       : 0.)
                 << " ns per DoF per iteration)" << std::endl;
         }

@@ -15,6 +15,7 @@
 // - finish() (core/postprocessor.h) adds its keys to summary.json after
 //   the run's own: the steps of the whole run, equal to the end time / dt
 //   exactly, the last key before the wall time.
+#include "../run_parameter_text.h"
 #include "../test_utilities.h"
 
 #include <boost/archive/binary_iarchive.hpp>
@@ -26,7 +27,6 @@
 #include <sstream>
 #include <tribodyn/contact/contact_solver.h>
 #include <tribodyn/contact/postprocessor.h>
-#include <tribodyn/core/application.h>
 #include <tribodyn/core/output.h>
 
 using namespace tribodyn::contact;
@@ -157,12 +157,11 @@ main(int argc, char **argv)
   (void)registered;
   for (const bool resume : {false, true})
     {
-      std::ofstream("contact_postprocessor_plugin.prm")
-        << leg(resume ? 20e-6 : 10e-6, resume);
-      char  name[] = "tribodyn", file[] = "contact_postprocessor_plugin.prm";
-      char *args[] = {name, file, nullptr};
-      check(tribodyn::run_application(2, args) == 0,
-            std::string("leg ") + (resume ? "2 (resumed)" : "1") + " succeeds");
+      check(
+        tribodyn_test::run_parameter_text("contact_postprocessor_plugin.prm",
+                                          leg(resume ? 20e-6 : 10e-6, resume))
+          == 0,
+        std::string("leg ") + (resume ? "2 (resumed)" : "1") + " succeeds");
     }
   check(opened_resumed == 1 && closed == 2,
         "open() told of the resume once, close() at the end of both legs");

@@ -14,6 +14,7 @@
 // - finish() adds its key in the list's order: after "bounds" (the
 //   effective properties, order 10) and before Huet's
 //   "kubc_minus_subc_min_eigenvalue" (order 20), this plugin's order 15.
+#include "../run_parameter_text.h"
 #include "../test_utilities.h"
 
 #include <algorithm>
@@ -21,7 +22,6 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <tribodyn/core/application.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/homogenization/postprocessor.h>
 #include <vector>
@@ -112,11 +112,9 @@ main(int argc, char **argv)
   // plugin's file must be the second run's
   for (unsigned int run = 0; run < 2; ++run)
     {
-      std::ofstream("homogenization_postprocessor_plugin.prm") << prm;
-      char name[]  = "tribodyn",
-           file[]  = "homogenization_postprocessor_plugin.prm";
-      char *args[] = {name, file, nullptr};
-      check(tribodyn::run_application(2, args) == 0,
+      check(tribodyn_test::run_parameter_text(
+              "homogenization_postprocessor_plugin.prm", prm)
+              == 0,
             "run " + std::to_string(run + 1) + " succeeds");
     }
   check(n_started == 2,

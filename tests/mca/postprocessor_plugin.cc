@@ -10,13 +10,13 @@
 //   sample, exactly (an integer);
 // - finish() writes its summary keys: steps = n_steps, samples = the rows
 //   of series.csv.
+#include "../run_parameter_text.h"
 #include "../test_utilities.h"
 
 #include <deal.II/base/mpi.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <tribodyn/core/application.h>
 #include <tribodyn/mca/postprocessor.h>
 
 using namespace tribodyn::mca;
@@ -95,12 +95,9 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   using tribodyn_test::check;
   (void)registered;
-  {
-    std::ofstream("postprocessor_plugin.prm") << scene;
-  }
-  char  name[] = "tribodyn", file[] = "postprocessor_plugin.prm";
-  char *args[] = {name, file, nullptr};
-  check(tribodyn::run_application(2, args) == 0, "the run succeeds");
+  check(tribodyn_test::run_parameter_text("postprocessor_plugin.prm", scene)
+          == 0,
+        "the run succeeds");
 
   std::ifstream csv("output-postprocessor-plugin/series.csv");
   std::string   line;

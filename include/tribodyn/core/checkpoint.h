@@ -44,24 +44,8 @@ namespace tribodyn
   };
 
   /**
-   * The parameters of @p prm as "Section/Name = value" lines, without
-   * those a resumed run may change: @p end_time_entry (the problem's end
-   * time), the Checkpoint subsection, the global Progress interval and the
-   * Output directory (a run directory copied to another path or machine
-   * continues there).
-   * Stored in a checkpoint to check that a resumed run continues the same
-   * problem. Sorted, in the current names of renamed parameters
-   * (with_current_names()), and a value that is one number written in one
-   * spelling (0.5e6 and 5e5 are one line), so that a run of a version
-   * before a rename or with other spellings of the defaults resumes.
-   */
-  std::vector<std::string>
-  resumable_parameter_lines(dealii::ParameterHandler &prm,
-                            const std::string        &end_time_entry);
-
-  /**
    * What identifies a run for a resume or a reuse: its resumable parameter
-   * lines (resumable_parameter_lines(), what a checkpoint stores) and the
+   * lines (resumable_parameter_lines() below, what a checkpoint stores) and the
    * lines of every entry at its default value in this version. A stored
    * run (a checkpoint, a finished study scene's parameters.prm) is the
    * same run where the two agree but for entries at their defaults: an
@@ -96,9 +80,20 @@ namespace tribodyn
   resumable_parameters(dealii::ParameterHandler &prm,
                        const std::string        &end_time_entry);
 
-  /// The same lines from the text @p short_prm of a run's parameters.prm
-  /// (ShortPRM, as the application writes it), whatever names its version
-  /// used; @p end_time, if given, receives the value of @p end_time_entry.
+  /**
+   * The parameters of the text @p short_prm of a run's parameters.prm
+   * (ShortPRM, as the application writes it) as "Section/Name = value"
+   * lines, without those a resumed run may change: @p end_time_entry (the
+   * problem's end time), the Checkpoint subsection, the global Progress
+   * interval and the Output directory (a run directory copied to another
+   * path or machine continues there). Sorted, in the current names of
+   * renamed parameters (with_current_names()), and a value that is one
+   * number written in one spelling (0.5e6 and 5e5 are one line), so that a
+   * run of a version before a rename or with other spellings of the
+   * defaults is recognised. @p end_time, if given, receives the value of
+   * @p end_time_entry. What a checkpoint stores (of the run's own
+   * parameters: ResumableParameters::lines).
+   */
   std::vector<std::string>
   resumable_parameter_lines(std::istream      &short_prm,
                             const std::string &end_time_entry,

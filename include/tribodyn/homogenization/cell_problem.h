@@ -290,6 +290,25 @@ namespace tribodyn
       /// The cell fields of the first load case on the planes solve() was
       /// asked for.
       std::vector<FieldSlice> slices;
+
+      /// The CG iterations and the CG wall time (s) of the load cases,
+      /// summed.
+      unsigned int
+      cg_iterations() const
+      {
+        unsigned int n = 0;
+        for (const auto &lc : load_cases)
+          n += lc.cg_iterations;
+        return n;
+      }
+      double
+      cg_time() const
+      {
+        double t = 0;
+        for (const auto &lc : load_cases)
+          t += lc.cg_time;
+        return t;
+      }
     };
 
     using LoadCaseResult          = CellLoadCase<2>;

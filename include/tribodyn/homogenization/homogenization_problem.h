@@ -88,11 +88,8 @@ namespace tribodyn
       JsonValue
       phases_to_json(const std::vector<double> &fractions) const;
 
-      RunContext                     context;
-      MorphologyParameters           morphology_parameters;
-      MaterialsParameters            materials;
-      CellProblemParameters          cell_problem_parameters;
-      HomogenizationOutputParameters output_parameters;
+      RunContext               context;
+      HomogenizationParameters parameters;
     };
   } // namespace homogenization
 } // namespace tribodyn

@@ -131,9 +131,7 @@ namespace tribodyn
           JsonValue per_dof    = JsonValue::array();
           // time per DoF per CG iteration: of each solve (null when CG
           // took no iteration) and over the six
-          const double n_dofs           = in.cell_problem.n_dofs();
-          double       total_time       = 0;
-          unsigned int total_iterations = 0;
+          const double n_dofs = in.cell_problem.n_dofs();
           for (const auto &lc : r.load_cases)
             {
               iterations.push_back(lc.cg_iterations);
@@ -141,15 +139,13 @@ namespace tribodyn
               per_dof.push_back(lc.cg_iterations > 0 ? JsonValue(
                                   lc.cg_time / (n_dofs * lc.cg_iterations))
                                                      : JsonValue());
-              total_time += lc.cg_time;
-              total_iterations += lc.cg_iterations;
             }
           j["cg_iterations"]                = iterations;
           j["cg_time_s"]                    = cg_times;
           j["time_per_dof_per_iteration_s"] = per_dof;
           j["mean_time_per_dof_per_iteration_s"]
-            = total_iterations > 0
-                ? JsonValue(total_time / (n_dofs * total_iterations))
+            = r.cg_iterations() > 0
+                ? JsonValue(r.cg_time() / (n_dofs * r.cg_iterations()))
                 : JsonValue();
           j["wall_time_s"]    = r.wall_time;
           j["preconditioner"] = r.multigrid ? "multigrid" : "AMG";
