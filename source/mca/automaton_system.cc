@@ -233,6 +233,7 @@ namespace tribodyn
         t.add("buffer", Kind::scratch, *buffer);
       t.add("many-body shape", Kind::scratch, mb_shape);
       t.add("stress", Kind::scratch, trial);
+      t.add("stress anew", Kind::scratch, stress_anew);
     }
 
 

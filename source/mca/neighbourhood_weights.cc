@@ -261,6 +261,20 @@ namespace tribodyn
 
 
     std::vector<Sym3>
+    AutomatonSystem::bond_criterion_stresses() const
+    {
+      // (bond_switching() keeps them in its exchange buffer: six
+      // components and the yield stress per local automaton)
+      std::vector<Sym3> out(n_owned, Sym3{{0, 0, 0, 0, 0, 0}});
+      if (bond_buffer.size() >= 7 * static_cast<std::size_t>(n_owned))
+        for (unsigned int k = 0; k < n_owned; ++k)
+          for (unsigned int c = 0; c < 6; ++c)
+            out[k][c] = bond_buffer[7 * k + c];
+      return out;
+    }
+
+
+    std::vector<Sym3>
     AutomatonSystem::stresses() const
     {
       std::vector<Sym3> out(n_owned);

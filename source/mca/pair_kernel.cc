@@ -119,7 +119,8 @@ namespace tribodyn
         = (plastic || bonds) && keep_pair_normals(n_pairs);
       step_normals.resize(keep_normals ? 4 * static_cast<std::size_t>(n_pairs)
                                        : 0);
-      const PairStep step{step_dt, n_pairs, n_ahead, keep_normals};
+      const PairStep step{
+        step_dt, n_pairs, n_ahead, keep_normals, plastic && bonds};
       dsm.assign(n_local, 0);
       side_dq.assign(n_owned, 0);
       // The works of this step's events (added to work at its end), among
@@ -542,6 +543,10 @@ namespace tribodyn
         sig_j[p] += mc[mat[j]].D * dsm[j];
       };
       trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
+      // (the automata with an unbonded contact, whose final tensor pass C
+      // of a bond kernel sums anew)
+      if (step.anew_tensors)
+        stress_anew.assign(n_local, 0);
       for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
         {
           const unsigned int nb = std::min(block, n_pairs - p0);
@@ -552,6 +557,8 @@ namespace tribodyn
               prefetch_ahead(pj.data(), p, n_ahead, x, dsm);
               if (!bonded[p] && !in_contact[p])
                 continue;
+              if (step.anew_tensors && !bonded[p])
+                stress_anew[pi[p]] = stress_anew[pj[p]] = 1;
               elastic_update(p);
               // automata of elastic regions need no trial stress
               add_pair_stress(p, nblock.normal(b), nblock.r[b], trial, true);
@@ -660,9 +667,28 @@ namespace tribodyn
 
       // Pass C: plastic correction, contact constraints, forces, torques;
       // in bond scenes also the final stress tensors (T of eq. 4) of the
-      // owned automata, which the bond criteria need.
+      // owned automata, which the bond criteria need. A plastic kernel
+      // sums anew only those whose sides this pass can change: a side
+      // changes in pass C only by its automaton's plastic return (M < 1)
+      // or the constraints of an unbonded contact (pair_events()); every
+      // other automaton's final tensor is pass B's trial one, the same
+      // terms of the same stresses in the same order, bit for bit (and an
+      // elastic region's, which pass B skips, is summed as before).
       if constexpr (bonds)
-        trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
+        {
+          if constexpr (plastic)
+            {
+              Assert(step.anew_tensors, dealii::ExcInternalError());
+              for (unsigned int k = 0; k < n_owned; ++k)
+                if (stress_anew[k] || plast[2 * k + 1] < 1 || elastic(k))
+                  {
+                    stress_anew[k] = 1;
+                    trial[k]       = Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}};
+                  }
+            }
+          else
+            trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
+        }
       // (blocks as in pass A: normals of a block in one vectorized loop).
       for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
         {
@@ -787,7 +813,12 @@ namespace tribodyn
                 }
               // the final stress tensors, for the bond criteria
               if constexpr (bonds)
-                add_pair_stress(p, n, r, trial, false);
+                add_pair_stress(p,
+                                n,
+                                r,
+                                trial,
+                                false,
+                                plastic ? stress_anew.data() : nullptr);
             }
         }
       return events_out_of_line_called;

@@ -14,17 +14,19 @@ namespace tribodyn
   namespace mca
   {
     inline void
-    AutomatonSystem::add_pair_stress(const unsigned int p,
-                                     const Vec3        &n,
-                                     const double       r,
-                                     std::vector<Mat3> &target,
-                                     const bool         skip_elastic) const
+    AutomatonSystem::add_pair_stress(const unsigned int   p,
+                                     const Vec3          &n,
+                                     const double         r,
+                                     std::vector<Mat3>   &target,
+                                     const bool           skip_elastic,
+                                     const unsigned char *only) const
     {
       // Seed eq. (4): T^i += (q_ij S / V_i) n_ij (x) F_ij / S, for each
       // owned side of the pair (q_ji = r_ij - q_ij); sigma^i = sym(B^-1 T).
       // (plastic and bond kernels only, which store the shear factors)
       Assert(shear_factors, dealii::ExcInternalError());
-      if (owned(pi[p]) && !(skip_elastic && elastic(pi[p])))
+      if (owned(pi[p]) && !(skip_elastic && elastic(pi[p]))
+          && (only == nullptr || only[pi[p]]))
         {
           Vec3 t;
           for (unsigned int c = 0; c < 3; ++c)
@@ -35,7 +37,8 @@ namespace tribodyn
                     n,
                     t);
         }
-      if (owned(pj[p]) && !(skip_elastic && elastic(pj[p])))
+      if (owned(pj[p]) && !(skip_elastic && elastic(pj[p]))
+          && (only == nullptr || only[pj[p]]))
         {
           Vec3 t;
           for (unsigned int c = 0; c < 3; ++c)

@@ -54,6 +54,27 @@ namespace tribodyn_test
     return p;
   }
 
+  /// Two steel blocks of automata of size @p d across a flat interface (a
+  /// rough interface of zero amplitude: the pairs across it start
+  /// unbonded) at z = 2a, 3 x 3 FCC cells periodic in x and y, 4 cells high;
+  /// plasticity and bond formation by plastic heat on, friction
+  /// coefficient @p mu (plastic_heat.cc, bond_criterion_stresses.cc).
+  inline Parameters
+  interface_blocks_parameters(const double d, const double mu)
+  {
+    const double a                 = d * std::sqrt(2.);
+    Parameters   p                 = block_parameters(3, d, 0, true);
+    p.geometry.domain_upper[2]     = 4 * a;
+    p.geometry.bodies[0].upper[2]  = 4 * a;
+    p.geometry.rough_interface     = true;
+    p.geometry.interface_height    = 2 * a;
+    p.geometry.roughness_amplitude = 0;
+    p.interaction.plasticity       = true;
+    p.interaction.bond_formation.get<PlasticHeatBondFormation>().on = true;
+    p.interaction.friction.get<Coulomb>().mu                        = mu;
+    return p;
+  }
+
   /// Hooke's stress (xx yy zz yz xz xy) for strain eps.
   inline Sym3
   hooke(const MaterialParameters &m, const double eps[3][3])

@@ -47,17 +47,9 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const double                             d = 7.5e-9, a = d * std::sqrt(2.);
-  Parameters                               p = block_parameters(3, d, 0, true);
-  p.geometry.domain_upper[2]                 = 4 * a;
-  p.geometry.bodies[0].upper[2]              = 4 * a;
-  p.geometry.rough_interface                 = true;
-  p.geometry.interface_height                = 2 * a;
-  p.geometry.roughness_amplitude             = 0;
-  p.interaction.plasticity                   = true;
-  p.interaction.bond_formation.get<PlasticHeatBondFormation>().on = true;
-  p.interaction.friction.get<Coulomb>().mu                        = 1.0;
-  const auto     &m = p.materials[0];
-  AutomatonSystem system(p, MPI_COMM_WORLD);
+  const Parameters p = interface_blocks_parameters(d, 1.0);
+  const auto      &m = p.materials[0];
+  AutomatonSystem  system(p, MPI_COMM_WORLD);
   system.setup();
   const unsigned int                    n = system.n_owned_automata();
   std::map<std::uint64_t, unsigned int> local;

@@ -1,6 +1,7 @@
 """The shipped automata studies run (issue #49 item 2), cut short:
-prm/study/mca_laptop.prm, mca_seed_heights.prm, mca_fibre_content.prm,
-mca_time_step_lever.prm and mca_time_step_lever_composite.prm, each with an
+prm/study/mca_laptop.prm, mca_seed_heights.prm, mca_seed_heights_12.prm,
+mca_fibre_content.prm, mca_time_step_lever.prm and
+mca_time_step_lever_composite.prm, each with an
 override block appended (as a user continues a prm: later entries win; the
 shipped text is not edited) for one roughness seed, 2e-11 s (the bodies
 are still approaching) and an output directory of the test's; the bases
@@ -29,6 +30,7 @@ from check_tools import finish, report  # noqa: E402
 tribodyn, folder, scratch = sys.argv[1], os.path.abspath(sys.argv[2]), sys.argv[3]
 os.makedirs(scratch, exist_ok=True)
 AUTOMATA = {"mca_laptop": 12288, "mca_seed_heights": 35136,
+            "mca_seed_heights_12": 35136,
             "mca_fibre_content": 12288, "mca_time_step_lever": 12288,
             "mca_time_step_lever_composite": 12288}
 # the two bases of each time-step lever: Courant factor 0.35 and 0.5
@@ -88,7 +90,7 @@ end
         report(tag.get("base") == base and summary.get("n_automata") == n_automata,
                f"{name} {base}: {summary.get('n_automata')} automata "
                f"(documented {n_automata}), scene tagged {tag}")
-        if name == "mca_seed_heights":
+        if name in ("mca_seed_heights", "mca_seed_heights_12"):
             prm = open(os.path.join(scene, "parameters.prm")).read()
             report("= interface 8 16" in prm,
                    f"{name} {base}: the study's Size bands setting reached the scene")

@@ -106,6 +106,10 @@ namespace tribodyn
       /// Stress tensors T (eq. 4) of the owned automata: the plastic
       /// trial in pass B, the final one in pass C of bond scenes.
       std::vector<Mat3> trial;
+      /// Per local automaton, plastic bond kernels: 1 where pass C must
+      /// sum the final tensor anew (a plastic return, an unbonded contact
+      /// or an elastic region: pass B's trial is not the final one there).
+      std::vector<unsigned char> stress_anew;
       /// Inverse fabric tensors (plastic and bond scenes, which need the
       /// stress every step; otherwise computed when a stress is asked).
       std::vector<Sym3> fabric_inverse;

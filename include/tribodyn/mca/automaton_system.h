@@ -238,6 +238,11 @@ namespace tribodyn
       /// The same for owned automaton @p k.
       Sym3
       automaton_stress(const unsigned int k) const;
+      /// Tests: the stress tensors of the owned automata that the bond
+      /// criteria of the last step read (bond scenes; zero where no bond
+      /// check needed one), as the pair kernel summed them.
+      std::vector<Sym3>
+      bond_criterion_stresses() const;
       /// Twisting and bending stiffnesses (N m / rad) of the relative-
       /// rotation moment of a pair of materials @p mi, @p mj (0 when off).
       std::pair<double, double>
@@ -455,6 +460,9 @@ namespace tribodyn
         unsigned int n_ahead;
         /// pass A keeps r and n of every pair for the later passes
         bool keep_normals;
+        /// pass C of a plastic bond kernel sums the final tensors anew only
+        /// where pass B's trial ones are not final (stress_anew)
+        bool anew_tensors;
       };
       // The passes are functions of their own in the source and one body in
       // the binary (always_inline into pair_kernel): the rounding of the
@@ -618,13 +626,15 @@ namespace tribodyn
       /// Add the eq.-(4) stress contributions of pair @p p (unit normal
       /// @p n, distance @p r) to the owned automata of the pair in @p target
       /// (indexed by local automaton); with @p skip_elastic not to automata
-      /// of elastic regions (the plastic trial stress needs none).
+      /// of elastic regions (the plastic trial stress needs none); with
+      /// @p only, to the automata k with only[k] != 0.
       void
-      add_pair_stress(const unsigned int p,
-                      const Vec3        &n,
-                      const double       r,
-                      std::vector<Mat3> &target,
-                      const bool         skip_elastic) const;
+      add_pair_stress(const unsigned int   p,
+                      const Vec3          &n,
+                      const double         r,
+                      std::vector<Mat3>   &target,
+                      const bool           skip_elastic,
+                      const unsigned char *only = nullptr) const;
       /// Fabric tensor B = sum_j (q S / V) n n of automaton @p k's
       /// interacting pairs, inverted when well conditioned (else identity).
       Sym3
