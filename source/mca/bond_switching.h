@@ -11,12 +11,34 @@
 #include "pair_blocks.h"
 
 #include <algorithm>
+#include <cmath>
 #include <tribodyn/mca/automaton_system.h>
+#include <type_traits>
+#include <utility>
 
 namespace tribodyn
 {
   namespace mca
   {
+    /// Does bond breaking criterion @p B screen its pairs (may_break())?
+    template <class B, class = void>
+    struct has_breaking_screen : std::false_type
+    {
+    };
+    template <class B>
+    struct has_breaking_screen<
+      B,
+      std::void_t<decltype(B::may_break(0.,
+                                        0.,
+                                        0.,
+                                        0.,
+                                        std::declval<const Vec3 &>(),
+                                        0.,
+                                        0.))>> : std::true_type
+    {
+    };
+
+
     template <bool plastic, class Breaking, class Formation>
     void
     AutomatonSystem::bond_switching([[maybe_unused]] const Breaking  &breaking,
@@ -46,6 +68,22 @@ namespace tribodyn
         }
       if (neighbours.active())
         neighbours.update(ex.data(), 7);
+      // A breaking criterion that screens its pairs by the norms of their
+      // automata's tensors (may_break(): never false where it breaks)
+      // skips the full criterion for most pairs of a bulk far below it.
+      constexpr bool screened = has_breaking_screen<Breaking>::value;
+      if constexpr (screened)
+        {
+          stress_norm.resize(n_local);
+          for (unsigned int k = 0; k < n_local; ++k)
+            {
+              const double *s  = &ex[7 * k];
+              const double  n2 = s[0] * s[0] + s[1] * s[1] + s[2] * s[2]
+                                + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+              // (rounded up: float's relative rounding is below 1e-7)
+              stress_norm[k] = static_cast<float>(std::sqrt(n2) * (1 + 1e-6));
+            }
+        }
       const unsigned int n_pairs = pi.size();
       // (the pairs' normals as pass A kept them, or anew)
       NormalBlock nblock;
@@ -66,6 +104,16 @@ namespace tribodyn
               const double am = 0.5 * (shear_factor(p, 0) + shear_factor(p, 1));
               if (bonded[p])
                 {
+                  if constexpr (Breaking::active)
+                    if constexpr (screened)
+                      if (!breaking.may_break(stress_norm[i],
+                                              stress_norm[j],
+                                              sn,
+                                              am,
+                                              tau[p],
+                                              mc[mat[i]].sigma_b,
+                                              mc[mat[j]].sigma_b))
+                        continue;
                   if constexpr (Breaking::active)
                     if (breaking.breaks(&ex[7 * i],
                                         &ex[7 * j],

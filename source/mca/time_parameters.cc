@@ -34,7 +34,11 @@ namespace tribodyn
       b.add("Courant factor",
             courant,
             "alpha in dt = alpha d_min / c_p,max when the time step is 0; in "
-            "(0, 0.5].",
+            "(0, 0.5]. 0.5 is the limit of a uniform lattice: the graded "
+            "friction scenes at the seed's heights "
+            "(prm/mca/friction_seed_heights_*.prm) left their symmetric "
+            "state after 3 ns at 0.5 and stayed in it at 0.35 and 0.42 "
+            "(doc/performance.md).",
             Double(),
             Interval{0,
                      max_courant,

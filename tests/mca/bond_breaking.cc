@@ -14,6 +14,13 @@
 // 10^5 states; a lost factor 2 in the normal part gives 0.3, and the test
 // fails). And the criterion's outcome (3 J2 >= limit^2) agrees wherever
 // 3 J2 lies more than that round-off away from the limit.
+//
+// The screen VonMisesBondBreaking::may_break() (a bound of 3 J2 from the
+// norms of the two automata's tensors, which the bond switching uses to skip
+// the full criterion) on 10^5 more states whose two tensors differ: never
+// false at a limit 1e-12 below the state's von Mises stress (a bound without
+// its shear term screens out 2.6 % of them: the test fails), and false for
+// some states at three times it (measured: 80 %).
 
 #include "../test_utilities.h"
 
@@ -114,6 +121,51 @@ main(int argc, char **argv)
           agree += (b == (ref[0] >= limit * limit));
         }
     }
+  // The screen (may_break()) from the norms of two automata's tensors
+  // s +- e, whose mean is s: never false where the criterion breaks, at a
+  // limit just below the state's von Mises stress; and it does screen:
+  // the share of states it lets through at three times that limit is
+  // reported and must be below 1 (a bound that passes everything would
+  // make the screen useless, not wrong).
+  unsigned int missed = 0, passed_far = 0, screened_states = 0;
+  for (unsigned int k = 0; k < 100000; ++k)
+    {
+      Sym3         s, e, s_i, s_j;
+      const double pressure = 3 * unit(random);
+      for (unsigned int c = 0; c < 6; ++c)
+        {
+          s[c]   = unit(random) + (c < 3 ? pressure : 0.);
+          e[c]   = 0.3 * unit(random);
+          s_i[c] = s[c] + e[c];
+          s_j[c] = s[c] - e[c];
+        }
+      Vec3         n{{unit(random), unit(random), unit(random)}};
+      const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      if (length < 1e-3)
+        continue;
+      for (auto &c : n)
+        c /= length;
+      Vec3         tau{{unit(random), unit(random), unit(random)}};
+      const double sn = 2 * unit(random) - 1, am = 0.5 * (1 + unit(random));
+      const auto   norm = [](const Sym3 &t) {
+        return std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]
+                         + 2 * (t[3] * t[3] + t[4] * t[4] + t[5] * t[5]));
+      };
+      const double von_mises = std::sqrt(
+        VonMisesBondBreaking::pair_von_mises_squared(s, n, sn, am, tau));
+      const double at = von_mises * (1 - 1e-12);
+      ++screened_states;
+      missed += !VonMisesBondBreaking::may_break(
+        norm(s_i), norm(s_j), sn, am, tau, at, 2 * at);
+      passed_far += VonMisesBondBreaking::may_break(
+        norm(s_i), norm(s_j), sn, am, tau, 3 * von_mises, 3 * von_mises);
+    }
+  check(missed == 0 && passed_far < screened_states,
+        "the screen lets through every state at its breaking limit ("
+          + std::to_string(missed) + " of " + std::to_string(screened_states)
+          + " screened out) and screens "
+          + std::to_string(screened_states - passed_far)
+          + " of them at three times it");
   check_relative(worst, 0, 1e-13, "largest |3 J2 - reference| / |s'|^2", 1);
   check(compared > 90000 && agree == compared && broken > compared / 4
           && broken < 3 * compared / 4,

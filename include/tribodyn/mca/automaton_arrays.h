@@ -74,6 +74,9 @@ namespace tribodyn
       /// Per-step exchange buffers (stride given by their use).
       std::vector<double> plast;       ///< sigma_m trial, M
       std::vector<double> bond_buffer; ///< stress tensor (6), yield stress
+      /// Per local automaton, bond scenes whose breaking criterion screens
+      /// its pairs: the Frobenius norm of its stress tensor, rounded up.
+      std::vector<float> stress_norm;
       /// Per automaton: the volumetric strain increment, then the
       /// mean-stress increment (exchanged with the ghosts).
       std::vector<double> dsm;

@@ -86,6 +86,32 @@ namespace tribodyn
         return 1.5 * (norm2 - trace * trace / 3);
       }
 
+      /// Can the bond of a pair break? A screen that needs only the
+      /// Frobenius norms @p norm_i, @p norm_j of its automata's tensors
+      /// (xx, yy, zz and twice the shear components squared): false only
+      /// where breaks() is false. 3 J2(s') <= 3/2 |s'|^2, and of the three
+      /// orthogonal parts of s' (pair_von_mises_squared()) |P s P| <= |s|
+      /// <= (norm_i + norm_j) / 2, (sn + 2 c_n)^2 <= 2 sn^2 + 8 am^2
+      /// |tau|^2, 2 am^2 |P tau|^2 <= 2 am^2 |tau|^2. The margin 1e-9
+      /// covers the rounding of the bound and of the criterion's own
+      /// evaluation (3.1e-14 of |s'|^2, tests/mca/bond_breaking.cc); norms
+      /// kept in single precision must be rounded up.
+      static bool
+      may_break(const double norm_i,
+                const double norm_j,
+                const double sn,
+                const double am,
+                const Vec3  &tau,
+                const double limit_i,
+                const double limit_j)
+      {
+        const double a = 0.5 * (norm_i + norm_j);
+        const double bound
+          = 1.5 * (a * a + 2 * sn * sn + 10 * am * am * dot(tau, tau));
+        const double limit = std::min(limit_i, limit_j);
+        return bound * (1 + 1e-9) >= limit * limit;
+      }
+
       /// Does the bond of a pair break? @p s_i, @p s_j: the stress tensors
       /// of its automata (xx, yy, zz, yz, xz, xy); @p n its unit normal,
       /// @p sn its normal stress, @p am times @p tau its shear stress;
