@@ -28,7 +28,8 @@ namespace tribodyn
     template <class B>
     struct has_breaking_screen<
       B,
-      std::void_t<decltype(B::may_break(0.,
+      std::void_t<decltype(B::screen_norm(nullptr)),
+                  decltype(B::may_break(0.,
                                         0.,
                                         0.,
                                         0.,
@@ -76,13 +77,9 @@ namespace tribodyn
         {
           stress_norm.resize(n_local);
           for (unsigned int k = 0; k < n_local; ++k)
-            {
-              const double *s  = &ex[7 * k];
-              const double  n2 = s[0] * s[0] + s[1] * s[1] + s[2] * s[2]
-                                + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
-              // (rounded up: float's relative rounding is below 1e-7)
-              stress_norm[k] = static_cast<float>(std::sqrt(n2) * (1 + 1e-6));
-            }
+            // (rounded up: float's relative rounding is below 1e-7)
+            stress_norm[k] = static_cast<float>(
+              Breaking::screen_norm(&ex[7 * k]) * (1 + 1e-6));
         }
       const unsigned int n_pairs = pi.size();
       // (the pairs' normals as pass A kept them, or anew)

@@ -77,6 +77,21 @@ namespace
         }
     return {{1.5 * dev2, norm2}};
   }
+  /// A random unit normal (three draws of @p unit, normalized); false
+  /// (skip the state) where the draw is too short to normalize.
+  bool
+  random_unit_normal(std::mt19937                           &random,
+                     std::uniform_real_distribution<double> &unit,
+                     Vec3                                   &n)
+  {
+    n                   = {{unit(random), unit(random), unit(random)}};
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (length < 1e-3)
+      return false;
+    for (auto &c : n)
+      c /= length;
+    return true;
+  }
 } // namespace
 
 int
@@ -93,12 +108,9 @@ main(int argc, char **argv)
       const double pressure = 3 * unit(random);
       for (unsigned int c = 0; c < 6; ++c)
         s[c] = unit(random) + (c < 3 ? pressure : 0.);
-      Vec3         n{{unit(random), unit(random), unit(random)}};
-      const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      if (length < 1e-3)
+      Vec3 n;
+      if (!random_unit_normal(random, unit, n))
         continue;
-      for (auto &c : n)
-        c /= length;
       Vec3         tau{{unit(random), unit(random), unit(random)}};
       const double tn   = tau[0] * n[0] + tau[1] * n[1] + tau[2] * n[2],
                    keep = 0.1 * unit(random);
@@ -139,15 +151,13 @@ main(int argc, char **argv)
           s_i[c] = s[c] + e[c];
           s_j[c] = s[c] - e[c];
         }
-      Vec3         n{{unit(random), unit(random), unit(random)}};
-      const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      if (length < 1e-3)
+      Vec3 n;
+      if (!random_unit_normal(random, unit, n))
         continue;
-      for (auto &c : n)
-        c /= length;
       Vec3         tau{{unit(random), unit(random), unit(random)}};
       const double sn = 2 * unit(random) - 1, am = 0.5 * (1 + unit(random));
-      const auto   norm = [](const Sym3 &t) {
+      // (the Frobenius norm computed here, not by the law's screen_norm())
+      const auto norm = [](const Sym3 &t) {
         return std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]
                          + 2 * (t[3] * t[3] + t[4] * t[4] + t[5] * t[5]));
       };

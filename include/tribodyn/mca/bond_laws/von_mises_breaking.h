@@ -10,6 +10,7 @@
 #define tribodyn_mca_bond_laws_von_mises_breaking_h
 
 #include <algorithm>
+#include <cmath>
 #include <deal.II/base/parameter_handler.h>
 #include <functional>
 #include <tribodyn/core/law_selection.h>
@@ -96,6 +97,15 @@ namespace tribodyn
       /// covers the rounding of the bound and of the criterion's own
       /// evaluation (3.1e-14 of |s'|^2, tests/mca/bond_breaking.cc); norms
       /// kept in single precision must be rounded up.
+      /// The norm may_break() screens by: the Frobenius norm of the
+      /// stress tensor @p s (xx, yy, zz, yz, xz, xy).
+      static double
+      screen_norm(const double *s)
+      {
+        return std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]
+                         + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+      }
+
       static bool
       may_break(const double norm_i,
                 const double norm_j,
