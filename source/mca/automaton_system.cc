@@ -415,6 +415,35 @@ namespace tribodyn
         cells.triangulation(), mapping, automaton_fields.record_width());
       neighbours.reinit(comm, cells.neighbour_ranks());
       rebuild(true);
+
+      // The limit of the step where some automaton is stiffer than the
+      // uniform lattice's (at a change of size its faces and moments are
+      // larger for its inertia; doc/theory/mca.md §9).
+      courant_max = stiffest_courant_limit();
+      if (dt > courant_max * critical_dt * (1 + 1e-12))
+        {
+          const bool  given = prm.time.time_step > 0;
+          std::string m
+            = std::string("Parameter '")
+              + (given ? "Time/Time step' = " + format_number(dt) + " s"
+                       : "Time/Courant factor' = "
+                           + format_number(prm.time.courant))
+              + " is too large for this scene: its stiffest automaton (at a "
+                "change of size, or of material) allows a Courant factor of "
+              + format_number(courant_max)
+              + " (dt = " + format_number(courant_max * critical_dt)
+              + " s), less than the uniform lattice's "
+              + format_number(TimeParameters::max_courant)
+              + " (its springs and relative-rotation moments are stiffer "
+                "for its inertia; doc/stability.md). ";
+          m += given ? "Use a time step of at most "
+                         + format_number(courant_max * critical_dt)
+                         + " s or 0 with 'Time/Courant factor' <= "
+                         + format_number(courant_max) + "."
+                     : "Set 'Time/Courant factor' to at most "
+                         + format_number(courant_max) + ".";
+          throw InputError(m);
+        }
     }
 
 

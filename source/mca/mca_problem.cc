@@ -441,8 +441,11 @@ namespace tribodyn
         pcout << " (work imbalance max/mean " << std::setprecision(3)
               << imbalance << std::setprecision(6) << ")";
       pcout << "; dt = " << dt
-            << " s (critical d/c_p = " << system.critical_time_step() << " s), "
-            << n_steps << " steps" << std::endl;
+            << " s (critical d/c_p = " << system.critical_time_step() << " s";
+      if (system.courant_limit() < TimeParameters::max_courant)
+        pcout << "; this scene's stiffest automaton allows at most "
+              << system.courant_limit() << " of it";
+      pcout << "), " << n_steps << " steps" << std::endl;
 
       // The outputs of this run (source/mca/postprocessors/), in order:
       // their series columns side by side in series.csv.

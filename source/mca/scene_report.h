@@ -134,6 +134,7 @@ namespace tribodyn
         summary["n_steps"]               = n_steps;
         summary["dt"]                    = system.time_step();
         summary["critical_dt"]           = system.critical_time_step();
+        summary["courant_limit"]         = system.courant_limit();
         summary["end_time"]              = system.time();
         summary["n_pair_list_rebuilds"]  = system.n_rebuilds();
         const unsigned long long dropped = system.n_dropped_bonds();

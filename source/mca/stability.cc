@@ -1,6 +1,10 @@
-// Blow-up detection of the automata (doc/stability.md): a cheap count of
-// implausible automata after each step, and the report naming the worst one
-// and the likely cause when the count is not zero on some rank.
+// The automata's step limit and blow-up detection (doc/stability.md): the
+// largest Courant factor the scene's stiffest automaton allows, checked at
+// set-up; a cheap count of implausible automata after each step, and the
+// report naming the worst one and the likely cause when the count is not
+// zero on some rank.
+#include "pair_geometry.h"
+
 #include <array>
 #include <boost/serialization/array.hpp>
 #include <cmath>
@@ -13,6 +17,91 @@ namespace tribodyn
 {
   namespace mca
   {
+    double
+    AutomatonSystem::stiffest_courant_limit() const
+    {
+      // The springs acting on each owned automaton at set-up (bonded pairs
+      // and contacts) held against fixed neighbours: translation
+      // omega_t^2 = sum k_f / m, rotation omega_r^2 = sum (k_f a^2 +
+      // k_twist) / I, with k_f = k S (2G/q0 per unit area, the face S) the
+      // pair's spring, a its arm and k_twist its relative-rotation
+      // twisting spring (the stiffer of the moment's two).
+      std::vector<double> translation(n_owned, 0.), rotation(n_owned, 0.);
+      for (unsigned int p = 0; p < pi.size(); ++p)
+        {
+          const unsigned int i = pi[p], j = pj[p];
+          if (i >= n_owned && j >= n_owned)
+            continue;
+          double r;
+          unit_normal(p, r);
+          const double arm   = graded ? pair_half_rest[p] : r0;
+          const double touch = 2 * arm;
+          if (arm <= 0 || (!bonded[p] && r >= touch))
+            continue; // an inert pair, or one out of contact
+          const SeriesSprings &k = springs[mat[i] * n_materials + mat[j]];
+          const double         kf
+            = k.ki * k.kj * k.inv_sum * (graded ? pair_area[p] * r0 / arm : S);
+          const double twist
+            = rotation_stiffnesses(mat[i], mat[j]).first
+              * (graded ? graded_moment_scale(pair_area[p], arm, r0, 1. / S)
+                        : 1.);
+          for (const unsigned int k : {i, j})
+            if (k < n_owned)
+              {
+                translation[k] += kf;
+                rotation[k] += kf * arm * arm + twist;
+              }
+        }
+      const auto omega =
+        [&](const double m, const double I, const double t, const double rot) {
+          return std::max(std::sqrt(t / m),
+                          rotations ? std::sqrt(rot / I) : 0.);
+        };
+      double highest = 0;
+      for (unsigned int k = 0; k < n_owned; ++k)
+        highest = std::max(highest,
+                           omega(automaton_mass(*this, k),
+                                 automaton_inertia(*this, k),
+                                 translation[k],
+                                 rotation[k]));
+      highest = dealii::Utilities::MPI::max(highest, comm);
+
+      // The same for an automaton of size d inside a uniform FCC lattice of
+      // each material the scene uses (12 neighbours at d, faces S, arms
+      // r0 = d/2), at that lattice's own limit TimeParameters::max_courant
+      // d / c_p: omega dt there is the level known stable, the highest of
+      // the scene's materials (it depends on their Poisson ratios).
+      std::vector<unsigned int> used(n_materials, 0);
+      for (unsigned int k = 0; k < n_owned; ++k)
+        used[mat[k]] = 1;
+      dealii::Utilities::MPI::max(used, comm, used);
+      double stable_level = 0;
+      for (unsigned int m = 0; m < n_materials; ++m)
+        if (used[m])
+          {
+            const SeriesSprings &k    = springs[m * n_materials + m];
+            const double         kf   = k.ki * k.kj * k.inv_sum * S;
+            const double         mass = mc[m].rho * V;
+            const double         lattice
+              = omega(mass,
+                      mass * d * d / 10,
+                      12 * kf,
+                      12 * (kf * r0 * r0 + rotation_stiffnesses(m, m).first));
+            stable_level = std::max(stable_level,
+                                    lattice * TimeParameters::max_courant * d
+                                      / prm.materials[m].p_wave_speed());
+          }
+      // The Courant factor (of this scene's d / c_p,max) that brings its
+      // stiffest automaton to that level; rounded down to 1/1000, so that
+      // the sums' order (which differs with the number of ranks) cannot
+      // change it but at a boundary.
+      const double limit = stable_level / (highest * critical_dt);
+      if (limit >= TimeParameters::max_courant * (1 - 1e-9))
+        return TimeParameters::max_courant;
+      return std::floor(1000 * limit) / 1000;
+    }
+
+
     unsigned int
     AutomatonSystem::count_unstable_automata(const double limit) const
     {

@@ -34,11 +34,13 @@ namespace tribodyn
       b.add("Courant factor",
             courant,
             "alpha in dt = alpha d_min / c_p,max when the time step is 0; in "
-            "(0, 0.5]. 0.5 is the limit of a uniform lattice: the graded "
-            "friction scenes at the seed's heights "
-            "(prm/mca/friction_seed_heights_*.prm) left their symmetric "
-            "state after 3 ns at 0.5 and stayed in it at 0.35 and 0.42 "
-            "(doc/performance.md).",
+            "(0, 0.5]. 0.5 is the limit of a uniform lattice; where an "
+            "automaton is stiffer for its inertia than the lattice's (at a "
+            "change of size: larger faces and relative-rotation moments), "
+            "the scene allows less, and a larger factor is refused naming "
+            "that limit (the log and summary.json's courant_limit give it; "
+            "0.448 for the graded scenes at the seed's heights, "
+            "doc/stability.md).",
             Double(),
             Interval{0,
                      max_courant,

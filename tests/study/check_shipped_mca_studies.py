@@ -1,7 +1,8 @@
 """The shipped automata studies run (issue #49 item 2), cut short:
 prm/study/mca_laptop.prm, mca_seed_heights.prm, mca_seed_heights_12.prm,
-mca_fibre_content.prm, mca_time_step_lever.prm and
-mca_time_step_lever_composite.prm, each with an
+mca_fibre_content.prm, mca_time_step_lever.prm,
+mca_time_step_lever_composite.prm and the two seed-heights levers
+mca_time_step_lever_seed_heights(_composite).prm, each with an
 override block appended (as a user continues a prm: later entries win; the
 shipped text is not edited) for one roughness seed, 2e-11 s (the bodies
 are still approaching) and an output directory of the test's; the bases
@@ -16,7 +17,8 @@ heights with the fine band at 8 cells and 16 of 2d: 35 136, the count
 mca_size_bands_interface derives from the layout), and the seed-heights
 scenes really run the study's setting (their parameters.prm reads
 'interface 8 16'); the time-step levers' two bases differ in dt by the
-ratio of their Courant factors, 0.5/0.35 (the same d and c_p: to 1e-12)."""
+ratio of their Courant factors, 0.5/0.35 or 0.44/0.35 (the same d and c_p:
+to 1e-12)."""
 import csv
 import json
 import os
@@ -32,10 +34,17 @@ os.makedirs(scratch, exist_ok=True)
 AUTOMATA = {"mca_laptop": 12288, "mca_seed_heights": 35136,
             "mca_seed_heights_12": 35136,
             "mca_fibre_content": 12288, "mca_time_step_lever": 12288,
-            "mca_time_step_lever_composite": 12288}
-# the two bases of each time-step lever: Courant factor 0.35 and 0.5
-LEVERS = {"mca_time_step_lever": ("courant_035", "courant_050"),
-          "mca_time_step_lever_composite": ("composite_035", "composite_050")}
+            "mca_time_step_lever_composite": 12288,
+            "mca_time_step_lever_seed_heights": 35136,
+            "mca_time_step_lever_seed_heights_composite": 35136}
+# the two bases of each time-step lever and the ratio of their Courant
+# factors (0.35 against 0.5 or 0.44)
+LEVERS = {"mca_time_step_lever": ("courant_035", "courant_050", 0.5 / 0.35),
+          "mca_time_step_lever_composite": ("composite_035", "composite_050",
+                                            0.5 / 0.35),
+          "mca_time_step_lever_seed_heights": ("steel", "steel_044", 0.44 / 0.35),
+          "mca_time_step_lever_seed_heights_composite":
+              ("composite", "composite_044", 0.44 / 0.35)}
 # the generated fibres' share of each contacting part's box (the set-up's
 # 'Inclusions:' line), per base of the fibre-content study: the 4 % base
 # reads friction_composite.prm through an include beside it, run from the
@@ -90,7 +99,7 @@ end
         report(tag.get("base") == base and summary.get("n_automata") == n_automata,
                f"{name} {base}: {summary.get('n_automata')} automata "
                f"(documented {n_automata}), scene tagged {tag}")
-        if name in ("mca_seed_heights", "mca_seed_heights_12"):
+        if "seed_heights" in name:
             prm = open(os.path.join(scene, "parameters.prm")).read()
             report("= interface 8 16" in prm,
                    f"{name} {base}: the study's Size bands setting reached the scene")
@@ -105,8 +114,8 @@ end
             with open(os.path.join(out, "scenes", f"{base}_seed1",
                                    "summary.json")) as f:
                 dts[base] = json.load(f)["dt"]
-        small, large = LEVERS[name]
+        small, large, factors = LEVERS[name]
         ratio = dts[large] / dts[small]
-        report(abs(ratio / (0.5 / 0.35) - 1) < 1e-12,
-               f"{name}: dt ratio {ratio:.15f} = 0.5 / 0.35 (Courant factors)")
+        report(abs(ratio / factors - 1) < 1e-12,
+               f"{name}: dt ratio {ratio:.15f} = {factors:.15f} (Courant factors)")
 finish()

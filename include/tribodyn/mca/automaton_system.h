@@ -88,6 +88,14 @@ namespace tribodyn
       {
         return critical_dt;
       }
+      /// The largest Courant factor dt c_p,max / d_min this scene allows:
+      /// TimeParameters::max_courant, less where an automaton's springs
+      /// are stiffer than in the uniform lattice (a change of size).
+      double
+      courant_limit() const
+      {
+        return courant_max;
+      }
       double
       time() const
       {
@@ -354,6 +362,13 @@ namespace tribodyn
       }
 
     private:
+      /// The largest Courant factor for which every automaton's highest
+      /// frequency estimate (its springs against fixed neighbours, the
+      /// relative-rotation moments included) stays below that of an
+      /// automaton in the uniform lattice at TimeParameters::max_courant
+      /// (source/mca/stability.cc). Collective; needs the pair list.
+      double
+      stiffest_courant_limit() const;
       // --- set-up and rebuild (automaton_system.cc, rebuild.cc)
       void
       pack_owned_cells();

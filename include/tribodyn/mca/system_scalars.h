@@ -37,7 +37,10 @@ namespace tribodyn
       /// Graded pair-list ranges [near a change of size][size level].
       AutomatonArrays::RangeTable graded_range{};
 
-      double        dt = 0, critical_dt = 0, current_time = 0;
+      double dt = 0, critical_dt = 0, current_time = 0;
+      /// The largest Courant factor the scene's stiffest automaton allows
+      /// (AutomatonSystem::stiffest_courant_limit()).
+      double        courant_max  = 0;
       unsigned long n_steps_done = 0;
       /// set_agreed_displacement_since_rebuild()'s value, for the next
       /// step only (negative: not given, step() reduces on its own)
