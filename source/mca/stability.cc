@@ -196,10 +196,11 @@ namespace tribodyn
                                        + "' of 'Boundary conditions/Groups'")
           << " (explicit viscous damping needs c dt < 1); lower the "
              "coefficient.";
-      else if (courant > 0.9 * TimeParameters::max_courant)
+      else if (courant > 0.9 * courant_max)
         m << "the time step: dt = " << courant << " d/c_p is near the limit "
-          << TimeParameters::max_courant
-          << "; lower 'Time/Courant factor' or 'Time/Time step'.";
+          << courant_max
+          << " this scene allows; lower 'Time/Courant factor' or 'Time/Time "
+             "step'.";
       else if (!loaded_group.empty())
         m << "the loading of group '" << loaded_group
           << "' (a prescribed velocity near the wave speed or a force too "
