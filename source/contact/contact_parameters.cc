@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 #include <fstream>
 #include <tribodyn/contact/contact_parameters.h>
+#include <tribodyn/contact/postprocessor.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/number_list.h>
 #include <tribodyn/core/parameter_binding.h>
@@ -495,6 +496,10 @@ namespace tribodyn
             "contact_face_status.csv: one row per time, one column per "
             "contact node) every this many samples; 0 writes none.",
             Integer(0));
+      PostprocessorRegistry::add_selection(b,
+                                           "Postprocessors",
+                                           postprocessors,
+                                           "outputs (files, summary keys)");
       return b;
     }
 

@@ -436,6 +436,16 @@ namespace tribodyn
                                             n_steps,
                                             "Time/End time",
                                             prm.time.end_time);
+      // The outputs (source/contact/postprocessors/): made for runs that
+      // write (the user's list checked before anything is touched), each
+      // with its state from the checkpoint (by name).
+      outputs.clear();
+      std::vector<std::string> output_names;
+      if (write)
+        outputs = PostprocessorRegistry::create_all(
+          {*this, prm, output_directory, comm, root},
+          output_names,
+          prm.output.postprocessors);
       // Every check passed: the output directory may be touched from here.
       if (output_claim)
         output_claim(resumed ? OutputClaim::resume : OutputClaim::fresh);
@@ -443,14 +453,8 @@ namespace tribodyn
         store->discard();
       steps_at_start = step_count;
 
-      // The outputs (source/contact/postprocessors/): made for runs that
-      // write, each with its state from the checkpoint (by name).
-      outputs.clear();
-      std::vector<std::string> output_names;
       if (write)
         {
-          outputs = PostprocessorRegistry::create_all(
-            {*this, prm, output_directory, comm, root}, output_names);
           load_plugin_states(loop.outputs, outputs, output_names);
           for (auto &o : outputs)
             o->open(resumed);

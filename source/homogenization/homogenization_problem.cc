@@ -30,6 +30,11 @@ namespace tribodyn
             write_morphology,
             "Write the material map (morphology.vtu) and the morphology as a "
             "grid file (morphology.txt, readable by 'Generator = grid file').");
+      PostprocessorRegistry<2>::add_selection(
+        b,
+        "Postprocessors",
+        postprocessors,
+        "outputs (the screen's table, files, summary keys)");
       return b;
     }
 
@@ -243,15 +248,17 @@ namespace tribodyn
       // order: each adds its rows to the screen's table and its keys to
       // summary.json.
       std::vector<std::string> output_names;
-      const auto outputs = PostprocessorRegistry<2>::create_all({parameters,
-                                                                 morphology,
-                                                                 cell_problem,
-                                                                 phases,
-                                                                 fractions,
-                                                                 out_dir,
-                                                                 comm,
-                                                                 root},
-                                                                output_names);
+      const auto               outputs = PostprocessorRegistry<2>::create_all(
+        {parameters,
+                       morphology,
+                       cell_problem,
+                       phases,
+                       fractions,
+                       out_dir,
+                       comm,
+                       root},
+        output_names,
+        parameters.output.postprocessors);
       std::ostringstream table;
       for (const auto &o : outputs)
         o->started(table);

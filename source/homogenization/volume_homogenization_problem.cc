@@ -58,6 +58,11 @@ namespace tribodyn
             "end: 'auto' looks for scripts/plot_volume next to the build "
             "directory (skipped when python3 or matplotlib is missing), "
             "'none' draws nothing, or a path.");
+      PostprocessorRegistry<3>::add_selection(
+        b,
+        "Postprocessors",
+        postprocessors,
+        "outputs (the screen's table, files, summary keys)");
       return b;
     }
 
@@ -199,17 +204,19 @@ namespace tribodyn
       // their order: each adds its rows to the screen's table and its keys
       // to summary.json.
       std::vector<std::string> output_names;
-      const auto outputs = PostprocessorRegistry<3>::create_all({parameters,
-                                                                 volume,
-                                                                 cell_problem,
-                                                                 phases,
-                                                                 stiffness,
-                                                                 fractions,
-                                                                 geometry,
-                                                                 out_dir,
-                                                                 comm,
-                                                                 root},
-                                                                output_names);
+      const auto               outputs = PostprocessorRegistry<3>::create_all(
+        {parameters,
+                       volume,
+                       cell_problem,
+                       phases,
+                       stiffness,
+                       fractions,
+                       geometry,
+                       out_dir,
+                       comm,
+                       root},
+        output_names,
+        parameters.output.postprocessors);
       std::ostringstream table;
       for (const auto &o : outputs)
         o->started(table);

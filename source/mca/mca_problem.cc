@@ -452,7 +452,8 @@ namespace tribodyn
       Postprocessors postprocessors;
       postprocessors.list
         = PostprocessorRegistry::create_all({system, p, comm, out_dir, root},
-                                            postprocessors.names);
+                                            postprocessors.names,
+                                            p.output.postprocessors);
       std::vector<std::string> columns;
       for (const auto &pp : postprocessors)
         for (const auto &c : pp->series_columns())

@@ -11,6 +11,7 @@
 #include <tribodyn/core/material.h>
 #include <tribodyn/core/selection.h>
 #include <tribodyn/mca/parameters.h>
+#include <tribodyn/mca/postprocessor.h>
 
 namespace tribodyn
 {
@@ -160,6 +161,11 @@ namespace tribodyn
             "seed.",
             Double(),
             Interval{0, inf, false, true});
+      PostprocessorRegistry::add_selection(b,
+                                           "Postprocessors",
+                                           postprocessors,
+                                           "outputs (series.csv columns, "
+                                           "files, summary.json keys)");
       return b;
     }
 

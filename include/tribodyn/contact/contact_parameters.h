@@ -9,6 +9,7 @@
 #include <tribodyn/core/morphology.h>
 #include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/phase_materials.h>
+#include <tribodyn/core/plugin_registry.h>
 #include <vector>
 
 namespace tribodyn
@@ -234,6 +235,9 @@ namespace tribodyn
       /// Space-time series of the contact face (lambda_N, lambda_T, status
       /// per contact node) every this many samples (0: none).
       unsigned int contact_face_interval = 0;
+      /// Output/Postprocessors: the outputs the user chose
+      /// (source/contact/postprocessors/).
+      PluginSelection postprocessors;
 
       /// The entries of the subsection, each bound to its member
       /// (core/parameter_binding.h).

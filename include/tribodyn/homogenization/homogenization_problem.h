@@ -8,6 +8,7 @@
 #include <tribodyn/core/morphology.h>
 #include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/phase_materials.h>
+#include <tribodyn/core/plugin_registry.h>
 #include <tribodyn/core/problem.h>
 #include <tribodyn/homogenization/cell_problem.h>
 #include <vector>
@@ -31,6 +32,9 @@ namespace tribodyn
       bool write_fields = true;
       /// Write the material map (VTU) and the morphology grid (text).
       bool write_morphology = true;
+      /// Output/Postprocessors: the outputs the user chose
+      /// (source/homogenization/postprocessors/).
+      PluginSelection postprocessors;
 
       /// The entries of "Output", bound to the members above.
       ParameterBinding

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <tribodyn/core/phase_materials.h>
+#include <tribodyn/core/plugin_registry.h>
 #include <tribodyn/core/problem.h>
 #include <tribodyn/homogenization/cell_problem.h>
 #include <tribodyn/homogenization/voxel_volume.h>
@@ -24,6 +25,9 @@ namespace tribodyn
       bool write_slices = true;
       /// Script drawing the slices as PNG: "auto", "none" or a path.
       std::string plot_script = "auto";
+      /// Output/Postprocessors: the outputs the user chose
+      /// (source/homogenization/postprocessors/volume_*.cc).
+      PluginSelection postprocessors;
 
       /// The entries of "Output", bound to the member above.
       ParameterBinding

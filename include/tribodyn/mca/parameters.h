@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 #include <tribodyn/core/parameter_binding.h>
+#include <tribodyn/core/plugin_registry.h>
 #include <tribodyn/mca/bond_laws.h>
 #include <tribodyn/mca/friction_laws.h>
 #include <tribodyn/mca/moment_laws.h>
@@ -510,6 +511,9 @@ namespace tribodyn
       unsigned int cross_section_axis      = 0;
       double       cross_section_position  = 0;
       double       cross_section_thickness = 0;
+      /// Output/Postprocessors: the outputs the user chose
+      /// (source/mca/postprocessors/).
+      PluginSelection postprocessors;
 
       /// The entries of the subsection, each bound to its member
       /// (core/parameter_binding.h).

@@ -153,11 +153,14 @@ namespace tribodyn
       };
 
       const bool contact_face_registered = PostprocessorRegistry::add(
-        {"contact face", 40, [](const PostprocessorInputs &in) {
+        {"contact face",
+         40,
+         [](const PostprocessorInputs &in) {
            return in.prm.output.contact_face_interval > 0
                     ? std::make_unique<ContactFace>(in)
                     : nullptr;
-         }});
+         },
+         "when Output/Contact face interval > 0"});
     } // namespace
   }   // namespace contact
 } // namespace tribodyn

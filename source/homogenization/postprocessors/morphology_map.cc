@@ -43,7 +43,8 @@ namespace tribodyn
            if (!in.parameters.output.write_morphology)
              return nullptr;
            return std::make_unique<MorphologyMap>(in);
-         }});
+         },
+         "when Output/Write morphology = true"});
     } // namespace
   }   // namespace homogenization
 } // namespace tribodyn

@@ -42,7 +42,8 @@ namespace tribodyn
            if (!in.parameters.output.write_morphology)
              return nullptr;
            return std::make_unique<VolumeMorphology>(in);
-         }});
+         },
+         "when Output/Write morphology = true"});
     } // namespace
   }   // namespace homogenization
 } // namespace tribodyn

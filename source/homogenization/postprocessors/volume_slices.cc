@@ -104,7 +104,8 @@ namespace tribodyn
            if (!in.parameters.output.write_slices)
              return nullptr;
            return std::make_unique<VolumeSlices>(in);
-         }});
+         },
+         "when Output/Write slices = true"});
     } // namespace
   }   // namespace homogenization
 } // namespace tribodyn

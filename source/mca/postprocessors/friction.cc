@@ -368,7 +368,8 @@ namespace tribodyn
                != AnalysisParameters::Type::friction)
              return nullptr;
            return std::make_unique<FrictionObserver>(in);
-         }});
+         },
+         "when Analysis/Type = friction"});
     } // namespace
   }   // namespace mca
 } // namespace tribodyn

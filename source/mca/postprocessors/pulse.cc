@@ -132,7 +132,8 @@ namespace tribodyn
            if (in.parameters.analysis.type != AnalysisParameters::Type::pulse)
              return nullptr;
            return std::make_unique<PulseAnalysis>(in);
-         }});
+         },
+         "when Analysis/Type = pulse"});
     } // namespace
   }   // namespace mca
 } // namespace tribodyn

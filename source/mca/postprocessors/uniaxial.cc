@@ -330,7 +330,8 @@ namespace tribodyn
                != AnalysisParameters::Type::uniaxial)
              return nullptr;
            return std::make_unique<UniaxialAnalysis>(in);
-         }});
+         },
+         "when Analysis/Type = uniaxial"});
     } // namespace
   }   // namespace mca
 } // namespace tribodyn
