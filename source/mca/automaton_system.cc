@@ -418,7 +418,7 @@ namespace tribodyn
 
       // The limit of the step where some automaton is stiffer than the
       // uniform lattice's (at a change of size its faces and moments are
-      // larger for its inertia; doc/theory/mca.md §9).
+      // larger for its inertia; doc/theory/mca.md §6).
       courant_max = stiffest_courant_limit();
       if (dt > courant_max * critical_dt * (1 + 1e-12))
         {
