@@ -419,7 +419,7 @@ namespace tribodyn
       // The limit of the step where some automaton is stiffer than the
       // uniform lattice's (at a change of size its faces and moments are
       // larger for its inertia; doc/theory/mca.md §6).
-      courant_max = stiffest_courant_limit();
+      courant_max = stiffest_courant_limit(used);
       if (dt > courant_max * critical_dt * (1 + 1e-12))
         {
           const bool  given = prm.time.time_step > 0;

@@ -24,6 +24,17 @@ namespace tribodyn
 
 
     double
+    AutomatonSystem::moment_scale_of(const unsigned int p) const
+    {
+      return graded ? graded_moment_scale(pair_area[p],
+                                          pair_half_rest[p],
+                                          r0,
+                                          1. / S)
+                    : 1.;
+    }
+
+
+    double
     AutomatonSystem::pair_moment_energy() const
     {
       // |K . n|^2 / 2 k_twist + |K x n|^2 / 2 k_bend of the pairs, each
@@ -38,13 +49,8 @@ namespace tribodyn
               {
                 double     r;
                 const Vec3 n = unit_normal(p, r);
-                // (automata of several sizes: the pair's own stiffnesses,
-                // as the kernel's GradedPairs::moment_scale)
-                const double f = graded ? graded_moment_scale(pair_area[p],
-                                                              pair_half_rest[p],
-                                                              r0,
-                                                              1. / S)
-                                        : 1.;
+                // (automata of several sizes: the pair's own stiffnesses)
+                const double f = moment_scale_of(p);
                 if (f > 0) // (an inert pair carries no moment)
                   energy += law.energy(p,
                                        mat[pi[p]] * n_materials + mat[pj[p]],

@@ -3,8 +3,6 @@
 // set-up; a cheap count of implausible automata after each step, and the
 // report naming the worst one and the likely cause when the count is not
 // zero on some rank.
-#include "pair_geometry.h"
-
 #include <array>
 #include <boost/serialization/array.hpp>
 #include <cmath>
@@ -18,7 +16,8 @@ namespace tribodyn
   namespace mca
   {
     double
-    AutomatonSystem::stiffest_courant_limit() const
+    AutomatonSystem::stiffest_courant_limit(
+      const std::vector<unsigned int> &used) const
     {
       // The springs acting on each owned automaton at set-up (bonded pairs
       // and contacts) held against fixed neighbours: translation
@@ -42,9 +41,7 @@ namespace tribodyn
           const double         kf
             = k.ki * k.kj * k.inv_sum * (graded ? pair_area[p] * r0 / arm : S);
           const double twist
-            = rotation_stiffnesses(mat[i], mat[j]).first
-              * (graded ? graded_moment_scale(pair_area[p], arm, r0, 1. / S)
-                        : 1.);
+            = rotation_stiffnesses(mat[i], mat[j]).first * moment_scale_of(p);
           for (const unsigned int k : {i, j})
             if (k < n_owned)
               {
@@ -71,10 +68,6 @@ namespace tribodyn
       // r0 = d/2), at that lattice's own limit TimeParameters::max_courant
       // d / c_p: omega dt there is the level known stable, the highest of
       // the scene's materials (it depends on their Poisson ratios).
-      std::vector<unsigned int> used(n_materials, 0);
-      for (unsigned int k = 0; k < n_owned; ++k)
-        used[mat[k]] = 1;
-      dealii::Utilities::MPI::max(used, comm, used);
       double stable_level = 0;
       for (unsigned int m = 0; m < n_materials; ++m)
         if (used[m])

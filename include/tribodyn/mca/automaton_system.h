@@ -366,9 +366,11 @@ namespace tribodyn
       /// frequency estimate (its springs against fixed neighbours, the
       /// relative-rotation moments included) stays below that of an
       /// automaton in the uniform lattice at TimeParameters::max_courant
-      /// (source/mca/stability.cc). Collective; needs the pair list.
+      /// (source/mca/stability.cc), over the materials @p used anywhere
+      /// (by material: 1 or 0, the same on every rank). Collective; needs
+      /// the pair list.
       double
-      stiffest_courant_limit() const;
+      stiffest_courant_limit(const std::vector<unsigned int> &used) const;
       // --- set-up and rebuild (automaton_system.cc, rebuild.cc)
       void
       pack_owned_cells();
@@ -672,6 +674,12 @@ namespace tribodyn
       {
         return graded ? pair_area[p] : S;
       }
+      /// Factor of the material table's relative-rotation stiffnesses for
+      /// pair @p p (graded: graded_moment_scale() of its face and half rest
+      /// length, as the kernel's GradedPairs::moment_scale(); 0 for an inert
+      /// pair; uniform: 1). Defined in pair_moments.cc.
+      double
+      moment_scale_of(const unsigned int p) const;
       /// Pair-list ranges [near a change of size][size level] of @p
       /// prm's scene: d (1 + skin) 2^L, times transition_face_factor() near
       /// a change of size (RangeTable, pair_list_range():
