@@ -604,12 +604,7 @@ namespace tribodyn
       const auto add = [&](const char *name, const auto &...vecs) {
         parts.emplace_back(name, ((vecs.capacity() * sizeof(vecs[0])) + ...));
       };
-      add("pair list (i, j, image shift)", pi, pj, pshift);
-      add("pair list by automaton",
-          i_pairs_first,
-          i_pairs_count,
-          j_pairs_first,
-          j_pairs);
+      PairList::memory_by_part(parts);
       add("pair step buffers (distance, normal, mu)",
           pair_dr,
           step_normals,

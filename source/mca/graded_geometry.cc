@@ -371,7 +371,7 @@ namespace tribodyn
         }
       if (n_kept == n_pairs)
         return;
-      compact_pair_list(keep);
+      PairList::compact(keep);
       pair_fields.compact(keep);
     }
   } // namespace mca

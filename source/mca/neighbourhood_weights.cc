@@ -46,37 +46,6 @@ namespace tribodyn
 
 
     void
-    AutomatonSystem::index_pairs_of_automata()
-    {
-      // pairs of each owned automaton: rebuilt with the pair list
-      const unsigned int n_pairs = pi.size();
-      i_pairs_first.assign(n_owned, 0);
-      i_pairs_count.assign(n_owned, 0);
-      j_pairs_first.assign(n_owned + 1, 0);
-      for (unsigned int p = 0; p < n_pairs; ++p)
-        {
-          if (owned(pi[p]))
-            {
-              if (i_pairs_count[pi[p]]++ == 0)
-                i_pairs_first[pi[p]] = p;
-              Assert(i_pairs_first[pi[p]] + i_pairs_count[pi[p]] == p + 1,
-                     dealii::ExcInternalError());
-            }
-          if (owned(pj[p]))
-            ++j_pairs_first[pj[p] + 1];
-        }
-      for (unsigned int k = 0; k < n_owned; ++k)
-        j_pairs_first[k + 1] += j_pairs_first[k];
-      j_pairs.resize(j_pairs_first[n_owned]);
-      std::vector<unsigned int> fill(j_pairs_first.begin(),
-                                     j_pairs_first.end() - 1);
-      for (unsigned int p = 0; p < n_pairs; ++p)
-        if (owned(pj[p]))
-          j_pairs[fill[pj[p]]++] = p;
-    }
-
-
-    void
     AutomatonSystem::update_neighbourhood_weights(const bool all)
     {
       const unsigned int n_pairs = pi.size();
@@ -89,7 +58,7 @@ namespace tribodyn
             fabric_inverse.assign(n_owned, Sym3{{1, 1, 1, 0, 0, 0}});
           else
             std::vector<Sym3>().swap(fabric_inverse);
-          index_pairs_of_automata();
+          index_by_automaton(n_owned);
           mb_state.assign(n_owned, {});
           mb_shape.assign(n_owned, ManyBodyShape::general);
         }

@@ -279,7 +279,7 @@ namespace tribodyn
             kept_keys.end(),
             std::make_pair(pair_key(id[pi[p]], id[pj[p]]), std::uint32_t(0)),
             [](const auto &a, const auto &b) { return a.first < b.first; });
-        compact_pair_list(keep);
+        PairList::compact(keep);
       }
       // Every checkpointed pair of an owned automaton must be listed again.
       unsigned long long n_missed = 0;
@@ -333,7 +333,7 @@ namespace tribodyn
         }
       update_ghost_kinematics();
       restore_pair_states(false);
-      index_pairs_of_automata();
+      index_by_automaton(n_owned);
       const unsigned int n_pairs = pi.size();
       beta_i.assign(n_pairs, 0);
       beta_j.assign(n_pairs, 0);

@@ -21,6 +21,7 @@
 #include <tribodyn/mca/packing.h>
 #include <tribodyn/mca/pair_arrays.h>
 #include <tribodyn/mca/pair_fields.h>
+#include <tribodyn/mca/pair_list.h>
 #include <tribodyn/mca/parameters.h>
 #include <tribodyn/mca/system_figures.h>
 #include <tribodyn/mca/system_scalars.h>
@@ -47,7 +48,9 @@ namespace tribodyn
      * skin/2) the state lives in flat arrays indexed by a local automaton
      * index: owned automata first (along the space-filling curve of their
      * cells), then ghosts (the base AutomatonArrays, automaton_arrays.h),
-     * and in flat arrays indexed by pair (the base PairArrays,
+     * and in flat arrays indexed by pair: the pair list (the base
+     * PairList, pair_list.h: which automata, the image shift, the pairs of
+     * each automaton) and the pairs' state (the base PairArrays,
      * pair_arrays.h, with the table of the persistent pair fields); the
      * scene's constants and counters are the base SystemScalars
      * (system_scalars.h). At a
@@ -65,6 +68,7 @@ namespace tribodyn
      * include/tribodyn/mca/pair_law.h), boundary conditions, half kick.
      */
     class AutomatonSystem : private AutomatonArrays,
+                            private PairList,
                             private PairArrays,
                             private SystemScalars
     {
@@ -425,13 +429,13 @@ namespace tribodyn
       /// owned cells' from their automata, the neighbours' received.
       std::vector<unsigned char>
       cell_level_summaries() const;
-      /// Pair list of the owned automata (neighbour_list.cc).
+      /// The pair list of the automata now (PairList::build(), with this
+      /// scene's ranges).
       void
-      build_pair_list();
-      /// Keep the pairs p with @p keep[p] in the pair list (pi, pj, pshift;
-      /// the pair fields are the caller's).
-      void
-      compact_pair_list(const std::vector<unsigned char> &keep);
+      build_pair_list()
+      {
+        PairList::build(cells, *this, range, graded ? &graded_range : nullptr);
+      }
       /// Restore the pair states kept over a rebuild.
       void
       restore_pair_states(const bool initial);
@@ -620,10 +624,6 @@ namespace tribodyn
       /// automata and the pair states of their pairs, with this rank's sums.
       void
       absorb_current_arrays();
-      /// The pairs of each owned automaton (i_pairs_first, j_pairs ...)
-      /// for the pair list now (neighbourhood_weights.cc).
-      void
-      index_pairs_of_automata();
       struct Absorbed
       {
         std::vector<double> automata, pairs;

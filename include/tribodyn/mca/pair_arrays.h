@@ -1,8 +1,9 @@
-// The pairs of a rank as flat arrays (design §6; doc/theory/mca.md §1, §3):
-// a base of AutomatonSystem that holds the pair list (i has the smaller
-// global key), the state of each pair, the table of its persistent fields
-// (pair_fields.h: what a pair carries over rebuilds, migration and
-// checkpoints) and the records that carry them over a rebuild.
+// The state of the pairs of a rank as flat arrays (design §6;
+// doc/theory/mca.md §1, §3): a base of AutomatonSystem that holds the state
+// of each pair of the pair list (pair_list.h, indexed by the same pair
+// number), the table of its persistent fields (pair_fields.h: what a pair
+// carries over rebuilds, migration and checkpoints) and the records that
+// carry them over a rebuild.
 #ifndef tribodyn_mca_pair_arrays_h
 #define tribodyn_mca_pair_arrays_h
 
@@ -31,12 +32,10 @@ namespace tribodyn
     };
 
     /**
-     * Per-pair arrays of AutomatonSystem, indexed by pair.
+     * Per-pair state of AutomatonSystem, indexed by pair (PairList).
      */
     struct PairArrays
     {
-      std::vector<std::uint32_t> pi, pj;
-      std::vector<unsigned char> pshift; ///< image shift code of x_j
       std::vector<unsigned char> bonded, in_contact;
       /// Moment arm q_i of side i (q_j = r - q_i): stored only where the
       /// two halves of a pair can differ in stiffness (materials of other
@@ -88,13 +87,6 @@ namespace tribodyn
       /// dodecahedron; doc/theory/mca.md §9).
       VectorArray         face_offset;
       std::vector<double> beta_i, beta_j;
-      /// Pairs of each owned automaton k. As i: the pairs are ordered by
-      /// the key of i, so k's form one block, i_pairs_first[k] ...
-      /// + i_pairs_count[k]; as j: j_pairs[j_pairs_first[k] ...
-      /// j_pairs_first[k + 1]] (CSR). 32 instead of 52 bytes a list of both.
-      std::vector<unsigned int>  i_pairs_first, j_pairs_first, j_pairs;
-      std::vector<std::uint16_t> i_pairs_count;
-
       /// Rate-dependent friction laws: mu of each pair in this step.
       std::vector<double> pair_mu;
 
@@ -143,18 +135,6 @@ namespace tribodyn
         return {{a * tau.component[0][p],
                  a * tau.component[1][p],
                  a * tau.component[2][p]}};
-      }
-      /// Call @p f(p, side) for each pair p of owned automaton @p k (side 0:
-      /// k is the pair's i, 1: its j), as i first, in pair order.
-      template <typename F>
-      void
-      for_each_pair_of(const unsigned int k, const F &f) const
-      {
-        const unsigned int first = i_pairs_first[k];
-        for (unsigned int p = first; p < first + i_pairs_count[k]; ++p)
-          f(p, 0u);
-        for (unsigned int a = j_pairs_first[k]; a < j_pairs_first[k + 1]; ++a)
-          f(j_pairs[a], 1u);
       }
     };
   } // namespace mca

@@ -1,21 +1,30 @@
-// The pair list: all pairs of automata closer than the interaction range
-// (automaton size times 1 + skin; graded scenes: by the sizes of the two
-// automata, pair_range2()) with at least one owned member, found through
+// The pair list (pair_list.h): all pairs of automata closer than the
+// interaction range (automaton size times 1 + skin; graded scenes: by the
+// sizes of the two automata) with at least one owned member, found through
 // the cells of the decomposition, with the periodic image shift of each
-// pair cached.
+// pair cached; and the pairs of each owned automaton.
 
 #include <algorithm>
 #include <cmath>
+#include <deal.II/base/exceptions.h>
 #include <numeric>
-#include <tribodyn/mca/automaton_system.h>
+#include <tribodyn/mca/decomposition.h>
+#include <tribodyn/mca/pair_list.h>
 
 namespace tribodyn
 {
   namespace mca
   {
     void
-    AutomatonSystem::build_pair_list()
+    PairList::build(const Decomposition               &cells,
+                    const AutomatonArrays             &automata,
+                    const double                       range,
+                    const AutomatonArrays::RangeTable *graded_range)
     {
+      const unsigned int n_local = automata.n_local, n_owned = automata.n_owned;
+      const auto        &cell_of = automata.cell_of;
+      const auto        &order   = automata.order;
+      const auto        &x       = automata.x;
       // Automata of each local cell (owned and ghost), CSR.
       const unsigned int        n_cells = cells.n_local_cells();
       std::vector<unsigned int> first(n_cells + 1, 0), members(n_local);
@@ -57,7 +66,16 @@ namespace tribodyn
                       dn[e] = (x[b][e] - x[a][e]) + s[e];
                       r2 += dn[e] * dn[e];
                     }
-                  if (r2 >= (graded ? pair_range2(a, b) : range2))
+                  if (graded_range)
+                    {
+                      const double r = AutomatonArrays::pair_list_range(
+                        *graded_range,
+                        automata.size_level[a],
+                        automata.size_level[b]);
+                      if (r2 >= r * r)
+                        continue;
+                    }
+                  else if (r2 >= range2)
                     continue;
                   // i is the automaton of smaller key: the same pair and
                   // orientation on every rank and partition
@@ -94,7 +112,7 @@ namespace tribodyn
 
 
     void
-    AutomatonSystem::compact_pair_list(const std::vector<unsigned char> &keep)
+    PairList::compact(const std::vector<unsigned char> &keep)
     {
       unsigned int q = 0;
       for (unsigned int p = 0; p < pi.size(); ++p)
@@ -108,6 +126,52 @@ namespace tribodyn
       pi.resize(q);
       pj.resize(q);
       pshift.resize(q);
+    }
+
+
+    void
+    PairList::index_by_automaton(const unsigned int n_owned)
+    {
+      const unsigned int n_pairs = pi.size();
+      i_pairs_first.assign(n_owned, 0);
+      i_pairs_count.assign(n_owned, 0);
+      j_pairs_first.assign(n_owned + 1, 0);
+      for (unsigned int p = 0; p < n_pairs; ++p)
+        {
+          if (pi[p] < n_owned)
+            {
+              if (i_pairs_count[pi[p]]++ == 0)
+                i_pairs_first[pi[p]] = p;
+              Assert(i_pairs_first[pi[p]] + i_pairs_count[pi[p]] == p + 1,
+                     dealii::ExcInternalError());
+            }
+          if (pj[p] < n_owned)
+            ++j_pairs_first[pj[p] + 1];
+        }
+      for (unsigned int k = 0; k < n_owned; ++k)
+        j_pairs_first[k + 1] += j_pairs_first[k];
+      j_pairs.resize(j_pairs_first[n_owned]);
+      std::vector<unsigned int> fill(j_pairs_first.begin(),
+                                     j_pairs_first.end() - 1);
+      for (unsigned int p = 0; p < n_pairs; ++p)
+        if (pj[p] < n_owned)
+          j_pairs[fill[pj[p]]++] = p;
+    }
+
+
+    void
+    PairList::memory_by_part(
+      std::vector<std::pair<std::string, std::size_t>> &parts) const
+    {
+      const auto add = [&](const char *name, const auto &...vecs) {
+        parts.emplace_back(name, ((vecs.capacity() * sizeof(vecs[0])) + ...));
+      };
+      add("pair list (i, j, image shift)", pi, pj, pshift);
+      add("pair list by automaton",
+          i_pairs_first,
+          i_pairs_count,
+          j_pairs_first,
+          j_pairs);
     }
   } // namespace mca
 } // namespace tribodyn

@@ -1,0 +1,90 @@
+// The pair list of a rank (design §6; doc/theory/mca.md §1): which pairs of
+// automata interact, found through the cells of the decomposition, with
+// the periodic image shift of each pair cached, and the pairs of each owned
+// automaton. A part of AutomatonSystem (a base, as the automata's arrays
+// and the pairs' state): it knows the automata's positions, cells and
+// order keys (AutomatonArrays) and nothing of what a pair carries; the
+// pairs' state (PairArrays, pair_arrays.h) is indexed by the same pair
+// number p, so whoever compacts or rebuilds this list relabels the state.
+#ifndef tribodyn_mca_pair_list_h
+#define tribodyn_mca_pair_list_h
+
+#include <cstdint>
+#include <string>
+#include <tribodyn/mca/automaton_arrays.h>
+#include <utility>
+#include <vector>
+
+namespace tribodyn
+{
+  namespace mca
+  {
+    class Decomposition;
+
+    /**
+     * The pairs of automata closer than their pair-list range (automaton
+     * size times 1 + skin; graded scenes: by the sizes of the two automata)
+     * with at least one owned member. Pair p joins local automata pi[p]
+     * and pj[p]; i is the automaton of the smaller global order key, the
+     * same on every rank and partition, and the pairs are ordered by the
+     * keys of i then j: every automaton sums its pairs' forces in the same
+     * order on any number of ranks.
+     */
+    struct PairList
+    {
+      std::vector<std::uint32_t> pi, pj;
+      std::vector<unsigned char> pshift; ///< image shift code of x_j
+      /// Pairs of each owned automaton k. As i: the pairs are ordered by
+      /// the key of i, so k's form one block, i_pairs_first[k] ...
+      /// + i_pairs_count[k]; as j: j_pairs[j_pairs_first[k] ...
+      /// j_pairs_first[k + 1]] (CSR). 32 instead of 52 bytes a list of both.
+      std::vector<unsigned int>  i_pairs_first, j_pairs_first, j_pairs;
+      std::vector<std::uint16_t> i_pairs_count;
+
+      unsigned int
+      n_pairs() const
+      {
+        return pi.size();
+      }
+
+      /// The pair list of @p automata (owned and ghosts, with their order
+      /// keys) in the cells of @p cells: pairs closer than @p range, or,
+      /// with @p graded_range, than the range of their two size levels
+      /// (AutomatonArrays::pair_list_range()).
+      void
+      build(const Decomposition               &cells,
+            const AutomatonArrays             &automata,
+            const double                       range,
+            const AutomatonArrays::RangeTable *graded_range);
+      /// Keep the pairs p with @p keep[p], in order (the caller relabels
+      /// the pairs' state the same way).
+      void
+      compact(const std::vector<unsigned char> &keep);
+      /// The pairs of each of the @p n_owned owned automata, for the list
+      /// now (i_pairs_first ... j_pairs).
+      void
+      index_by_automaton(const unsigned int n_owned);
+
+      /// Call @p f(p, side) for each pair p of owned automaton @p k (side 0:
+      /// k is the pair's i, 1: its j), as i first, in pair order.
+      template <typename F>
+      void
+      for_each_pair_of(const unsigned int k, const F &f) const
+      {
+        const unsigned int first = i_pairs_first[k];
+        for (unsigned int p = first; p < first + i_pairs_count[k]; ++p)
+          f(p, 0u);
+        for (unsigned int a = j_pairs_first[k]; a < j_pairs_first[k + 1]; ++a)
+          f(j_pairs[a], 1u);
+      }
+
+      /// Bytes of the list and of the pairs by automaton, as two parts
+      /// (name, bytes) appended to @p parts.
+      void
+      memory_by_part(
+        std::vector<std::pair<std::string, std::size_t>> &parts) const;
+    };
+  } // namespace mca
+} // namespace tribodyn
+
+#endif
