@@ -32,11 +32,10 @@ namespace tribodyn
         , comm(communicator)
         , n_ranks(dealii::Utilities::MPI::n_mpi_processes(communicator))
         , rank(dealii::Utilities::MPI::this_mpi_process(communicator))
-        , cells(parameters.geometry,
-                parameters.geometry.largest_pair_distance()
-                  * (1 + parameters.interaction.skin),
-                parameters.partition.mesh_cells_per_rank,
-                communicator)
+        , partition(parameters,
+                    communicator,
+                    static_cast<AutomatonArrays &>(*this),
+                    static_cast<const SystemScalars &>(*this))
         , friction_laws(parameters.interaction.friction)
         , moment_laws(parameters.interaction.moment)
         , breaking_laws(parameters.interaction.bond_breaking)
@@ -253,6 +252,7 @@ namespace tribodyn
               "Parameter 'Geometry/Rough interface/Gap' moves the upper body "
               "through the top of the box (Geometry/Domain upper): raise "
               "the box's upper z by the gap, or lower the bodies.");
+      const Decomposition         &cells = partition.cells();
       std::vector<PackedAutomaton> packed;
       for (unsigned int c = 0; c < cells.n_owned_cells(); ++c)
         {
@@ -318,14 +318,6 @@ namespace tribodyn
     }
 
 
-    double
-    AutomatonSystem::work_imbalance() const
-    {
-      const double largest = dealii::Utilities::MPI::max(double(n_owned), comm);
-      return largest * n_ranks / std::max(1., double(n_global));
-    }
-
-
     void
     AutomatonSystem::setup()
     {
@@ -334,20 +326,21 @@ namespace tribodyn
       // its automata and their pairs, and an empty cell costs about an
       // eighth of one automaton (its bins, its share of the ghost layer).
       const auto &g = prm.geometry;
-      cells.setup([&](const std::array<unsigned int, 3> &ijk,
-                      const Point3                      &lower,
-                      const Point3                      &upper) {
+      partition.setup([&](const std::array<unsigned int, 3> &ijk,
+                          const Point3                      &lower,
+                          const Point3                      &upper) {
         unsigned int                n = 0;
         std::array<unsigned int, 3> home;
         pack_box(g, lower, upper, [&](const PackedAutomaton &a) {
-          n += cells.structured_cell(a.position, home) && home == ijk;
+          n += partition.cells().structured_cell(a.position, home)
+               && home == ijk;
         });
         return cost_model::cost_per_automaton * n + 1;
       });
       pack_owned_cells();
       n_global = dealii::Utilities::MPI::sum<unsigned long long>(n_owned, comm);
 
-      partition_imbalance = work_imbalance();
+      partition.state().partition_imbalance = work_imbalance();
       if (n_global == 0)
         throw InputError(
           "The packing is empty: no FCC site of spacing Geometry/Automaton "
@@ -408,12 +401,6 @@ namespace tribodyn
 
       loads.count_members();
 
-      // The particle handler carries the automata that change rank at a
-      // rebuild (their state in the particle properties); it is empty
-      // between rebuilds.
-      particles = std::make_unique<dealii::Particles::ParticleHandler<3>>(
-        cells.triangulation(), mapping, automaton_fields.record_width());
-      neighbours.reinit(comm, cells.neighbour_ranks());
       rebuild(true);
 
       // The limit of the step where some automaton is stiffer than the
@@ -612,7 +599,7 @@ namespace tribodyn
       add("pair side factors (beta)", beta_i, beta_j);
       add("kept pair states", kept_states, kept_keys);
       parts.emplace_back("background mesh and cell tables",
-                         cells.memory_consumption());
+                         partition.cells().memory_consumption());
       return parts;
     }
 
@@ -661,7 +648,7 @@ namespace tribodyn
       std::vector<ContactLine> lines;
       for (unsigned int p = 0; p < pi.size(); ++p)
         if (!bonded[p] && in_contact[p] && owned(pi[p]))
-          lines.push_back({cells.wrap(x[pi[p]]),
+          lines.push_back({partition.cells().wrap(x[pi[p]]),
                            pair_vector(p),
                            0.5 * (sig_i[p] + sig_j[p])});
       return lines;

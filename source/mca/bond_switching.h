@@ -67,8 +67,8 @@ namespace tribodyn
           for (unsigned int c = 0; c < 6; ++c)
             ex[7 * k + c] = s[c];
         }
-      if (neighbours.active())
-        neighbours.update(ex.data(), 7);
+      if (partition.neighbours().active())
+        partition.neighbours().update(ex.data(), 7);
       // A breaking criterion that screens its pairs by the norms of their
       // automata's tensors (may_break(): never false where it breaks)
       // skips the full criterion for most pairs of a bulk far below it.

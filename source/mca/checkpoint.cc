@@ -5,9 +5,9 @@
 // and its partition are rebuilt identically by setup() on the same number
 // of ranks, so saving the arrays and restoring them after setup() continues
 // the run bit for bit. A partition weighted anew during the run
-// (rebalance.cc) is rebuilt by replaying the weights this rank gave. On
-// another number of ranks the saved arrays are read one writer at a time
-// and turned into records sent to the new owners (redistribution.cc).
+// (automaton_partition.cc) is rebuilt by replaying the weights this rank gave.
+// On another number of ranks the saved arrays are read one writer at a time and
+// turned into records sent to the new owners (redistribution.cc).
 //
 // What is saved: the run's counters (MCA_CHECKPOINT_STATE below), every
 // per-automaton array but the scratch ones (AutomatonSystem::
@@ -105,21 +105,23 @@ namespace tribodyn
   /* counters and accumulators */                                             \
   apply(n_owned) apply(n_local) apply(current_time) apply(n_steps_done)       \
   apply(rebuild_count) apply(work)                                            \
-  /* whether the pairs store their sides' many-body offsets (every rank or  \
+  /* whether the pairs store their sides' many-body offsets (every rank or    \
      none: decided together at each rebuild) */                               \
   apply(mb_stored)                                                            \
   apply(dropped_bonds) apply(any_changed)                                     \
   /* the partition: weights of each rebalance (replayed on resume) */         \
-  apply(rebalance_count) apply(partition_imbalance) apply(rebalance_history)  \
+  apply(partition.state().rebalance_count)                                    \
+  apply(partition.state().partition_imbalance)                                \
+  apply(partition.state().rebalance_history)                                  \
   /* staged loading and energy bookkeeping */                                 \
-  apply(loads.state().first_contact_time)                                   \
+  apply(loads.state().first_contact_time)                                     \
   apply(loads.state().f_damp_rebuild) apply(loads.state().group_reaction)
 // (then the automata, from automaton_fields; the pairs: the list, the
 // persistent fields from pair_fields, the lists of the automata)
 #define MCA_CHECKPOINT_PAIRS(apply)                                           \
   apply(pi) apply(pj) apply(pshift)
 #define MCA_CHECKPOINT_PAIR_LISTS(apply)                                      \
-  apply(beta_i) apply(beta_j) apply(i_pairs_first) apply(i_pairs_count)      \
+  apply(beta_i) apply(beta_j) apply(i_pairs_first) apply(i_pairs_count)       \
   apply(j_pairs_first) apply(j_pairs)
     // clang-format on
 
@@ -137,8 +139,8 @@ namespace tribodyn
       MCA_CHECKPOINT_PAIR_LISTS(MCA_PUT)
 #undef MCA_PUT
       // the ghost lists of the point-to-point updates
-      put(ar, neighbours.ghost_offsets());
-      const auto       &send    = neighbours.ghost_send_indices();
+      put(ar, partition.neighbours().ghost_offsets());
+      const auto       &send    = partition.neighbours().ghost_send_indices();
       const std::size_t n_lists = send.size();
       ar << n_lists;
       for (const auto &list : send)
@@ -202,9 +204,9 @@ namespace tribodyn
       read_saved_arrays(ar, true, offsets, send);
       // the checkpointed partition (the saved arrays are numbered by its
       // cells)
-      if (!rebalance_history.empty())
-        replay_rebalances();
-      neighbours.set_ghost_lists(std::move(send), std::move(offsets));
+      if (!partition.state().rebalance_history.empty())
+        partition.replay_rebalances();
+      partition.restore_ghost_lists(std::move(send), std::move(offsets));
     }
 
 

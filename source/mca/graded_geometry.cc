@@ -55,7 +55,8 @@ namespace tribodyn
     void
     AutomatonSystem::setup_graded_geometry()
     {
-      const auto &g = prm.geometry;
+      const auto          &g     = prm.geometry;
+      const Decomposition &cells = partition.cells();
       // The Voronoi cell of each owned automaton near a change of size,
       // from the sites of the packing around it (pack_box: the geometry
       // alone, the same bits on any partition). It is clipped from its
@@ -268,7 +269,7 @@ namespace tribodyn
       // The faces of the ghosts from their owners: one record per ghost,
       // in the order of the ghost blocks (its number of faces, then id,
       // area and offset of each).
-      const auto                      &send = neighbours.ghost_send_indices();
+      const auto &send = partition.neighbours().ghost_send_indices();
       std::vector<std::vector<double>> out(send.size());
       for (unsigned int n = 0; n < send.size(); ++n)
         for (const unsigned int k : send[n])
@@ -282,10 +283,10 @@ namespace tribodyn
                   out[n].push_back(f.offset[e]);
               }
           }
-      if (neighbours.active())
+      if (partition.neighbours().active())
         {
-          const auto  in      = neighbours.exchange(out, 84);
-          const auto &offsets = neighbours.ghost_offsets();
+          const auto  in      = partition.neighbours().exchange(out, 84);
+          const auto &offsets = partition.neighbours().ghost_offsets();
           for (unsigned int n = 0; n < in.size(); ++n)
             {
               std::size_t o = 0;

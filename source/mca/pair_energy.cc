@@ -146,8 +146,8 @@ namespace tribodyn
           mb_mu[k] += dsm[k];
         }
       // the ghosts' from their owners' increments
-      if (neighbours.active())
-        neighbours.update(dsm.data(), 1);
+      if (partition.neighbours().active())
+        partition.neighbours().update(dsm.data(), 1);
       for (unsigned int k = n_owned; k < n_local; ++k)
         mb_mu[k] += dsm[k];
       return work_mb;

@@ -29,7 +29,7 @@ namespace tribodyn
     void
     AutomatonSystem::evaluate_pairs(const double step_dt)
     {
-      update_ghost_kinematics();
+      partition.update_ghost_kinematics();
       // Neighbourhoods that changed at the last step (contacts, bonds).
       if (any_changed)
         update_neighbourhood_weights(false);
@@ -628,8 +628,8 @@ namespace tribodyn
           plast[2 * k]     = sm;
           plast[2 * k + 1] = M;
         }
-      if (neighbours.active())
-        neighbours.update(plast.data(), 2);
+      if (partition.neighbours().active())
+        partition.neighbours().update(plast.data(), 2);
     }
 
 

@@ -1,5 +1,5 @@
 // Subsection "Partition" of the automata engine: when the partition is
-// weighted anew during a run (source/mca/rebalance.cc).
+// weighted anew during a run (source/mca/automaton_partition.cc).
 
 #include "parameter_tools.h"
 

@@ -1,5 +1,6 @@
-// Pair-list rebuilds: migration of automata between ranks, ghosts from the
-// neighbour ranks, and the pair states carried over.
+// Pair-list rebuilds: the automata migrate, are repartitioned and receive
+// their ghosts (the partition, automaton_partition.h), and the pair states
+// follow them and are carried over to the new pair list.
 
 #include "record_bits.h"
 
@@ -20,6 +21,27 @@ namespace tribodyn
     using records::double_to_bits;
     using records::pair_key;
 
+    namespace
+    {
+      /// Append the pair-state records of @p buf (a key, then the state in
+      /// id order: @p width doubles each) to the kept states and keys.
+      void
+      keep_pair_records(
+        const std::vector<double>                            &buf,
+        const unsigned int                                    width,
+        std::vector<std::pair<std::uint64_t, std::uint32_t>> &kept_keys,
+        std::vector<double>                                  &kept_states)
+      {
+        for (std::size_t o = 0; o + width <= buf.size(); o += width)
+          {
+            kept_keys.emplace_back(double_to_bits(buf[o]), kept_keys.size());
+            kept_states.insert(kept_states.end(),
+                               buf.begin() + o + 1,
+                               buf.begin() + o + width);
+          }
+      }
+    } // namespace
+
 
     void
     AutomatonSystem::rebuild(const bool initial)
@@ -35,14 +57,15 @@ namespace tribodyn
         {
           fold_many_body_stress();
           // the partition weighted anew when the work drifted apart
-          // (rebalance.cc): the migration then carries every pair state
-          const bool rebalance = rebalance_due();
+          // (automaton_partition.cc): the migration then carries every pair
+          // state
+          const bool rebalance = partition.rebalance_due();
           migrate(rebalance);
           if (rebalance)
             repartition_automata();
         }
-      order_owned_automata();
-      exchange_ghosts();
+      partition.order_owned_automata();
+      partition.exchange_ghosts();
       x_at_rebuild.resize(n_owned);
       for (unsigned int k = 0; k < n_owned; ++k)
         for (unsigned int c = 0; c < 3; ++c)
@@ -57,34 +80,6 @@ namespace tribodyn
       // (the weights anew: the change of the many-body energy is booked)
       work[switching_work] += mb_energy_before - many_body_energy();
       ++rebuild_count;
-    }
-
-
-    void
-    AutomatonSystem::unpack_automaton(const unsigned int  k,
-                                      const std::uint32_t the_id,
-                                      const Point3       &location,
-                                      const double       *props)
-    {
-      id[k]      = the_id;
-      x[k]       = location;
-      cell_of[k] = cells.local_cell(x[k]);
-      automaton_fields.unpack(k, props);
-    }
-
-
-    void
-    AutomatonSystem::check_automata_arrived(const unsigned int n_misplaced,
-                                            const std::string &move) const
-    {
-      const unsigned long long n_now
-        = dealii::Utilities::MPI::sum<unsigned long long>(n_owned, comm);
-      throw_collectively(comm,
-                         n_misplaced > 0 || n_now != n_global,
-                         "Internal error: " + move
-                           + " lost or misplaced automata ("
-                           + std::to_string(n_now) + " of "
-                           + std::to_string(n_global) + ").");
     }
 
 
@@ -127,48 +122,21 @@ namespace tribodyn
           old_pairs.clear();
         }
 
-      // Wrap into the box; find who owns the new cell.
-      std::vector<unsigned int>  destination(n_owned, rank);
-      std::vector<unsigned int>  new_cell(n_owned, Decomposition::invalid);
-      std::vector<unsigned char> crossed(n_owned, 0);
-      unsigned int               n_lost = 0;
-      std::ostringstream         lost;
-      for (unsigned int k = 0; k < n_owned; ++k)
-        {
-          const Point3       p = cells.wrap(x[k]);
-          const unsigned int c = cells.local_cell(p);
-          if (c == Decomposition::invalid)
-            {
-              if (n_lost++ < 3)
-                lost << " automaton " << id[k] << " at (" << x[k] << ")";
-              continue;
-            }
-          // x itself is wrapped once the pair states are packed (they use
-          // the pair vectors, whose image shifts refer to unwrapped x)
-          crossed[k]     = !(p == x[k]);
-          new_cell[k]    = c;
-          destination[k] = cells.owner(c);
-        }
-      throw_collectively(
-        comm,
-        n_lost > 0,
-        std::to_string(n_lost)
-          + " automata left the simulation box (Geometry/Domain lower and "
-            "upper) through a non-periodic side, e.g."
-          + lost.str()
-          + ". Enlarge the box to leave room for the motion, or hold the "
-            "bodies with boundary groups.");
+      // Where the automata go (the partition: their new cells and ranks).
+      const AutomatonPartition::Migration plan = partition.plan_migration();
+      const auto                         &destination = plan.destination;
 
       // Pair states of the pairs of departing automata go to their new
       // owners (neighbour ranks).
-      const auto                      &nb_ranks = cells.neighbour_ranks();
+      const auto &nb_ranks = partition.cells().neighbour_ranks();
       std::vector<std::vector<double>> out_pairs(nb_ranks.size());
       // A record: the key (raw 64-bit word), then the state in id order.
       for (unsigned int p = 0; p < n_old; ++p)
         for (const unsigned int k : {pi[p], pj[p]})
           if (k < n_owned && destination[k] != rank)
             {
-              auto &buf = out_pairs[cells.neighbour_index(destination[k])];
+              auto &buf
+                = out_pairs[partition.cells().neighbour_index(destination[k])];
               const std::size_t start = buf.size();
               buf.resize(start + width);
               buf[start] = bits_to_double(pair_key(id[pi[p]], id[pj[p]]));
@@ -177,95 +145,17 @@ namespace tribodyn
                                pair_distance(p),
                                buf.data() + start + 1);
             }
-      auto in_pairs = neighbours.exchange(out_pairs, 81);
-      for (unsigned int k = 0; k < n_owned; ++k)
-        if (new_cell[k] != Decomposition::invalid)
-          x[k] = cells.wrap(x[k]);
-
-      // The departing automata travel as particles of deal.II's
-      // ParticleHandler: inserted in the (owned) cell they were in and
-      // sorted into the cell, and rank, that now contains them. deal.II
-      // 9.4's search for the new cell does not follow periodic faces (it
-      // loses such particles, as its ghost exchange ignores them), so the
-      // automata that crossed a periodic face go to their new owner point
-      // to point, with the same record.
-      particles->clear_particles();
-      const unsigned int n_props = automaton_fields.record_width();
-      Assert(particles->n_properties_per_particle() == n_props,
-             dealii::ExcInternalError());
-      std::vector<double>              props(n_props);
-      std::vector<std::vector<double>> out_automata(nb_ranks.size());
-      for (unsigned int k = 0; k < n_owned; ++k)
-        if (destination[k] != rank)
-          {
-            automaton_fields.pack(k, props.data());
-            if (crossed[k])
-              {
-                auto &buf = out_automata[cells.neighbour_index(destination[k])];
-                buf.push_back(id[k]);
-                buf.insert(buf.end(), x[k].begin_raw(), x[k].end_raw());
-                buf.insert(buf.end(), props.begin(), props.end());
-                continue;
-              }
-            const auto cell = cells.dealii_cell(cell_of[k]);
-            particles->insert_particle(
-              x[k],
-              mapping.transform_real_to_unit_cell(cell, x[k]),
-              id[k],
-              cell,
-              dealii::ArrayView<const double>(props.data(), props.size()));
-          }
-      particles->sort_particles_into_subdomains_and_cells();
-      const auto in_automata = neighbours.exchange(out_automata, 83);
-
-      // Keep the automata that stay, append the arrivals.
-      unsigned int kept = 0;
-      for (unsigned int k = 0; k < n_owned; ++k)
-        if (destination[k] == rank)
-          {
-            cell_of[k] = new_cell[k];
-            if (kept != k)
-              automaton_fields.move(k, kept);
-            ++kept;
-          }
-      const unsigned int record    = 4 + n_props;
-      unsigned int       n_arrived = particles->n_locally_owned_particles();
-      for (const auto &buf : in_automata)
-        n_arrived += buf.size() / record;
-      n_owned = kept + n_arrived;
-      automaton_fields.resize(n_owned);
-      unsigned int k = kept, n_bad = 0;
-      auto         arrive = [&](const std::uint32_t the_id,
-                        const Point3       &location,
-                        const double       *props) {
-        unpack_automaton(k, the_id, location, props);
-        n_bad += cell_of[k] >= cells.n_owned_cells();
-        ++k;
-      };
-      for (const auto &particle : *particles)
-        arrive(particle.get_id(),
-               particle.get_location(),
-               particle.get_properties().data());
-      for (const auto &buf : in_automata)
-        for (std::size_t o = 0; o + record <= buf.size(); o += record)
-          arrive(static_cast<std::uint32_t>(buf[o]),
-                 Point3(buf[o + 1], buf[o + 2], buf[o + 3]),
-                 buf.data() + o + 4);
-      particles->clear_particles();
-      check_automata_arrived(n_bad, "the migration of automata between ranks");
+      auto in_pairs = partition.neighbours().exchange(out_pairs, 81);
+      // The automata follow (x wrapped into the box: the pair vectors
+      // above used the unwrapped positions).
+      partition.migrate(plan);
 
       // Received pair states by key, for the restore.
       kept_states.clear();
       kept_keys.clear();
       in_pairs.push_back(std::move(own_records));
       for (const auto &buf : in_pairs)
-        for (std::size_t o = 0; o + width <= buf.size(); o += width)
-          {
-            kept_keys.emplace_back(double_to_bits(buf[o]), kept_keys.size());
-            kept_states.insert(kept_states.end(),
-                               buf.begin() + o + 1,
-                               buf.begin() + o + width);
-          }
+        keep_pair_records(buf, width, kept_keys, kept_states);
       std::sort(kept_keys.begin(), kept_keys.end());
       // This rank's old pairs by ids (their states stay in the pair arrays
       // until restore_pair_states() gathers them).
@@ -278,183 +168,48 @@ namespace tribodyn
 
 
     void
-    AutomatonSystem::order_owned_automata()
+    AutomatonSystem::repartition_automata()
     {
-      // Along the curve of the cells, then by id: a global order, the same
-      // on any partition.
-      std::vector<std::uint64_t> cell_curve(n_owned);
+      // The pair-state records of migrate(true), one copy at each owned
+      // automaton of the pair (both automata may go to different ranks).
+      const unsigned int width = 1 + pair_fields.width();
+      std::vector<std::pair<std::uint32_t, unsigned int>> by_id(n_owned);
       for (unsigned int k = 0; k < n_owned; ++k)
-        cell_curve[k] = cells.curve_index(cell_of[k]);
-      std::vector<unsigned int> perm(n_owned);
-      std::iota(perm.begin(), perm.end(), 0u);
-      std::sort(perm.begin(), perm.end(), [&](unsigned a, unsigned b) {
-        return cell_curve[a] != cell_curve[b] ? cell_curve[a] < cell_curve[b]
-                                              : id[a] < id[b];
-      });
-      automaton_fields.permute(perm);
-      {
-        const auto copy = cell_curve;
-        for (unsigned int k = 0; k < n_owned; ++k)
-          cell_curve[k] = copy[perm[k]];
-      }
-      order.resize(n_owned);
-      for (unsigned int k = 0, rank_in_cell = 0; k < n_owned; ++k)
-        {
-          rank_in_cell = (k > 0 && cell_curve[k] == cell_curve[k - 1])
-                           ? rank_in_cell + 1
-                           : 0;
-          order[k]     = cell_curve[k] << 16 | rank_in_cell;
-        }
-    }
-
-
-    std::vector<unsigned char>
-    AutomatonSystem::cell_level_summaries() const
-    {
-      // each owned cell's largest size level and whether any of its
-      // automata is near a change of size (the byte of size_level)
-      std::vector<unsigned char> summary(cells.n_local_cells(), 0);
-      for (unsigned int k = 0; k < n_owned; ++k)
-        {
-          auto &s = summary[cell_of[k]];
-          s       = std::max<unsigned char>(s & ~transitional_flag,
-                                      size_level[k] & ~transitional_flag)
-              | ((s | size_level[k]) & transitional_flag);
-        }
-      // and those of the neighbours' cells next to the owned ones
-      const unsigned int               n_nb = cells.neighbour_ranks().size();
-      std::vector<std::vector<double>> out(n_nb);
-      for (unsigned int n = 0; n < n_nb; ++n)
-        for (const unsigned int c : cells.cells_sent_to(n))
+        by_id[k] = {id[k], k};
+      std::sort(by_id.begin(), by_id.end());
+      std::vector<unsigned int> attached_to;
+      std::vector<double>       records;
+      for (const auto &[key, index] : kept_keys)
+        for (const std::uint32_t a :
+             {std::uint32_t(key >> 32), std::uint32_t(key & 0xffffffffu)})
           {
-            for (const unsigned int i : cells.cell_coordinates(c))
-              out[n].push_back(i);
-            out[n].push_back(summary[c]);
+            const auto it = std::lower_bound(by_id.begin(),
+                                             by_id.end(),
+                                             std::make_pair(a, 0u),
+                                             [](const auto &e, const auto &v) {
+                                               return e.first < v.first;
+                                             });
+            if (it == by_id.end() || it->first != a)
+              continue;
+            attached_to.push_back(it->second);
+            records.push_back(bits_to_double(key));
+            records.insert(records.end(),
+                           kept_states.begin()
+                             + std::size_t(index) * (width - 1),
+                           kept_states.begin()
+                             + std::size_t(index + 1) * (width - 1));
           }
-      const auto in = neighbours.exchange(out, 85);
-      for (unsigned int n = 0; n < n_nb; ++n)
-        for (std::size_t r = 0; r + 3 < in[n].size(); r += 4)
-          {
-            const std::array<unsigned int, 3> ijk{
-              {static_cast<unsigned int>(in[n][r]),
-               static_cast<unsigned int>(in[n][r + 1]),
-               static_cast<unsigned int>(in[n][r + 2])}};
-            const unsigned int c = cells.local_cell(ijk);
-            AssertThrow(c != Decomposition::invalid,
-                        dealii::ExcInternalError());
-            summary[c] = static_cast<unsigned char>(in[n][r + 3]);
-          }
-      return summary;
-    }
+      std::vector<double>().swap(kept_states);
+      std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(kept_keys);
 
+      const std::vector<double> received
+        = partition.repartition(attached_to, records, width);
+      std::vector<double>().swap(records);
 
-    void
-    AutomatonSystem::exchange_ghosts()
-    {
-      // The automata of the owned cells next to a neighbour rank's cells,
-      // in the owned order, go to that rank, but only those within their
-      // pair-list range of one of its cells there: the range of the
-      // automaton's size with the largest size of that cell (uniform
-      // scenes: the one range). A cell is as wide as the longest pair of
-      // the scene (1.12 · 4d with automata of 4d); without this choice the
-      // fine automata next to another rank would all be sent, a layer 4.5
-      // times thicker than their pairs reach (doc/performance.md).
-      const unsigned int n_nb        = cells.neighbour_ranks().size();
-      const unsigned int ghost_width = automaton_fields.ghost_width();
-      std::vector<std::vector<double>>       out(n_nb);
-      std::vector<std::vector<unsigned int>> send_indices(n_nb);
-      std::vector<unsigned int> first_of_cell(cells.n_owned_cells() + 1, 0);
-      for (unsigned int k = 0; k < n_owned; ++k)
-        ++first_of_cell[cell_of[k] + 1];
-      // owned automata are ordered along the curve, as the owned cells are
-      std::partial_sum(first_of_cell.begin(),
-                       first_of_cell.end(),
-                       first_of_cell.begin());
-      const std::vector<unsigned char> summary
-        = graded ? cell_level_summaries() : std::vector<unsigned char>();
-      struct Reachable // a neighbour rank's cell, as seen from the owned one
-      {
-        Point3        lower, upper;
-        unsigned char summary;
-      };
-      std::vector<Reachable> targets;
-      for (unsigned int n = 0; n < n_nb; ++n)
-        for (const unsigned int c : cells.cells_sent_to(n))
-          {
-            targets.clear();
-            cells.for_each_neighbour(
-              c, [&](const Decomposition::Neighbour &nb) {
-                if (cells.owner(nb.cell) != cells.neighbour_ranks()[n])
-                  return;
-                Reachable t;
-                cells.cell_box(cells.cell_coordinates(nb.cell),
-                               t.lower,
-                               t.upper);
-                const auto &s = cells.shift_vector(nb.shift);
-                for (unsigned int e = 0; e < 3; ++e)
-                  {
-                    t.lower[e] += s[e];
-                    t.upper[e] += s[e];
-                  }
-                t.summary = graded ? summary[nb.cell] : 0;
-                targets.push_back(t);
-              });
-            for (unsigned int k = first_of_cell[c]; k < first_of_cell[c + 1];
-                 ++k)
-              {
-                bool needed = false;
-                for (const auto &t : targets)
-                  {
-                    const double reach = graded ? pair_list_range(graded_range,
-                                                                  size_level[k],
-                                                                  t.summary)
-                                                : range;
-                    double       dist2 = 0;
-                    for (unsigned int e = 0; e < 3; ++e)
-                      {
-                        const double out_of_box = std::max(
-                          {t.lower[e] - x[k][e], x[k][e] - t.upper[e], 0.});
-                        dist2 += out_of_box * out_of_box;
-                      }
-                    if (dist2 < reach * reach * ghost_reach_margin)
-                      {
-                        needed = true;
-                        break;
-                      }
-                  }
-                if (!needed)
-                  continue;
-                send_indices[n].push_back(k);
-                auto             &buf   = out[n];
-                const std::size_t start = buf.size();
-                buf.resize(start + ghost_width);
-                automaton_fields.pack_ghost(k, buf.data() + start);
-              }
-          }
-      const auto                in = neighbours.exchange(out, 82);
-      std::vector<unsigned int> offsets(n_nb + 1, n_owned);
-      for (unsigned int n = 0; n < n_nb; ++n)
-        offsets[n + 1] = offsets[n] + in[n].size() / ghost_width;
-      n_local = offsets[n_nb];
-      automaton_fields.resize(n_local);
-      order.resize(n_local);
-      unsigned int n_bad = 0;
-      for (unsigned int n = 0; n < n_nb; ++n)
-        for (unsigned int g = 0, k = offsets[n]; k < offsets[n + 1]; ++g, ++k)
-          {
-            automaton_fields.unpack_ghost(k,
-                                          in[n].data()
-                                            + std::size_t(g) * ghost_width);
-            cell_of[k] = cells.local_cell(x[k]);
-            if (cell_of[k] == Decomposition::invalid)
-              ++n_bad;
-            v[k] = w[k] = {{0, 0, 0}};
-          }
-      throw_collectively(comm,
-                         n_bad > 0,
-                         "Internal error: a ghost automaton lies outside the "
-                         "ghost cells of the receiving rank.");
-      neighbours.set_ghost_lists(std::move(send_indices), std::move(offsets));
+      kept_keys.reserve(received.size() / width);
+      kept_states.reserve(received.size() / width * (width - 1));
+      keep_pair_records(received, width, kept_keys, kept_states);
+      std::sort(kept_keys.begin(), kept_keys.end());
     }
 
 

@@ -2,7 +2,7 @@
 #define tribodyn_mca_record_bits_h
 
 // Raw 64-bit keys carried in the double records that automata and pair
-// states travel in between ranks (rebuild.cc, rebalance.cc).
+// states travel in between ranks (rebuild.cc, automaton_partition.cc).
 
 #include <cstdint>
 #include <cstring>

@@ -45,16 +45,6 @@ namespace tribodyn
 
     namespace
     {
-      /// The first coordinate of an array of 3-vectors, as the flat field
-      /// of a ghost update (nullptr when the array is empty: a rank that
-      /// owns no automata).
-      template <class Vector>
-      double *
-      flat(std::vector<Vector> &a)
-      {
-        return a.empty() ? nullptr : &a[0][0];
-      }
-
       // An automaton record: position at the last rebuild, id, position
       // now, the migration record, then the step-to-step state beyond it
       // (with flags: present at the writer).
@@ -73,16 +63,6 @@ namespace tribodyn
       constexpr double listing_margin = 1e-4;
 
     } // namespace
-
-
-    void
-    AutomatonSystem::update_ghost_kinematics()
-    {
-      // one message per neighbour rank; a rank that owns no automata still
-      // takes part, with empty messages, or its neighbours would wait for it
-      if (neighbours.active())
-        neighbours.update({{flat(x), 3}, {flat(v), 3}, {flat(w), 3}});
-    }
 
 
     void
@@ -164,8 +144,9 @@ namespace tribodyn
       // Each record to the ranks whose cells may hold it: boxes of this
       // rank's cells merged at one level above the cells (a few per rank).
       const int top
-        = static_cast<int>(cells.triangulation().n_global_levels()) - 1;
-      const PointRouter<3> router(cells.triangulation(),
+        = static_cast<int>(partition.cells().triangulation().n_global_levels())
+          - 1;
+      const PointRouter<3> router(partition.cells().triangulation(),
                                   static_cast<unsigned int>(
                                     std::max(0, top - 1)),
                                   comm);
@@ -177,8 +158,8 @@ namespace tribodyn
       std::vector<double> in_pairs = router.route(absorbed.pairs, width);
       std::vector<double>().swap(absorbed.pairs);
       auto owned_here = [this](const double *r) {
-        return cells.local_cell(Point3(r[0], r[1], r[2]))
-               < cells.n_owned_cells();
+        return partition.cells().local_cell(Point3(r[0], r[1], r[2]))
+               < partition.cells().n_owned_cells();
       };
 
       // Whether the pairs store their sides' many-body offsets, as the
@@ -201,14 +182,15 @@ namespace tribodyn
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           const double *r = in_automata.data() + mine[k];
-          unpack_automaton(k,
-                           static_cast<std::uint32_t>(r[field::id]),
-                           Point3(r[0], r[1], r[2]),
-                           r + field::props);
+          partition.unpack_automaton(k,
+                                     static_cast<std::uint32_t>(r[field::id]),
+                                     Point3(r[0], r[1], r[2]),
+                                     r + field::props);
           record_of[k] = {id[k], mine[k]};
         }
       std::sort(record_of.begin(), record_of.end());
-      check_automata_arrived(0, "the restart on another number of ranks");
+      partition.check_automata_arrived(
+        0, "the restart on another number of ranks");
 
       // The pair states of the owned automata (as received over a
       // rebuild), and each owned side's weight beta by (key, id).
@@ -236,15 +218,16 @@ namespace tribodyn
       std::vector<double> counters = {current_time,
                                       double(n_steps_done),
                                       double(rebuild_count),
-                                      double(rebalance_count),
+                                      double(partition.state().rebalance_count),
                                       loads.contact_time()};
-      counters        = dealii::Utilities::MPI::broadcast(comm, counters, 0);
-      current_time    = counters[0];
-      n_steps_done    = static_cast<unsigned long>(counters[1]);
-      rebuild_count   = static_cast<unsigned int>(counters[2]);
-      rebalance_count = static_cast<unsigned int>(counters[3]);
+      counters      = dealii::Utilities::MPI::broadcast(comm, counters, 0);
+      current_time  = counters[0];
+      n_steps_done  = static_cast<unsigned long>(counters[1]);
+      rebuild_count = static_cast<unsigned int>(counters[2]);
+      partition.state().rebalance_count
+        = static_cast<unsigned int>(counters[3]);
       loads.set_contact_time(counters[4]);
-      rebalance_history.clear();
+      partition.state().rebalance_history.clear();
       work                       = absorbed.work;
       dropped_bonds              = absorbed.dropped;
       auto &loads_state          = loads.state();
@@ -259,14 +242,14 @@ namespace tribodyn
       agreed_displacement2 = -1;
       old_pairs.clear();
       old_flags.clear();
-      order_owned_automata();
+      partition.order_owned_automata();
       const double     saved_range  = range;
       const RangeTable saved_graded = graded_range;
       range *= 1 + listing_margin;
       for (auto &row : graded_range)
         for (double &r : row)
           r *= 1 + listing_margin;
-      exchange_ghosts();
+      partition.exchange_ghosts();
       build_pair_list();
       range        = saved_range;
       graded_range = saved_graded;
@@ -331,7 +314,7 @@ namespace tribodyn
               any_damp = any_damp || e[11] != 0;
             }
         }
-      update_ghost_kinematics();
+      partition.update_ghost_kinematics();
       restore_pair_states(false);
       index_by_automaton(n_owned);
       const unsigned int n_pairs = pi.size();
@@ -366,7 +349,7 @@ namespace tribodyn
       loads_state.f_damp_rebuild = rebuild_count;
       if (!any_damp)
         std::vector<Vec3>().swap(f_damp);
-      partition_imbalance = work_imbalance();
+      partition.state().partition_imbalance = work_imbalance();
     }
   } // namespace mca
 } // namespace tribodyn

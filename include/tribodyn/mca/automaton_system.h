@@ -7,13 +7,11 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
-#include <deal.II/distributed/tria.h>
-#include <deal.II/fe/mapping_q1.h>
-#include <deal.II/particles/particle_handler.h>
 #include <functional>
 #include <memory>
 #include <tribodyn/core/archive_fwd.h>
 #include <tribodyn/mca/automaton_arrays.h>
+#include <tribodyn/mca/automaton_partition.h>
 #include <tribodyn/mca/bond_laws.h>
 #include <tribodyn/mca/boundary_loads.h>
 #include <tribodyn/mca/decomposition.h>
@@ -36,13 +34,14 @@ namespace tribodyn
     /**
      * The automata and their pairs.
      *
-     * Decomposition: the automata of a rank are those in the cells it owns
-     * in a parallel::distributed background mesh (see Decomposition); each
-     * rank packs only the lattice sites of its own cells. Ghost copies of
-     * the automata of neighbour cells owned by other ranks are received
-     * from those ranks only, with their owners' (raw) coordinates; the
-     * periodic image shift of a pair is cached in the pair list, so the
-     * pair kernel never searches for a minimum image.
+     * Decomposition (the part AutomatonPartition): the automata of a rank
+     * are those in the cells it owns in a parallel::distributed background
+     * mesh (see Decomposition); each rank packs only the lattice sites of
+     * its own cells. Ghost copies of the automata of neighbour cells owned
+     * by other ranks are received from those ranks only, with their
+     * owners' (raw) coordinates; the periodic image shift of a pair is
+     * cached in the pair list, so the pair kernel never searches for a
+     * minimum image.
      *
      * Between two pair-list rebuilds (when an automaton moved more than
      * skin/2) the state lives in flat arrays indexed by a local automaton
@@ -225,7 +224,7 @@ namespace tribodyn
       const Decomposition &
       decomposition() const
       {
-        return cells;
+        return partition.cells();
       }
 
       // ---- access for analyses and tests (owned automata: index < n_owned)
@@ -357,12 +356,15 @@ namespace tribodyn
       /// Collective: the largest number of owned automata of a rank over
       /// the mean (1: perfectly balanced work).
       double
-      work_imbalance() const;
+      work_imbalance() const
+      {
+        return partition.work_imbalance();
+      }
       /// Times the partition was weighted anew during the run.
       unsigned int
       n_rebalances() const
       {
-        return rebalance_count;
+        return partition.state().rebalance_count;
       }
 
     private:
@@ -380,61 +382,28 @@ namespace tribodyn
       pack_owned_cells();
       void
       rebuild(const bool initial);
-      /// Wrap the owned automata into the box, send those that entered a
-      /// cell of another rank (ParticleHandler) with the states of their
-      /// pairs; returns the pair states this rank may need. With
-      /// @p all_pair_states, the states of all this rank's pairs become
-      /// records too (kept_keys, kept_states) for repartition_automata().
+      /// The automata's migration at a rebuild (the partition's
+      /// migrate()) with the states of their pairs: those of the pairs of
+      /// departing automata go to their new owners; the received ones and
+      /// this rank's old pairs become the records of restore_pair_states().
+      /// With @p all_pair_states, the states of all this rank's pairs
+      /// become records too (kept_keys, kept_states) for
+      /// repartition_automata().
       void
       migrate(const bool all_pair_states = false);
-      /// Automaton @p k from its id, its position and its migration record
-      /// (automaton_fields.pack(): the carried fields); finds its local
-      /// cell.
-      void
-      unpack_automaton(const unsigned int  k,
-                       const std::uint32_t the_id,
-                       const Point3       &location,
-                       const double       *props);
-      /// Collective: throws if automata were lost in @p move (the global
-      /// count changed) or @p n_misplaced of this rank's landed outside its
-      /// cells.
-      void
-      check_automata_arrived(const unsigned int n_misplaced,
-                             const std::string &move) const;
-      // --- the partition weighted anew (rebalance.cc)
-      /// Collective: whether the work imbalance calls for a new partition
-      /// (Partition/Rebalance threshold).
-      bool
-      rebalance_due() const;
-      /// Weight the cells by the automata they hold now, partition the mesh
-      /// anew and move the automata and the pair-state records (after
-      /// migrate(true)) to their new ranks.
+      /// The partition weighted anew (AutomatonPartition::repartition()),
+      /// the pair-state records of migrate(true) following their automata.
       void
       repartition_automata();
-      /// Repartition by the weights this rank gave at each earlier
-      /// rebalance (rebalance_history), in order: the partition of a
-      /// checkpointed run, rebuilt on resume (same ranks, same weights,
-      /// same p4est partition).
-      void
-      replay_rebalances();
-      /// Sort the owned automata along the curve of their cells.
-      void
-      order_owned_automata();
-      /// Receive the ghosts from the neighbour ranks: the automata within
-      /// pair-list range of this rank's cells.
-      void
-      exchange_ghosts();
-      /// Size-level summary of each local cell (largest level, and
-      /// transitional_flag if any automaton is near a change of size): the
-      /// owned cells' from their automata, the neighbours' received.
-      std::vector<unsigned char>
-      cell_level_summaries() const;
       /// The pair list of the automata now (PairList::build(), with this
       /// scene's ranges).
       void
       build_pair_list()
       {
-        PairList::build(cells, *this, range, graded ? &graded_range : nullptr);
+        PairList::build(partition.cells(),
+                        *this,
+                        range,
+                        graded ? &graded_range : nullptr);
       }
       /// Restore the pair states kept over a rebuild.
       void
@@ -449,9 +418,6 @@ namespace tribodyn
       allocate_side_states(const std::size_t n_pairs, const bool check_pairs);
 
       // --- dynamics (pair_kernel.cc)
-      /// Ghosts' x, v, w from their owners.
-      void
-      update_ghost_kinematics();
       void
       evaluate_pairs(const double step);
       /// The pair kernel for one combination of the pair-law policies
@@ -592,7 +558,7 @@ namespace tribodyn
       pair_vector(const unsigned int p) const
       {
         const unsigned int i = pi[p], j = pj[p];
-        const auto        &s = cells.shift_vector(pshift[p]);
+        const auto        &s = partition.cells().shift_vector(pshift[p]);
         return {{(x[j][0] - x[i][0]) + s[0],
                  (x[j][1] - x[i][1]) + s[1],
                  (x[j][2] - x[i][2]) + s[2]}};
@@ -717,10 +683,9 @@ namespace tribodyn
       MPI_Comm          comm;
       unsigned int      n_ranks, rank;
 
-      Decomposition                                          cells;
-      dealii::MappingQ1<3>                                   mapping;
-      std::unique_ptr<dealii::Particles::ParticleHandler<3>> particles;
-      NeighbourExchange                                      neighbours;
+      /// Who holds which automaton: the mesh, the neighbour ranks, the
+      /// migrations, the ghosts (automaton_partition.h).
+      AutomatonPartition partition;
 
       void
       register_pair_fields();

@@ -479,7 +479,7 @@ namespace tribodyn
 
 
     /// Subsection "Partition": the work of the ranks kept even as the
-    /// automata move (source/mca/rebalance.cc).
+    /// automata move (source/mca/automaton_partition.cc).
     struct PartitionParameters
     {
       /// Repartition at a pair-list rebuild when the work imbalance (the

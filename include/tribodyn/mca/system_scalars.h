@@ -47,12 +47,6 @@ namespace tribodyn
       double             agreed_displacement2 = -1;
       unsigned long long n_global             = 0;
       unsigned int       rebuild_count        = 0;
-      /// Rebalances so far, the imbalance right after the last partition,
-      /// and the weights this rank gave at each rebalance: (number of
-      /// cells, then key and weight per cell) per rebalance.
-      unsigned int               rebalance_count     = 0;
-      double                     partition_imbalance = 1;
-      std::vector<std::uint64_t> rebalance_history;
 
       /// Volume of local automaton @p k of @p a (AutomatonArrays::volume).
       double
