@@ -109,7 +109,7 @@ namespace tribodyn
       RunSummary s;
       {
         dealii::TimerOutput::Scope scope(timer, "summary");
-        s = solver.summarize(context.output_directory);
+        s = solver.summarize();
       }
       recorded_samples       = solver.samples();
       run_summary            = s;

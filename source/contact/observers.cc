@@ -335,33 +335,45 @@ namespace tribodyn
     }
 
 
+    ContactSolver::SpectrumSeries
+    ContactSolver::spectrum_series() const
+    {
+      SpectrumSeries series;
+      series.spacing               = prm.output.sample_interval * dt;
+      const double        t0       = prm.output.average_start;
+      const double        t1       = prm.output.average_end < 0
+                                       ? std::numeric_limits<double>::max()
+                                       : prm.output.average_end;
+      const unsigned long interval = prm.output.sample_interval;
+      for (const Sample &x : history)
+        if (x.time >= t0 && x.time <= t1
+            && std::llround(x.time / dt) % interval == 0)
+          {
+            series.mu.push_back(x.mu_global);
+            series.normal.push_back(x.contact_normal_force);
+          }
+      return series;
+    }
+
+
     RunSummary
-    ContactSolver::summarize(const std::string &output_directory)
+    ContactSolver::summarize() const
     {
       RunSummary   s;
       const double t0 = prm.output.average_start;
       const double t1 = prm.output.average_end < 0
                           ? std::numeric_limits<double>::max()
                           : prm.output.average_end;
-      // The averages take every sample of the window; the spectra only
-      // those of the regular cadence (every Sample interval steps): the
-      // sample of a run's last step (end_of_run()) is off that grid, and a
-      // spectrum assumes equal spacing.
-      std::vector<double> mu, normal;
-      double              n = 0, mu_sum = 0, mu_c = 0, fr[3] = {0, 0, 0},
-             m_status[3]           = {0, 0, 0};
-      const unsigned long interval = prm.output.sample_interval;
+      // The averages take every sample of the window, the spectra those of
+      // spectrum_series().
+      double n = 0, mu_sum = 0, mu_c = 0, fr[3] = {0, 0, 0},
+             m_status[3] = {0, 0, 0};
       for (const Sample &x : history)
         {
           s.energy_balance_error
             = std::max(s.energy_balance_error, x.energy_balance_error);
           if (x.time < t0 || x.time > t1)
             continue;
-          if (std::llround(x.time / dt) % interval == 0)
-            {
-              mu.push_back(x.mu_global);
-              normal.push_back(x.contact_normal_force);
-            }
           n += 1;
           mu_sum += x.mu_global;
           mu_c += x.mu_contact;
@@ -401,47 +413,29 @@ namespace tribodyn
                                               s.separation_fraction,
                                               prm.output.regime_threshold);
 
-      const double spacing  = prm.output.sample_interval * dt;
-      const auto   spectrum = amplitude_spectrum(mu, spacing);
-      // Ignore the lowest frequencies (trends over the window).
-      const double f_min = mu.empty() ? 0 : 2. / (mu.size() * spacing);
-      std::vector<std::pair<double, double>> above;
-      above.emplace_back(0., 0.);
-      for (const auto &f : spectrum)
-        if (f.first >= f_min)
-          above.push_back(f);
-      s.dominant_frequency_hz = dominant_frequency(above);
-      // Spectrum of the contact normal force (sum of lambda_N).
-      const auto normal_spectrum = amplitude_spectrum(normal, spacing);
-      above.assign(1, {0., 0.});
-      for (const auto &f : normal_spectrum)
-        if (f.first >= f_min)
-          above.push_back(f);
-      s.normal_force_dominant_frequency_hz = dominant_frequency(above);
-      if (!output_directory.empty()
-          && Utilities::MPI::this_mpi_process(comm) == 0)
-        {
-          std::ostringstream text;
-          text << "frequency_hz,amplitude\n" << std::setprecision(10);
-          for (const auto &f : spectrum)
-            text << f.first << "," << f.second << "\n";
-          write_file_atomically(join_path(output_directory, "spectrum.csv"),
-                                text.str());
-          std::ostringstream normal_text;
-          normal_text << "frequency_hz,amplitude\n" << std::setprecision(10);
-          for (const auto &f : normal_spectrum)
-            normal_text << f.first << "," << f.second << "\n";
-          write_file_atomically(join_path(output_directory,
-                                          "spectrum_normal_force.csv"),
-                                normal_text.str());
-        }
-      s.wall_time_s          = run_wall_time;
-      s.time_loop_s          = loop_wall_time;
-      s.dof_steps_per_second = loop_wall_time > 0
-                                 ? static_cast<double>(n_dofs())
+      // The peaks of the spectra of mu and of the contact normal force (sum
+      // of lambda_N), above the lowest frequencies (trends over the
+      // window). The spectra themselves are the "spectrum" output's
+      // (postprocessors/spectrum.cc).
+      const SpectrumSeries series = spectrum_series();
+      const double         f_min  = series.lowest_peak_frequency();
+      const auto           peak   = [&](const std::vector<double> &values) {
+        std::vector<std::pair<double, double>> above;
+        above.emplace_back(0., 0.);
+        for (const auto &f : amplitude_spectrum(values, series.spacing))
+          if (f.first >= f_min)
+            above.push_back(f);
+        return dominant_frequency(above);
+      };
+      s.dominant_frequency_hz              = peak(series.mu);
+      s.normal_force_dominant_frequency_hz = peak(series.normal);
+      s.wall_time_s                        = run_wall_time;
+      s.time_loop_s                        = loop_wall_time;
+      s.dof_steps_per_second               = loop_wall_time > 0
+                                               ? static_cast<double>(n_dofs())
                                      * (step_count - steps_at_start)
                                      / loop_wall_time
-                                 : 0.;
+                                               : 0.;
       return s;
     }
 

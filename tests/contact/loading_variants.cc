@@ -119,7 +119,7 @@ main(int argc, char **argv)
     for (const Sample &x : run.run())
       if (x.time <= 5e-6)
         o.dissipation_at_5us = x.friction_dissipation;
-    o.summary = run.solver->summarize("");
+    o.summary = run.solver->summarize();
     if (is_root())
       std::cout << "mu mean " << o.summary.mu_global_mean << ", separation "
                 << o.summary.separation_fraction << ", friction dissipation "

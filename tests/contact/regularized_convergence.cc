@@ -37,7 +37,7 @@ namespace
         set Averaging start time = 40e-6
       end)");
     run.run();
-    const RunSummary s = run.solver->summarize("");
+    const RunSummary s = run.solver->summarize();
     if (is_root())
       std::cout << "dt = " << dt << ", h = " << h
                 << ": mu_global_mean = " << s.mu_global_mean

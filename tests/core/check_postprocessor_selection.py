@@ -5,8 +5,8 @@ default) and one with a list:
 
 - the listed outputs are exactly the ones made: their files exist, the
   others' do not (automata: series.csv has the listed outputs' columns only;
-  contact: friction.csv without point_M.csv, contact_status.csv or
-  fields.pvd; homogenization: effective_properties.csv without
+  contact: friction.csv without point_M.csv, contact_status.csv,
+  fields.pvd or spectrum.csv; homogenization: effective_properties.csv without
   morphology.vtu or morphology.txt);
 - an output does not change what is computed: the listed run's figures
   equal the 'all' run's bit for bit (the uniaxial E and nu, the pin's mean
@@ -93,11 +93,14 @@ report(code_all == 0 and code == 0, f"contact: both runs finish ({code_all}, {co
 if code_all == 0 and code == 0:
     report(exists(out, "friction.csv") and not exists(out, "point_M.csv")
            and not exists(out, "contact_status.csv") and not exists(out, "fields.pvd")
-           and exists(all_out, "point_M.csv") and exists(all_out, "fields.pvd"),
-           "contact: friction.csv only (point_M.csv, contact_status.csv and "
-           "fields.pvd with 'all')")
+           and not exists(out, "spectrum.csv")
+           and exists(all_out, "point_M.csv") and exists(all_out, "fields.pvd")
+           and exists(all_out, "spectrum.csv"),
+           "contact: friction.csv only (point_M.csv, contact_status.csv, "
+           "fields.pvd and spectrum.csv with 'all')")
     a, b = summary(all_out), summary(out)
-    keys = ("mu_global_mean", "energy_balance_error", "stick_fraction")
+    keys = ("mu_global_mean", "energy_balance_error", "stick_fraction",
+            "dominant_frequency_hz")
     report(all(a[k] == b[k] for k in keys),
            f"contact: {', '.join(keys)} equal the 'all' run's "
            f"({[b[k] for k in keys]})")

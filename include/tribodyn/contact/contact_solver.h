@@ -198,9 +198,30 @@ namespace tribodyn
                            const double       time,
                            const std::string &file_name);
 
-      /// Time averages, spectrum peak and regime over the averaging window.
+      /// Time averages, spectrum peaks and regime over the averaging
+      /// window.
       RunSummary
-      summarize(const std::string &output_directory);
+      summarize() const;
+
+      /// The series the spectra are taken of (doc/theory/contact.md Sec.
+      /// 5): mu_global and the contact normal force of the samples in the
+      /// averaging window on the regular cadence (every Output/Sample
+      /// interval steps: the sample of a run's last step is off that grid,
+      /// and a spectrum assumes equal spacing), and their spacing (s).
+      struct SpectrumSeries
+      {
+        std::vector<double> mu, normal;
+        double              spacing = 0;
+        /// The lowest frequency a peak is looked for at (the lower ones are
+        /// trends over the window).
+        double
+        lowest_peak_frequency() const
+        {
+          return mu.empty() ? 0 : 2. / (mu.size() * spacing);
+        }
+      };
+      SpectrumSeries
+      spectrum_series() const;
 
       const std::vector<Sample> &
       samples() const
