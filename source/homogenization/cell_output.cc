@@ -110,14 +110,14 @@ namespace tribodyn
 
     template <int dim>
     void
-    CellProblem<dim>::write_fields(
-      const BoundaryCondition                           bc,
-      const unsigned int                                load_case,
-      const LinearAlgebra::distributed::Vector<double> &field,
-      const std::vector<Vector<float>>                 &values,
-      const std::string                                &output_directory) const
+    CellProblem<dim>::write_fields(const LoadCaseFields<dim> &fields,
+                                   const std::string &output_directory) const
     {
-      TimerOutput::Scope scope(timer, "output");
+      const BoundaryCondition bc        = fields.bc;
+      const unsigned int      load_case = fields.load_case;
+      const auto             &field     = fields.field;
+      const auto             &values    = fields.values;
+      TimerOutput::Scope      scope(timer, "output");
 
       // Total displacement u = E x + w (strain-driven) or u (SUBC).
       LinearAlgebra::distributed::Vector<double> total(locally_owned_dofs,
@@ -272,12 +272,8 @@ namespace tribodyn
     const BoundaryCondition,                                                \
     const unsigned int,                                                     \
     const LinearAlgebra::distributed::Vector<double> &) const;              \
-  template void CellProblem<dim>::write_fields(                             \
-    const BoundaryCondition,                                                \
-    const unsigned int,                                                     \
-    const LinearAlgebra::distributed::Vector<double> &,                     \
-    const std::vector<Vector<float>> &,                                     \
-    const std::string &) const;                                             \
+  template void CellProblem<dim>::write_fields(const LoadCaseFields<dim> &, \
+                                               const std::string &) const;  \
   template FieldSlice CellProblem<dim>::slice(                              \
     const SlicePlane &, const std::vector<Vector<float>> &) const;          \
   template void CellProblem<dim>::write_material_map(const std::string &) const;

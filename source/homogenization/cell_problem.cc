@@ -573,7 +573,7 @@ namespace tribodyn
     template <int dim>
     CellResult<dim>
     CellProblem<dim>::solve(const BoundaryCondition        bc,
-                            const std::string             &output_directory,
+                            const LoadCaseObserver        &observer,
                             const std::vector<SlicePlane> &slices)
     {
       const auto start = std::chrono::steady_clock::now();
@@ -626,12 +626,11 @@ namespace tribodyn
             averaged.cg_time             = solved.cg_time;
             result.load_cases[load_case] = averaged;
             const bool sliced            = load_case == 0 && !slices.empty();
-            if (output_directory.empty() && !sliced)
+            if (!observer && !sliced)
               continue;
             const auto values = cell_fields(bc, load_case, fields[load_case]);
-            if (!output_directory.empty())
-              write_fields(
-                bc, load_case, fields[load_case], values, output_directory);
+            if (observer)
+              observer({bc, load_case, fields[load_case], values});
             if (sliced)
               for (const SlicePlane &plane : slices)
                 result.slices.push_back(slice(plane, values));

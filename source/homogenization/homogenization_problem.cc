@@ -263,11 +263,11 @@ namespace tribodyn
       for (const auto &o : outputs)
         o->started(table);
 
+      const auto observer = load_case_observer(outputs);
       for (const BoundaryCondition bc :
            parameters.cell_problem.boundary_conditions)
         {
-          const CellProblemResult r = cell_problem.solve(
-            bc, parameters.output.write_fields ? out_dir : std::string());
+          const CellProblemResult r = cell_problem.solve(bc, observer);
           for (const auto &o : outputs)
             o->solved(r, summary, table);
           pcout << to_string(bc) << ": solved 3 load cases (CG iterations "
@@ -288,7 +288,10 @@ namespace tribodyn
                               summary.dump() + "\n");
       pcout << "Results written to " << out_dir
             << "/ (summary.json, effective_properties.csv"
-            << (parameters.output.write_fields ? ", fields_*.pvd" : "")
+            << (std::count(output_names.begin(), output_names.end(), "fields")
+                    > 0
+                  ? ", fields_*.pvd"
+                  : "")
             << (parameters.output.write_morphology
                   ? ", morphology.vtu, morphology.txt"
                   : "")

@@ -221,6 +221,7 @@ namespace tribodyn
       for (const auto &o : outputs)
         o->started(table);
 
+      const auto observer = load_case_observer(outputs);
       for (const BoundaryCondition bc :
            parameters.cell_problem.boundary_conditions)
         {
@@ -228,11 +229,7 @@ namespace tribodyn
           for (const auto &o : outputs)
             for (const SlicePlane &plane : o->slice_planes(bc))
               planes.push_back(plane);
-          const CellResult<3> r
-            = cell_problem.solve(bc,
-                                 parameters.output.write_fields ? out_dir
-                                                                : std::string(),
-                                 planes);
+          const CellResult<3> r = cell_problem.solve(bc, observer, planes);
           for (const auto &o : outputs)
             o->solved(r, summary, table);
           pcout << to_string(bc) << ": solved 6 load cases in " << std::fixed
@@ -271,7 +268,10 @@ namespace tribodyn
             << "/ (summary.json, effective_properties.csv"
             << (output.write_morphology ? ", morphology.hdr, morphology.raw"
                                         : "")
-            << (output.write_fields ? ", fields_*.pvd" : "")
+            << (std::count(output_names.begin(), output_names.end(), "fields")
+                    > 0
+                  ? ", fields_*.pvd"
+                  : "")
             << (output.write_slices ? ", slices.json" : "")
             << (output.write_slices && output.plot_script != "none"
                   ? ", slice_*.png, volume_slices.png"

@@ -7,7 +7,7 @@ default) and one with a list:
   others' do not (automata: series.csv has the listed outputs' columns only;
   contact: friction.csv without point_M.csv, contact_status.csv,
   fields.pvd or spectrum.csv; homogenization: effective_properties.csv without
-  morphology.vtu or morphology.txt);
+  morphology.vtu, morphology.txt or the fields' VTU);
 - an output does not change what is computed: the listed run's figures
   equal the 'all' run's bit for bit (the uniaxial E and nu, the pin's mean
   mu and energy balance, the apparent stiffnesses);
@@ -118,9 +118,11 @@ report(code_all == 0 and code == 0,
 if code_all == 0 and code == 0:
     report(exists(out, "effective_properties.csv")
            and not exists(out, "morphology.vtu") and not exists(out, "morphology.txt")
-           and exists(all_out, "morphology.vtu"),
+           and not any(f.startswith("fields_") for f in os.listdir(out))
+           and exists(all_out, "morphology.vtu")
+           and exists(all_out, "fields_periodic.pvd"),
            "homogenization: effective_properties.csv without the morphology "
-           "map (written with 'all')")
+           "map and the fields (both written with 'all')")
     def numbers(value, path=""):
         """The numbers of a summary by their key paths (run times left out)."""
         if isinstance(value, dict):

@@ -19,6 +19,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
+#include <functional>
 #include <memory>
 #include <string>
 #include <tribodyn/core/material.h>
@@ -311,7 +312,20 @@ namespace tribodyn
       }
     };
 
-    using LoadCaseResult          = CellLoadCase<2>;
+    using LoadCaseResult = CellLoadCase<2>;
+    /// A load case as solve() hands it to its observer: the solution of
+    /// load case @p load_case of boundary condition @p bc (the fluctuation
+    /// w, or the displacement under SUBC, with its ghosts) and its cell
+    /// fields (CellProblem::cell_field_names(), one value per active cell).
+    template <int dim>
+    struct LoadCaseFields
+    {
+      BoundaryCondition                                         bc;
+      unsigned int                                              load_case;
+      const dealii::LinearAlgebra::distributed::Vector<double> &field;
+      const std::vector<dealii::Vector<float>>                 &values;
+    };
+
     using CellProblemResult       = CellResult<2>;
     using VolumeLoadCaseResult    = CellLoadCase<3>;
     using VolumeCellProblemResult = CellResult<3>;
@@ -360,16 +374,29 @@ namespace tribodyn
                   const CellSolverParameters &parameters,
                   dealii::TimerOutput        &timer);
 
-      /// Solve the load cases of @p bc. When @p output_directory is not
-      /// empty, write the fields of each load case there (fields_<BC>.pvd
-      /// indexing, in 2D, fields_<BC>_<case>.vtu, one file through MPI
-      /// I/O; in 3D fields_<BC>_<k>.pvtu, k = 0 to 5, each of one piece
-      /// per rank, fields_<BC>_<k>.<rank>.vtu). The cell fields of the first
-      /// load case on each of @p slices go to CellResult::slices.
+      /// What solve() calls with each load case's solution and cell fields
+      /// (the fields are computed only when one is given).
+      using LoadCaseObserver = std::function<void(const LoadCaseFields<dim> &)>;
+
+      /// Solve the load cases of @p bc; hand each load case's solution and
+      /// cell fields to @p observer (the outputs: e.g. the "fields"
+      /// postprocessor writes them with write_fields()). The cell fields
+      /// of the first load case on each of @p slices go to
+      /// CellResult::slices.
       CellResult<dim>
       solve(const BoundaryCondition        bc,
-            const std::string             &output_directory = "",
-            const std::vector<SlicePlane> &slices           = {});
+            const LoadCaseObserver        &observer = {},
+            const std::vector<SlicePlane> &slices   = {});
+
+      /// Write the displacement u = E x + w (or u, SUBC) of load case
+      /// @p fields.load_case and its cell fields as VTU in
+      /// @p output_directory, and the .pvd index of the load cases up to
+      /// it (fields_<BC>.pvd indexing, in 2D, fields_<BC>_<case>.vtu, one
+      /// file through MPI I/O; in 3D fields_<BC>_<k>.pvtu, k = 0 to 5,
+      /// each of one piece per rank, fields_<BC>_<k>.<rank>.vtu).
+      void
+      write_fields(const LoadCaseFields<dim> &fields,
+                   const std::string         &output_directory) const;
 
       /// Write the material map (morphology.vtu; 2D).
       void
@@ -490,16 +517,6 @@ namespace tribodyn
       static typename Traits::Properties
       apparent_properties(const BoundaryCondition bc,
                           const CellResult<dim>  &result);
-      /// Write the displacement u = E x + w (or u, SUBC) of load case
-      /// @p load_case and its cell fields @p values (cell_fields()) as
-      /// VTU, and the .pvd index of the load cases up to it.
-      void
-      write_fields(
-        const BoundaryCondition                                   bc,
-        const unsigned int                                        load_case,
-        const dealii::LinearAlgebra::distributed::Vector<double> &field,
-        const std::vector<dealii::Vector<float>>                 &values,
-        const std::string &output_directory) const;
 
       /// Macroscopic strain (strain-driven) or stress (SUBC) of a load case.
       static Voigt

@@ -12,6 +12,7 @@
 #ifndef tribodyn_homogenization_postprocessor_h
 #define tribodyn_homogenization_postprocessor_h
 
+#include <memory>
 #include <mpi.h>
 #include <ostream>
 #include <string>
@@ -95,6 +96,23 @@ namespace tribodyn
         return {};
       }
 
+      /// Whether load_case_solved() is to be called: the cell problem
+      /// computes every load case's cell fields only for outputs that want
+      /// them.
+      virtual bool
+      wants_load_cases() const
+      {
+        return false;
+      }
+
+      /// A load case of a boundary condition was solved: its solution and
+      /// cell fields (CellProblem::solve()'s observer), before solved().
+      virtual void
+      load_case_solved(const LoadCaseFields<dim> &fields)
+      {
+        (void)fields;
+      }
+
       /// Boundary condition @p result.boundary_condition was solved (in
       /// the order of `Cell problem/Boundary conditions`): its keys in
       /// @p summary, its row in @p table.
@@ -115,6 +133,26 @@ namespace tribodyn
       {
       }
     };
+
+    /// The observer of CellProblem::solve() that hands each load case to
+    /// the @p outputs that want it (empty when none does: no cell fields
+    /// are computed).
+    template <int dim>
+    typename CellProblem<dim>::LoadCaseObserver
+    load_case_observer(
+      const std::vector<std::unique_ptr<Postprocessor<dim>>> &outputs)
+    {
+      std::vector<Postprocessor<dim> *> wanting;
+      for (const auto &o : outputs)
+        if (o->wants_load_cases())
+          wanting.push_back(o.get());
+      if (wanting.empty())
+        return {};
+      return [wanting](const LoadCaseFields<dim> &fields) {
+        for (Postprocessor<dim> *o : wanting)
+          o->load_case_solved(fields);
+      };
+    }
 
     template <int dim>
     using PostprocessorRegistry
