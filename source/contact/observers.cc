@@ -335,18 +335,28 @@ namespace tribodyn
     }
 
 
+    namespace
+    {
+      /// Whether a sample at @p time lies in the averaging window
+      /// (Output/Averaging start and end time; a negative end: the run's).
+      bool
+      in_averaging_window(const ContactOutputParameters &output,
+                          const double                   time)
+      {
+        return time >= output.average_start
+               && (output.average_end < 0 || time <= output.average_end);
+      }
+    } // namespace
+
+
     ContactSolver::SpectrumSeries
     ContactSolver::spectrum_series() const
     {
       SpectrumSeries series;
       series.spacing               = prm.output.sample_interval * dt;
-      const double        t0       = prm.output.average_start;
-      const double        t1       = prm.output.average_end < 0
-                                       ? std::numeric_limits<double>::max()
-                                       : prm.output.average_end;
       const unsigned long interval = prm.output.sample_interval;
       for (const Sample &x : history)
-        if (x.time >= t0 && x.time <= t1
+        if (in_averaging_window(prm.output, x.time)
             && std::llround(x.time / dt) % interval == 0)
           {
             series.mu.push_back(x.mu_global);
@@ -359,11 +369,7 @@ namespace tribodyn
     RunSummary
     ContactSolver::summarize() const
     {
-      RunSummary   s;
-      const double t0 = prm.output.average_start;
-      const double t1 = prm.output.average_end < 0
-                          ? std::numeric_limits<double>::max()
-                          : prm.output.average_end;
+      RunSummary s;
       // The averages take every sample of the window, the spectra those of
       // spectrum_series().
       double n = 0, mu_sum = 0, mu_c = 0, fr[3] = {0, 0, 0},
@@ -372,7 +378,7 @@ namespace tribodyn
         {
           s.energy_balance_error
             = std::max(s.energy_balance_error, x.energy_balance_error);
-          if (x.time < t0 || x.time > t1)
+          if (!in_averaging_window(prm.output, x.time))
             continue;
           n += 1;
           mu_sum += x.mu_global;
@@ -429,13 +435,14 @@ namespace tribodyn
       };
       s.dominant_frequency_hz              = peak(series.mu);
       s.normal_force_dominant_frequency_hz = peak(series.normal);
-      s.wall_time_s                        = run_wall_time;
-      s.time_loop_s                        = loop_wall_time;
-      s.dof_steps_per_second               = loop_wall_time > 0
-                                               ? static_cast<double>(n_dofs())
+
+      s.wall_time_s          = run_wall_time;
+      s.time_loop_s          = loop_wall_time;
+      s.dof_steps_per_second = loop_wall_time > 0
+                                 ? static_cast<double>(n_dofs())
                                      * (step_count - steps_at_start)
                                      / loop_wall_time
-                                               : 0.;
+                                 : 0.;
       return s;
     }
 

@@ -588,16 +588,14 @@ namespace tribodyn
       std::vector<std::pair<std::string, std::size_t>> parts;
       automaton_fields.memory_by_field(parts);
       pair_fields.memory_by_field(parts);
-      const auto add = [&](const char *name, const auto &...vecs) {
-        parts.emplace_back(name, ((vecs.capacity() * sizeof(vecs[0])) + ...));
-      };
       PairList::memory_by_part(parts);
-      add("pair step buffers (distance, normal, mu)",
-          pair_dr,
-          step_normals,
-          pair_mu);
-      add("pair side factors (beta)", beta_i, beta_j);
-      add("kept pair states", kept_states, kept_keys);
+      add_memory_part(parts,
+                      "pair step buffers (distance, normal, mu)",
+                      pair_dr,
+                      step_normals,
+                      pair_mu);
+      add_memory_part(parts, "pair side factors (beta)", beta_i, beta_j);
+      add_memory_part(parts, "kept pair states", kept_states, kept_keys);
       parts.emplace_back("background mesh and cell tables",
                          partition.cells().memory_consumption());
       return parts;

@@ -160,18 +160,15 @@ namespace tribodyn
 
 
     void
-    PairList::memory_by_part(
-      std::vector<std::pair<std::string, std::size_t>> &parts) const
+    PairList::memory_by_part(MemoryParts &parts) const
     {
-      const auto add = [&](const char *name, const auto &...vecs) {
-        parts.emplace_back(name, ((vecs.capacity() * sizeof(vecs[0])) + ...));
-      };
-      add("pair list (i, j, image shift)", pi, pj, pshift);
-      add("pair list by automaton",
-          i_pairs_first,
-          i_pairs_count,
-          j_pairs_first,
-          j_pairs);
+      add_memory_part(parts, "pair list (i, j, image shift)", pi, pj, pshift);
+      add_memory_part(parts,
+                      "pair list by automaton",
+                      i_pairs_first,
+                      i_pairs_count,
+                      j_pairs_first,
+                      j_pairs);
     }
   } // namespace mca
 } // namespace tribodyn

@@ -10,9 +10,8 @@
 #define tribodyn_mca_pair_list_h
 
 #include <cstdint>
-#include <string>
 #include <tribodyn/mca/automaton_arrays.h>
-#include <utility>
+#include <tribodyn/mca/memory_parts.h>
 #include <vector>
 
 namespace tribodyn
@@ -81,8 +80,7 @@ namespace tribodyn
       /// Bytes of the list and of the pairs by automaton, as two parts
       /// (name, bytes) appended to @p parts.
       void
-      memory_by_part(
-        std::vector<std::pair<std::string, std::size_t>> &parts) const;
+      memory_by_part(MemoryParts &parts) const;
     };
   } // namespace mca
 } // namespace tribodyn
