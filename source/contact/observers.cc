@@ -316,7 +316,7 @@ namespace tribodyn
       DataOutBase::VtkFlags flags;
       flags.time = time;
       data_out.set_flags(flags);
-      data_out.write_vtu_in_parallel(join_path(dir, file_name), comm);
+      write_vtu_file(data_out, join_path(dir, file_name), comm);
       scratch_result.zero_out_ghost_values();
       scratch.zero_out_ghost_values();
     }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/utilities.h>
 #include <fstream>
 #include <iomanip>
@@ -59,6 +60,32 @@ namespace tribodyn
                          + "': " + std::strerror(errno) + ".");
       }
   }
+
+
+  template <int dim, int spacedim>
+  void
+  write_vtu_file(const dealii::DataOutInterface<dim, spacedim> &data_out,
+                 const std::string                             &path,
+                 const MPI_Comm                                 comm)
+  {
+    if (dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
+      {
+        data_out.write_vtu_in_parallel(path, comm);
+        return;
+      }
+    std::ostringstream out;
+    data_out.write_vtu(out);
+    write_file_atomically(path, out.str());
+  }
+
+  template void
+  write_vtu_file(const dealii::DataOutInterface<2, 2> &,
+                 const std::string &,
+                 const MPI_Comm);
+  template void
+  write_vtu_file(const dealii::DataOutInterface<3, 3> &,
+                 const std::string &,
+                 const MPI_Comm);
 
 
   void

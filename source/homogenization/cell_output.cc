@@ -153,9 +153,9 @@ namespace tribodyn
       flags.compression_level = DataOutBase::VtkFlags::best_speed;
       data_out.set_flags(flags);
 
-      // The file of load case k: in 2D one file written collectively with
-      // MPI I/O, named by the load case; in 3D (volumes of 10^6 to 10^8
-      // voxels) one piece per rank and its .pvtu record, numbered by the
+      // The file of load case k: in 2D one file for all ranks
+      // (write_vtu_file()), named by the load case; in 3D (volumes of 10^6 to
+      // 10^8 voxels) one piece per rank and its .pvtu record, numbered by the
       // load case (deal.II's convention: fields_<BC>_<k>.<rank>.vtu).
       const std::string base = "fields_" + to_string(bc);
       const auto        file = [&](const unsigned int k) {
@@ -163,9 +163,9 @@ namespace tribodyn
                                : base + "_" + std::to_string(k) + ".pvtu";
       };
       if constexpr (dim == 2)
-        data_out.write_vtu_in_parallel(join_path(output_directory,
-                                                 file(load_case)),
-                                       mpi_communicator);
+        write_vtu_file(data_out,
+                       join_path(output_directory, file(load_case)),
+                       mpi_communicator);
       else
         data_out.write_vtu_with_pvtu_record(
           output_directory + "/", base, load_case, mpi_communicator, 1);
@@ -261,9 +261,9 @@ namespace tribodyn
       DataOutBase::VtkFlags flags;
       flags.compression_level = DataOutBase::VtkFlags::best_speed;
       data_out.set_flags(flags);
-      data_out.write_vtu_in_parallel(join_path(output_directory,
-                                               "morphology.vtu"),
-                                     mpi_communicator);
+      write_vtu_file(data_out,
+                     join_path(output_directory, "morphology.vtu"),
+                     mpi_communicator);
     }
 
 #define TRIBODYN_INSTANTIATE(dim)                                           \

@@ -6,6 +6,12 @@
 #include <utility>
 #include <vector>
 
+namespace dealii
+{
+  template <int dim, int spacedim>
+  class DataOutInterface;
+}
+
 namespace tribodyn
 {
   /**
@@ -16,6 +22,22 @@ namespace tribodyn
    */
   void
   write_file_atomically(const std::string &path, const std::string &content);
+
+  /**
+   * Write the patches of @p data_out, spread over the ranks of @p comm, to
+   * the one VTU file @p path: with MPI I/O on several ranks (deal.II's
+   * write_vtu_in_parallel()), and through write_file_atomically() on one.
+   * Not MPI I/O on one rank: Open MPI's shared file pointer (sharedfp/sm)
+   * keeps a memory-mapped file in the job's session directory, and runs
+   * started without mpirun at the same moment share that directory, so one
+   * finishing removes it under the other, whose MPI_File_open fails (seen
+   * when the tests ran two such runs side by side).
+   */
+  template <int dim, int spacedim>
+  void
+  write_vtu_file(const dealii::DataOutInterface<dim, spacedim> &data_out,
+                 const std::string                             &path,
+                 const MPI_Comm                                 comm);
 
   /// Create @p directory (and parents) if it does not exist; clear error if
   /// it cannot be created or is not writable.
