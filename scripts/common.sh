@@ -23,7 +23,8 @@ export OMPI_MCA_odls_base_sigkill_timeout="${OMPI_MCA_odls_base_sigkill_timeout:
 TRIBODYN_PACKAGES=(libdeal.ii-dev libeigen3-dev numdiff python3
                    python3-matplotlib cmake g++ make openmpi-bin
                    nlohmann-json3-dev libfftw3-dev pkg-config
-                   libtiff-dev libpng-dev)
+                   libtiff-dev libpng-dev
+                   calculix-ccx) # the peer of a 3D homogenization test
 
 tribodyn_install_packages() {
   local missing=()

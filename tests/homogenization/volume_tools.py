@@ -174,8 +174,11 @@ end
 
 def write_raw(directory, name, ids, n, h):
     """Write ids (a dict or function (i, j, k) -> id, x fastest) as
-    NAME.raw with its header NAME.hdr; returns the header's path."""
+    NAME.raw with its header NAME.hdr (voxel size h, or (hx, hy, hz));
+    returns the header's path."""
     nx, ny, nz = n
+    if isinstance(h, (tuple, list)):  # hx hy hz
+        h = " ".join(repr(x) for x in h)
     data = bytes(ids(i, j, k) for k in range(nz) for j in range(ny)
                  for i in range(nx))
     with open(os.path.join(directory, name + ".raw"), "wb") as f:
@@ -183,7 +186,7 @@ def write_raw(directory, name, ids, n, h):
     header = os.path.join(directory, name + ".hdr")
     with open(header, "w") as f:
         f.write("# written by tests/homogenization/volume_tools.py\n"
-                "size = %d %d %d\nvoxel size = %r\ntype = uint8\n"
+                "size = %d %d %d\nvoxel size = %s\ntype = uint8\n"
                 "file = %s.raw\n" % (nx, ny, nz, h, name))
     return header
 
