@@ -20,10 +20,14 @@
   bench/homogenization/run.py volume       [--sizes 16 32 64 128] [--ranks 2]
                                            [--preconditioner multigrid|AMG]
                                            [--conditions "KUBC, SUBC"]
+                                           [--contrasts 10 0.1 ...]
       bench/homogenization/volume_128.prm (random glass spheres in epoxy)
       at n^3 voxels for each n of --sizes: DoFs, wall time, CG iterations
       per condition, memory_bytes_per_dof (the ranks' peak RSS over the
       DoFs), time per DoF and iteration, and the load (uptime) when it ran.
+      --contrasts: for each value c, the matrix's Young modulus set to 1
+      GPa and the spheres' to c GPa (the prm's glass in epoxy: c = 23.3),
+      c < 1 for soft inclusions: the iteration counts against contrast.
   bench/homogenization/run.py morphologies
       the five constants of the six random morphologies (seeds 1-6) against
       the seed's Table 1.
@@ -255,20 +259,31 @@ VOLUME_PRM = os.path.join(ROOT, "bench", "homogenization", "volume_128.prm")
 
 
 def volume(args):
-    print("| voxels | DoFs | ranks | preconditioner | wall time (s) | "
+    contrasts = args.contrasts or [None]
+    print("| voxels | " + ("contrast | " if args.contrasts else "")
+          + "DoFs | ranks | preconditioner | wall time (s) | "
           + " | ".join("%s: iterations, time (s)" % bc
                        for bc in args.conditions.split(", "))
           + " | B per DoF | core-ns per DoF and iteration | load |")
-    print("|---" * (8 + len(args.conditions.split(", "))) + "|")
-    for n in args.sizes:
+    print("|---" * (8 + bool(args.contrasts) + len(args.conditions.split(", ")))
+          + "|")
+    for n, contrast in [(n, c) for n in args.sizes for c in contrasts]:
         overrides = ["subsection Morphology"]
         overrides += ["  set Voxels in %s = %d" % (axis, n) for axis in "xyz"]
         overrides += ["end", "subsection Cell problem",
                       "  set Boundary conditions = " + args.conditions,
                       "  set Preconditioner = " + args.preconditioner, "end"]
+        name = "volume_%d" % n
+        if contrast is not None:
+            overrides += ["subsection Materials", "  subsection Matrix",
+                          "    set Young modulus = 1e9", "  end",
+                          "  subsection Heterogeneity",
+                          "    set Young modulus = %r" % (contrast * 1e9),
+                          "  end", "end"]
+            name += "_contrast_%g" % contrast
         with open("/proc/loadavg") as f:
             load = f.read().split()[0]
-        s, elapsed, stdout = run(args.tribodyn, "volume_%d" % n, overrides,
+        s, elapsed, stdout = run(args.tribodyn, name, overrides,
                                  args.ranks, base_prm=VOLUME_PRM)
         cells, solve_time, iterations = [], 0.0, 0
         for bc in args.conditions.split(", "):
@@ -279,8 +294,8 @@ def volume(args):
                                        r["wall_time_s"]))
             solve_time += r["wall_time_s"]
             iterations += sum(its)
-        print("| %d³ | %d | %d | %s | %.1f | %s | %.0f | %.0f | %s |" % (
-            n, s["n_dofs"], s["n_mpi_ranks"], args.preconditioner, elapsed,
+        print("| %d³ | %s%d | %d | %s | %.1f | %s | %.0f | %.0f | %s |" % (
+            n, "" if contrast is None else "%g | " % contrast, s["n_dofs"], s["n_mpi_ranks"], args.preconditioner, elapsed,
             " | ".join(cells), s["memory_bytes_per_dof"],
             1e9 * solve_time / (s["n_dofs"] * max(iterations, 1)) * s["n_mpi_ranks"],
             load), flush=True)
@@ -299,6 +314,7 @@ if __name__ == "__main__":
     parser.add_argument("--sizes", type=int, nargs="+", default=[16, 32, 64, 128])
     parser.add_argument("--preconditioner", default="multigrid")
     parser.add_argument("--conditions", default="KUBC, SUBC")
+    parser.add_argument("--contrasts", type=float, nargs="+", default=[])
     args = parser.parse_args()
     {"scaling": scaling, "convergence": convergence, "morphologies": morphologies,
      "large": large, "volume": volume}[args.study](args)

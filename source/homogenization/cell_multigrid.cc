@@ -2,6 +2,7 @@
 // level constraints, the V-cycle and CG (declared in cell_multigrid.h).
 #include "cell_multigrid.h"
 
+#include "cell_multigrid_galerkin.h"
 #include "cell_multigrid_operator.h"
 
 #include <array>
@@ -11,12 +12,14 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/diagonal_matrix.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
 #include <deal.II/matrix_free/fe_evaluation.h>
 #include <deal.II/matrix_free/matrix_free.h>
 #include <deal.II/matrix_free/operators.h>
@@ -28,6 +31,7 @@
 #include <deal.II/multigrid/mg_tools.h>
 #include <deal.II/multigrid/mg_transfer_matrix_free.h>
 #include <deal.II/multigrid/multigrid.h>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -195,7 +199,18 @@ namespace tribodyn
                 }
               fine_operator.initialize(mf);
               fine_operator.set_stiffness(stiffness);
-              fine_operator.tabulate_element_matrices(constraints);
+              // Multilinear elements with pins (SUBC): the finer levels and
+              // the active mesh solve the floating problem, the rigid
+              // motions projected out (set_up_floating_solve()); only the
+              // coarsest level keeps the pins.
+              floating = fast_path && !description.pins.empty();
+              if (floating)
+                {
+                  set_up_floating_solve(description, constraints);
+                  fine_operator.tabulate_element_matrices(free_constraints);
+                }
+              else
+                fine_operator.tabulate_element_matrices(constraints);
             }
 
             // The constraints on the levels: the boundary, the pinned
@@ -211,7 +226,8 @@ namespace tribodyn
                 mg_constrained_dofs.make_zero_boundary_constraints(dof_handler,
                                                                    faces);
               }
-            for (unsigned int level = 0; level < n_levels; ++level)
+            for (unsigned int level = 0; level < (floating ? 1 : n_levels);
+                 ++level)
               for (const auto &[point, components] : description.pins)
                 mg_constrained_dofs.add_boundary_indices(
                   dof_handler,
@@ -223,6 +239,24 @@ namespace tribodyn
                                     description.tolerance));
 
             level_operators.resize(0, n_levels - 1);
+            // Multilinear elements: the coarse levels' element matrices are
+            // the Galerkin products of the fine ones
+            // (cell_multigrid_galerkin.h; contrast-robust), built once for the
+            // levels and the coarse matrix. Other degrees: the mean stiffness
+            // of a coarse cell.
+            std::unique_ptr<GalerkinElementMatrices<dim>> galerkin;
+            if constexpr (fast_path)
+              {
+                const auto fine
+                  = dof_handler.get_triangulation().begin(n_levels - 1);
+                std::array<double, dim> fine_size;
+                for (unsigned int d = 0; d < dim; ++d)
+                  fine_size[d]
+                    = fine->vertex((1 << dim) - 1)[d] - fine->vertex(0)[d];
+                galerkin
+                  = std::make_unique<GalerkinElementMatrices<dim>>(stiffness,
+                                                                   fine_size);
+              }
             AffineConstraints<double> coarse_constraints;
             const auto                level_constraints_of
               = [&](const unsigned int level, auto &constraints) {
@@ -260,9 +294,16 @@ namespace tribodyn
                 level_operators[level].initialize(mf,
                                                   mg_constrained_dofs,
                                                   level);
-                level_operators[level].set_stiffness(stiffness);
-                level_operators[level].tabulate_element_matrices(
-                  level_constraints);
+                // the coarser levels of the fast path: Galerkin operators
+                if (galerkin && level + 1 < n_levels)
+                  level_operators[level].tabulate_galerkin_matrices(
+                    *galerkin, n_levels - 1 - level, level_constraints);
+                else
+                  {
+                    level_operators[level].set_stiffness(stiffness);
+                    level_operators[level].tabulate_element_matrices(
+                      level_constraints);
+                  }
                 level_operators[level].compute_diagonal();
               }
 
@@ -291,14 +332,6 @@ namespace tribodyn
             // operator on level 0), factorized once.
             {
               level_constraints_of(0, coarse_constraints);
-              data.mg_level           = 0;
-              data.initialize_mapping = true; // compute_matrix integrates
-              auto mf = std::make_shared<MatrixFree<dim, double>>();
-              mf->reinit(
-                mapping, dof_handler, coarse_constraints, quadrature, data);
-              FineOperator coarse_operator;
-              coarse_operator.initialize(mf, mg_constrained_dofs, 0);
-              coarse_operator.set_stiffness(stiffness);
               const MPI_Comm comm  = dof_handler.get_communicator();
               const IndexSet owned = dof_handler.locally_owned_mg_dofs(0);
               IndexSet       relevant;
@@ -315,11 +348,26 @@ namespace tribodyn
                                                          comm,
                                                          relevant);
               coarse_matrix.reinit(owned, owned, dsp, comm);
-              MatrixFreeTools::compute_matrix(*mf,
-                                              coarse_constraints,
-                                              coarse_matrix,
-                                              &FineOperator::local_apply,
-                                              &coarse_operator);
+              if (galerkin)
+                assemble_coarse_matrix(*galerkin,
+                                       n_levels - 1,
+                                       coarse_constraints);
+              else
+                {
+                  data.mg_level           = 0;
+                  data.initialize_mapping = true; // compute_matrix integrates
+                  auto mf = std::make_shared<MatrixFree<dim, double>>();
+                  mf->reinit(
+                    mapping, dof_handler, coarse_constraints, quadrature, data);
+                  FineOperator coarse_operator;
+                  coarse_operator.initialize(mf, mg_constrained_dofs, 0);
+                  coarse_operator.set_stiffness(stiffness);
+                  MatrixFreeTools::compute_matrix(*mf,
+                                                  coarse_constraints,
+                                                  coarse_matrix,
+                                                  &FineOperator::local_apply,
+                                                  &coarse_operator);
+                }
               coarse = std::make_unique<DirectCoarseSolver<LevelNumber>>(
                 coarse_matrix);
             }
@@ -348,7 +396,20 @@ namespace tribodyn
             VectorType x;
             fine_operator.initialize_dof_vector(x);
             SolverCG<VectorType> cg(control);
-            cg.solve(fine_operator, x, rhs, *preconditioner);
+            if (floating)
+              {
+                // CG in the complement of the rigid motions: the load is
+                // self-equilibrated (orthogonal to them up to round-off)
+                // and every preconditioned residual is projected, so the
+                // iterates stay in it; then the rigid motion that puts the
+                // pinned DoFs at zero, as the constraints want them.
+                project_rigid_motions(rhs);
+                const ProjectedPreconditioner projected{this};
+                cg.solve(fine_operator, x, rhs, projected);
+                fix_pins(x);
+              }
+            else
+              cg.solve(fine_operator, x, rhs, *preconditioner);
             // both vectors hold the locally owned DoFs in the same order
             double *values = solution.trilinos_vector()[0];
             for (unsigned int k = 0; k < x.locally_owned_size(); ++k)
@@ -356,13 +417,247 @@ namespace tribodyn
           }
 
         private:
-          const DoFHandler<dim>       &dof_handler;
-          const MappingQ1<dim>         mapping;
-          FineOperator                 fine_operator;
-          VectorType                   rhs;
-          MGConstrainedDoFs            mg_constrained_dofs;
-          MGLevelObject<LevelOperator> level_operators;
-          std::unique_ptr<Transfer>    transfer;
+          static constexpr unsigned int n_rigid = dim * (dim + 1) / 2;
+
+          /// The V-cycle between two projections on the complement of the
+          /// rigid motions (symmetric: CG's preconditioner).
+          struct ProjectedPreconditioner
+          {
+            const MultigridSolver *solver;
+            void
+            vmult(VectorType &dst, const VectorType &src) const
+            {
+              VectorType &r = solver->projected_residual;
+              r             = src;
+              solver->project_rigid_motions(r);
+              solver->preconditioner->vmult(dst, r);
+              solver->project_rigid_motions(dst);
+            }
+          };
+
+          /// Component @p c at @p x of rigid motion @p k: the translation
+          /// e_k (k < dim), else the rotation about axis k - dim (3D; z in
+          /// 2D) through the box's centre, e_axis x (x - centre).
+          double
+          rigid_value(const unsigned int k,
+                      const Point<dim>  &x,
+                      const unsigned int c) const
+          {
+            if (k < dim)
+              return k == c ? 1. : 0.;
+            const unsigned int axis = dim == 2 ? 2 : k - dim;
+            const unsigned int a = (axis + 1) % 3, b = (axis + 2) % 3;
+            const double       ya = a < dim ? x[a] - centre[a] : 0;
+            const double       yb = b < dim ? x[b] - centre[b] : 0;
+            return c == a ? -yb : (c == b ? ya : 0.);
+          }
+
+          /**
+           * The floating (SUBC) solve: the constraints without the pinned
+           * DoFs; the vertex of each owned DoF (the rigid motions are
+           * evaluated from it: 8 bytes per DoF instead of a vector per
+           * motion) and the inverse Gram matrix of the motions; the owned
+           * pinned DoFs with their vertices.
+           */
+          void
+          set_up_floating_solve(
+            const LevelConstraintDescription<dim> &description,
+            const AffineConstraints<double>       &constraints)
+          {
+            constexpr unsigned int n_vertices = 1u << dim;
+            const MPI_Comm         comm       = dof_handler.get_communicator();
+            std::set<types::global_dof_index>    pinned;
+            std::vector<types::global_dof_index> dofs(dim * n_vertices);
+            for (const auto &cell : dof_handler.active_cell_iterators())
+              if (!cell->is_artificial())
+                {
+                  cell->get_dof_indices(dofs);
+                  for (unsigned int v = 0; v < n_vertices; ++v)
+                    for (const auto &[point, components] : description.pins)
+                      if (cell->vertex(v).distance(point)
+                          < description.tolerance)
+                        for (const unsigned int c : components)
+                          pinned.insert(dofs[dim * v + c]);
+                }
+            free_constraints.clear();
+            free_constraints.reinit(constraints.get_local_lines());
+            for (const auto &line : constraints.get_lines())
+              if (pinned.count(line.index) == 0)
+                {
+                  free_constraints.add_line(line.index);
+                  free_constraints.add_entries(line.index, line.entries);
+                  free_constraints.set_inhomogeneity(line.index,
+                                                     line.inhomogeneity);
+                }
+            free_constraints.close();
+
+            fine_operator.initialize_dof_vector(projected_residual);
+            const auto &partitioner = *projected_residual.get_partitioner();
+            owned_vertex.assign(partitioner.locally_owned_size() / dim,
+                                Point<dim>());
+            pinned_dofs.clear();
+            Point<dim> lower, upper;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lower[d] = std::numeric_limits<double>::max();
+                upper[d] = -lower[d];
+              }
+            for (const auto &cell : dof_handler.active_cell_iterators())
+              if (cell->is_locally_owned())
+                {
+                  cell->get_dof_indices(dofs);
+                  for (unsigned int v = 0; v < n_vertices; ++v)
+                    {
+                      for (unsigned int d = 0; d < dim; ++d)
+                        {
+                          lower[d] = std::min(lower[d], cell->vertex(v)[d]);
+                          upper[d] = std::max(upper[d], cell->vertex(v)[d]);
+                        }
+                      if (!partitioner.in_local_range(dofs[dim * v]))
+                        continue;
+                      // the components of a vertex are consecutive
+                      // vector-local indices (tabulate_cell_dofs() checks)
+                      const unsigned int local
+                        = partitioner.global_to_local(dofs[dim * v]);
+                      AssertThrow(local % dim == 0, ExcInternalError());
+                      owned_vertex[local / dim] = cell->vertex(v);
+                      for (unsigned int c = 0; c < dim; ++c)
+                        if (pinned.count(dofs[dim * v + c]))
+                          pinned_dofs.emplace_back(local + c, cell->vertex(v));
+                    }
+                }
+            for (unsigned int d = 0; d < dim; ++d)
+              centre[d] = 0.5
+                          * (Utilities::MPI::min(lower[d], comm)
+                             + Utilities::MPI::max(upper[d], comm));
+            // G = R^T R over the owned DoFs of all ranks
+            FullMatrix<double> gram(n_rigid, n_rigid);
+            for (const Point<dim> &x : owned_vertex)
+              for (unsigned int c = 0; c < dim; ++c)
+                for (unsigned int i = 0; i < n_rigid; ++i)
+                  for (unsigned int j = 0; j < n_rigid; ++j)
+                    gram(i, j) += rigid_value(i, x, c) * rigid_value(j, x, c);
+            Utilities::MPI::sum(gram, comm, gram);
+            gram_inverse = gram;
+            gram_inverse.gauss_jordan();
+          }
+
+          /// v -= R a, a = G^-1 R^T v: the orthogonal projection of v on
+          /// the complement of the rigid motions (two passes over v).
+          void
+          project_rigid_motions(VectorType &v) const
+          {
+            Vector<double> product(n_rigid), a(n_rigid);
+            for (unsigned int k = 0; k < owned_vertex.size(); ++k)
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  const double value = v.local_element(dim * k + c);
+                  for (unsigned int i = 0; i < n_rigid; ++i)
+                    product(i) += rigid_value(i, owned_vertex[k], c) * value;
+                }
+            Utilities::MPI::sum(product,
+                                dof_handler.get_communicator(),
+                                product);
+            gram_inverse.vmult(a, product);
+            a *= -1;
+            add_rigid_motion(v, a);
+          }
+
+          /// v += R a.
+          void
+          add_rigid_motion(VectorType &v, const Vector<double> &a) const
+          {
+            for (unsigned int k = 0; k < owned_vertex.size(); ++k)
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  double sum = 0;
+                  for (unsigned int i = 0; i < n_rigid; ++i)
+                    sum += rigid_value(i, owned_vertex[k], c) * a(i);
+                  v.local_element(dim * k + c) += sum;
+                }
+          }
+
+          /// x += the rigid motion that makes x zero at the pinned DoFs
+          /// (the motions' values there form an invertible square system:
+          /// the pins remove exactly the rigid motions), by the normal
+          /// equations summed over the ranks (each adds the pins it owns).
+          void
+          fix_pins(VectorType &x) const
+          {
+            FullMatrix<double> M(n_rigid, n_rigid);
+            Vector<double>     b(n_rigid), a(n_rigid);
+            for (const auto &[local, vertex] : pinned_dofs)
+              for (unsigned int i = 0; i < n_rigid; ++i)
+                {
+                  const double r_i = rigid_value(i, vertex, local % dim);
+                  b(i) -= r_i * x.local_element(local);
+                  for (unsigned int j = 0; j < n_rigid; ++j)
+                    M(i, j) += r_i * rigid_value(j, vertex, local % dim);
+                }
+            const MPI_Comm comm = dof_handler.get_communicator();
+            Utilities::MPI::sum(M, comm, M);
+            Utilities::MPI::sum(b, comm, b);
+            M.gauss_jordan();
+            M.vmult(a, b);
+            add_rigid_motion(x, a);
+          }
+
+          /// The coarsest level's matrix (level 0, @p depth levels above
+          /// the active mesh) from the Galerkin element matrices of its
+          /// locally owned cells.
+          void
+          assemble_coarse_matrix(GalerkinElementMatrices<dim>    &galerkin,
+                                 const unsigned int               depth,
+                                 const AffineConstraints<double> &constraints)
+          {
+            constexpr unsigned int n_vertices = 1u << dim;
+            constexpr unsigned int n_dofs     = dim * n_vertices;
+            const unsigned int     rank = Utilities::MPI::this_mpi_process(
+              dof_handler.get_communicator());
+            std::vector<types::global_dof_index> dofs(n_dofs);
+            FullMatrix<double>                   local(n_dofs, n_dofs);
+            for (const auto &cell : dof_handler.mg_cell_iterators_on_level(0))
+              if (cell->level_subdomain_id() == rank)
+                {
+                  const auto &K
+                    = galerkin.matrix(depth,
+                                      galerkin.id(cell->vertex(0),
+                                                  cell->vertex(n_vertices - 1),
+                                                  depth));
+                  // FEEvaluation's order 2^dim c + v to the cell's DoFs,
+                  // vertex by vertex (dim v + c)
+                  for (unsigned int i = 0; i < n_dofs; ++i)
+                    for (unsigned int j = 0; j < n_dofs; ++j)
+                      local(dim * (i % n_vertices) + i / n_vertices,
+                            dim * (j % n_vertices) + j / n_vertices)
+                        = K[n_dofs * i + j];
+                  cell->get_mg_dof_indices(dofs);
+                  constraints.distribute_local_to_global(local,
+                                                         dofs,
+                                                         coarse_matrix);
+                }
+            coarse_matrix.compress(VectorOperation::add);
+          }
+
+          const DoFHandler<dim> &dof_handler;
+          /// The floating solve (SUBC, multilinear elements): the active
+          /// constraints without the pins; the vertex of each owned DoF
+          /// (dim of them), the centre of the rotations and the inverse
+          /// Gram matrix of the rigid motions; the owned pinned DoFs and
+          /// their vertices; the preconditioner's work vector.
+          bool                                             floating = false;
+          AffineConstraints<double>                        free_constraints;
+          std::vector<Point<dim>>                          owned_vertex;
+          Point<dim>                                       centre;
+          FullMatrix<double>                               gram_inverse;
+          std::vector<std::pair<unsigned int, Point<dim>>> pinned_dofs;
+          mutable VectorType                               projected_residual;
+          const MappingQ1<dim>                             mapping;
+          FineOperator                                     fine_operator;
+          VectorType                                       rhs;
+          MGConstrainedDoFs                                mg_constrained_dofs;
+          MGLevelObject<LevelOperator>                     level_operators;
+          std::unique_ptr<Transfer>                        transfer;
           MGSmootherPrecondition<LevelOperator, Smoother, LevelVectorType>
                                                            smoother;
           TrilinosWrappers::SparseMatrix                   coarse_matrix;

@@ -52,8 +52,12 @@ namespace tribodyn
        * constraints (one boundary condition) and any number of load cases.
        * The operator is applied matrix-free (deal.II's MatrixFree with one
        * constant stiffness per cell); the levels are those of the mesh's
-       * refinement hierarchy, with the coefficient of a coarse cell the
-       * arithmetic mean of the fine cells it covers; Chebyshev smoothing
+       * refinement hierarchy: multilinear elements with Galerkin coarse
+       * operators (cell_multigrid_galerkin.h), other degrees with the
+       * coefficient of a coarse cell the arithmetic mean of the fine cells
+       * it covers; pins (SUBC) on the coarsest level only, the finer ones
+       * and CG solving the floating problem with the rigid motions
+       * projected out (multilinear elements); Chebyshev smoothing
        * (degree 3) around point Jacobi; the coarsest level solved directly
        * (Amesos KLU). Multilinear elements take a fast path: one element
        * matrix (8 x 8 in 2D, 24 x 24 in 3D) per distinct stiffness,

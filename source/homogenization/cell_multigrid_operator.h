@@ -222,16 +222,53 @@ namespace tribodyn
                       }
                     matrix_of_cell.push_back(it->second);
                   }
-              tabulate_cell_dofs(constraints, matrix_of_cell);
-              // the locally owned constrained DoFs: identity rows
-              const auto &partitioner = *mf.get_vector_partitioner();
-              constrained_owned.clear();
-              for (unsigned int k = 0; k < partitioner.locally_owned_size();
-                   ++k)
-                if (constraints.is_constrained(partitioner.local_to_global(k)))
-                  constrained_owned.push_back(k);
+              tabulate_cells(constraints, matrix_of_cell);
             }
         }
+
+        /**
+         * Degree 1, a level of the hierarchy @p depth levels above the
+         * active mesh: each cell's element matrix is the Galerkin one of
+         * @p galerkin (P^T K P of the fine elements it covers), instead of
+         * that of the mean stiffness. Not for the active mesh (no
+         * stiffness entries: no right-hand side).
+         */
+        template <class Galerkin>
+        void
+        tabulate_galerkin_matrices(Galerkin                        &galerkin,
+                                   const unsigned int               depth,
+                                   const AffineConstraints<Number> &constraints)
+        {
+          const auto                          &mf = *this->get_matrix_free();
+          std::map<unsigned int, unsigned int> index_of;
+          std::vector<unsigned int>            matrix_of_cell;
+          element_matrices.clear();
+          element_stiffness.clear();
+          for (unsigned int batch = 0; batch < mf.n_cell_batches(); ++batch)
+            for (unsigned int lane = 0;
+                 lane < mf.n_active_entries_per_cell_batch(batch);
+                 ++lane)
+              {
+                const auto         cell = mf.get_cell_iterator(batch, lane);
+                const unsigned int id
+                  = galerkin.id(cell->vertex(0),
+                                cell->vertex(n_vertices - 1),
+                                depth);
+                const auto [it, inserted]
+                  = index_of.emplace(id, element_matrices.size());
+                if (inserted)
+                  {
+                    const auto           &K = galerkin.matrix(depth, id);
+                    ElementMatrix<Number> k;
+                    for (unsigned int i = 0; i < K.size(); ++i)
+                      k[i] = Number(K[i]);
+                    element_matrices.push_back(k);
+                  }
+                matrix_of_cell.push_back(it->second);
+              }
+          tabulate_cells(constraints, matrix_of_cell);
+        }
+
 
         /**
          * The element stiffness matrix (row-major) of a multilinear element
@@ -248,6 +285,14 @@ namespace tribodyn
          */
         ElementMatrix<double>
         element_matrix(const StiffnessEntries &c) const
+        {
+          return element_matrix(c, cell_size);
+        }
+
+        /// The same for a cell of the size @p cell_size.
+        static ElementMatrix<double>
+        element_matrix(const StiffnessEntries        &c,
+                       const std::array<double, dim> &cell_size)
         {
           double C[n_voigt][n_voigt];
           for (unsigned int a = 0; a < n_voigt; ++a)
@@ -319,6 +364,20 @@ namespace tribodyn
          * homogeneous here: boundary and pins) are read as zero and not
          * written, as MatrixFree does.
          */
+        void
+        tabulate_cells(const AffineConstraints<Number> &constraints,
+                       const std::vector<unsigned int> &matrix_of_cell)
+        {
+          tabulate_cell_dofs(constraints, matrix_of_cell);
+          // the locally owned constrained DoFs: identity rows
+          const auto &partitioner
+            = *this->get_matrix_free()->get_vector_partitioner();
+          constrained_owned.clear();
+          for (unsigned int k = 0; k < partitioner.locally_owned_size(); ++k)
+            if (constraints.is_constrained(partitioner.local_to_global(k)))
+              constrained_owned.push_back(k);
+        }
+
         void
         tabulate_cell_dofs(const AffineConstraints<Number> &constraints,
                            const std::vector<unsigned int> &matrix_of_cell)

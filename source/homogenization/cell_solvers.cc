@@ -172,9 +172,11 @@ namespace tribodyn
 
     // @sect3{Geometric multigrid}
     //
-    // The levels are those of the mesh's refinement hierarchy; the
-    // coefficient of a cell on any level is the mean stiffness of the
-    // elements (each in one pixel or voxel) it covers.
+    // The levels are those of the mesh's refinement hierarchy. The
+    // stiffness over a box (the mean of the elements, each in one pixel or
+    // voxel, it covers) gives the elements' stiffness, from which the
+    // multilinear fast path builds its Galerkin coarse operators, and the
+    // coefficient of a coarse cell for the other degrees.
 
     template <int dim>
     void

@@ -16,12 +16,13 @@
 //     1 to 8 elements per pixel (1 894 to 115 362 DoFs), the multigrid CG
 //     iteration count of every boundary condition and load case stays
 //     within 3 of its count on the coarsest mesh, with a double-precision
-//     V-cycle at the tolerance 1e-12 (measured: 9-11 for KUBC, 16-17 for
+//     V-cycle at the tolerance 1e-12 (measured: 9-10 for KUBC, 11-12 for
 //     SUBC) and with the default single-precision one at the default
-//     tolerance 1e-10 (8-9, 14-15). Single precision at 1e-12 is printed,
-//     not bounded (measured: KUBC 9-11, SUBC 16 -> 18-20: the float
-//     V-cycle's round-off shows below ~1e-11). AMG's counts are printed
-//     next to them.
+//     tolerance 1e-10 (8-9, 9-10). Single precision at 1e-12 is printed,
+//     not bounded (measured: KUBC 9-10, SUBC 11-12). AMG's counts are
+//     printed next to them. (SUBC solves the floating problem, the rigid
+//     motions projected out and the pins on the coarsest level only; with
+//     the pins on every level it took 16-17, 14-15 and 16 -> 18-20.)
 
 #include "image_test_tools.h"
 
