@@ -235,27 +235,20 @@ namespace tribodyn
     // field output).
 
     template <int dim>
-    typename CellProblem<dim>::LoadCases
-    CellProblem<dim>::postprocess(const BoundaryCondition bc,
-                                  const Fields           &solutions) const
+    CellLoadCase<dim>
+    CellProblem<dim>::postprocess(
+      const BoundaryCondition                           bc,
+      const unsigned int                                load_case,
+      const LinearAlgebra::distributed::Vector<double> &field) const
     {
-      // Sums per load case: stress, strain (n_voigt each), sigma_zz.
-      constexpr unsigned int    stride = 2 * n_voigt + 1;
-      std::vector<double>       sums(stride * n_voigt, 0.);
-      std::vector<unsigned int> load_cases;
-      std::vector<const LinearAlgebra::distributed::Vector<double> *> fields;
-      for (unsigned int k = 0; k < n_voigt; ++k)
-        {
-          load_cases.push_back(k);
-          fields.push_back(&solutions[k]);
-        }
+      // Sums: stress, strain (n_voigt each), sigma_zz.
+      std::vector<double> sum(2 * n_voigt + 1, 0.);
       for_each_element_integral(bc,
-                                load_cases,
-                                fields,
+                                {load_case},
+                                {&field},
                                 [&](const auto &,
-                                    const unsigned int      k,
+                                    const unsigned int,
                                     const ElementIntegrals &integrals) {
-                                  double *sum = &sums[stride * k];
                                   for (unsigned int a = 0; a < n_voigt; ++a)
                                     {
                                       sum[a] += integrals.stress[a];
@@ -263,27 +256,25 @@ namespace tribodyn
                                     }
                                   sum[2 * n_voigt] += integrals.stress_zz;
                                 });
-      Utilities::MPI::sum(sums, mpi_communicator, sums);
-      const double total = measure();
-      LoadCases    r;
-      for (unsigned int k = 0; k < n_voigt; ++k)
+      Utilities::MPI::sum(sum, mpi_communicator, sum);
+      const double      total = measure();
+      CellLoadCase<dim> r;
+      for (unsigned int a = 0; a < n_voigt; ++a)
         {
-          const double *sum = &sums[stride * k];
-          for (unsigned int a = 0; a < n_voigt; ++a)
-            {
-              r[k].mean_stress[a] = sum[a] / total;
-              r[k].mean_strain[a] = sum[n_voigt + a] / total;
-            }
-          r[k].mean_stress_zz = sum[2 * n_voigt] / total;
+          r.mean_stress[a] = sum[a] / total;
+          r.mean_strain[a] = sum[n_voigt + a] / total;
         }
+      r.mean_stress_zz = sum[2 * n_voigt] / total;
       return r;
     }
 
 
-#define TRIBODYN_INSTANTIATE(dim)                                     \
-  template void CellProblem<dim>::assemble(const BoundaryCondition);  \
-  template CellProblem<dim>::LoadCases CellProblem<dim>::postprocess( \
-    const BoundaryCondition, const CellProblem<dim>::Fields &) const;
+#define TRIBODYN_INSTANTIATE(dim)                                    \
+  template void CellProblem<dim>::assemble(const BoundaryCondition); \
+  template CellLoadCase<dim> CellProblem<dim>::postprocess(          \
+    const BoundaryCondition,                                         \
+    const unsigned int,                                              \
+    const LinearAlgebra::distributed::Vector<double> &) const;
     TRIBODYN_INSTANTIATE(2)
     TRIBODYN_INSTANTIATE(3)
 #undef TRIBODYN_INSTANTIATE

@@ -592,50 +592,41 @@ namespace tribodyn
       CellResult<dim> result;
       result.boundary_condition = bc;
       result.multigrid          = uses_multigrid(bc);
-      Solutions solutions;
-      for (auto &solution : solutions)
-        solution.reinit(locally_owned_dofs, mpi_communicator);
-      if (result.multigrid)
-        solve_with_multigrid(bc, solutions, result);
-      else
-        solve_with_amg(bc, solutions, result);
-
-      {
+      // Each load case's averages (and fields, for the outputs that ask)
+      // as soon as it is solved: one solution and one field alive at a
+      // time.
+      LinearAlgebra::distributed::Vector<double> field(locally_owned_dofs,
+                                                       locally_relevant_dofs,
+                                                       mpi_communicator);
+      const auto solved = [&](const unsigned int                   load_case,
+                              const TrilinosWrappers::MPI::Vector &solution) {
         TimerOutput::Scope scope(timer, "averages and fields");
-        // the fields with their ghosts, as deal.II vectors (local access)
-        Fields fields;
-        for (unsigned int load_case = 0; load_case < n_voigt; ++load_case)
-          {
-            auto &field = fields[load_case];
-            field.reinit(locally_owned_dofs,
-                         locally_relevant_dofs,
-                         mpi_communicator);
-            // both hold the locally owned DoFs in the same order
-            const double *values = solutions[load_case].trilinos_vector()[0];
-            for (unsigned int k = 0; k < field.locally_owned_size(); ++k)
-              field.local_element(k) = values[k];
-            constraints.distribute(field);
-            field.update_ghost_values();
-          }
-        const auto averages = postprocess(bc, fields);
-        for (unsigned int load_case = 0; load_case < n_voigt; ++load_case)
-          {
-            const auto       &solved     = result.load_cases[load_case];
-            CellLoadCase<dim> averaged   = averages[load_case];
-            averaged.cg_iterations       = solved.cg_iterations;
-            averaged.cg_time             = solved.cg_time;
-            result.load_cases[load_case] = averaged;
-            const bool sliced            = load_case == 0 && !slices.empty();
-            if (!observer && !sliced)
-              continue;
-            const auto values = cell_fields(bc, load_case, fields[load_case]);
-            if (observer)
-              observer({bc, load_case, fields[load_case], values});
-            if (sliced)
-              for (const SlicePlane &plane : slices)
-                result.slices.push_back(slice(plane, values));
-          }
-      }
+        // both hold the locally owned DoFs in the same order
+        field.zero_out_ghost_values();
+        const double *values = solution.trilinos_vector()[0];
+        for (unsigned int k = 0; k < field.locally_owned_size(); ++k)
+          field.local_element(k) = values[k];
+        constraints.distribute(field);
+        field.update_ghost_values();
+        const auto       &solved_case = result.load_cases[load_case];
+        CellLoadCase<dim> averaged    = postprocess(bc, load_case, field);
+        averaged.cg_iterations        = solved_case.cg_iterations;
+        averaged.cg_time              = solved_case.cg_time;
+        result.load_cases[load_case]  = averaged;
+        const bool sliced             = load_case == 0 && !slices.empty();
+        if (!observer && !sliced)
+          return;
+        const auto cell_values = cell_fields(bc, load_case, field);
+        if (observer)
+          observer({bc, load_case, field, cell_values});
+        if (sliced)
+          for (const SlicePlane &plane : slices)
+            result.slices.push_back(slice(plane, cell_values));
+      };
+      if (result.multigrid)
+        solve_with_multigrid(bc, result, solved);
+      else
+        solve_with_amg(bc, result, solved);
 
       result.properties = apparent_properties(bc, result);
       result.wall_time  = std::chrono::duration<double>(

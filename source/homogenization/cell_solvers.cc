@@ -144,28 +144,34 @@ namespace tribodyn
     template <int dim>
     void
     CellProblem<dim>::solve_with_amg(const BoundaryCondition bc,
-                                     Solutions              &solutions,
-                                     CellResult<dim>        &result)
+                                     CellResult<dim>        &result,
+                                     const LoadCaseSolved   &solved)
     {
       assemble(bc);
       setup_preconditioner();
+      TrilinosWrappers::MPI::Vector solution(locally_owned_dofs,
+                                             mpi_communicator);
       for (unsigned int load_case = 0; load_case < n_voigt; ++load_case)
         {
-          TimerOutput::Scope         scope(timer, "CG solve");
-          const double               rhs_norm = load_scale[load_case];
-          SolverControl              control(parameters.max_iterations,
-                                parameters.solver_tolerance * rhs_norm,
-                                /*log_history = */ false,
-                                /*log_result = */ false);
-          TrilinosWrappers::SolverCG cg(control);
-          result.load_cases[load_case].cg_time
-            = run_cg(bc, load_case, rhs_norm, [&]() {
-                cg.solve(system_matrix,
-                         solutions[load_case],
-                         system_rhs[load_case],
-                         preconditioner);
-              });
-          result.load_cases[load_case].cg_iterations = control.last_step();
+          {
+            TimerOutput::Scope         scope(timer, "CG solve");
+            const double               rhs_norm = load_scale[load_case];
+            SolverControl              control(parameters.max_iterations,
+                                  parameters.solver_tolerance * rhs_norm,
+                                  /*log_history = */ false,
+                                  /*log_result = */ false);
+            TrilinosWrappers::SolverCG cg(control);
+            result.load_cases[load_case].cg_time
+              = run_cg(bc, load_case, rhs_norm, [&]() {
+                  solution = 0;
+                  cg.solve(system_matrix,
+                           solution,
+                           system_rhs[load_case],
+                           preconditioner);
+                });
+            result.load_cases[load_case].cg_iterations = control.last_step();
+          }
+          solved(load_case, solution);
         }
     }
 
@@ -181,8 +187,8 @@ namespace tribodyn
     template <int dim>
     void
     CellProblem<dim>::solve_with_multigrid(const BoundaryCondition bc,
-                                           Solutions              &solutions,
-                                           CellResult<dim>        &result)
+                                           CellResult<dim>        &result,
+                                           const LoadCaseSolved   &solved)
     {
       const auto h = element_size();
       const auto stiffness_over_box
@@ -225,32 +231,40 @@ namespace tribodyn
           stiffness_over_box,
           timer);
       }
+      TrilinosWrappers::MPI::Vector solution(locally_owned_dofs,
+                                             mpi_communicator);
       for (unsigned int load_case = 0; load_case < n_voigt; ++load_case)
         {
-          TimerOutput::Scope scope(timer, "CG solve");
-          const double       rhs_norm
-            = solver->assemble_rhs(unit_load(load_case),
-                                   bc != BoundaryCondition::subc);
-          SolverControl control(parameters.max_iterations,
-                                parameters.solver_tolerance * rhs_norm,
-                                /*log_history = */ false,
-                                /*log_result = */ false);
-          result.load_cases[load_case].cg_time
-            = run_cg(bc, load_case, rhs_norm, [&]() {
-                solver->solve(control, solutions[load_case]);
-              });
-          result.load_cases[load_case].cg_iterations = control.last_step();
+          {
+            TimerOutput::Scope scope(timer, "CG solve");
+            const double       rhs_norm
+              = solver->assemble_rhs(unit_load(load_case),
+                                     bc != BoundaryCondition::subc);
+            SolverControl control(parameters.max_iterations,
+                                  parameters.solver_tolerance * rhs_norm,
+                                  /*log_history = */ false,
+                                  /*log_result = */ false);
+            result.load_cases[load_case].cg_time
+              = run_cg(bc, load_case, rhs_norm, [&]() {
+                  solver->solve(control, solution);
+                });
+            result.load_cases[load_case].cg_iterations = control.last_step();
+          }
+          solved(load_case, solution);
         }
     }
 
 
-#define TRIBODYN_INSTANTIATE(dim)                                         \
-  template void CellProblem<dim>::setup_preconditioner();                 \
-  template void CellProblem<dim>::solve_with_amg(const BoundaryCondition, \
-                                                 Solutions &,             \
-                                                 CellResult<dim> &);      \
-  template void CellProblem<dim>::solve_with_multigrid(                   \
-    const BoundaryCondition, Solutions &, CellResult<dim> &);
+#define TRIBODYN_INSTANTIATE(dim)                         \
+  template void CellProblem<dim>::setup_preconditioner(); \
+  template void CellProblem<dim>::solve_with_amg(         \
+    const BoundaryCondition,                              \
+    CellResult<dim> &,                                    \
+    const CellProblem<dim>::LoadCaseSolved &);            \
+  template void CellProblem<dim>::solve_with_multigrid(   \
+    const BoundaryCondition,                              \
+    CellResult<dim> &,                                    \
+    const CellProblem<dim>::LoadCaseSolved &);
     TRIBODYN_INSTANTIATE(2)
     TRIBODYN_INSTANTIATE(3)
 #undef TRIBODYN_INSTANTIATE

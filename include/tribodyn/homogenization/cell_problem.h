@@ -364,9 +364,12 @@ namespace tribodyn
       using VoigtMatrixType                 = dealii::Tensor<2, n_voigt>;
       using Geometry                        = typename Traits::Geometry;
       using Phase                           = typename Traits::Phase;
-      /// One vector per load case.
-      using Solutions
-        = std::array<dealii::TrilinosWrappers::MPI::Vector, n_voigt>;
+      /// What becomes of a load case's solution (its locally owned values,
+      /// constraints not yet distributed) as soon as it is solved: one
+      /// solution alive at a time.
+      using LoadCaseSolved
+        = std::function<void(const unsigned int,
+                             const dealii::TrilinosWrappers::MPI::Vector &)>;
 
       CellProblem(const MPI_Comm              comm,
                   const Geometry             &geometry,
@@ -447,17 +450,18 @@ namespace tribodyn
       /// The size of the box: the product of its extents.
       double
       measure() const;
-      /// Solve the load cases with geometric multigrid: fills the
-      /// solutions (locally owned values) and the iteration counts.
+      /// Solve the load cases with geometric multigrid, one after the
+      /// other: the CG time and iterations of each in @p result, then
+      /// @p solved with its solution.
       void
       solve_with_multigrid(const BoundaryCondition bc,
-                           Solutions              &solutions,
-                           CellResult<dim>        &result);
+                           CellResult<dim>        &result,
+                           const LoadCaseSolved   &solved);
       /// The same with AMG on the assembled matrix.
       void
       solve_with_amg(const BoundaryCondition bc,
-                     Solutions              &solutions,
-                     CellResult<dim>        &result);
+                     CellResult<dim>        &result,
+                     const LoadCaseSolved   &solved);
       void
       make_constraints(const BoundaryCondition bc);
       /// Whether the element integrals are tabulated once per phase
@@ -472,11 +476,6 @@ namespace tribodyn
       assemble(const BoundaryCondition bc);
       void
       setup_preconditioner();
-      /// The solutions with their ghosts, one per load case.
-      using Fields
-        = std::array<dealii::LinearAlgebra::distributed::Vector<double>,
-                     n_voigt>;
-      using LoadCases        = std::array<CellLoadCase<dim>, n_voigt>;
       using ElementIntegrals = internal::ElementIntegrals<n_voigt>;
       /// Call @p f(cell, k, integrals) for every locally owned cell and
       /// every @p fields[k], the solution of load case @p load_cases[k]
@@ -492,9 +491,13 @@ namespace tribodyn
         const std::vector<
           const dealii::LinearAlgebra::distributed::Vector<double> *> &fields,
         const F                                                       &f) const;
-      /// Volume averages of the load cases, in one pass over the cells.
-      LoadCases
-      postprocess(const BoundaryCondition bc, const Fields &solutions) const;
+      /// Volume averages of load case @p load_case of @p bc from its
+      /// solution @p field (its ghosts and constrained values set).
+      CellLoadCase<dim>
+      postprocess(
+        const BoundaryCondition                                   bc,
+        const unsigned int                                        load_case,
+        const dealii::LinearAlgebra::distributed::Vector<double> &field) const;
       /// The averages over each element of the stress, von Mises stress
       /// and strain of load case @p load_case of @p bc, and the material
       /// id: one vector per field, indexed by active cell (the locally
@@ -542,9 +545,9 @@ namespace tribodyn
       dealii::IndexSet                                  locally_owned_dofs;
       dealii::IndexSet                                  locally_relevant_dofs;
 
-      dealii::AffineConstraints<double>      constraints;
-      dealii::TrilinosWrappers::SparseMatrix system_matrix;
-      Solutions                              system_rhs;
+      dealii::AffineConstraints<double>                          constraints;
+      dealii::TrilinosWrappers::SparseMatrix                     system_matrix;
+      std::array<dealii::TrilinosWrappers::MPI::Vector, n_voigt> system_rhs;
       /// Norm of the unassembled element loads of each load case: the
       /// scale of the CG tolerance. The assembled right-hand side cancels
       /// between elements (to round-off for a single phase), so it is no
