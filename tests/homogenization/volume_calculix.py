@@ -64,13 +64,7 @@ check(len(set(ids.values())) == 3, "all three phases present")
 header = v.write_raw(work, "volume", lambda i, j, k: ids[i, j, k], n, h)
 
 # ---------------------------------------------------------------- tribodyn
-s = v.run(tribodyn, os.path.join(work, "tribodyn"), """
-set Problem = volume_homogenization
-set Output directory = output
-subsection Morphology
-  set Generator  = raw file
-  set Raw header = %s
-end
+s = v.run(tribodyn, os.path.join(work, "tribodyn"), v.raw_volume_prm(header) + """
 subsection Materials
   subsection Phases
     set Names          = %s
@@ -86,7 +80,7 @@ end
 subsection Output
   set Write slices = false
 end
-""" % (header, ", ".join(p[0] for p in phases),
+""" % (", ".join(p[0] for p in phases),
        ", ".join(repr(p[1]) for p in phases),
        ", ".join(repr(p[2]) for p in phases)))
 C_tribodyn = s["KUBC"]["C"]

@@ -141,13 +141,7 @@ def run(N):
     count = sum(inside(i, j, k) for i in range(N) for j in range(N)
                 for k in range(N))
     f = count / N ** 3
-    s = v.run(tribodyn, directory, """set Problem = volume_homogenization
-set Output directory = output
-subsection Morphology
-  set Generator  = raw file
-  set Raw header = %s
-end
-subsection Materials
+    s = v.run(tribodyn, directory, v.raw_volume_prm(header) + """subsection Materials
   subsection Matrix
     set Young modulus = %r
     set Poisson ratio = %r
@@ -164,7 +158,7 @@ end
 subsection Output
   set Write morphology = false
 end
-""" % (header, E0, nu0, E1, nu1))
+""" % (E0, nu0, E1, nu1))
     check(abs(s["phases"][1]["fraction"] - f) < 1e-12,
           "N = %d: sphere of radius %.3f voxels, %d voxels: f = %.6f "
           "(nominal %g; summary %.6f)"

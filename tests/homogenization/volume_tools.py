@@ -191,6 +191,18 @@ def write_raw(directory, name, ids, n, h):
     return header
 
 
+def raw_volume_prm(header):
+    """The first lines of a test's parameter file: the 3D problem on the
+    raw volume of `header`, its outputs in output/ of the run's directory;
+    the test appends its materials and cell problem."""
+    return ("set Problem = volume_homogenization\n"
+            "set Output directory = output\n"
+            "subsection Morphology\n"
+            "  set Generator  = raw file\n"
+            "  set Raw header = %s\n"
+            "end\n" % header)
+
+
 def run(tribodyn, directory, prm_text, ranks=1):
     """Run tribodyn on prm_text in `directory` (fresh output/); returns
     summary.json."""

@@ -44,13 +44,7 @@ transposed = v.write_raw(work, "transposed", lambda i, j, k: ids[j, i, k],
 
 
 def prm(header, preconditioner="AMG"):
-    return """set Problem = volume_homogenization
-set Output directory = output
-subsection Morphology
-  set Generator  = raw file
-  set Raw header = %s
-end
-subsection Materials
+    return v.raw_volume_prm(header) + """subsection Materials
   subsection Phases
     set Names          = epoxy, glass, filler
     set Young moduli   = 3e9, 70e9, 0.5e9
@@ -63,7 +57,7 @@ subsection Cell problem
   set Solver tolerance    = 1e-12
   set Preconditioner      = %s
 end
-""" % (header, preconditioner)
+""" % preconditioner
 
 
 a = v.run(tribodyn, os.path.join(work, "original"), prm(original))

@@ -75,19 +75,13 @@ subsection Output
   set Write morphology = false
 end
 """ % (grid, nx * h, ny * h, materials))
-s3 = v.run(tribodyn, os.path.join(work, "3d"), """\
-set Problem = volume_homogenization
-set Output directory = output
-subsection Morphology
-  set Generator  = raw file
-  set Raw header = %s
-end
+s3 = v.run(tribodyn, os.path.join(work, "3d"), v.raw_volume_prm(header) + """\
 %s
 subsection Cell problem
   set Boundary conditions = periodic, KUBC, SUBC
   set Solver tolerance    = 1e-12
 end
-""" % (header, materials))
+""" % materials)
 
 plane = [0, 1, 5]  # xx, yy, xy of the 3D Voigt order
 for bc in ("periodic", "KUBC", "SUBC"):
