@@ -53,8 +53,10 @@ namespace tribodyn
             Interval{0, 1});
       b.add("Loading layer thickness",
             layer_layers,
-            "Automaton layers (spacing a/2 = d/sqrt 2) of the top and bottom "
-            "loading layers.",
+            "Automaton layers of the top and bottom loading layers: layers of "
+            "the automata at the bodies' faces (spacing a/2 = d/sqrt 2 for "
+            "automata of d, 2^L a/2 where a size band of 2^L d reaches the "
+            "face).",
             Integer(1));
       b.add("Approach velocity",
             approach_velocity,
@@ -160,7 +162,10 @@ namespace tribodyn
             : rough_surface_rise(g, g.interface_shift_y) + 1.25 * d;
 
       // Lattice planes z_m = z0 + a/4 + m a/2; the bodies span the planes
-      // in [z_min, z_max).
+      // in [z_min, z_max). The lattice of 2^L d (a band of level L at the
+      // bodies' bottom or top face) keeps every 2^L-th of them, and its
+      // automaton layers are 2^L a/2 apart: the loading layers are counted
+      // in layers of the automata at each face.
       double z_min = std::numeric_limits<double>::max(), z_max = -z_min;
       for (const Body &b : g.bodies)
         {
@@ -168,18 +173,22 @@ namespace tribodyn
           z_max = std::max(z_max, std::min(b.upper[2], g.domain_upper[2]));
         }
       const double z0 = g.domain_lower[2] + a / 4;
+      const auto   spacing
+        = [&](const double z) { return (1u << g.size_level(z)) * a / 2; };
+      const double s_bottom = spacing(z_min), s_top = spacing(z_max - 1e-9 * a);
       const double bottom
-        = z0 + std::ceil((z_min - z0) / (a / 2) - 1e-9) * a / 2;
+        = z0 + std::ceil((z_min - z0) / s_bottom - 1e-9) * s_bottom;
       const double top
-        = z0 + (std::ceil((z_max - z0) / (a / 2) - 1e-9) - 1) * a / 2;
-      const double h = (L.layer_layers - 0.5) * a / 2;
-      check_parameter(top - bottom > 2 * L.layer_layers * a / 2,
+        = z0 + (std::ceil((z_max - z0) / s_top - 1e-9) - 1) * s_top;
+      const double h_bottom = (L.layer_layers - 0.5) * s_bottom;
+      const double h_top    = (L.layer_layers - 0.5) * s_top;
+      check_parameter(top - bottom > L.layer_layers * (s_bottom + s_top),
                       "Friction loading/Loading layer thickness",
                       "the two loading layers would meet: the bodies are "
                       "only "
                         + std::to_string(
                           int(std::round((top - bottom) / (a / 2))) + 1)
-                        + " automaton layers high.");
+                        + " automaton layers (of d) high.");
       check_parameter(top + g.interface_gap < g.domain_upper[2],
                       "Geometry/Domain upper",
                       "the upper body, lifted by the separation "
@@ -188,10 +197,12 @@ namespace tribodyn
                           "z above "
                         + format_number(top + g.interface_gap + a / 4) + " m.");
 
-      // Seed criterion: c = c_p / (2 h_l), h_l = n a / 2 (doc/theory/mca.md).
+      // Seed criterion: c = c_p / (2 h_l), h_l = n a / 2 (doc/theory/mca.md),
+      // with n layers of the automata at the faces (2^L a / 2 apart; the
+      // bottom layer's, the thinner if the two differ).
       // (c_p of the material of the first body: the bases are steel)
       const double c_p     = p.materials[g.bodies[0].material].p_wave_speed();
-      const double h_layer = L.layer_layers * a / 2;
+      const double h_layer = L.layer_layers * std::min(s_bottom, s_top);
       p.loading_damping    = L.damping > 0 ? L.damping : c_p / (2 * h_layer);
 
       const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -201,8 +212,9 @@ namespace tribodyn
       const double Vz = L.approach_velocity, Vy = L.sliding_velocity;
       const double c      = p.loading_damping;
       using T             = BoundaryGroup::Type;
-      const double top_lo = top + g.interface_gap - h, bot_hi = bottom + h;
-      auto        &groups = p.boundary.groups;
+      const double top_lo = top + g.interface_gap - h_top,
+                   bot_hi = bottom + h_bottom;
+      auto &groups        = p.boundary.groups;
       for (const auto &existing : groups)
         for (const char *name : {"top",
                                  "top_load",

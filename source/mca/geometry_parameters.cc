@@ -588,13 +588,15 @@ namespace tribodyn
       if (t.empty() || t[0] != "interface")
         return text;
       const std::string p = "Geometry/Size bands";
-      check_parameter(t.size() == 2 || t.size() == 3,
+      check_parameter(t.size() >= 2 && t.size() <= 4,
                       p,
                       "'" + text
-                        + "' must read 'interface N' or 'interface N M' (N "
-                          "cells of fine automata on each side of the rough "
-                          "interface, then M of 2d) or list the bands as "
-                          "'z0 z1 k; ...'.");
+                        + "' must read 'interface N', 'interface N M' or "
+                          "'interface N M O' (N cells of fine automata on "
+                          "each side of the rough interface, then M of 2d; "
+                          "O the size level of the outer cells that hold the "
+                          "loading layers) or list the bands as 'z0 z1 k; "
+                          "...'.");
       const auto whole = [&](const std::string &word, const double lowest) {
         const double n = to_double(word, p, text);
         check_parameter(n >= lowest && n == std::round(n) && n < 1e6,
@@ -606,7 +608,15 @@ namespace tribodyn
         return std::lround(n);
       };
       const long N = whole(t[1], 1);
-      const long M = t.size() == 3 ? whole(t[2], 4) : 4;
+      const long M = t.size() >= 3 ? whole(t[2], 4) : 4;
+      const long O = t.size() == 4 ? std::lround(to_double(t[3], p, text)) : 0;
+      check_parameter(t.size() < 4
+                        || (to_double(t[3], p, text) == O && O >= 0 && O <= 2),
+                      p,
+                      "in '" + text
+                        + "' O, the size level of the outer cells (the "
+                          "loading layers), must be 0 (d), 1 (2d) or 2 "
+                          "(4d).");
       check_parameter(rough_interface,
                       p,
                       "'" + text
@@ -614,9 +624,10 @@ namespace tribodyn
                           "enable Geometry/Rough interface, or give the "
                           "bands as 'z0 z1 k; ...'.");
       // Heights in cells of the fine lattice from the bodies' bottom, as
-      // the graded friction scenes were laid out by hand: the fine outer 4
-      // cells (loading layers), 4-cell transitions of 2d next to them, M
-      // cells of 2d next to the fine band, 4d between.
+      // the graded friction scenes were laid out by hand: the outer 4
+      // cells (loading layers) of size 2^O d, 4-cell transitions of 2d
+      // next to them if they are fine, M cells of 2d next to the fine
+      // band, 4d between.
       const double a      = automaton_size * std::sqrt(2.);
       double       bottom = domain_upper[2], top = domain_lower[2];
       for (const Body &b : bodies)
@@ -626,29 +637,41 @@ namespace tribodyn
         }
       const long cells  = std::lround(std::floor((top - bottom) / a + 1e-6));
       const long centre = std::lround((interface_height - bottom) / a);
-      const long below  = centre - N - M - 12; // cells left for the 4d band
-      const long above  = cells - centre - N - M - 12;
+      const long outer  = O == 0 ? 8 : 4; // the outer cells and transitions
+      const long below  = centre - N - M - outer - 4; // left for 4d
+      const long above  = cells - centre - N - M - outer - 4;
       check_parameter(
         below > 0 && above > 0,
         p,
         "'" + text + "': the bodies are " + std::to_string(centre)
           + " cells (a = d sqrt 2) below and " + std::to_string(cells - centre)
           + " above the rough interface; the layout needs more than N + M + "
-            "12 on each side (N fine, M of 2d, some 4d, 4 of 2d, 4 fine). "
+          + std::to_string(outer + 4)
+          + " on each side (N fine, M of 2d, some 4d and the outer cells). "
             "Lower N or M, make the bodies taller or give the bands as 'z0 "
             "z1 k; ...'.");
-      const std::array<std::array<long, 3>, 6> bands
-        = {{{{4, 8, 1}},
-            {{8, centre - N - M, 2}},
-            {{centre - N - M, centre - N, 1}},
-            {{centre + N, centre + N + M, 1}},
-            {{centre + N + M, cells - 8, 2}},
-            {{cells - 8, cells - 4, 1}}}};
+      // Bands {z0, z1, level} in cells; the fine ones are the gaps.
+      std::vector<std::array<long, 3>> bands;
+      if (O == 0)
+        bands.push_back({{4, 8, 1}});
+      else if (O == 1)
+        bands.push_back({{0, 4, 1}});
+      bands.push_back({{O == 2 ? 0 : (O == 1 ? 4 : 8), centre - N - M, 2}});
+      bands.push_back({{centre - N - M, centre - N, 1}});
+      bands.push_back({{centre + N, centre + N + M, 1}});
+      bands.push_back({{centre + N + M,
+                        O == 2 ? cells : (O == 1 ? cells - 4 : cells - 8),
+                        2}});
+      if (O == 0)
+        bands.push_back({{cells - 8, cells - 4, 1}});
+      else if (O == 1)
+        bands.push_back({{cells - 4, cells, 1}});
       std::ostringstream out;
       out << std::setprecision(17);
       for (const auto &band : bands)
         out << (out.tellp() > 0 ? "; " : "") << bottom + band[0] * a << ' '
-            << bottom + band[1] * a << ' ' << band[2];
+            << (band[1] == cells ? top : bottom + band[1] * a) << ' '
+            << band[2];
       return out.str();
     }
 

@@ -14,7 +14,21 @@ changes them by whole cell layers: 1024 automata; shown failing with the
 hand-written 2d band moved down by one cell). The tall graded scenes
 (96 cells, interface at 48) are counted the same way: (8 + 2N) 1024,
 2048 and (96 - 8 - 2N - 16) 16.
+
+'interface N M O' makes the outer cells (the loading layers) of 2^O d:
+O = 1 puts 2d in the 4 outer cells and drops the transitions, 2N 1024 of
+d, (2M + 8) 128 of 2d, (404 - 8 - 2N - 2M) 16 of 4d; O = 2 runs the 4d to
+the faces: 2N 1024, 2M 128, (404 - 2N - 2M) 16. Its loading layers are
+counted in layers of the outer automata (4 times the fine spacing for 4d):
+a short run of the approach must move the top and bottom layers as mirror
+images (top_uz = -bottom_uz, not zero: before 2026-12-01 the top layer
+was looked for on the fine lattice's top plane, 1.5 a above the highest
+4d plane, and held no automaton, top_uz = 0), with the damping of the seed's
+criterion c_p / (2 h) for the layers' thickness h, a quarter of the fine
+scene's (exact: h is 4 times as thick).
 Arguments: the tribodyn binary, the prm/mca folder, a scratch directory."""
+import csv
+import json
 import os
 import re
 import subprocess
@@ -58,6 +72,52 @@ for n, m in ((7, None), (8, None), (12, None), (8, 16), (7, 9)):
     got = counts(with_bands(words), words.replace(" ", "_") + ".prm")
     report(got == expected, f"'{words}': {got} automata of d, 2d, 4d; "
            f"counted from the layout {expected}")
+for n, m, o in ((8, 16, 1), (8, 16, 2), (6, 18, 2)):
+    words = f"interface {n} {m} {o}"
+    outer = 8 if o == 1 else 0
+    expected = (2 * n * 1024, (2 * m + outer) * 128, (404 - outer - 2 * n - 2 * m) * 16)
+    got = counts(with_bands(words), words.replace(" ", "_") + ".prm")
+    report(got == expected, f"'{words}': {got} automata of d, 2d, 4d; "
+           f"counted from the layout {expected}")
+
+
+def approach(words):
+    """A 20-ps run of the approach with Size bands = WORDS: its summary and
+    the last row of its series."""
+    name = "approach_" + words.replace(" ", "_")
+    text = with_bands(words).replace("set End time       = 16e-9", "set End time = 2e-11")
+    text = re.sub(r"(?m)^set Output directory = .*$",
+                  f"set Output directory = {os.path.join(scratch, name)}", text)
+    path = os.path.join(scratch, name + ".prm")
+    with open(path, "w") as f:
+        f.write(text)
+    p = subprocess.run([tribodyn, path], capture_output=True, text=True)
+    if p.returncode != 0:
+        print(p.stdout, p.stderr)
+        return None, None
+    out = os.path.join(scratch, name)
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    with open(os.path.join(out, "series.csv")) as f:
+        rows = list(csv.DictReader(f))
+    return summary, rows[-1]
+
+
+fine, fine_last = approach("interface 8 16")
+coarse, last = approach("interface 8 16 2")
+if coarse is None or fine is None:
+    report(False, "the two approach runs")
+else:
+    top, bottom = float(last["top_uz"]), float(last["bottom_uz"])
+    report(top < 0 and abs(top + bottom) <= 1e-12 * abs(top),
+           f"4d loading layers: top_uz {top:.6e} m = -bottom_uz {bottom:.6e} m "
+           f"(1e-12 relative: both prescribed, the same arithmetic)")
+    report(abs(top - float(fine_last["top_uz"])) <= 1e-12 * abs(top),
+           f"and as the fine layers' {float(fine_last['top_uz']):.6e} m")
+    ratio = fine["loading_damping"] / coarse["loading_damping"]
+    report(ratio == 4, f"damping of the loading layers: fine "
+           f"{fine['loading_damping']:.6e} 1/s, 4d {coarse['loading_damping']:.6e} "
+           f"1/s, ratio {ratio} (exactly 4)")
 for prm, n in (("friction_tall_graded.prm", 6), ("friction_tall_graded_far.prm", 8)):
     expected = ((8 + 2 * n) * 1024, 2048, (96 - 8 - 2 * n - 16) * 16)
     got = counts(open(f"{folder}/{prm}").read(), prm)
