@@ -171,7 +171,11 @@ namespace tribodyn
             "4 cells at the bodies' bottom and top (the loading layers), 2d "
             "in the next M cells from the interface (M >= 4; 'interface N' "
             "is M = 4) and in 4-cell transitions next to the loading layers, "
-            "4d elsewhere (the log prints the bands). "
+            "4d elsewhere (the log prints the bands). 'interface N M O' "
+            "makes the 4 outer cells of 2^O d: O = 1 (2d), O = 2 (4d to the "
+            "faces, no transitions); the loading layers are then counted in "
+            "layers of those automata (Friction loading/Loading layer "
+            "thickness). "
             "Plan a graded scene with tribodyn --partition-report N "
             "FILE.prm.");
       b.add("Size at free faces",

@@ -2,7 +2,9 @@
 prm/study/mca_laptop.prm, mca_seed_heights.prm, mca_seed_heights_12.prm,
 mca_seed_heights_044.prm, mca_fibre_content.prm, mca_time_step_lever.prm,
 mca_time_step_lever_composite.prm and the two seed-heights levers
-mca_time_step_lever_seed_heights(_composite).prm, each with an
+mca_time_step_lever_seed_heights(_composite).prm and the coarse layout's
+mca_coarse_lever_seed_heights(_composite).prm and its campaign
+mca_seed_heights_coarse.prm, each with an
 override block appended (as a user continues a prm: later entries win; the
 shipped text is not edited) for one roughness seed, 2e-11 s (the bodies
 are still approaching) and an output directory of the test's; the bases
@@ -14,9 +16,10 @@ Checked: the study runs (exit 0) and writes its tables, one scene per base
 with its factors named in summary.json; each scene holds the automata its
 prm documents (the laptop scene: 16 x 16 x 12 FCC cells = 12 288; the seed
 heights with the fine band at 8 cells and 16 of 2d: 35 136, the count
-mca_size_bands_interface derives from the layout), and the seed-heights
-scenes really run the study's setting (their parameters.prm reads
-'interface 8 16'); the time-step levers' two bases differ in dt by the
+mca_size_bands_interface derives from the layout; the coarse layout
+'interface 6 18 2': 22 592), and the seed-heights scenes really run the
+study's setting or their base's (their parameters.prm reads 'interface 8
+16', the coarse bases 'interface 6 18 2'); the time-step levers' two bases differ in dt by the
 ratio of their Courant factors, 0.5/0.35 or 0.44/0.35 (the same d and c_p:
 to 1e-12)."""
 import csv
@@ -36,7 +39,14 @@ AUTOMATA = {"mca_laptop": 12288, "mca_seed_heights": 35136,
             "mca_fibre_content": 12288, "mca_time_step_lever": 12288,
             "mca_time_step_lever_composite": 12288,
             "mca_time_step_lever_seed_heights": 35136,
-            "mca_time_step_lever_seed_heights_composite": 35136}
+            "mca_time_step_lever_seed_heights_composite": 35136,
+            "mca_coarse_lever_seed_heights": {"steel_044": 35136, "steel_coarse": 22592},
+            "mca_coarse_lever_seed_heights_composite":
+                {"composite_044": 35136, "composite_coarse": 22592},
+            "mca_seed_heights_coarse": 22592}
+# the layout each seed-heights scene must run: the study's setting or its
+# base's (the coarse lever's bases), 'interface 8 16' unless named here
+BANDS = {"steel_coarse": "interface 6 18 2", "composite_coarse": "interface 6 18 2"}
 # the two bases of each time-step lever and the ratio of their Courant
 # factors (0.35 against 0.5 or 0.44)
 LEVERS = {"mca_time_step_lever": ("courant_035", "courant_050", 0.5 / 0.35),
@@ -96,13 +106,15 @@ end
         with open(os.path.join(scene, "summary.json")) as f:
             summary = json.load(f)
         tag = summary.get("study_scene", {})
-        report(tag.get("base") == base and summary.get("n_automata") == n_automata,
+        expected = n_automata[base] if isinstance(n_automata, dict) else n_automata
+        report(tag.get("base") == base and summary.get("n_automata") == expected,
                f"{name} {base}: {summary.get('n_automata')} automata "
-               f"(documented {n_automata}), scene tagged {tag}")
+               f"(documented {expected}), scene tagged {tag}")
         if "seed_heights" in name:
             prm = open(os.path.join(scene, "parameters.prm")).read()
-            report("= interface 8 16" in prm,
-                   f"{name} {base}: the study's Size bands setting reached the scene")
+            bands = BANDS.get(base, "interface 8 16")
+            report(f"= {bands}\n" in prm,
+                   f"{name} {base}: the Size bands '{bands}' reached the scene")
         if name == "mca_fibre_content" and base in FIBRES:
             fraction = summary.get("inclusion_volume_fraction_generated", 0) * 100
             report(abs(fraction - FIBRES[base]) < 1e-3,

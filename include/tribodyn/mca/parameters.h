@@ -212,12 +212,13 @@ namespace tribodyn
         unsigned int level = 0;
       };
       std::vector<SizeBand> size_bands;
-      /// Geometry/Size bands = 'interface N [M]': the graded layout of the
+      /// Geometry/Size bands = 'interface N [M [O]]': the graded layout of the
       /// friction scenes written as bands 'z0 z1 k; ...' (fine within N
       /// cells a = d sqrt 2 of the rough interface's mean height and in
       /// the bodies' outer 4 cells, which hold the loading layers; 2d in
       /// the next M cells (4 if not given) and in 4-cell transitions next
-      /// to the outer cells; 4d elsewhere). Any other text is returned as
+      /// to the outer cells; 4d elsewhere; with O > 0 the outer cells are
+      /// of 2^O d and have no transitions). Any other text is returned as
       /// it is. Needs the bodies and the rough interface parsed.
       std::string
       bands_around_interface(const std::string &text) const;
