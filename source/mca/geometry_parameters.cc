@@ -654,22 +654,19 @@ namespace tribodyn
           + " on each side (N fine, M of 2d, some 4d and the outer cells). "
             "Lower N or M, make the bodies taller or give the bands as 'z0 "
             "z1 k; ...'.");
-      // Bands {z0, z1, level} in cells; the fine ones are the gaps.
+      // Bands {z0, z1, level} in cells; the fine ones are the gaps. The 4d
+      // of the bases starts `coarse` cells from each face, after 4 cells of
+      // 2d unless it reaches the face.
+      const long                       coarse = O == 0 ? 8 : (O == 1 ? 4 : 0);
       std::vector<std::array<long, 3>> bands;
-      if (O == 0)
-        bands.push_back({{4, 8, 1}});
-      else if (O == 1)
-        bands.push_back({{0, 4, 1}});
-      bands.push_back({{O == 2 ? 0 : (O == 1 ? 4 : 8), centre - N - M, 2}});
+      if (O < 2)
+        bands.push_back({{coarse - 4, coarse, 1}});
+      bands.push_back({{coarse, centre - N - M, 2}});
       bands.push_back({{centre - N - M, centre - N, 1}});
       bands.push_back({{centre + N, centre + N + M, 1}});
-      bands.push_back({{centre + N + M,
-                        O == 2 ? cells : (O == 1 ? cells - 4 : cells - 8),
-                        2}});
-      if (O == 0)
-        bands.push_back({{cells - 8, cells - 4, 1}});
-      else if (O == 1)
-        bands.push_back({{cells - 4, cells, 1}});
+      bands.push_back({{centre + N + M, cells - coarse, 2}});
+      if (O < 2)
+        bands.push_back({{cells - coarse, cells - coarse + 4, 1}});
       std::ostringstream out;
       out << std::setprecision(17);
       for (const auto &band : bands)
