@@ -99,7 +99,7 @@ subsection Geometry
   set Mesh size = %g
 end
 subsection Materials
-  subsection Isotropic
+  subsection Matrix
     set Young modulus = 30e9
     set Poisson ratio = 0
     set Density = 1770

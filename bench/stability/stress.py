@@ -68,7 +68,7 @@ subsection Time
 end"""),
     "contact_nu_0.499": (SHORT_PIN, """
 subsection Materials
-  subsection Isotropic
+  subsection Matrix
     set Poisson ratio = 0.499
   end
 end

@@ -538,13 +538,18 @@ namespace tribodyn
 
 
     void
-    ContactParameters::parse_parameters(ParameterHandler &prm)
+    ContactParameters::parse_parameters(ParameterHandler &prm,
+                                        const bool        one_pin)
     {
+      using Type = ContactMaterialParameters::Type;
       geometry.parse_parameters(prm);
       material.parse_parameters(prm);
       morphology.parse_parameters(prm);
-      if (material.type == ContactMaterialParameters::Type::morphology)
+      if (one_pin && material.type == Type::morphology)
         material.composite.check(morphology);
+      if (one_pin && material.type == Type::isotropic)
+        material.check_isotropic_pin(material.pin_index,
+                                     "Materials/Pin material");
       loading.parse_parameters(prm);
       time.parse_parameters(prm);
       contact.parse_parameters(prm);

@@ -207,7 +207,9 @@ namespace tribodyn
          &ContactProblem::declare_parameters,
          [](ParameterHandler &prm, const RunContext &context) {
            return std::unique_ptr<Problem>(new ContactProblem(prm, context));
-         }});
+         },
+         {},
+         &MorphologyMaterials::declare_material_sections});
     } // namespace
   }   // namespace contact
 } // namespace tribodyn

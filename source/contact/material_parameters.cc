@@ -8,6 +8,7 @@
 #include <string>
 #include <tribodyn/contact/contact_parameters.h>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/material_names.h>
 #include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/selection.h>
 #include <vector>
@@ -44,19 +45,24 @@ namespace tribodyn
       ParameterBinding b("Materials");
       b.add("Type",
             type,
-            "Constitutive model of the pin. 'isotropic': subsection "
-            "Isotropic. 'anisotropic': the plane-strain stiffness of "
+            "Constitutive model of the pin. 'isotropic': homogeneous, of "
+            "the material 'Pin material'. 'anisotropic': the plane-strain "
+            "stiffness of "
             "subsection Anisotropic. 'engineering constants': transversely "
             "isotropic with axis L = x (subsection Engineering constants, "
             "defaults = seed Table 1 homogenized values). 'homogenization "
             "summary': the apparent stiffness C of a homogenization run's "
             "summary.json. 'morphology': a heterogeneous (meso) pin from "
-            "subsection Morphology with the phases of subsections Matrix and "
-            "Heterogeneity, or of the named list Phases (any number, "
-            "transversely isotropic ones and pores: a pore's pixels are cut "
-            "out of the pin, and so is a fragment they detach from the top "
-            "face).",
+            "subsection Morphology, material id k being the k-th material of "
+            "'Names' (any number, transversely isotropic ones and pores: a "
+            "pore's pixels are cut out of the pin, and so is a fragment they "
+            "detach from the top face).",
             type_choices);
+      b.add("Pin material",
+            pin_material,
+            "Type = isotropic: the material of the pin, by its name in "
+            "'Names' (its Young modulus, Poisson ratio and Density in its "
+            "subsection); empty: the first of 'Names'.");
       b.add("Kinematics",
             kinematics,
             "'small strain': linear elasticity. 'large deformation': total "
@@ -137,10 +143,28 @@ namespace tribodyn
     {
       ContactMaterialParameters p;
       p.binding().declare(prm);
-      p.isotropic.binding("Materials/Isotropic").declare(prm);
       for (const ParameterBinding &b : p.subsection_bindings())
         b.declare(prm);
       MorphologyMaterials::declare_parameters(prm);
+    }
+
+
+    void
+    ContactMaterialParameters::check_isotropic_pin(const unsigned int k,
+                                                   const std::string &parameter,
+                                                   const std::string &pin) const
+    {
+      const std::string name = composite.names()[k];
+      check_parameter(!composite.pores()[k],
+                      parameter,
+                      "'" + name + "' is a pore (Young modulus 0): " + pin
+                        + " must be solid. Name a solid material.");
+      check_parameter(!composite.list.axial[k],
+                      parameter,
+                      "'" + name + "' is transversely isotropic: " + pin
+                        + " is isotropic. Name an isotropic material (a "
+                          "transversely isotropic pin is 'Type = "
+                          "engineering constants').");
     }
 
 
@@ -149,11 +173,17 @@ namespace tribodyn
     {
       const ParameterBinding b = binding();
       b.parse(prm);
-      isotropic.binding("Materials/Isotropic").parse(prm);
       const std::vector<ParameterBinding> subsections = subsection_bindings();
       for (const ParameterBinding &s : subsections)
         s.parse(prm);
       composite.parse_parameters(prm);
+      // the pin's material, by name (Type = isotropic; a study's
+      // homogeneous pin), checked by ContactParameters::parse_parameters()
+      const std::vector<std::string> names = composite.names();
+      const std::string              path  = b.path("Pin material");
+      pin_index
+        = pin_material.empty() ? 0 : material_index(names, pin_material, path);
+      isotropic = composite.given()[pin_index];
 
       const ParameterBinding &constants = subsections[1];
       const ParameterBinding &summary   = subsections[2];

@@ -290,7 +290,7 @@ namespace tribodyn
             n_bottom += (j == 0 && keep);
           }
       check_parameter(n_bottom > 0,
-                      "Materials/Phases/Young moduli",
+                      "Materials/Names",
                       "with the pores (Young modulus 0) cut out of the meso "
                       "pin, no solid pixel of its bottom row is tied to the "
                       "top face through solid pixels: the pin has no contact "

@@ -63,30 +63,6 @@ namespace tribodyn
   }
 
 
-  ParameterBinding
-  IsotropicElasticMaterial::binding(const std::string &subsection,
-                                    const std::string &outer)
-  {
-    ParameterBinding b(subsection, outer);
-    b.add("Young modulus",
-          youngs_modulus,
-          "Young's modulus E in Pa; must be > 0.",
-          dealii::Patterns::Double(),
-          youngs_modulus_range());
-    b.add("Poisson ratio",
-          poisson_ratio,
-          "Poisson's ratio nu; must lie in (-1, 0.5).",
-          dealii::Patterns::Double(),
-          poisson_ratio_range());
-    b.add("Density",
-          density,
-          "Mass density rho in kg/m^3; must be > 0.",
-          dealii::Patterns::Double(),
-          density_range());
-    return b;
-  }
-
-
   double
   IsotropicElasticMaterial::lambda() const
   {

@@ -31,35 +31,6 @@ namespace tribodyn
   } // namespace
 
 
-  void
-  TwoPhaseMaterials::declare_parameters(dealii::ParameterHandler &prm)
-  {
-    // (the defaults: those of the members)
-    TwoPhaseMaterials defaults;
-    defaults.matrix.binding("Matrix").declare(prm);
-    defaults.heterogeneity.binding("Heterogeneity").declare(prm);
-  }
-
-
-  void
-  TwoPhaseMaterials::parse_parameters(dealii::ParameterHandler &prm,
-                                      const std::string        &section)
-  {
-    matrix.binding("Matrix", section).parse(prm);
-    heterogeneity.binding("Heterogeneity", section).parse(prm);
-  }
-
-
-  std::vector<IsotropicElasticMaterial>
-  TwoPhaseMaterials::phases() const
-  {
-    std::vector<IsotropicElasticMaterial> p(2);
-    p[material_id::matrix]        = matrix;
-    p[material_id::heterogeneity] = heterogeneity;
-    return p;
-  }
-
-
   ParameterBinding
   MorphologyParameters::binding()
   {
@@ -142,7 +113,7 @@ namespace tribodyn
     b.add("Grid file",
           grid_file,
           "Plain-text grid of material ids (0 matrix, 1 heterogeneity; or 0 "
-          "to N-1 for the N phases of 'Materials/Phases'), one row of pixels "
+          "to N-1 for the N materials of 'Materials/Names'), one row of pixels "
           "per line, top row first; '#' starts a comment line. The grid is "
           "stretched over Width x Height.");
     return b;

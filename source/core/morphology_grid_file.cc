@@ -33,7 +33,7 @@ namespace tribodyn
         while (tokens >> token)
           {
             // Ids 0 (matrix) and 1 (heterogeneity), or 0 .. N-1 naming
-            // the phases of 'Materials/Phases' (up to 255).
+            // the materials of 'Materials/Names' (up to 255).
             const bool digits
               = token.size() <= 3
                 && token.find_first_not_of("0123456789") == std::string::npos;
@@ -42,7 +42,7 @@ namespace tribodyn
                                + std::to_string(line_number) + ": '" + token
                                + "' is not a material id. Allowed ids are 0 "
                                  "(matrix) and 1 (heterogeneity), or 0 to N-1 "
-                                 "for the N phases of 'Materials/Phases' "
+                                 "for the N materials of 'Materials/Names' "
                                  "(at most 255).");
             row.push_back(static_cast<unsigned int>(std::stoi(token)));
           }

@@ -2,6 +2,7 @@
 // ParameterHandler refuses: the subsection of the offending line, and the
 // expected form of a value in words rather than deal.II's pattern notation.
 
+#include <algorithm>
 #include <deal.II/base/exceptions.h>
 #include <fstream>
 #include <regex>
@@ -209,7 +210,12 @@ namespace tribodyn
                    std::regex(
                      R"(There is no such subsection to be entered: (.*))")))
           {
-            const std::string name    = trim(e[1].str());
+            // (deal.II names it by its path from the top, joined by '.')
+            std::string dotted = where;
+            std::replace(dotted.begin(), dotted.end(), '/', '.');
+            std::string name = trim(e[1].str());
+            if (!dotted.empty() && name.rfind(dotted + ".", 0) == 0)
+              name = name.substr(dotted.size() + 1);
             const std::string renamed = renamed_hint(where, name);
             cause                     = "there is no subsection '"
                     + (where.empty() ? name + "' in the top level"

@@ -30,6 +30,34 @@ namespace tribodyn
       {"Interaction", "Dieterich", "Rate and state friction"},
     };
 
+    /// A subsection or entry @p old_name inside @p parent that a new layout
+    /// replaced: @p layout says how to write it now.
+    struct ReplacedName
+    {
+      const char *parent;
+      const char *old_name;
+      const char *layout;
+    };
+
+    constexpr ReplacedName replaced_names[] = {
+      {"Materials",
+       "Phases",
+       "the phases are named materials now, as the automata's are: list "
+       "them in 'Materials/Names' (e.g. 'set Names = pores, matrix, "
+       "fibres'; material id k is the k-th name) and give each its "
+       "subsection 'Materials/<Name>' (e.g. 'subsection Fibres') with "
+       "'Young modulus', 'Poisson ratio' and 'Density'; a transversely "
+       "isotropic one also 'Symmetry = transversely isotropic', 'Axis', "
+       "'Axial Young modulus', 'Axial Poisson ratio' and 'Axial shear "
+       "modulus'; 'Pore stiffness ratio' is in 'Materials'"},
+      {"Materials",
+       "Isotropic",
+       "the isotropic pin is of a named material now: give its Young "
+       "modulus, Poisson ratio and Density in its subsection (e.g. "
+       "'subsection Matrix', a name of 'Materials/Names', whose first name "
+       "the pin takes) or name it in 'Materials/Pin material'"},
+    };
+
     /// The choice @p old_value of the entry at @p path is now @p new_value.
     struct RenamedChoice
     {
@@ -69,6 +97,10 @@ namespace tribodyn
   std::string
   renamed_hint(const std::string &parent, const std::string &name)
   {
+    for (const ReplacedName &r : replaced_names)
+      if (parent == r.parent && name == r.old_name)
+        return std::string(" ('") + r.old_name + "' was replaced: " + r.layout
+               + ")";
     const RenamedName *r = find_name(parent, name);
     if (r == nullptr)
       return "";

@@ -5,306 +5,142 @@
 #include <deal.II/base/utilities.h>
 #include <limits>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/material_names.h>
 #include <tribodyn/core/number_list.h>
 #include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/phase_materials.h>
+#include <tribodyn/core/selection.h>
 
 namespace tribodyn
 {
   namespace
   {
-    const std::string axis_names[3] = {"x", "y", "z"};
-  }
-
-
-  namespace
-  {
-    /// The entries of "Phases" and of "Phases/Transversely isotropic",
-    /// each written once (core/parameter_binding.h): the lists as their
-    /// text, which PhaseMaterials::parse_parameters() splits and checks
-    /// against each other.
-    struct PhaseEntries
+    enum class Symmetry
     {
-      std::string names, young_moduli, poisson_ratios, densities;
-      double      pore_stiffness_ratio = PhaseMaterials().pore_stiffness_ratio;
-      std::string transverse_phases, axes, axial_young_moduli,
-        axial_poisson_ratios, axial_shear_moduli;
+      isotropic,
+      transversely_isotropic
+    };
+    constexpr SelectionTable<Symmetry, 2> symmetry_choices{
+      {{"isotropic", Symmetry::isotropic},
+       {"transversely isotropic", Symmetry::transversely_isotropic}}};
 
-      /// @p outer: the path of the subsection that holds "Phases".
+    /// Materials/Names and Materials/Pore stiffness ratio, each written
+    /// once (core/parameter_binding.h).
+    struct ListEntries
+    {
+      std::string names                = "matrix, heterogeneity";
+      double      pore_stiffness_ratio = PhaseMaterials().pore_stiffness_ratio;
+
       ParameterBinding
-      phases(const std::string &outer)
+      binding()
       {
-        ParameterBinding b("Phases", outer);
+        ParameterBinding b("Materials");
         b.add("Names",
               names,
-              "Names of the phases, comma-separated: phase k is "
-              "material id k of the morphology (for an image: "
-              "the k-th class of its segmentation, darkest first, "
-              "or the k-th colour of its colour table). Empty: "
-              "the two phases 'Matrix' (id 0) and "
-              "'Heterogeneity' (id 1) are used instead; when "
-              "given, those two subsections are ignored.");
-        b.add("Young moduli",
-              young_moduli,
-              "Young's modulus of each phase (Pa), in the order of "
-              "'Names'; 0 makes the phase a pore.");
-        b.add("Poisson ratios",
-              poisson_ratios,
-              "Poisson's ratio of each phase, in (-1, 0.5) (not "
-              "used for a pore).");
-        b.add("Densities",
-              densities,
-              "Density of each phase (kg/m^3); 0 is allowed for "
-              "a pore.");
+              "The materials of the morphology, by name, comma-separated: "
+              "material id k of the morphology is the k-th name (for an "
+              "image: the k-th class of its segmentation, darkest first, or "
+              "the k-th colour of its colour table; for the generators: "
+              "matrix 0, heterogeneity 1). Each gets its subsection "
+              "Materials/<Name>, the name with its first letter in upper "
+              "case (fibres: 'subsection Fibres'), as the automata's "
+              "materials do. A material named heterogeneity starts from its "
+              "defaults (E = 80 GPa), any other from the matrix's (30 GPa): "
+              "set what differs.");
         b.add("Pore stiffness ratio",
               pore_stiffness_ratio,
-              "Pores (Young modulus 0) get an ersatz stiffness so "
-              "that every cell problem stays well posed: E = this "
-              "ratio times the smallest Young modulus of the solid "
-              "phases, nu = 0. In (0, 1e-2]; the apparent moduli "
-              "change by about this ratio (relative) when no pore "
-              "touches a boundary loaded by SUBC.",
+              "Pores (Young modulus 0) get an ersatz stiffness so that every "
+              "cell problem stays well posed: E = this ratio times the "
+              "smallest Young modulus of the solid phases, nu = 0. In (0, "
+              "1e-2]; the apparent moduli change by about this ratio "
+              "(relative) when no pore touches a boundary loaded by SUBC.",
               dealii::Patterns::Double(),
               Interval{0,
                        1e-2,
                        true,
                        false,
-                       "It is the ersatz Young modulus of pores relative "
-                       "to the softest solid phase."});
+                       "It is the ersatz Young modulus of pores relative to "
+                       "the softest solid phase."});
         return b;
       }
 
-      ParameterBinding
-      transversely_isotropic(const std::string &outer)
+      /// The names, checked (@p prm at the top level).
+      std::vector<std::string>
+      read(dealii::ParameterHandler &prm)
       {
-        ParameterBinding b("Phases/Transversely isotropic", outer);
-        b.add("Phases",
-              transverse_phases,
-              "Names (from 'Names') of the phases that are transversely "
-              "isotropic, comma-separated; empty: every phase is isotropic. "
-              "For these phases the entries of 'Young moduli' and 'Poisson "
-              "ratios' are E_T and nu_TT of their plane of isotropy, and the "
-              "lists below give, in the order of this list, the axis and the "
-              "axial constants.");
-        b.add("Axes",
-              axes,
-              "Direction of the axis L of each phase of "
-              "'Phases': x or y (in the plane of the problem) or "
-              "z (normal to it: the fibres of a cross-section).");
-        b.add("Axial Young moduli",
-              axial_young_moduli,
-              "E_L of each phase of 'Phases' (Pa).");
-        b.add("Axial Poisson ratios",
-              axial_poisson_ratios,
-              "nu_LT of each phase of 'Phases': -eps_T / eps_L "
-              "under a uniaxial stress along L.");
-        b.add("Axial shear moduli",
-              axial_shear_moduli,
-              "G_LT of each phase of 'Phases' (Pa): the shear "
-              "modulus of planes that contain L.");
+        ParameterBinding b = binding();
+        b.parse(prm);
+        return split_material_names(names,
+                                    b.path("Names"),
+                                    {"matrix, fibres", "", "", 0});
+      }
+    };
+
+    /// The entries of one material's subsection, each written once; their
+    /// ranges depend on each other (a pore, a transversely isotropic
+    /// phase) and are checked by PhaseEntries::check().
+    struct MaterialEntries
+    {
+      IsotropicElasticMaterial elastic;
+      Symmetry                 symmetry = Symmetry::isotropic;
+      std::string              axis     = "z";
+      double                   E_L = 0, nu_LT = 0, G_LT = 0;
+
+      /// The defaults of material @p name: the heterogeneity's of the
+      /// generated morphologies for heterogeneity, the matrix's for every
+      /// other name.
+      explicit MaterialEntries(const std::string &name)
+          : elastic(name == "heterogeneity"
+                      ? IsotropicElasticMaterial{80e9, 0.2, 1770.}
+                      : IsotropicElasticMaterial{30e9, 0.2, 1770.})
+      {
+      }
+
+      ParameterBinding
+      binding(const std::string &section)
+      {
+        ParameterBinding b(section);
+        b.add("Young modulus",
+              elastic.youngs_modulus,
+              "Young's modulus E (Pa), > 0; 0 makes the material a pore (the "
+              "pixels of a meso pin's pores are cut out of the pin). A "
+              "transversely isotropic material: E_T, of its plane of "
+              "isotropy.");
+        b.add("Poisson ratio",
+              elastic.poisson_ratio,
+              "Poisson's ratio nu, in (-1, 0.5) (not used for a pore). A "
+              "transversely isotropic material: nu_TT, of its plane of "
+              "isotropy (may exceed 0.5: its whole stiffness must be "
+              "positive definite).");
+        b.add("Density",
+              elastic.density,
+              "Mass density rho (kg/m^3), > 0; 0 is allowed for a pore.");
+        b.add("Symmetry",
+              symmetry,
+              "isotropic, or transversely isotropic with the axis and the "
+              "axial constants below.",
+              symmetry_choices);
+        b.add("Axis",
+              axis,
+              "Transversely isotropic: the direction of the axis L: x or y "
+              "(in the plane of a 2D problem) or z (normal to it: the fibres "
+              "of a cross-section).",
+              dealii::Patterns::Selection("x|y|z"));
+        b.add("Axial Young modulus",
+              E_L,
+              "Transversely isotropic: E_L (Pa), > 0.");
+        b.add("Axial Poisson ratio",
+              nu_LT,
+              "Transversely isotropic: nu_LT = -eps_T / eps_L under a "
+              "uniaxial stress along L.");
+        b.add("Axial shear modulus",
+              G_LT,
+              "Transversely isotropic: G_LT (Pa), > 0, the shear modulus of "
+              "planes that contain L.");
         return b;
       }
     };
   } // namespace
-
-
-  void
-  PhaseMaterials::declare_parameters(dealii::ParameterHandler &prm)
-  {
-    PhaseEntries e;
-    e.phases("").declare(prm);
-    e.transversely_isotropic("").declare(prm);
-  }
-
-
-  void
-  PhaseMaterials::set_transversely_isotropic(const TransverseLists &l,
-                                             const std::string     &section)
-  {
-    const std::string s     = section + "Transversely isotropic/";
-    const auto       &which = l.which, &axes = l.axes;
-    const auto       &E_L = l.E_L, &nu_LT = l.nu_LT, &G_LT = l.G_LT;
-    axial.assign(names.size(), std::nullopt);
-    const auto check_size = [&](const std::size_t n, const std::string &name) {
-      check_parameter(n == which.size(),
-                      s + name,
-                      "give one entry per phase of '" + s
-                        + "Phases': " + std::to_string(n) + " for "
-                        + std::to_string(which.size()) + " phases.");
-    };
-    check_size(axes.size(), "Axes");
-    check_size(E_L.size(), "Axial Young moduli");
-    check_size(nu_LT.size(), "Axial Poisson ratios");
-    check_size(G_LT.size(), "Axial shear moduli");
-    for (unsigned int t = 0; t < which.size(); ++t)
-      {
-        const auto k = static_cast<unsigned int>(
-          std::find(names.begin(), names.end(), which[t]) - names.begin());
-        std::string known;
-        for (const auto &n : names)
-          known += (known.empty() ? "" : ", ") + n;
-        check_parameter(k < names.size(),
-                        s + "Phases",
-                        "'" + which[t] + "' is not a phase of '" + section
-                          + "Names' (" + known + ").");
-        check_parameter(!axial[k],
-                        s + "Phases",
-                        "'" + which[t] + "' is given twice.");
-        check_parameter(!pore[k],
-                        s + "Phases",
-                        "'" + which[t]
-                          + "' is a pore (Young modulus 0): a pore has no "
-                            "elastic constants.");
-        const auto axis
-          = std::find(std::begin(axis_names), std::end(axis_names), axes[t])
-            - std::begin(axis_names);
-        check_parameter(axis < 3,
-                        s + "Axes",
-                        "'" + axes[t] + "' (phase '" + which[t]
-                          + "') is not an axis: give x, y or z.");
-        TransverselyIsotropicConstants c;
-        c.E_L   = E_L[t];
-        c.E_T   = materials[k].youngs_modulus;
-        c.nu_LT = nu_LT[t];
-        c.nu_TT = materials[k].poisson_ratio;
-        c.G_LT  = G_LT[t];
-        c.axis  = static_cast<unsigned int>(axis);
-        check_parameter_range(s + "Axial Young moduli (" + which[t] + ")",
-                              c.E_L,
-                              0,
-                              max_youngs_modulus,
-                              true,
-                              false);
-        check_parameter_range(s + "Axial shear moduli (" + which[t] + ")",
-                              c.G_LT,
-                              0,
-                              max_youngs_modulus,
-                              true,
-                              false);
-        // the positive definiteness of the stiffness
-        ElasticPhase(c,
-                     materials[k].density,
-                     section + "Transversely isotropic (phase '" + which[t]
-                       + "', with its entries of '" + section
-                       + "Young moduli' and '" + section + "Poisson ratios')");
-        axial[k] = c;
-      }
-  }
-
-
-  void
-  PhaseMaterials::parse_parameters(dealii::ParameterHandler &prm,
-                                   const std::string        &section)
-  {
-    const std::string s = section + "/Phases/";
-    PhaseEntries      e;
-    e.phases(section).parse(prm);
-    e.transversely_isotropic(section).parse(prm);
-    names = dealii::Utilities::split_string_list(e.names);
-    const std::vector<double> E
-      = parse_number_list(e.young_moduli, s + "Young moduli");
-    const std::vector<double> nu
-      = parse_number_list(e.poisson_ratios, s + "Poisson ratios");
-    const std::vector<double> rho
-      = parse_number_list(e.densities, s + "Densities");
-    pore_stiffness_ratio = e.pore_stiffness_ratio;
-    const std::string t  = s + "Transversely isotropic/";
-    TransverseLists   transverse;
-    transverse.which
-      = dealii::Utilities::split_string_list(e.transverse_phases);
-    transverse.axes = dealii::Utilities::split_string_list(e.axes);
-    transverse.E_L
-      = parse_number_list(e.axial_young_moduli, t + "Axial Young moduli");
-    transverse.nu_LT
-      = parse_number_list(e.axial_poisson_ratios, t + "Axial Poisson ratios");
-    transverse.G_LT
-      = parse_number_list(e.axial_shear_moduli, t + "Axial shear moduli");
-    materials.clear();
-    pore.clear();
-    axial.clear();
-    if (names.empty())
-      {
-        check_parameter(transverse.which.empty(),
-                        s + "Transversely isotropic/Phases",
-                        "transversely isotropic phases need named phases: "
-                        "give '"
-                          + s + "Names' and their constants.");
-        check_parameter(E.empty() && nu.empty() && rho.empty(),
-                        s + "Names",
-                        "the properties of phases are given but not their "
-                        "names: give one name per phase, comma-separated.");
-        return;
-      }
-    check_parameter(names.size() >= 2,
-                    s + "Names",
-                    "give at least two phases (a single one is 'Generator = "
-                    "homogeneous' with the two-phase 'Matrix').");
-    for (unsigned int k = 0; k < names.size(); ++k)
-      for (unsigned int q = 0; q < k; ++q)
-        check_parameter(names[k] != names[q],
-                        s + "Names",
-                        "the name '" + names[k] + "' is given twice.");
-    const auto check_size = [&](const std::vector<double> &v,
-                                const std::string         &name) {
-      check_parameter(v.size() == names.size(),
-                      s + name,
-                      "give one value per phase: " + std::to_string(v.size())
-                        + " values for the " + std::to_string(names.size())
-                        + " phases of '" + s + "Names'.");
-    };
-    check_size(E, "Young moduli");
-    check_size(nu, "Poisson ratios");
-    check_size(rho, "Densities");
-    for (unsigned int k = 0; k < names.size(); ++k)
-      {
-        IsotropicElasticMaterial m;
-        m.youngs_modulus   = E[k];
-        m.poisson_ratio    = nu[k];
-        m.density          = rho[k];
-        const bool is_pore = E[k] == 0;
-        if (is_pore)
-          check_parameter_range(s + "Densities (" + names[k] + ")",
-                                rho[k],
-                                0,
-                                max_density,
-                                false,
-                                false);
-        else if (std::find(transverse.which.begin(),
-                           transverse.which.end(),
-                           names[k])
-                 != transverse.which.end())
-          {
-            // E_T and nu_TT: nu_TT may exceed 0.5 (the positive
-            // definiteness of the whole stiffness is checked below)
-            const std::string t = s + names[k] + ": ";
-            check_parameter_range(
-              t + "Young moduli", E[k], 0, max_youngs_modulus, true, false);
-            check_parameter_range(
-              t + "Densities", rho[k], 0, max_density, true, false);
-          }
-        else
-          check_isotropic_elastic_constants(s + names[k]
-                                              + ": Young moduli, "
-                                                "Poisson ratios, Densities",
-                                            E[k],
-                                            nu[k],
-                                            rho[k]);
-        materials.push_back(m);
-        pore.push_back(is_pore);
-      }
-    set_transversely_isotropic(transverse, s);
-    check_parameter(std::count(pore.begin(), pore.end(), false) >= 1,
-                    s + "Young moduli",
-                    "every phase is a pore (Young modulus 0): at least one "
-                    "must be solid.");
-  }
-
-
-  bool
-  PhaseMaterials::given() const
-  {
-    return !names.empty();
-  }
 
 
   unsigned int
@@ -347,52 +183,128 @@ namespace tribodyn
   void
   MorphologyMaterials::declare_parameters(dealii::ParameterHandler &prm)
   {
-    prm.enter_subsection("Materials");
-    TwoPhaseMaterials::declare_parameters(prm);
-    PhaseMaterials::declare_parameters(prm);
-    prm.leave_subsection();
+    ListEntries().binding().declare(prm);
+    declare_material_sections(prm);
+  }
+
+
+  void
+  MorphologyMaterials::declare_material_sections(dealii::ParameterHandler &prm)
+  {
+    // (declared again for a name that already has one: same entries, same
+    // defaults)
+    ListEntries entries;
+    entries.binding().parse(prm);
+    for (const auto &name : dealii::Utilities::split_string_list(entries.names))
+      if (!name.empty())
+        MaterialEntries(name)
+          .binding("Materials/" + material_subsection(name))
+          .declare(prm);
   }
 
 
   void
   MorphologyMaterials::parse_parameters(dealii::ParameterHandler &prm)
   {
-    prm.enter_subsection("Materials");
-    TwoPhaseMaterials::parse_parameters(prm, "Materials");
-    named.parse_parameters(prm, "Materials");
-    prm.leave_subsection();
+    ListEntries entries;
+    list                      = PhaseMaterials();
+    list.names                = entries.read(prm);
+    list.pore_stiffness_ratio = entries.pore_stiffness_ratio;
+    for (const std::string &name : list.names)
+      {
+        const std::string section = "Materials/" + material_subsection(name);
+        MaterialEntries   e(name);
+        e.binding(section).parse(prm);
+        const IsotropicElasticMaterial &m       = e.elastic;
+        const bool                      is_pore = m.youngs_modulus == 0;
+        std::optional<TransverselyIsotropicConstants> axial;
+        if (is_pore)
+          {
+            check_parameter_range(
+              section + "/Density", m.density, 0, max_density, false, false);
+            check_parameter(e.symmetry == Symmetry::isotropic,
+                            section + "/Symmetry",
+                            "'" + name
+                              + "' is a pore (Young modulus 0): a pore has "
+                                "no elastic constants; set 'Symmetry = "
+                                "isotropic' or give its Young modulus.");
+          }
+        else if (e.symmetry == Symmetry::transversely_isotropic)
+          {
+            // E_T and nu_TT: nu_TT may exceed 0.5 (the positive
+            // definiteness of the whole stiffness is checked below)
+            check_parameter_range(section + "/Young modulus",
+                                  m.youngs_modulus,
+                                  0,
+                                  max_youngs_modulus,
+                                  true,
+                                  false);
+            check_parameter_range(
+              section + "/Density", m.density, 0, max_density, true, false);
+            check_parameter_range(section + "/Axial Young modulus",
+                                  e.E_L,
+                                  0,
+                                  max_youngs_modulus,
+                                  true,
+                                  false);
+            check_parameter_range(section + "/Axial shear modulus",
+                                  e.G_LT,
+                                  0,
+                                  max_youngs_modulus,
+                                  true,
+                                  false);
+            TransverselyIsotropicConstants c;
+            c.E_L   = e.E_L;
+            c.E_T   = m.youngs_modulus;
+            c.nu_LT = e.nu_LT;
+            c.nu_TT = m.poisson_ratio;
+            c.G_LT  = e.G_LT;
+            c.axis  = e.axis == "x" ? 0 : e.axis == "y" ? 1 : 2;
+            // the positive definiteness of the stiffness
+            ElasticPhase(c, m.density, section);
+            axial = c;
+          }
+        else
+          check_isotropic_elastic_constants(section,
+                                            m.youngs_modulus,
+                                            m.poisson_ratio,
+                                            m.density);
+        list.materials.push_back(m);
+        list.pore.push_back(is_pore);
+        list.axial.push_back(axial);
+      }
+    check_parameter(std::count(list.pore.begin(), list.pore.end(), false) >= 1,
+                    "Materials/Names",
+                    "every material is a pore (Young modulus 0): at least "
+                    "one must be solid.");
   }
 
 
   std::vector<ElasticPhase>
   MorphologyMaterials::phases() const
   {
-    if (named.given())
-      return named.phases();
-    const auto two = TwoPhaseMaterials::phases();
-    return {two.begin(), two.end()};
+    return list.phases();
   }
 
 
   std::vector<IsotropicElasticMaterial>
   MorphologyMaterials::given() const
   {
-    return named.given() ? named.materials : TwoPhaseMaterials::phases();
+    return list.materials;
   }
 
 
   std::vector<std::string>
   MorphologyMaterials::names() const
   {
-    return named.given() ? named.names
-                         : std::vector<std::string>{"matrix", "heterogeneity"};
+    return list.names;
   }
 
 
   std::vector<bool>
   MorphologyMaterials::pores() const
   {
-    return named.given() ? named.pore : std::vector<bool>(2, false);
+    return list.pore;
   }
 
 
@@ -401,35 +313,28 @@ namespace tribodyn
                              const bool        image) const
   {
     const unsigned int n_given = names().size();
-    if (!named.given())
-      check_parameter(morphology.n_phases() <= 2,
-                      "Materials/Phases/Names",
-                      "the morphology has "
-                        + std::to_string(morphology.n_phases())
-                        + " phases (material ids 0 to "
-                        + std::to_string(morphology.n_phases() - 1)
-                        + ") but only two are given ('Materials/Matrix' and "
-                          "'Materials/Heterogeneity'). Name every phase in "
-                          "'Materials/Phases' (Names, Young moduli, Poisson "
-                          "ratios, Densities), in the order of the "
-                          "segmentation.");
-    else if (image)
+    const std::string  named
+      = " ('Materials/Names': " + material_list_message(names()) + ")";
+    if (image)
       check_parameter(morphology.n_phases() == n_given,
-                      "Materials/Phases/Names",
+                      "Materials/Names",
                       "the image is segmented into "
                         + std::to_string(morphology.n_phases())
                         + " phases by 'Morphology/Image/Segmentation', but "
-                        + std::to_string(n_given)
-                        + " phases are named. Give as many names (and "
+                        + std::to_string(n_given) + " materials are named"
+                        + named
+                        + ". Give as many names (and "
                           "constants) as the segmentation has phases, or "
                           "change the segmentation.");
     else
       check_parameter(morphology.n_phases() <= n_given,
-                      "Materials/Phases/Names",
+                      "Materials/Names",
                       "the morphology has material ids up to "
                         + std::to_string(morphology.n_phases() - 1)
                         + " but only " + std::to_string(n_given)
-                        + " phases are named.");
+                        + " materials are named" + named
+                        + ". Name one material per phase, in the order of "
+                          "the material ids.");
   }
 
 

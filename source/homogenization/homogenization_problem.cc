@@ -150,7 +150,7 @@ namespace tribodyn
                 << " pore pixels touch the boundary. SUBC loads them with "
                    "the traction Sigma n, which a pore cannot carry: the "
                    "SUBC apparent stiffness then reflects the ersatz pore "
-                   "stiffness ('Materials/Phases/Pore stiffness ratio') and "
+                   "stiffness ('Materials/Pore stiffness ratio') and "
                    "tends to zero with it. Use KUBC and periodic, or crop "
                    "the image so that no pore cuts its edges."
                 << std::endl;
@@ -308,7 +308,9 @@ namespace tribodyn
          [](ParameterHandler &prm, const RunContext &context) {
            return std::unique_ptr<Problem>(
              new HomogenizationProblem(prm, context));
-         }});
+         },
+         {},
+         &MorphologyMaterials::declare_material_sections});
     } // namespace
   }   // namespace homogenization
 } // namespace tribodyn

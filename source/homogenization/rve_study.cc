@@ -326,12 +326,12 @@ namespace tribodyn
       const unsigned int n_named = materials.names().size();
       if (fixed_map)
         check_parameter(fixed_map->n_phases() <= n_named,
-                        "Materials/Phases/Names",
+                        "Materials/Names",
                         "the morphology has material ids up to "
                           + std::to_string(fixed_map->n_phases() - 1)
                           + " but only " + std::to_string(n_named)
-                          + " phases are named. Name every phase in "
-                            "'Materials/Phases'.");
+                          + " materials are named. Name one material per "
+                            "phase, in the order of the material ids.");
 
       plan_windows();
 
@@ -466,10 +466,10 @@ namespace tribodyn
       const Morphology   window   = make_window(w);
       const unsigned int n_phases = materials.names().size();
       check_parameter(window.n_phases() <= n_phases,
-                      "Materials/Phases/Names",
+                      "Materials/Names",
                       "a window holds material id "
                         + std::to_string(window.n_phases() - 1) + " but only "
-                        + std::to_string(n_phases) + " phases are named.");
+                        + std::to_string(n_phases) + " materials are named.");
       std::vector<double> values(n_phases, 0.);
       const auto          f = window.phase_fractions();
       for (unsigned int k = 0; k < f.size() && k < n_phases; ++k)
@@ -684,7 +684,9 @@ namespace tribodyn
          &RveStudy::declare_parameters,
          [](ParameterHandler &prm, const RunContext &context) {
            return std::unique_ptr<Problem>(new RveStudy(prm, context));
-         }});
+         },
+         {},
+         &MorphologyMaterials::declare_material_sections});
     } // namespace
   }   // namespace homogenization
 } // namespace tribodyn

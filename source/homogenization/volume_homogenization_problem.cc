@@ -109,13 +109,13 @@ namespace tribodyn
       const auto &materials = parameters.materials;
       const auto  names     = materials.names();
       check_parameter(volume.n_phases() <= names.size(),
-                      "Materials/Phases/Names",
+                      "Materials/Names",
                       "the volume has material ids up to "
                         + std::to_string(volume.n_phases() - 1) + " but "
                         + std::to_string(names.size())
-                        + " phases are given. Name every phase in "
-                          "'Materials/Phases' (Names, Young moduli, Poisson "
-                          "ratios, Densities), phase k being material id k.");
+                        + " materials are named. Name one material per "
+                          "phase in 'Materials/Names' (material id k is the "
+                          "k-th name), each with its subsection.");
       const std::vector<ElasticPhase> phases = materials.phases();
       std::vector<VoigtMatrix6>       stiffness;
       for (const auto &phase : phases)
@@ -160,7 +160,7 @@ namespace tribodyn
                   << " pore voxels touch the boundary. SUBC loads them with "
                      "the traction Sigma n, which a pore cannot carry: the "
                      "SUBC apparent stiffness then reflects the ersatz pore "
-                     "stiffness ('Materials/Phases/Pore stiffness ratio') "
+                     "stiffness ('Materials/Pore stiffness ratio') "
                      "and tends to zero with it. Use KUBC and periodic, or a "
                      "volume whose faces cut no pore."
                   << std::endl;
@@ -295,7 +295,9 @@ namespace tribodyn
            p.parse_parameters(prm);
            return std::unique_ptr<Problem>(
              new VolumeHomogenizationProblem(p, context));
-         }});
+         },
+         {},
+         &MorphologyMaterials::declare_material_sections});
     } // namespace
   }   // namespace homogenization
 } // namespace tribodyn

@@ -456,7 +456,8 @@ namespace tribodyn
                                 + "' must be positive.");
             r.material = t.back() == "void"
                            ? -1
-                           : material_index(material_names, t.back(), p);
+                           : static_cast<int>(
+                             material_index(material_names, t.back(), p));
             regions.push_back(r);
           }
       }

@@ -31,20 +31,6 @@ namespace tribodyn
     } // namespace
 
 
-    int
-    material_index(const std::vector<std::string> &names,
-                   const std::string              &name,
-                   const std::string              &parameter)
-    {
-      for (unsigned int i = 0; i < names.size(); ++i)
-        if (names[i] == name)
-          return i;
-      throw InputError("Parameter '" + parameter + "': unknown material '"
-                       + name + "'. The materials are: "
-                       + material_list_message(names) + ".");
-    }
-
-
     // ------------------------------------------------------------------
     MaterialParameters
     MaterialParameters::steel()
@@ -181,18 +167,6 @@ namespace tribodyn
 
     namespace
     {
-      /// Subsection of material @p name: the name with its first letter
-      /// in upper case (steel: Materials/Steel).
-      std::string
-      material_subsection(const std::string &name)
-      {
-        std::string s = name;
-        if (!s.empty())
-          s[0]
-            = static_cast<char>(std::toupper(static_cast<unsigned char>(s[0])));
-        return s;
-      }
-
       /// The defaults of material @p name: carbon's for carbon, steel's for
       /// steel and for every other name.
       MaterialParameters
@@ -241,42 +215,12 @@ namespace tribodyn
       std::vector<std::string>
       material_names(ParameterHandler &prm)
       {
-        MaterialNames     entry;
-        const auto        names = entry.read(prm);
-        const std::string path  = entry.binding().path("Names");
-        check_parameter(!names.empty(),
-                        path,
-                        "must name at least one material (e.g. 'steel, "
-                        "carbon').");
-        check_parameter(names.size() <= 64,
-                        path,
-                        "names " + std::to_string(names.size())
-                          + " materials; at most 64 are supported.");
-        std::vector<std::string> seen;
-        for (const auto &n : names)
-          {
-            std::string lower = n;
-            for (char &c : lower)
-              c = static_cast<char>(
-                std::tolower(static_cast<unsigned char>(c)));
-            check_parameter(
-              !n.empty() && n.find_first_of(" \t/") == std::string::npos
-                && lower != "void",
-              path,
-              "'" + n
-                + "' is not a material name: use letters, digits and "
-                  "'_' (no spaces or '/'; 'void' is reserved for the voids of "
-                  "Geometry/Regions).");
-            check_parameter(std::find(seen.begin(), seen.end(), lower)
-                              == seen.end(),
-                            path,
-                            "names '" + n
-                              + "' twice (names differing only in case "
-                                "count as the same: their subsections "
-                                "would coincide).");
-            seen.push_back(lower);
-          }
-        return names;
+        MaterialNames entry;
+        entry.binding().parse(prm);
+        return split_material_names(
+          entry.names,
+          entry.binding().path("Names"),
+          {"steel, carbon", "void", "the voids of Geometry/Regions", 64});
       }
     } // namespace
 

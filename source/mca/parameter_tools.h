@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/material_names.h>
 #include <tribodyn/mca/parameters.h>
 #include <vector>
 
@@ -99,15 +100,6 @@ namespace tribodyn
           throw InputError("Parameter '" + parameter + "' = '" + text
                            + "' must be three numbers 'x, y, z'.");
         return read_point(t, 0, parameter, text);
-      }
-
-      inline std::string
-      material_list_message(const std::vector<std::string> &names)
-      {
-        std::string s;
-        for (const auto &n : names)
-          s += (s.empty() ? "" : ", ") + n;
-        return s;
       }
 
     } // namespace parameter_tools

@@ -35,24 +35,21 @@ namespace tribodyn
     StudyProblem::StudyProblem(ParameterHandler &prm, const RunContext &context)
         : context(context)
     {
-      base.parse_parameters(prm);
+      base.parse_parameters(prm, false);
       base.check_averaging_window(false);
       parameters.parse_parameters(prm);
       parameters_of_homogenization
         = homogenization::HomogenizationParameters::defaults();
       parameters_of_homogenization.morphology = base.morphology;
-      const bool named = base.material.composite.named.given();
-      check_parameter(!named
-                        || std::find(parameters.models.begin(),
-                                     parameters.models.end(),
-                                     PinModel::homogeneous_matrix)
-                             == parameters.models.end(),
-                      "Study/Models",
-                      "no 'homogeneous matrix' when the phases are named in "
-                      "'Materials/Phases': that model is the pin of "
-                      "'Materials/Matrix' alone. Leave it out, or give an "
-                      "isotropic pin of the phase you mean its own run "
-                      "('set Problem = contact')");
+      // 'homogeneous matrix': the isotropic pin of Materials/Pin material
+      if (std::find(parameters.models.begin(),
+                    parameters.models.end(),
+                    PinModel::homogeneous_matrix)
+          != parameters.models.end())
+        base.material.check_isotropic_pin(
+          base.material.pin_index,
+          "Materials/Pin material",
+          "the pin of the model 'homogeneous matrix' (Study/Models)");
       const bool is_map = base.morphology.is_map();
       if (parameters.window_size[0] > 0)
         {
@@ -202,16 +199,17 @@ namespace tribodyn
           homogenized_C += morphology_C.back();
           homogenized_c_z += cz;
           std::ifstream        in(file);
-          const nlohmann::json j       = nlohmann::json::parse(in);
-          const double         f       = j.at("volume_fraction").get<double>();
-          double               density = 0;
-          if (base.material.composite.named.given())
-            for (const auto &phase : j.at("phases"))
-              density += phase.at("fraction").get<double>()
-                         * phase.at("density").get<double>();
-          else
-            density = (1. - f) * base.material.composite.matrix.density
-                      + f * base.material.composite.heterogeneity.density;
+          const nlohmann::json j = nlohmann::json::parse(in);
+          const double         f = j.at("volume_fraction").get<double>();
+          // rho = rho_0 + sum_k>0 f_k (rho_k - rho_0): exactly rho_0 when
+          // the phases share their density, whatever the rounding of the
+          // fractions
+          const auto  &phases  = j.at("phases");
+          const double rho_0   = phases.at(0).at("density").get<double>();
+          double       density = rho_0;
+          for (std::size_t k = 1; k < phases.size(); ++k)
+            density += phases[k].at("fraction").get<double>()
+                       * (phases[k].at("density").get<double>() - rho_0);
           morphology_density.push_back(density);
           homogenized_density += density;
           record["summaries"].push_back(file);
@@ -352,8 +350,9 @@ namespace tribodyn
       switch (c.model)
         {
           case PinModel::homogeneous_matrix:
-            p.material.type      = Type::isotropic;
-            p.material.isotropic = base.material.composite.matrix;
+            p.material.type = Type::isotropic;
+            p.material.isotropic
+              = base.material.composite.given().at(base.material.pin_index);
             break;
           case PinModel::homogenized:
             set_homogenized_material(p, c.seed);
@@ -596,7 +595,9 @@ namespace tribodyn
          &StudyProblem::declare_parameters,
          [](ParameterHandler &prm, const RunContext &context) {
            return std::unique_ptr<Problem>(new StudyProblem(prm, context));
-         }});
+         },
+         {},
+         &MorphologyMaterials::declare_material_sections});
     } // namespace
   }   // namespace study
 } // namespace tribodyn

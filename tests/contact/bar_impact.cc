@@ -22,7 +22,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const double E = 30e9, rho = 1770, v0 = 1., L = 8e-3, W = 1e-3;
   ContactRun   run(column_impact_prm(R"(
-      subsection Isotropic
+      subsection Matrix
         set Young modulus = 30e9
         set Poisson ratio = 0
         set Density = 1770

@@ -77,9 +77,9 @@ check(s["n_dofs"] == 2 * (nx + 1) * (ny + 1),
       "n_dofs %d = 2 (%d + 1)(%d + 1)" % (s["n_dofs"], nx, ny))
 
 # 3. The element eigenproblem.
-E = number("Materials/Isotropic/Young modulus")
-nu = number("Materials/Isotropic/Poisson ratio")
-rho = number("Materials/Isotropic/Density")
+E = number("Materials/Matrix/Young modulus")
+nu = number("Materials/Matrix/Poisson ratio")
+rho = number("Materials/Matrix/Density")
 c = E / ((1 + nu) * (1 - 2 * nu))
 D = [[c * (1 - nu), c * nu, 0], [c * nu, c * (1 - nu), 0], [0, 0, c * (1 - 2 * nu) / 2]]
 K = [[0.0] * 8 for _ in range(8)]

@@ -23,6 +23,10 @@ namespace tribodyn_test
   {
     dealii::ParameterHandler prm;
     ContactParameters::declare_parameters(prm);
+    // (the subsections of the named materials depend on the text's names:
+    // a lenient reading, their declaration, then the strict one)
+    prm.parse_input_from_string(prm_text, "", true);
+    MorphologyMaterials::declare_material_sections(prm);
     prm.parse_input_from_string(prm_text);
     ContactParameters p;
     p.parse_parameters(prm);

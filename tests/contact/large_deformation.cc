@@ -27,7 +27,7 @@ namespace
       subsection Materials
         set Kinematics = )"
            + kinematics + R"(
-        subsection Isotropic
+        subsection Matrix
           set Young modulus = 30e9
           set Poisson ratio = )"
            + nu + R"(

@@ -30,7 +30,8 @@
 // (e) A pin of one phase that is not material 0 (a grid file of
 //     heterogeneity only) is the homogeneous pin of the heterogeneity's
 //     constants (1e-12, as (a)); before issue #50 the one-material kernel
-//     took material 0's stiffness for it.
+//     took material 0's stiffness for it. The homogeneous pin is chosen
+//     by name ('Materials/Pin material = heterogeneity', issue #52 item 4).
 // (d) Morphology::held_from_top(): a solid ring closed by pores around an
 //     island keeps the ring and cuts the island; corner contacts do not
 //     hold a pixel.
@@ -147,9 +148,7 @@ namespace
     return R"(
       subsection Materials
         set Type = morphology
-        subsection Phases
 )" + phases + R"(
-        end
       end
       subsection Morphology
         set Generator = image
@@ -181,10 +180,22 @@ main(int argc, char **argv)
   {
     const std::string run_to = sliding("20e-6");
     ContactRun        meso(run_to + image_pin("laminate3.png", R"(
-          set Names          = a, b, c
-          set Young moduli   = 30e9, 30e9, 30e9
-          set Poisson ratios = 0.2, 0.2, 0.2
-          set Densities      = 1770, 1770, 1770)"));
+        set Names = a, b, c
+        subsection A
+          set Young modulus = 30e9
+          set Poisson ratio = 0.2
+          set Density       = 1770
+        end
+        subsection B
+          set Young modulus = 30e9
+          set Poisson ratio = 0.2
+          set Density       = 1770
+        end
+        subsection C
+          set Young modulus = 30e9
+          set Poisson ratio = 0.2
+          set Density       = 1770
+        end)"));
     ContactRun        homogeneous(run_to + R"(
       subsection Geometry
         set Width = 4e-3
@@ -206,18 +217,25 @@ main(int argc, char **argv)
     ContactRun run(static_press
                    + image_pin("laminate3_y.png",
                                R"(
-          set Names          = soft, fibres, stiff
-          set Young moduli   = 30e9, 40e9, 80e9
-          set Poisson ratios = 0, 0, 0
-          set Densities      = 1770, 1770, 1770
-          subsection Transversely isotropic
-            set Phases               = fibres
-            set Axes                 = )"
+        set Names = soft, fibres, stiff
+        subsection Soft
+          set Young modulus = 30e9
+          set Poisson ratio = 0
+        end
+        subsection Fibres
+          set Young modulus       = 40e9
+          set Poisson ratio       = 0
+          set Symmetry            = transversely isotropic
+          set Axis                = )"
                                  + axis + R"(
-            set Axial Young moduli   = 230e9
-            set Axial Poisson ratios = 0
-            set Axial shear moduli   = 27e9
-          end)",
+          set Axial Young modulus = 230e9
+          set Axial Poisson ratio = 0
+          set Axial shear modulus = 27e9
+        end
+        subsection Stiff
+          set Young modulus = 80e9
+          set Poisson ratio = 0
+        end)",
                                2));
     return run.run().back().elastic_energy;
   };
@@ -242,10 +260,22 @@ main(int argc, char **argv)
   // (c) pores cut out: four solid columns of 14 pixels
   {
     ContactRun   run(static_press + image_pin("laminate3.png", R"(
-          set Names          = pore, b, c
-          set Young moduli   = 0, 30e9, 30e9
-          set Poisson ratios = 0, 0, 0
-          set Densities      = 0, 1770, 1770)"));
+        set Names = pore, b, c
+        subsection Pore
+          set Young modulus = 0
+          set Poisson ratio = 0
+          set Density       = 0
+        end
+        subsection B
+          set Young modulus = 30e9
+          set Poisson ratio = 0
+          set Density       = 1770
+        end
+        subsection C
+          set Young modulus = 30e9
+          set Poisson ratio = 0
+          set Density       = 1770
+        end)"));
     const double W = 4e-3, H = 1e-3, solid = 0.7;
     check_relative(run.solver->total_mass(),
                    1770 * solid * W * H,
@@ -286,18 +316,18 @@ main(int argc, char **argv)
         set Width = 4e-3
         set Height = 1e-3
       end)");
-    ContactRun        homogeneous(run_to + R"(
+    // (the homogeneous pin of the material named 'heterogeneity', with
+    // its default constants: the pin's material chosen by name)
+    ContactRun   homogeneous(run_to + R"(
       subsection Materials
-        subsection Isotropic
-          set Young modulus = 80e9
-        end
+        set Pin material = heterogeneity
       end
       subsection Geometry
         set Width = 4e-3
         set Height = 1e-3
         set Mesh size = 1e-4
       end)");
-    const double      difference
+    const double difference
       = largest_sample_difference(meso.run(), homogeneous.run());
     check(difference <= 1e-12,
           "a pin of heterogeneity only = homogeneous pin of its constants "

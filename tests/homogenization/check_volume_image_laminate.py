@@ -46,9 +46,7 @@ check(len(got) == 3 and all(abs(a - b) < 1e-14
 check(abs(s["voxel_size"][0] - 2e-6) < 1e-20,
       "voxel size 'Morphology/Voxel size' = 2 um")
 prm = plot_tools.read_parameters(out)
-given = list(zip(
-    (float(x) for x in prm["Materials/Phases/Young moduli"].split(",")),
-    (float(x) for x in prm["Materials/Phases/Poisson ratios"].split(","))))
+given = v.given_materials(prm)
 # contrast 230/3: SUBC's multigrid takes ~41 iterations (30 at contrast 23)
 v.check_laminate(check, s, given, fractions, 1, max_iterations=60)
 check.exit()

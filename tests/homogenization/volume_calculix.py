@@ -64,15 +64,9 @@ check(len(set(ids.values())) == 3, "all three phases present")
 header = v.write_raw(work, "volume", lambda i, j, k: ids[i, j, k], n, h)
 
 # ---------------------------------------------------------------- tribodyn
-s = v.run(tribodyn, os.path.join(work, "tribodyn"), v.raw_volume_prm(header) + """
-subsection Materials
-  subsection Phases
-    set Names          = %s
-    set Young moduli   = %s
-    set Poisson ratios = %s
-    set Densities      = 1200, 2500, 1000
-  end
-end
+s = v.run(tribodyn, os.path.join(work, "tribodyn"), v.raw_volume_prm(header)
+          + v.materials_prm([(p[0], p[1], p[2], rho)
+                             for p, rho in zip(phases, [1200, 2500, 1000])]) + """
 subsection Cell problem
   set Boundary conditions = KUBC
   set Solver tolerance    = 1e-12
@@ -80,9 +74,7 @@ end
 subsection Output
   set Write slices = false
 end
-""" % (", ".join(p[0] for p in phases),
-       ", ".join(repr(p[1]) for p in phases),
-       ", ".join(repr(p[2]) for p in phases)))
+""")
 C_tribodyn = s["KUBC"]["C"]
 
 # ---------------------------------------------------------------- CalculiX

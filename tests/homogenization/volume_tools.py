@@ -203,6 +203,25 @@ def raw_volume_prm(header):
             "end\n" % header)
 
 
+def materials_prm(phases):
+    """The subsection Materials of the named materials @p phases, a list of
+    (name, E, nu, rho): material id k is the k-th."""
+    text = "subsection Materials\n  set Names = %s\n" % ", ".join(p[0] for p in phases)
+    for name, E, nu, rho in phases:
+        text += ("  subsection %s\n    set Young modulus = %r\n    set Poisson ratio = %r\n"
+                 "    set Density       = %r\n  end\n" % (name[0].upper() + name[1:], E, nu, rho))
+    return text + "end\n"
+
+
+def given_materials(prm):
+    """(E, nu) of each material of 'Materials/Names' in a run's parameters
+    (plot_tools.read_parameters)."""
+    names = [n.strip() for n in prm["Materials/Names"].split(",")]
+    return [(float(prm["Materials/%s/Young modulus" % (n[0].upper() + n[1:])]),
+             float(prm["Materials/%s/Poisson ratio" % (n[0].upper() + n[1:])]))
+            for n in names]
+
+
 def run(tribodyn, directory, prm_text, ranks=1):
     """Run tribodyn on prm_text in `directory` (fresh output/); returns
     summary.json."""

@@ -45,11 +45,21 @@ transposed = v.write_raw(work, "transposed", lambda i, j, k: ids[j, i, k],
 
 def prm(header, preconditioner="AMG"):
     return v.raw_volume_prm(header) + """subsection Materials
-  subsection Phases
-    set Names          = epoxy, glass, filler
-    set Young moduli   = 3e9, 70e9, 0.5e9
-    set Poisson ratios = 0.35, 0.22, 0.45
-    set Densities      = 1200, 2500, 1000
+  set Names = epoxy, glass, filler
+  subsection Epoxy
+    set Young modulus = 3e9
+    set Poisson ratio = 0.35
+    set Density       = 1200
+  end
+  subsection Glass
+    set Young modulus = 70e9
+    set Poisson ratio = 0.22
+    set Density       = 2500
+  end
+  subsection Filler
+    set Young modulus = 0.5e9
+    set Poisson ratio = 0.45
+    set Density       = 1000
   end
 end
 subsection Cell problem

@@ -64,7 +64,13 @@ namespace tribodyn
       /// Density of the homogeneous anisotropic materials (kg/m^3).
       double density = 1770.;
 
+      /// Type = isotropic: the name of the pin's material in
+      /// Materials/Names ("": the first), and its constants (parsed from
+      /// its subsection).
+      std::string              pin_material;
       IsotropicElasticMaterial isotropic{30e9, 0.2, 1770.};
+      /// Index of the pin's material in Materials/Names.
+      unsigned int pin_index = 0;
 
       /// Type = anisotropic: the 2D stiffness and the out-of-plane row
       /// (sigma_zz = c_z . eps, used only for the von Mises output).
@@ -79,8 +85,9 @@ namespace tribodyn
       std::string summary_file;
       std::string summary_key = "KUBC";
 
-      /// Type = morphology: the phases of the morphology, by material id
-      /// (Matrix and Heterogeneity, or the named list Phases).
+      /// The named materials (Materials/Names): the phases of the
+      /// morphology by material id (Type = morphology), the pin's material
+      /// (Type = isotropic).
       MorphologyMaterials composite;
 
       /// The entries of "Materials" (Type, Kinematics, Density), bound to
@@ -88,9 +95,8 @@ namespace tribodyn
       ParameterBinding
       binding();
       /// Those of its subsections "Anisotropic", "Engineering constants"
-      /// and "Homogenization summary", in this order ("Isotropic" is
-      /// IsotropicElasticMaterial's; "Matrix", "Heterogeneity" and "Phases"
-      /// are MorphologyMaterials').
+      /// and "Homogenization summary", in this order (the named
+      /// materials' are MorphologyMaterials').
       std::vector<ParameterBinding>
       subsection_bindings();
 
@@ -98,6 +104,14 @@ namespace tribodyn
       declare_parameters(dealii::ParameterHandler &prm);
       void
       parse_parameters(dealii::ParameterHandler &prm);
+
+      /// Refuse (InputError naming @p parameter) material @p k of the list
+      /// as the material of an isotropic pin (@p pin, for the message): a
+      /// pore, or transversely isotropic.
+      void
+      check_isotropic_pin(const unsigned int k,
+                          const std::string &parameter,
+                          const std::string &pin = "the pin") const;
     };
 
     /// Subsection "Loading".
@@ -262,8 +276,12 @@ namespace tribodyn
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
+      /// @p one_pin: the pin of a run (its material checked for its
+      /// Type); false for the base of a study, whose models choose the pin
+      /// and check what they take from it.
       void
-      parse_parameters(dealii::ParameterHandler &prm);
+      parse_parameters(dealii::ParameterHandler &prm,
+                       const bool                one_pin = true);
       /// The averaging window must start before the run ends, unless the
       /// run is a leg of a longer one (@p checkpointed: it writes
       /// checkpoints, and a resumed leg reaches the window; its summary

@@ -52,8 +52,8 @@ namespace tribodyn
    * TIFF) turned into a material map. Each image pixel becomes one pixel
    * of the morphology; its material id is the phase the segmentation gives
    * it: 0, 1, 2, ... in the order of the thresholds (darkest first) or of
-   * the entries of the colour table. The ids name the phases of
-   * "Materials/Phases" in the same order (theory and user guide:
+   * the entries of the colour table. The ids name the materials of
+   * "Materials/Names" in the same order (theory and user guide:
    * doc/theory/homogenization.md, "Images as morphologies",
    * doc/user_guide/homogenization.md).
    */

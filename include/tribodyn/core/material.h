@@ -10,8 +10,8 @@ namespace tribodyn
 {
   /**
    * An isotropic linear elastic phase: Young's modulus E (Pa), Poisson's
-   * ratio nu and density rho (kg/m^3). Declared in a subsection of its own
-   * ("Matrix", "Heterogeneity", ...).
+   * ratio nu and density rho (kg/m^3): a named material of the finite
+   * elements' engines (core/phase_materials.h) when it is isotropic.
    */
   /// Largest accepted Young's modulus (Pa) and density (kg/m^3): beyond
   /// any real material (diamond 1.2 TPa, osmium 22600 kg/m^3); larger values
@@ -41,13 +41,6 @@ namespace tribodyn
     double youngs_modulus = 30e9;
     double poisson_ratio  = 0.2;
     double density        = 1770.;
-
-    /// E, nu and rho in @p subsection (entered from the handler's current
-    /// subsection, whose path is @p outer), each written once: their
-    /// defaults are this object's values, their ranges (E > 0, -1 < nu <
-    /// 0.5, rho > 0) checked when parsed.
-    ParameterBinding
-    binding(const std::string &subsection, const std::string &outer = "");
 
     /// Lamé's first parameter lambda = E nu / ((1 + nu)(1 - 2 nu)).
     double

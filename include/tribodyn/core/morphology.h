@@ -21,31 +21,6 @@ namespace tribodyn
   } // namespace material_id
 
   /**
-   * The two isotropic phases of a morphology: the subsections "Matrix" and
-   * "Heterogeneity" of the current subsection. One struct for the
-   * homogenization problem ("Materials") and the meso pin of the contact
-   * problem ("Materials"), so that both read the same entries with the same
-   * defaults and checks.
-   */
-  struct TwoPhaseMaterials
-  {
-    IsotropicElasticMaterial matrix{30e9, 0.2, 1770.};
-    IsotropicElasticMaterial heterogeneity{80e9, 0.2, 1770.};
-
-    /// Declare "Matrix" and "Heterogeneity" in the current subsection.
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-    /// Parse them; @p section (e.g. "Materials") prefixes the names in
-    /// error messages.
-    void
-    parse_parameters(dealii::ParameterHandler &prm, const std::string &section);
-
-    /// Phases indexed by material id.
-    std::vector<IsotropicElasticMaterial>
-    phases() const;
-  };
-
-  /**
    * Parameters of the subsection "Morphology": a rectangle of width (along
    * x, the sliding direction) by height (along y), described on a grid of
    * pixels, each pixel holding the matrix or a heterogeneity.

@@ -24,11 +24,18 @@ namespace tribodyn
    *   a checkpoint's or a finished study scene's parameter lines are read
    *   with the current names (with_current_names()), so it resumes or is
    *   reused.
+   *
+   * Two subsections were replaced by a new layout rather than renamed
+   * (issue #52 item 4, the materials' one scheme): 'Materials/Phases'
+   * (parallel lists) and the contact pin's 'Materials/Isotropic'. A file
+   * with them is refused with the new layout; a run written with them is
+   * not mapped (its parameters are not the same lines).
    */
 
   /// For the subsection or entry @p name inside the subsection path
   /// @p parent ("" at the top level, "A/B" deeper): " ('NAME' is now called
-  /// 'NEW': ...)" when it was renamed, "" otherwise.
+  /// 'NEW': ...)" when it was renamed, " ('NAME' was replaced: ...)" when
+  /// a new layout replaced it, "" otherwise.
   std::string
   renamed_hint(const std::string &parent, const std::string &name);
 

@@ -12,40 +12,10 @@
 namespace tribodyn
 {
   /**
-   * Any number of named phases, isotropic or transversely isotropic (issue #19
-   * item 2): the subsection "Phases" of the current subsection, ASPECT-style
-   * lists with one entry per phase, phase k being material id k of the
-   * morphology:
-   *
-   *   subsection Phases
-   *     set Names            = pores, matrix, fibres
-   *     set Young moduli     = 0, 30e9, 80e9
-   *     set Poisson ratios   = 0, 0.2, 0.2
-   *     set Densities        = 0, 1770, 1770
-   *   end
-   *
-   * A phase may be transversely isotropic: named in the subsection
-   * "Transversely isotropic", with its axis and its axial constants there,
-   * its entries in the lists above being those of its plane of isotropy
-   * (E_T, nu_TT):
-   *
-   *   subsection Phases
-   *     ...
-   *     subsection Transversely isotropic
-   *       set Phases               = fibres
-   *       set Axes                 = z
-   *       set Axial Young moduli   = 230e9
-   *       set Axial Poisson ratios = 0.2
-   *       set Axial shear moduli   = 27e9
-   *     end
-   *   end
-   *
-   * A Young modulus of 0 makes the phase a pore. The cell problems stay
-   * well posed by giving pores an ersatz stiffness: E = 'Pore stiffness
-   * ratio' times the smallest solid E, nu = 0 (theory:
-   * doc/theory/homogenization.md, "Any number of phases, pores", with the error
-   * this causes). An empty 'Names' list (the default) leaves the two phases
-   * "Matrix" and "Heterogeneity" in charge, as before.
+   * The phases of a morphology, indexed by material id, as every engine of
+   * the finite elements uses them: named, isotropic or transversely
+   * isotropic, pores among them (issue #19 item 2; doc/theory/
+   * homogenization.md, "Any number of phases, pores").
    */
   struct PhaseMaterials
   {
@@ -57,52 +27,63 @@ namespace tribodyn
     std::vector<std::optional<TransverselyIsotropicConstants>> axial;
     double pore_stiffness_ratio = 1e-6;
 
-    /// Declare "Phases" in the current subsection.
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-    /// Parse it; @p section (e.g. "Materials") prefixes the names in error
-    /// messages.
-    void
-    parse_parameters(dealii::ParameterHandler &prm, const std::string &section);
-
-    /// True when the list is in use (Names not empty).
-    bool
-    given() const;
     /// Number of phases.
     unsigned int
     size() const;
     /// The phases the cell problems use, indexed by material id: pores
-    /// replaced by their ersatz material.
+    /// replaced by their ersatz material (E = 'Pore stiffness ratio' times
+    /// the smallest solid E, nu = 0).
     std::vector<ElasticPhase>
     phases() const;
-
-  private:
-    /// The lists of the subsection "Transversely isotropic", as given.
-    struct TransverseLists
-    {
-      std::vector<std::string> which, axes;
-      std::vector<double>      E_L, nu_LT, G_LT;
-    };
-    /// Check them against the phases and fill 'axial'.
-    void
-    set_transversely_isotropic(const TransverseLists &lists,
-                               const std::string     &section);
   };
 
   /**
-   * The phases of a morphology as every engine reads them (the subsection
-   * "Materials" of the homogenization and of the meso contact pin): the
-   * named list "Phases" when it is given, else the two phases "Matrix"
-   * (material id 0) and "Heterogeneity" (id 1).
+   * The subsection "Materials" of the homogenization, of the meso contact
+   * pin and of their studies, in the materials' one scheme
+   * (core/material_names.h): the materials by name, material id k of the
+   * morphology being the k-th name, each with its subsection:
+   *
+   *   subsection Materials
+   *     set Names = pores, matrix, fibres
+   *     subsection Pores
+   *       set Young modulus = 0          # a pore
+   *     end
+   *     subsection Matrix
+   *       set Young modulus = 30e9
+   *       set Poisson ratio = 0.35
+   *       set Density       = 1200
+   *     end
+   *     subsection Fibres
+   *       set Young modulus       = 230e9   # E_T, of the plane of isotropy
+   *       set Poisson ratio       = 0.2     # nu_TT
+   *       set Density             = 1800
+   *       set Symmetry            = transversely isotropic
+   *       set Axis                = z
+   *       set Axial Young modulus = 230e9   # E_L
+   *       set Axial Poisson ratio = 0.2     # nu_LT
+   *       set Axial shear modulus = 27e9    # G_LT
+   *     end
+   *   end
+   *
+   * The default list is the two phases of the generated morphologies,
+   * "matrix" (id 0) and "heterogeneity" (id 1). A Young modulus of 0 makes
+   * a phase a pore; the cell problems give pores an ersatz stiffness
+   * ('Materials/Pore stiffness ratio').
    */
-  struct MorphologyMaterials : TwoPhaseMaterials
+  struct MorphologyMaterials
   {
-    PhaseMaterials named;
+    PhaseMaterials list;
 
-    /// Declare "Materials/Matrix", "Materials/Heterogeneity" and
-    /// "Materials/Phases" (@p prm at the top level).
+    /// Declare "Materials/Names", "Materials/Pore stiffness ratio" and the
+    /// subsections of the names the handler has now (its defaults: what
+    /// --print-parameters shows); @p prm at the top level.
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+    /// Declare the subsections of the names the handler has now (after a
+    /// lenient first reading of the file: the file's names;
+    /// ProblemDescription::declare_dependent_parameters).
+    static void
+    declare_material_sections(dealii::ParameterHandler &prm);
     /// Parse them (@p prm at the top level).
     void
     parse_parameters(dealii::ParameterHandler &prm);
@@ -114,7 +95,7 @@ namespace tribodyn
     /// The phases as given (a pore with its zero Young modulus).
     std::vector<IsotropicElasticMaterial>
     given() const;
-    /// Name of each phase ("matrix", "heterogeneity" for two).
+    /// Name of each phase.
     std::vector<std::string>
     names() const;
     /// Whether each phase is a pore.
@@ -122,10 +103,10 @@ namespace tribodyn
     pores() const;
 
     /**
-     * Refuse (InputError naming 'Materials/Phases/Names') a morphology
-     * with more phases than are given; an image's segmentation must give
-     * exactly as many phases as are named (@p image: the morphology is a
-     * segmented image).
+     * Refuse (InputError naming 'Materials/Names') a morphology with more
+     * phases than are named; an image's segmentation must give exactly as
+     * many phases as are named (@p image: the morphology is a segmented
+     * image).
      */
     void
     check(const Morphology &morphology, const bool image) const;

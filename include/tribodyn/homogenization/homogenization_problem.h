@@ -17,12 +17,8 @@ namespace tribodyn
 {
   namespace homogenization
   {
-    /**
-     * Parameters of the subsection "Materials": the two phases "Matrix"
-     * and "Heterogeneity", or any number of named phases in "Phases"
-     * (which then takes over).
-     */
-    /// The subsection "Materials": the phases of the morphology.
+    /// The subsection "Materials": the phases of the morphology, named
+    /// (core/phase_materials.h).
     using MaterialsParameters = MorphologyMaterials;
 
     /// Parameters of the subsection "Output" of the homogenization problem.

@@ -7,6 +7,7 @@
 #include <deal.II/base/point.h>
 #include <memory>
 #include <string>
+#include <tribodyn/core/material_names.h>
 #include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/plugin_registry.h>
 #include <tribodyn/mca/bond_laws.h>
@@ -613,12 +614,8 @@ namespace tribodyn
       any_plastic() const;
     };
 
-    /// Index of material @p name among @p names (Materials/Names); throws
-    /// InputError naming @p parameter and the known materials.
-    int
-    material_index(const std::vector<std::string> &names,
-                   const std::string              &name,
-                   const std::string              &parameter);
+    /// (material_index(): core/material_names.h)
+    using tribodyn::material_index;
   } // namespace mca
 } // namespace tribodyn
 
