@@ -1,67 +1,60 @@
-// The RVE study's outputs: rve.csv, rve.md, summary.json and the call of
-// the plot script (scripts/plot_rve, rve.png). Definitions:
-// doc/user_guide/homogenization.md, "RVE-size study".
+// The RVE study's results: its summary.json keys, and the call of its
+// outputs (rve_output.h; the files are written by rve_outputs/).
+// Definitions: doc/user_guide/homogenization.md, "RVE-size study".
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
+#include <tribodyn/homogenization/rve_output.h>
 #include <tribodyn/homogenization/rve_study.h>
 
 namespace tribodyn
 {
   namespace homogenization
   {
-    namespace
+    const RveFit &
+    RveResults::fit_of(const RveSample &sample) const
     {
-      /// Moduli are written in GPa in rve.md (Pa in rve.csv).
-      bool
-      is_modulus(const std::string &property)
-      {
-        return property.rfind("E_", 0) == 0 || property.rfind("G_", 0) == 0;
-      }
+      for (const RveFit &f : fits)
+        if (f.property == sample.property
+            && f.boundary_condition == sample.boundary_condition)
+          return f;
+      return fits.front();
+    }
 
 
-      /// "31.92 GPa" or "0.2001": a value of @p property for rve.md.
-      std::string
-      format_value(const std::string &property, const double v)
-      {
-        std::ostringstream s;
-        if (is_modulus(property))
-          s << std::fixed << std::setprecision(3) << v / 1e9;
-        else
-          s << std::fixed << std::setprecision(4) << v;
-        return s.str();
-      }
+    const RveSample *
+    RveResults::sample_of(const std::string &property,
+                          const std::string &boundary_condition,
+                          const unsigned int size) const
+    {
+      for (const RveSample &s : samples)
+        if (s.property == property && s.boundary_condition == boundary_condition
+            && s.size_index == size)
+          return &s;
+      return nullptr;
+    }
 
 
-      std::string
-      format_general(const double v, const int digits = 3)
-      {
-        if (!std::isfinite(v))
-          return "–";
-        std::ostringstream s;
-        s << std::setprecision(digits) << v;
-        return s.str();
-      }
-
-
-      std::string
-      percent(const double v, const int digits = 2)
-      {
-        if (!std::isfinite(v))
-          return "–";
-        std::ostringstream s;
-        s << std::fixed << std::setprecision(digits) << 100 * v << " %";
-        return s.str();
-      }
-
-
-    } // namespace
+    std::string
+    RveResults::as_window(const double area) const
+    {
+      const auto &sizes = parameters.window_sizes;
+      // (mm, of the largest size's aspect ratio)
+      const double aspect = (1. * sizes.back()[0] * pixel_width)
+                            / (sizes.back()[1] * pixel_height);
+      if (!std::isfinite(area))
+        return std::string("–");
+      std::ostringstream s;
+      s << std::setprecision(3) << area * 1e6 << " mm² (≈ "
+        << std::sqrt(area * aspect) * 1e3 << " × "
+        << std::sqrt(area / aspect) * 1e3 << " mm)";
+      return s.str();
+    }
 
 
     void
@@ -75,224 +68,6 @@ namespace tribodyn
       const auto        &ns         = parameters.realisations;
       const double       pixel_area = pixel_width * pixel_height;
       const double       eps        = parameters.relative_error;
-      const auto         fit_of = [&](const RveSample &r) -> const RveFit         &{
-        for (const RveFit &f : fits)
-          if (f.property == r.property
-              && f.boundary_condition == r.boundary_condition)
-            return f;
-        return fits.front();
-      };
-      // An area as a window of the largest size's aspect ratio (mm).
-      const double aspect = (1. * sizes.back()[0] * pixel_width)
-                            / (sizes.back()[1] * pixel_height);
-      const auto as_window = [&](const double area) {
-        if (!std::isfinite(area))
-          return std::string("–");
-        std::ostringstream s;
-        s << std::setprecision(3) << area * 1e6 << " mm² (≈ "
-          << std::sqrt(area * aspect) * 1e3 << " × "
-          << std::sqrt(area / aspect) * 1e3 << " mm)";
-        return s.str();
-      };
-
-      // rve.csv: one row per size, BC and property, its fit repeated.
-      {
-        std::ostringstream csv;
-        csv << "size_x_px,size_y_px,width_m,height_m,area_m2,area_px,"
-               "boundary_condition,property,n,mean,std,relative_std,bias";
-        for (const unsigned int n : ns)
-          csv << ",eps_rel_n" << n;
-        csv << ",point_variance,K,alpha,alpha_se,integral_range_px,"
-               "integral_range_alpha1_px,integral_range_alpha1_rel_se,"
-               "chi2_dof";
-        for (const unsigned int n : ns)
-          csv << ",rve_area_m2_n" << n;
-        csv << "\n" << std::setprecision(10);
-        for (const RveSample &r : samples)
-          {
-            const auto   &s  = sizes[r.size_index];
-            const RveFit &f  = fit_of(r);
-            const auto   &st = r.statistics;
-            const double  w = s[0] * pixel_width, h = s[1] * pixel_height;
-            csv << s[0] << "," << s[1] << "," << w << "," << h << "," << w * h
-                << "," << s[0] * s[1] << "," << r.boundary_condition << ","
-                << r.property << "," << st.n << "," << st.mean << "," << st.std
-                << "," << (st.mean != 0 ? st.std / std::abs(st.mean) : 0.)
-                << "," << r.bias;
-            for (const unsigned int n : ns)
-              csv << "," << rve::relative_error(st.std, st.mean, n);
-            csv << "," << f.fit.point_variance << "," << f.fit.K << ","
-                << f.fit.alpha << "," << f.fit.alpha_se << ","
-                << f.fit.integral_range / pixel_area << ","
-                << f.fit.integral_range_alpha1 / pixel_area << ","
-                << f.fit.integral_range_alpha1_se << "," << f.fit.chi2_dof;
-            for (const double a : f.rve_area)
-              csv << "," << a;
-            csv << "\n";
-          }
-        write_file_atomically(join_path(dir, "rve.csv"), csv.str());
-      }
-
-      // rve.md
-      std::ostringstream md;
-      md << "# RVE-size study (Kanit et al. 2003)\n\n"
-         << windows.size() << " windows ("
-         << (parameters.source == RveStudyParameters::Source::crops
-               ? "cut at random positions"
-               : "independent generator realisations")
-         << "), pixel " << pixel_width * 1e3 << " × " << pixel_height * 1e3
-         << " mm; moduli in GPa. `std` is the sample standard deviation of "
-            "the windows of one size; `bias` is the mean against the "
-            "largest windows' mean (same boundary condition); `eps_rel(n) = "
-            "2 std / (mean sqrt(n))` is the relative error of the mean of n "
-            "such windows (two standard errors).\n\n"
-         << "## Means and standard deviations\n\n"
-         << "| property | BC | window (px) | window (mm) | n | mean | std | "
-            "std/mean | bias |";
-      for (const unsigned int n : ns)
-        md << " eps_rel(n=" << n << ") |";
-      md << "\n|---|---|---|---|---|---|---|---|---|";
-      for (std::size_t i = 0; i < ns.size(); ++i)
-        md << "---|";
-      md << "\n";
-      for (const RveSample &r : samples)
-        {
-          const auto &s  = sizes[r.size_index];
-          const auto &st = r.statistics;
-          md << "| " << r.property << " | " << r.boundary_condition << " | "
-             << s[0] << " × " << s[1] << " | " << s[0] * pixel_width * 1e3
-             << " × " << s[1] * pixel_height * 1e3 << " | " << st.n << " | "
-             << format_value(r.property, st.mean) << " | "
-             << format_value(r.property, st.std) << " | "
-             << percent(st.mean != 0 ? st.std / std::abs(st.mean) : 0.) << " | "
-             << percent(r.bias) << " |";
-          for (const unsigned int n : ns)
-            md << " " << percent(rve::relative_error(st.std, st.mean, n))
-               << " |";
-          md << "\n";
-        }
-
-      md << "\n## Variance law D²(V) = K V^-α = D² (A/V)^α and RVE size\n\n"
-         << "Weighted least squares of ln s² against ln V (weights from the "
-            "sampling error of a variance, 1/Var(ln s²) ≈ (n − 1)/2); D² is "
-            "the point variance (Σ f_k (Z_k − Z̄)², f_k the mean phase "
-            "fractions); A from the free fit, A₁ from the fit with α = 1 "
-            "(± its relative standard error), both in pixels; V_RVE = (4 K "
-            "/ (ε² Z̄² n))^(1/α) for ε = "
-         << percent(eps, 1)
-         << ", Z̄ the mean of the largest windows, as an area and as a "
-            "window of the largest windows' aspect ratio.\n\n"
-         << "| property | BC | Z̄ | D² | α ± se | A (px) | A₁ (px) | χ²/dof |";
-      for (const unsigned int n : ns)
-        md << " V_RVE (n=" << n << ") |";
-      md << "\n|---|---|---|---|---|---|---|---|";
-      for (std::size_t i = 0; i < ns.size(); ++i)
-        md << "---|";
-      md << "\n";
-      for (const RveFit &f : fits)
-        {
-          md << "| " << f.property << " | " << f.boundary_condition << " | "
-             << format_value(f.property, f.mean) << " | "
-             << format_general(f.fit.point_variance) << " | "
-             << format_general(f.fit.alpha) << " ± "
-             << format_general(f.fit.alpha_se, 2) << " | "
-             << format_general(f.fit.integral_range / pixel_area) << " | "
-             << format_general(f.fit.integral_range_alpha1 / pixel_area)
-             << " ± " << percent(f.fit.integral_range_alpha1_se, 0) << " | "
-             << format_general(f.fit.chi2_dof, 2) << " |";
-          for (const double a : f.rve_area)
-            md << " " << as_window(a) << " |";
-          md << "\n";
-        }
-
-      // The answer: for each constant, BC and n, which window sizes are
-      // RVEs at eps (measured), and the fitted size; then the systematic
-      // error, the KUBC - SUBC gap.
-      const auto sample_of = [&](const std::string &property,
-                                 const std::string &bc,
-                                 const unsigned int size) -> const RveSample * {
-        for (const RveSample &s : samples)
-          if (s.property == property && s.boundary_condition == bc
-              && s.size_index == size)
-            return &s;
-        return nullptr;
-      };
-      const auto size_name = [&](const unsigned int i) {
-        std::ostringstream s;
-        s << sizes[i][0] << "×" << sizes[i][1];
-        return s.str();
-      };
-      md << "\n## Which windows are RVEs at " << percent(eps, 1) << "?\n\n"
-         << "A size is an RVE for a constant, a boundary condition and n "
-            "realisations when the mean of n such windows is within "
-         << percent(eps, 1)
-         << " with ~95 % confidence, eps_rel(n) <= eps (measured from the "
-            "standard deviation of its windows; the fitted V_RVE "
-            "interpolates). This is the statistical error only; the "
-            "systematic one (bias, KUBC–SUBC gap) follows.\n\n"
-         << "| property | BC | n | eps_rel(n) per window size (px) | "
-            "smallest RVE size (measured) | V_RVE (fit) |\n"
-         << "|---|---|---|---|---|---|\n";
-      for (const RveFit &f : fits)
-        {
-          // nu_TT hardly varies; the first phase's fraction (the matrix)
-          // mirrors the others' for two phases.
-          if (f.property == "nu_TT"
-              || f.property == "fraction_" + materials.names()[0])
-            continue;
-          for (unsigned int k = 0; k < ns.size(); ++k)
-            {
-              md << "| " << f.property << " | " << f.boundary_condition << " | "
-                 << ns[k] << " | ";
-              int smallest = -1;
-              for (unsigned int i = 0; i < sizes.size(); ++i)
-                {
-                  const RveSample *r
-                    = sample_of(f.property, f.boundary_condition, i);
-                  const double e = rve::relative_error(r->statistics.std,
-                                                       r->statistics.mean,
-                                                       ns[k]);
-                  md << (i == 0 ? "" : ", ") << size_name(i) << ": "
-                     << percent(e);
-                  if (smallest < 0 && e <= eps)
-                    smallest = i;
-                }
-              md << " | "
-                 << (smallest < 0 ? std::string("none of them")
-                                  : size_name(smallest) + " px")
-                 << " | " << as_window(f.rve_area[k]) << " |\n";
-            }
-        }
-
-      const std::vector<BoundaryCondition> &bcs = boundary_conditions();
-      const bool                            both
-        = std::find(bcs.begin(), bcs.end(), BoundaryCondition::kubc)
-            != bcs.end()
-          && std::find(bcs.begin(), bcs.end(), BoundaryCondition::subc)
-               != bcs.end();
-      if (both)
-        {
-          md << "\n## Systematic error: KUBC − SUBC\n\n"
-             << "Huet (1990): in the mean over windows, the apparent KUBC "
-                "stiffness lies above the effective one and the inverse of the "
-                "mean SUBC compliance below it, so the gap between the KUBC "
-                "and SUBC means bounds the bias of either (up to the spread of "
-                "the windows). An RVE at "
-             << percent(eps, 1) << " also needs it below " << percent(eps, 1)
-             << ".\n\n| property | window (px) | KUBC | SUBC | (KUBC − "
-                "SUBC)/SUBC |\n|---|---|---|---|---|\n";
-          for (const char *c : {"E_L", "E_T", "G_LT"})
-            for (unsigned int i = 0; i < sizes.size(); ++i)
-              {
-                const double K = sample_of(c, "KUBC", i)->statistics.mean,
-                             S = sample_of(c, "SUBC", i)->statistics.mean;
-                md << "| " << c << " | " << size_name(i) << " | "
-                   << format_value(c, K) << " | " << format_value(c, S) << " | "
-                   << percent(K / S - 1) << " |\n";
-              }
-        }
-      write_file_atomically(join_path(dir, "rve.md"), md.str());
-
       // summary.json
       JsonValue summary = summary_header("rve", context.mpi_communicator);
       summary["n_window_groups"] = n_groups;
@@ -339,16 +114,35 @@ namespace tribodyn
       summary["wall_time_s"] = wall_time;
       write_file_atomically(join_path(dir, "summary.json"),
                             summary.dump() + "\n");
-      std::cout << "\n"
-                << md.str() << "\nRVE study written to " << dir
-                << "/ (rve.csv, rve.md, "
-                << (parameters.plot_script == "none" ? "" : "rve.png, ")
+      // the outputs, in their list's order
+      const std::vector<std::string>        phases = materials.names();
+      const std::vector<BoundaryCondition> &bcs    = boundary_conditions();
+      const auto has = [&](const BoundaryCondition bc) {
+        return std::find(bcs.begin(), bcs.end(), bc) != bcs.end();
+      };
+      const RveResults         results{parameters,
+                               samples,
+                               fits,
+                               phases,
+                               has(BoundaryCondition::kubc)
+                                 && has(BoundaryCondition::subc),
+                               static_cast<unsigned int>(windows.size()),
+                               pixel_width,
+                               pixel_height,
+                               wall_time,
+                               dir};
+      std::vector<std::string> names;
+      std::string              files;
+      for (const auto &output :
+           RveOutputRegistry::create_all(parameters, names, parameters.outputs))
+        {
+          output->write(results, std::cout);
+          std::cout.flush(); // (before an output's subprocess writes)
+          files += output->files() + ", ";
+        }
+      std::cout << "\nRVE study written to " << dir << "/ (" << files
                 << "summary.json) in " << std::fixed << std::setprecision(1)
                 << wall_time << " s" << std::endl;
-      run_plot_script(parameters.plot_script,
-                      "plot_rve",
-                      "RVE study/Plot script",
-                      dir);
     }
   } // namespace homogenization
 } // namespace tribodyn

@@ -18,6 +18,7 @@
 #include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/progress.h>
 #include <tribodyn/core/selection.h>
+#include <tribodyn/homogenization/rve_output.h>
 #include <tribodyn/homogenization/rve_study.h>
 
 namespace tribodyn
@@ -210,6 +211,7 @@ namespace tribodyn
             "scripts/plot_rve next to the build directory (skipped when "
             "python3 or matplotlib is missing), 'none' draws nothing, or a "
             "path.");
+      RveOutputRegistry::add_selection(b, "Outputs", outputs, "outputs");
       return b;
     }
 

@@ -1,4 +1,5 @@
 """The user's list of outputs, 'Output/Postprocessors', in the three engines
+and 'RVE study/Outputs' in the RVE study
 (issue #52 item 2: a postprocessor is chosen from a user list in the prm;
 core/plugin_registry.h). For each engine a short run with 'all' (the
 default) and one with a list:
@@ -144,4 +145,37 @@ code, text, _ = run("homogenization_unknown", "tests/homogenization/small_random
                     "", "effective properties, huet ordering")
 report(code == 2 and "'huet ordering'" in text and "Huet ordering" in text,
        f"homogenization: a misspelt name refused naming the right one (exit {code})")
+# --- the RVE study (its outputs, 'RVE study/Outputs'): the small study
+def run_rve(name, outputs=None):
+    out = os.path.join(scratch, name)
+    path = out + ".prm"
+    with open(path, "w") as f:
+        f.write(f"include {os.path.join(source, 'tests/homogenization/rve_small.prm')}\n"
+                f"set Output directory = {out}\n"
+                "subsection RVE study\n  set Plot script = none\n")
+        if outputs is not None:
+            f.write(f"  set Outputs = {outputs}\n")
+        f.write("end\n")
+    p = subprocess.run([tribodyn, path], capture_output=True, text=True,
+                       cwd=os.path.join(source, "tests/homogenization"))
+    return p.returncode, p.stdout + p.stderr, out
+
+
+code_all, _, all_out = run_rve("rve_all")
+code, _, out = run_rve("rve_list", "table")
+report(code_all == 0 and code == 0, f"rve: both runs finish ({code_all}, {code})")
+if code_all == 0 and code == 0:
+    report(exists(out, "rve.csv") and not exists(out, "rve.md")
+           and exists(all_out, "rve.md") and not exists(all_out, "rve.png"),
+           "rve: 'table' writes rve.csv and no rve.md; 'all' writes rve.md and, "
+           "with 'Plot script = none', no rve.png")
+    with open(os.path.join(out, "rve.csv")) as f, \
+            open(os.path.join(all_out, "rve.csv")) as g:
+        report(f.read() == g.read(), "rve: rve.csv the same with either list")
+code, text, _ = run_rve("rve_unknown", "table, plots")
+report(code == 2 and "'plots'" in text and "RVE study/Outputs" in text,
+       f"rve: an unknown output refused naming 'RVE study/Outputs' (exit {code})")
+code, text, _ = run_rve("rve_plot", "plot")
+report(code == 2 and "Plot script" in text,
+       f"rve: 'plot' with 'Plot script = none' refused (exit {code})")
 finish()

@@ -8,6 +8,7 @@
 #include <string>
 #include <tribodyn/core/morphology.h>
 #include <tribodyn/core/parameter_binding.h>
+#include <tribodyn/core/plugin_registry.h>
 #include <tribodyn/core/problem.h>
 #include <tribodyn/homogenization/cell_problem.h>
 #include <tribodyn/homogenization/homogenization_problem.h>
@@ -51,6 +52,9 @@ namespace tribodyn
       bool solve_cell_problems = true;
       /// Python script drawing rve.png ("auto", "none" or a path).
       std::string plot_script = "auto";
+      /// The outputs to write ('Outputs': all, or a list of the names of
+      /// rve_outputs/).
+      PluginSelection outputs;
 
       /// The entries of "RVE study", bound to the members above (their
       /// initial values are the defaults).
