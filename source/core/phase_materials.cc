@@ -78,7 +78,7 @@ namespace tribodyn
 
     /// The entries of one material's subsection, each written once; their
     /// ranges depend on each other (a pore, a transversely isotropic
-    /// phase) and are checked by PhaseEntries::check().
+    /// phase) and are checked by MorphologyMaterials::parse_parameters().
     struct MaterialEntries
     {
       IsotropicElasticMaterial elastic;
