@@ -602,26 +602,40 @@ namespace tribodyn
                           "O the size level of the outer cells that hold the "
                           "loading layers) or list the bands as 'z0 z1 k; "
                           "...'.");
-      const auto whole = [&](const std::string &word, const double lowest) {
+      // a whole number in [lowest, highest] read from @p word, or a
+      // refusal saying what @p what (N, M or O) is
+      const auto whole = [&](const std::string &word,
+                             const double       lowest,
+                             const double       highest,
+                             const std::string &what) {
         const double n = to_double(word, p, text);
-        check_parameter(n >= lowest && n == std::round(n) && n < 1e6,
+        check_parameter(n >= lowest && n <= highest && n == std::round(n),
                         p,
-                        "in '" + text
-                          + "' N and M must be whole numbers of "
-                            "cells (a = d sqrt 2), N >= 1, "
-                            "M >= 4.");
+                        "in '" + text + "' " + what);
         return std::lround(n);
       };
-      const long N = whole(t[1], 1);
-      const long M = t.size() >= 3 ? whole(t[2], 4) : 4;
-      const long O = t.size() == 4 ? std::lround(to_double(t[3], p, text)) : 0;
-      check_parameter(t.size() < 4
-                        || (to_double(t[3], p, text) == O && O >= 0 && O <= 2),
-                      p,
-                      "in '" + text
-                        + "' O, the size level of the outer cells (the "
-                          "loading layers), must be 0 (d), 1 (2d) or 2 "
-                          "(4d).");
+      const long N = whole(t[1],
+                           1,
+                           1e6,
+                           "N, the cells of fine automata on each side of the "
+                           "interface, must be a whole number >= 1 (cells of "
+                           "a = d sqrt 2).");
+      const long M = t.size() >= 3
+                       ? whole(t[2],
+                               4,
+                               1e6,
+                               "M, the cells of 2d next to the fine band, "
+                               "must be a whole number >= 4 (cells of a = d "
+                               "sqrt 2).")
+                       : 4;
+      const long O = t.size() == 4
+                       ? whole(t[3],
+                               0,
+                               2,
+                               "O, the size level of the outer cells (the "
+                               "loading layers), must be 0 (d), 1 (2d) or 2 "
+                               "(4d).")
+                       : 0;
       check_parameter(rough_interface,
                       p,
                       "'" + text
