@@ -143,13 +143,6 @@ namespace tribodyn
   } // namespace
 
 
-  unsigned int
-  PhaseMaterials::size() const
-  {
-    return names.size();
-  }
-
-
   std::vector<ElasticPhase>
   PhaseMaterials::phases() const
   {

@@ -129,7 +129,6 @@ namespace tribodyn
                                static_cast<unsigned int>(windows.size()),
                                pixel_width,
                                pixel_height,
-                               wall_time,
                                dir};
       std::vector<std::string> names;
       std::string              files;

@@ -27,9 +27,6 @@ namespace tribodyn
     std::vector<std::optional<TransverselyIsotropicConstants>> axial;
     double pore_stiffness_ratio = 1e-6;
 
-    /// Number of phases.
-    unsigned int
-    size() const;
     /// The phases the cell problems use, indexed by material id: pores
     /// replaced by their ersatz material (E = 'Pore stiffness ratio' times
     /// the smallest solid E, nu = 0).

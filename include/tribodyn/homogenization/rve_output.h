@@ -34,7 +34,6 @@ namespace tribodyn
       unsigned int n_windows     = 0;
       /// Pixel size of the windows (m).
       double             pixel_width = 0, pixel_height = 0;
-      double             wall_time = 0;
       const std::string &output_directory;
 
       /// The fit of the property and boundary condition of @p sample.

@@ -73,8 +73,6 @@ namespace tribodyn
           const double       eps                = parameters.relative_error;
           const auto        &samples            = r.samples;
           const auto        &fits               = r.fits;
-          const auto         as_window
-            = [&](const double area) { return r.as_window(area); };
           // rve.md
           std::ostringstream md;
           md
@@ -147,18 +145,13 @@ namespace tribodyn
                  << " ± " << percent(f.fit.integral_range_alpha1_se, 0) << " | "
                  << format_general(f.fit.chi2_dof, 2) << " |";
               for (const double a : f.rve_area)
-                md << " " << as_window(a) << " |";
+                md << " " << r.as_window(a) << " |";
               md << "\n";
             }
 
           // The answer: for each constant, BC and n, which window sizes are
           // RVEs at eps (measured), and the fitted size; then the systematic
           // error, the KUBC - SUBC gap.
-          const auto sample_of = [&](const std::string &property,
-                                     const std::string &bc,
-                                     const unsigned int size) {
-            return r.sample_of(property, bc, size);
-          };
           const auto size_name = [&](const unsigned int i) {
             std::ostringstream s;
             s << sizes[i][0] << "×" << sizes[i][1];
@@ -190,7 +183,7 @@ namespace tribodyn
                   for (unsigned int i = 0; i < sizes.size(); ++i)
                     {
                       const RveSample *s
-                        = sample_of(f.property, f.boundary_condition, i);
+                        = r.sample_of(f.property, f.boundary_condition, i);
                       const double e = rve::relative_error(s->statistics.std,
                                                            s->statistics.mean,
                                                            ns[k]);
@@ -202,7 +195,7 @@ namespace tribodyn
                   md << " | "
                      << (smallest < 0 ? std::string("none of them")
                                       : size_name(smallest) + " px")
-                     << " | " << as_window(f.rve_area[k]) << " |\n";
+                     << " | " << r.as_window(f.rve_area[k]) << " |\n";
                 }
             }
 
@@ -223,8 +216,8 @@ namespace tribodyn
               for (const char *c : {"E_L", "E_T", "G_LT"})
                 for (unsigned int i = 0; i < sizes.size(); ++i)
                   {
-                    const double K = sample_of(c, "KUBC", i)->statistics.mean,
-                                 S = sample_of(c, "SUBC", i)->statistics.mean;
+                    const double K = r.sample_of(c, "KUBC", i)->statistics.mean,
+                                 S = r.sample_of(c, "SUBC", i)->statistics.mean;
                     md << "| " << c << " | " << size_name(i) << " | "
                        << format_value(c, K) << " | " << format_value(c, S)
                        << " | " << percent(K / S - 1) << " |\n";
