@@ -6,6 +6,7 @@
 #include <limits>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/material_names.h>
+#include <tribodyn/core/morphology_source.h>
 #include <tribodyn/core/number_list.h>
 #include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/phase_materials.h>
@@ -302,20 +303,19 @@ namespace tribodyn
 
 
   void
-  MorphologyMaterials::check(const Morphology &morphology,
-                             const bool        image) const
+  MorphologyMaterials::check(const Morphology  &morphology,
+                             const std::string &phases_set_by) const
   {
     const unsigned int n_given = names().size();
     const std::string  named
       = " ('Materials/Names': " + material_list_message(names()) + ")";
-    if (image)
+    if (!phases_set_by.empty())
       check_parameter(morphology.n_phases() == n_given,
                       "Materials/Names",
                       "the image is segmented into "
-                        + std::to_string(morphology.n_phases())
-                        + " phases by 'Morphology/Image/Segmentation', but "
-                        + std::to_string(n_given) + " materials are named"
-                        + named
+                        + std::to_string(morphology.n_phases()) + " phases by '"
+                        + phases_set_by + "', but " + std::to_string(n_given)
+                        + " materials are named" + named
                         + ". Give as many names (and "
                           "constants) as the segmentation has phases, or "
                           "change the segmentation.");
@@ -335,7 +335,6 @@ namespace tribodyn
   MorphologyMaterials::check(const MorphologyParameters &parameters) const
   {
     if (parameters.is_map())
-      check(Morphology::create(parameters),
-            parameters.generator == MorphologyParameters::Generator::image);
+      check(Morphology::create(parameters), parameters.source->phases_set_by());
   }
 } // namespace tribodyn

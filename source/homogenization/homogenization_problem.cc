@@ -7,6 +7,7 @@
 #include <sstream>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/json.h>
+#include <tribodyn/core/morphology_source.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/homogenization/homogenization_problem.h>
 #include <tribodyn/homogenization/postprocessor.h>
@@ -215,8 +216,7 @@ namespace tribodyn
       pcout << "Morphology: " << morphology.description() << std::endl;
       const std::vector<ElasticPhase> phases = parameters.materials.phases();
       parameters.materials.check(morphology,
-                                 parameters.morphology.generator
-                                   == MorphologyParameters::Generator::image);
+                                 parameters.morphology.source->phases_set_by());
 
       CellProblem<2> cell_problem(
         comm, morphology, phases, parameters.cell_problem, timer);

@@ -14,6 +14,7 @@
 #include <random>
 #include <sstream>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/morphology_source.h>
 #include <tribodyn/core/number_list.h>
 #include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/progress.h>
@@ -79,7 +80,7 @@ namespace tribodyn
       bool
       random_generator(const MorphologyParameters &m)
       {
-        return m.generator == MorphologyParameters::Generator::random_vertical;
+        return m.source->uses_seed();
       }
     } // namespace
 

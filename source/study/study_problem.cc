@@ -13,6 +13,7 @@
 #include <sstream>
 #include <tribodyn/contact/contact_problem.h>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/morphology_sources/grid_file.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/statistics.h>
 #include <tribodyn/homogenization/homogenization_problem.h>
@@ -446,9 +447,10 @@ namespace tribodyn
           m.random_seed = seed;
           return m;
         }
-      m.generator  = MorphologyParameters::Generator::grid_file;
-      m.grid_file  = join_path(join_path(context.output_directory, "windows"),
-                              morphology_name(seed) + ".txt");
+      const auto grid = std::make_shared<GridFileMorphology>();
+      grid->file   = join_path(join_path(context.output_directory, "windows"),
+                             morphology_name(seed) + ".txt");
+      m.source     = grid;
       m.n_pixels_x = parameters.window_size[0];
       m.n_pixels_y = parameters.window_size[1];
       m.width      = m.n_pixels_x * whole_map->pixel_width();

@@ -5,6 +5,8 @@
 
 #include <deal.II/base/timer.h>
 #include <tribodyn/core/morphology.h>
+#include <tribodyn/core/morphology_sources/laminate.h>
+#include <tribodyn/core/morphology_sources/random_vertical.h>
 #include <tribodyn/homogenization/cell_problem.h>
 
 namespace tribodyn_test
@@ -30,31 +32,32 @@ namespace tribodyn_test
                      const unsigned int seed     = 1)
   {
     MorphologyParameters p;
-    p.n_pixels_x           = nx;
-    p.n_pixels_y           = ny;
-    p.width                = nx * 1e-4;
-    p.height               = ny * 1e-4;
-    p.inclusion_min_height = min_height;
-    p.inclusion_max_height = max_height;
-    p.volume_fraction      = fraction;
-    p.random_seed          = seed;
+    p.n_pixels_x                = nx;
+    p.n_pixels_y                = ny;
+    p.width                     = nx * 1e-4;
+    p.height                    = ny * 1e-4;
+    auto &random                = p.use<RandomVerticalMorphology>();
+    random.inclusion_min_height = min_height;
+    random.inclusion_max_height = max_height;
+    p.volume_fraction           = fraction;
+    p.random_seed               = seed;
     return Morphology::create(p);
   }
 
   /// A laminate of 40 x 20 pixels over 20 x 10 mm, two periods, 30 % of
   /// heterogeneity, layers normal to @p normal.
   inline Morphology
-  laminate_map(const MorphologyParameters::LaminateNormal normal)
+  laminate_map(const LaminateMorphology::Normal normal)
   {
     MorphologyParameters p;
-    p.generator          = MorphologyParameters::Generator::laminate;
-    p.laminate_normal    = normal;
-    p.n_pixels_x         = 40;
-    p.n_pixels_y         = 20;
-    p.width              = 0.02;
-    p.height             = 0.01;
-    p.volume_fraction    = 0.3;
-    p.n_laminate_periods = 2;
+    auto                &laminate = p.use<LaminateMorphology>();
+    laminate.normal               = normal;
+    laminate.n_periods            = 2;
+    p.n_pixels_x                  = 40;
+    p.n_pixels_y                  = 20;
+    p.width                       = 0.02;
+    p.height                      = 0.01;
+    p.volume_fraction             = 0.3;
     return Morphology::create(p);
   }
 

@@ -73,8 +73,9 @@ main(int argc, char **argv)
           "formats_grey16.tif reads as 16-bit grey");
     MorphologyParameters p
       = image_parameters(image_path("formats_grey16.png"), 3);
-    p.image.segmentation = ImageParameters::Segmentation::thresholds;
-    p.image.thresholds   = {80 * 256, 175 * 256};
+    ImageParameters &segmented = p.edit<ImageMorphology>().image;
+    segmented.segmentation     = ImageParameters::Segmentation::thresholds;
+    segmented.thresholds       = {80 * 256, 175 * 256};
     same(Morphology::create(p), "formats_grey16.png, thresholds 20480, 44800");
   }
 
@@ -82,11 +83,12 @@ main(int argc, char **argv)
   {
     MorphologyParameters p
       = image_parameters(image_path("formats_grey8.png"), 3);
-    p.image.segmentation = ImageParameters::Segmentation::thresholds;
-    p.image.thresholds   = {80, 175};
-    p.image.crop         = {{5, 3, 20, 12}};
-    const Morphology m   = Morphology::create(p);
-    bool             ok  = m.n_pixels_x() == 20 && m.n_pixels_y() == 12;
+    ImageParameters &image = p.edit<ImageMorphology>().image;
+    image.segmentation     = ImageParameters::Segmentation::thresholds;
+    image.thresholds       = {80, 175};
+    image.crop             = {{5, 3, 20, 12}};
+    const Morphology m     = Morphology::create(p);
+    bool             ok    = m.n_pixels_x() == 20 && m.n_pixels_y() == 12;
     for (unsigned int j = 0; ok && j < 12; ++j)
       for (unsigned int i = 0; ok && i < 20; ++i)
         ok = m.pixel(i, j) == reference.pixel(5 + i, 24 - 3 - 12 + j);

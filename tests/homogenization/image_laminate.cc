@@ -53,12 +53,18 @@ main(int argc, char **argv)
         check(equal, what + " gives the same material map as Otsu");
       };
   MorphologyParameters thresholds = otsu;
-  thresholds.image.segmentation   = ImageParameters::Segmentation::thresholds;
-  thresholds.image.thresholds     = {64, 192};
+  {
+    ImageParameters &image = thresholds.edit<ImageMorphology>().image;
+    image.segmentation     = ImageParameters::Segmentation::thresholds;
+    image.thresholds       = {64, 192};
+  }
   same_map(thresholds, "thresholds 64, 192");
   MorphologyParameters table = otsu;
-  table.image.segmentation   = ImageParameters::Segmentation::colour_table;
-  table.image.colour_table   = {{0}, {128}, {255, 255, 255}};
+  {
+    ImageParameters &image = table.edit<ImageMorphology>().image;
+    image.segmentation     = ImageParameters::Segmentation::colour_table;
+    image.colour_table     = {{0}, {128}, {255, 255, 255}};
+  }
   same_map(table, "colour table '0; 128; 255 255 255'");
 
   // Placement: turned counter-clockwise by 90, 180 and 270 degrees, pixel
@@ -66,12 +72,12 @@ main(int argc, char **argv)
   // n_y-1-j) and (j, n_x-1-i); 90 and 270 swap width and height (exact).
   for (const unsigned int degrees : {90u, 180u, 270u})
     {
-      MorphologyParameters turned = otsu;
-      turned.image.rotation       = degrees;
-      const Morphology   m        = Morphology::create(turned);
-      const unsigned int nx       = morphology.n_pixels_x(),
-                         ny       = morphology.n_pixels_y();
-      const bool quarter          = degrees != 180;
+      MorphologyParameters turned                   = otsu;
+      turned.edit<ImageMorphology>().image.rotation = degrees;
+      const Morphology   m  = Morphology::create(turned);
+      const unsigned int nx = morphology.n_pixels_x(),
+                         ny = morphology.n_pixels_y();
+      const bool quarter    = degrees != 180;
       bool       equal
         = m.n_pixels_x() == (quarter ? ny : nx)
           && m.n_pixels_y() == (quarter ? nx : ny)
@@ -86,8 +92,8 @@ main(int argc, char **argv)
             "Rotation = " + std::to_string(degrees)
               + ": the map turned counter-clockwise");
     }
-  MorphologyParameters tiff = otsu;
-  tiff.image.file           = image_path("laminate3.tif");
+  MorphologyParameters tiff               = otsu;
+  tiff.edit<ImageMorphology>().image.file = image_path("laminate3.tif");
   same_map(tiff, "laminate3.tif");
 
   const std::vector<std::pair<std::string, std::vector<ElasticPhase>>> cases

@@ -10,6 +10,7 @@
 
 #include "image_test_tools.h"
 
+#include <tribodyn/homogenization/image_stack.h>
 #include <tribodyn/homogenization/voxel_volume.h>
 
 int

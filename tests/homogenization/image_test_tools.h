@@ -5,6 +5,7 @@
 
 #include <string>
 #include <tribodyn/core/morphology.h>
+#include <tribodyn/core/morphology_sources/image.h>
 #include <tribodyn/core/phase_materials.h>
 
 namespace tribodyn_test
@@ -33,11 +34,11 @@ namespace tribodyn_test
                    const double       pixel_size = 0)
   {
     MorphologyParameters p;
-    p.generator           = MorphologyParameters::Generator::image;
-    p.image.file          = file;
-    p.image.segmentation  = ImageParameters::Segmentation::otsu;
-    p.image.n_otsu_phases = n_phases;
-    p.image.pixel_size    = pixel_size;
+    ImageParameters     &image = p.use<ImageMorphology>().image;
+    image.file                 = file;
+    image.segmentation         = ImageParameters::Segmentation::otsu;
+    image.n_otsu_phases        = n_phases;
+    image.pixel_size           = pixel_size;
     return p;
   }
 

@@ -20,14 +20,13 @@ main(int argc, char **argv)
     = {IsotropicElasticMaterial{30e9, 0.2, 1770.},
        IsotropicElasticMaterial{80e9, 0.35, 1770.}};
 
-  for (const auto normal : {MorphologyParameters::LaminateNormal::x,
-                            MorphologyParameters::LaminateNormal::y})
+  for (const auto normal :
+       {LaminateMorphology::Normal::x, LaminateMorphology::Normal::y})
     {
       const Morphology   morphology = laminate_map(normal);
       const double       f          = morphology.heterogeneity_fraction();
-      const unsigned int axis
-        = normal == MorphologyParameters::LaminateNormal::x ? 0 : 1;
-      const std::string name
+      const unsigned int axis = normal == LaminateMorphology::Normal::x ? 0 : 1;
+      const std::string  name
         = std::string("layers normal to ") + (axis == 0 ? "x" : "y") + ": ";
       const ApparentProperties exact = laminate_exact(phases, {1 - f, f}, axis);
 

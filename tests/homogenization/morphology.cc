@@ -14,6 +14,8 @@
 #include <cstdio>
 #include <fstream>
 #include <tribodyn/core/morphology.h>
+#include <tribodyn/core/morphology_sources/laminate.h>
+#include <tribodyn/core/morphology_sources/random_vertical.h>
 
 int
 main(int argc, char **argv)
@@ -111,11 +113,10 @@ main(int argc, char **argv)
   }
 
   MorphologyParameters l;
-  l.generator          = MorphologyParameters::Generator::laminate;
-  l.n_pixels_x         = 40;
-  l.n_pixels_y         = 10;
-  l.volume_fraction    = 0.2; // 2 of the 10 pixels of each period
-  l.n_laminate_periods = 4;
+  l.use<LaminateMorphology>().n_periods = 4;
+  l.n_pixels_x                          = 40;
+  l.n_pixels_y                          = 10;
+  l.volume_fraction = 0.2; // 2 of the 10 pixels of each period
   check_relative(Morphology::create(l).heterogeneity_fraction(),
                  0.2,
                  1e-14,

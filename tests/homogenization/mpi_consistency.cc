@@ -18,12 +18,11 @@ main(int argc, char **argv)
         "runs on 2 MPI ranks (got " + std::to_string(n_ranks) + ")");
 
   MorphologyParameters p;
-  p.generator       = MorphologyParameters::Generator::random_vertical;
-  p.width           = 0.014;
-  p.height          = 0.004;
-  p.n_pixels_x      = 140;
-  p.n_pixels_y      = 40;
-  p.volume_fraction = 0.1;
+  p.width                     = 0.014;
+  p.height                    = 0.004;
+  p.n_pixels_x                = 140;
+  p.n_pixels_y                = 40;
+  p.volume_fraction           = 0.1;
   const Morphology morphology = Morphology::create(p);
 
   for (const BoundaryCondition bc : {BoundaryCondition::kubc,

@@ -17,13 +17,12 @@ main(int argc, char **argv)
 
   const std::vector<ElasticPhase> phases = seed_phases();
   MorphologyParameters            p;
-  p.generator       = MorphologyParameters::Generator::random_vertical;
-  p.width           = 0.014;
-  p.height          = 0.004;
-  p.n_pixels_x      = 140;
-  p.n_pixels_y      = 40;
-  p.volume_fraction = 0.15;
-  p.random_seed     = 3;
+  p.width                     = 0.014;
+  p.height                    = 0.004;
+  p.n_pixels_x                = 140;
+  p.n_pixels_y                = 40;
+  p.volume_fraction           = 0.15;
+  p.random_seed               = 3;
   const Morphology morphology = Morphology::create(p);
   const double     f          = morphology.heterogeneity_fraction();
   check(std::abs(f - 0.15) < 0.01,

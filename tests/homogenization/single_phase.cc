@@ -14,7 +14,7 @@ main(int argc, char **argv)
   const IsotropicElasticMaterial  material{30e9, 0.2, 1770.};
   const std::vector<ElasticPhase> phases = {material, material};
   MorphologyParameters            p;
-  p.generator                 = MorphologyParameters::Generator::homogeneous;
+  p.source                    = MorphologySources::create("homogeneous");
   p.n_pixels_x                = 28;
   p.n_pixels_y                = 8;
   const Morphology morphology = Morphology::create(p);
@@ -42,14 +42,14 @@ main(int argc, char **argv)
 
   // And with a second phase of the same constants but a random layout:
   // the result must not depend on the morphology.
-  MorphologyParameters random = p;
-  random.generator  = MorphologyParameters::Generator::random_vertical;
-  random.n_pixels_x = 56; // pixels of 0.1 mm
-  random.n_pixels_y = 16;
-  random.width      = 0.0056;
-  random.height     = 0.0016;
-  random.inclusion_min_height               = 0.0004;
-  random.inclusion_max_height               = 0.0012;
+  MorphologyParameters random        = p;
+  random.n_pixels_x                  = 56; // pixels of 0.1 mm
+  random.n_pixels_y                  = 16;
+  random.width                       = 0.0056;
+  random.height                      = 0.0016;
+  auto &random_source                = random.use<RandomVerticalMorphology>();
+  random_source.inclusion_min_height = 0.0004;
+  random_source.inclusion_max_height = 0.0012;
   const Morphology        random_morphology = Morphology::create(random);
   const CellProblemResult r
     = solve_cell(random_morphology, phases, BoundaryCondition::kubc);

@@ -147,17 +147,16 @@ main(int argc, char **argv)
 
   // (c)
   for (const unsigned int axis : {1u, 2u})
-    for (const auto normal : {MorphologyParameters::LaminateNormal::x,
-                              MorphologyParameters::LaminateNormal::y})
+    for (const auto normal :
+         {LaminateMorphology::Normal::x, LaminateMorphology::Normal::y})
       {
         fibre.axis = axis;
         const std::vector<ElasticPhase> phases
           = {epoxy, ElasticPhase(fibre, 1800., "test")};
         const Morphology   morphology = laminate_map(normal);
         const double       f          = morphology.heterogeneity_fraction();
-        const unsigned int n
-          = normal == MorphologyParameters::LaminateNormal::x ? 0 : 1;
-        const std::string name = std::string("laminate normal to ") + "xy"[n]
+        const unsigned int n = normal == LaminateMorphology::Normal::x ? 0 : 1;
+        const std::string  name = std::string("laminate normal to ") + "xy"[n]
                                  + ", fibre axis " + "xyz"[axis] + ": ";
         const ApparentProperties exact = laminate_exact(phases, {1 - f, f}, n);
         const auto               r

@@ -5,8 +5,9 @@
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
 #include <functional>
+#include <memory>
+#include <stdexcept>
 #include <string>
-#include <tribodyn/core/image_morphology.h>
 #include <tribodyn/core/material.h>
 #include <tribodyn/core/parameter_binding.h>
 #include <vector>
@@ -20,61 +21,46 @@ namespace tribodyn
     constexpr unsigned int heterogeneity = 1;
   } // namespace material_id
 
+  class MorphologySource;
+
   /**
    * Parameters of the subsection "Morphology": a rectangle of width (along
    * x, the sliding direction) by height (along y), described on a grid of
-   * pixels, each pixel holding the matrix or a heterogeneity.
+   * pixels, each pixel holding a material id. The map is made by a source
+   * (`Generator`: core/morphology_source.h), which owns its own entries;
+   * the entries here are common to the sources.
    */
   struct MorphologyParameters
   {
-    enum class Generator
-    {
-      homogeneous,     ///< only matrix
-      random_vertical, ///< random non-overlapping vertical heterogeneities
-      laminate,        ///< layers through the whole rectangle
-      grid_file,       ///< material ids read from a plain-text grid
-      image            ///< a segmented PNG or TIFF micrograph
-    };
-    enum class LaminateNormal
-    {
-      x, ///< vertical layers, stacked along x
-      y  ///< horizontal layers, stacked along y
-    };
-
-    Generator generator = Generator::random_vertical;
     /// Size of the rectangle along x and y (m).
     double width  = 28e-3;
     double height = 8e-3;
-    /// Number of pixels along x and y (generators; a grid file sets its own).
+    /// Number of pixels along x and y (generators; a file sets its own).
     unsigned int n_pixels_x = 280;
     unsigned int n_pixels_y = 80;
-
     /// Target area fraction of heterogeneities (random, laminate).
     double volume_fraction = 0.1;
-    /// Random vertical heterogeneities: width (m) and height range (m).
-    double       inclusion_width      = 0.1e-3;
-    double       inclusion_min_height = 1.2e-3;
-    double       inclusion_max_height = 3.6e-3;
-    unsigned int random_seed          = 1;
+    /// Seed of a random generator.
+    unsigned int random_seed = 1;
 
-    /// Laminate: orientation and number of (matrix, heterogeneity) periods.
-    LaminateNormal laminate_normal    = LaminateNormal::x;
-    unsigned int   n_laminate_periods = 4;
+    /// The chosen source with its parameters (`Generator`; by default
+    /// 'random vertical'). Copies of the parameters share it; use() and
+    /// edit() replace it.
+    std::shared_ptr<const MorphologySource> source;
 
-    /// Grid file: path of the plain-text grid of material ids.
-    std::string grid_file;
+    MorphologyParameters();
 
-    /// Image: file, pixel size, segmentation, crop (subsection "Image").
-    ImageParameters image;
-
-    /// The entries of "Morphology", bound to the members above (their
-    /// initial values are the defaults); the subsection "Image" is
-    /// ImageParameters'.
+    /// The common entries of "Morphology", bound to the members above
+    /// (their initial values are the defaults), and `Generator`, which
+    /// makes the chosen source in @p chosen.
     ParameterBinding
-    binding();
+    binding(std::unique_ptr<MorphologySource> &chosen);
 
+    /// Declare the common entries and every registered source's.
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+    /// Read the common entries, then the chosen source's (its checks and
+    /// what it records).
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
@@ -82,6 +68,39 @@ namespace tribodyn
     /// rather than generated: it may hold any number of phases.
     bool
     is_map() const;
+
+    /// Make the source a new @p Source with its defaults (its header
+    /// included by the caller), and return it to set its parameters:
+    /// `p.use<LaminateMorphology>().n_periods = 2;`.
+    template <typename Source>
+    Source &
+    use()
+    {
+      const std::shared_ptr<Source> s = std::make_shared<Source>();
+      source                          = s;
+      return *s;
+    }
+
+    /// Make the source a copy of the current one, which must be a
+    /// @p Source (std::logic_error otherwise), and return it to change its
+    /// parameters (copies of these parameters keep the old one).
+    template <typename Source>
+    Source &
+    edit()
+    {
+      const auto *current = dynamic_cast<const Source *>(source.get());
+      if (current == nullptr)
+        throw std::logic_error(
+          "MorphologyParameters::edit(): the source is of another type");
+      const std::shared_ptr<Source> s = std::make_shared<Source>(*current);
+      source                          = s;
+      return *s;
+    }
+
+    /// Refuse a `Volume fraction` outside (0, 1) (the generators that
+    /// place heterogeneities by it); @p b gives the path.
+    void
+    check_volume_fraction(const ParameterBinding &b) const;
   };
 
   /**
@@ -108,7 +127,22 @@ namespace tribodyn
                const std::vector<unsigned int> &ids,
                const std::string               &origin);
 
-    /// Build the morphology the parameters describe (generator or file).
+    /// n_heterogeneities() of a map read from a file: its connected groups
+    /// of heterogeneity pixels.
+    static constexpr unsigned int connected_groups
+      = static_cast<unsigned int>(-1);
+
+    /// The same with the number of heterogeneities its generator placed
+    /// (n_heterogeneities()), or connected_groups.
+    Morphology(const double                     width,
+               const double                     height,
+               const unsigned int               n_x,
+               const unsigned int               n_y,
+               const std::vector<unsigned int> &ids,
+               const std::string               &origin,
+               const unsigned int               n_heterogeneities);
+
+    /// Build the morphology the parameters describe (their source's).
     static Morphology
     create(const MorphologyParameters &parameters);
 

@@ -101,12 +101,12 @@ namespace tribodyn
 
     /**
      * Refuse (InputError naming 'Materials/Names') a morphology with more
-     * phases than are named; an image's segmentation must give exactly as
-     * many phases as are named (@p image: the morphology is a segmented
-     * image).
+     * phases than are named; where an entry fixes the number of phases
+     * (@p phases_set_by, e.g. an image's segmentation:
+     * MorphologySource::phases_set_by()), exactly as many must be named.
      */
     void
-    check(const Morphology &morphology, const bool image) const;
+    check(const Morphology &morphology, const std::string &phases_set_by) const;
     /// The same at parse time for the morphology @p parameters describe,
     /// when it is a map read from a file (a generator's map has the two
     /// ids the two phases name): the map is read to count its phases.

@@ -4,64 +4,53 @@
 #include <array>
 #include <cstdint>
 #include <deal.II/base/parameter_handler.h>
+#include <memory>
 #include <string>
 #include <tribodyn/core/parameter_binding.h>
-#include <tribodyn/homogenization/image_stack.h>
 #include <vector>
 
 namespace tribodyn
 {
   namespace homogenization
   {
+    class VolumeSource;
+
     /**
      * Parameters of the subsection "Morphology" of the 3D problem (`set
      * Problem = volume_homogenization`): a box of voxels, generated
      * (laminate, random spheres, aligned or misaligned fibres) or read from
      * a raw volume described by a small header file or from a multi-page
-     * TIFF.
+     * TIFF. The volume is made by a source (`Generator`:
+     * homogenization/volume_source.h), which owns its own entries; the
+     * entries here are common to the sources (the radius and the seed to
+     * the two random generators, spheres and fibres).
      */
     struct VolumeMorphologyParameters
     {
-      enum class Generator
-      {
-        laminate,   ///< layers through the whole box, normal to x, y or z
-        spheres,    ///< random non-overlapping spheres (periodic placement)
-        fibres,     ///< the same with short cylinders (aligned or in a cone)
-        raw_file,   ///< material ids read from a raw volume with a header
-        image_stack ///< a multi-page TIFF, segmented (ImageStackParameters)
-      };
-
-      Generator                   generator = Generator::spheres;
-      std::array<unsigned int, 3> n_voxels  = {{32, 32, 32}};
+      std::array<unsigned int, 3> n_voxels = {{32, 32, 32}};
       /// Edge of a (cubic) voxel of the generators and image stacks (m).
       double voxel_size = 1e-5;
       /// Target volume fraction of the heterogeneity (phase 1).
       double volume_fraction = 0.2;
-      /// Laminate: axis of the layers' normal (0 = x, 1 = y, 2 = z) and
-      /// the number of (matrix, heterogeneity) periods along it.
-      unsigned int laminate_normal  = 2;
-      unsigned int laminate_periods = 1;
       /// Spheres and fibres: radius in voxels and the seed of the
-      /// placement; fibres: length in voxels and axis (0 = x, 1 = y, 2 = z).
-      double        radius       = 4;
-      std::uint64_t random_seed  = 1;
-      double        fibre_length = 16;
-      unsigned int  fibre_axis   = 2;
-      /// Fibres: half-angle (degrees) of the cone about fibre_axis within
-      /// which their axes are drawn uniformly over the spherical cap; 0 =
-      /// all aligned with fibre_axis, 90 = uniformly random in 3D.
-      double fibre_cone_angle = 0;
-      /// Raw file: path of the header file.
-      std::string raw_header;
-      /// Image stack: the subsection "Morphology/Image stack".
-      ImageStackParameters image_stack;
+      /// placement.
+      double        radius      = 4;
+      std::uint64_t random_seed = 1;
 
-      /// The entries of "Morphology", bound to the members above.
+      /// The chosen source with its parameters (by default 'spheres').
+      std::shared_ptr<const VolumeSource> source;
+
+      VolumeMorphologyParameters();
+
+      /// The common entries of "Morphology", bound to the members above,
+      /// and `Generator`, which makes the chosen source in @p chosen.
       ParameterBinding
-      binding();
+      binding(std::unique_ptr<VolumeSource> &chosen);
 
+      /// Declare the common entries and every registered source's.
       static void
       declare_parameters(dealii::ParameterHandler &prm);
+      /// Read the common entries, then the chosen source's.
       void
       parse_parameters(dealii::ParameterHandler &prm);
     };
@@ -80,7 +69,7 @@ namespace tribodyn
                   std::vector<std::uint8_t>          ids,
                   const std::string                 &origin);
 
-      /// Build the volume the parameters describe.
+      /// Build the volume the parameters describe (their source's).
       static VoxelVolume
       create(const VolumeMorphologyParameters &parameters);
 
