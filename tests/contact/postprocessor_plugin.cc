@@ -14,7 +14,13 @@
 // - open() is told whether the run resumes; close() ends each leg;
 // - finish() (core/postprocessor.h) adds its keys to summary.json after
 //   the run's own: the steps of the whole run, equal to the end time / dt
-//   exactly, the last key before the wall time.
+//   exactly, the last key before the wall time;
+// - a sampled figure of its own is one file too: the plugin sums the
+//   contact nodes' normal multipliers from the solver's public state
+//   (ContactSolver::contact_node_states(), its own reduction over the ranks) at
+//   each sample, and its column equals friction.csv's
+//   contact_normal_force, which the solver computes, in every row (as
+//   written: the same writer, the same digits).
 #include "../run_parameter_text.h"
 #include "../test_utilities.h"
 
@@ -41,21 +47,29 @@ namespace
     explicit StepCounter(const PostprocessorInputs &in)
         : path(tribodyn::join_path(in.directory, "plugin_steps.csv"))
         , root(in.root)
+        , solver(in.solver)
+        , comm(in.comm)
     {
     }
     void
     open(const bool resumed) override
     {
       opened_resumed += resumed;
-      csv = resumed ? std::make_unique<tribodyn::CsvWriter>(
-              path, std::vector<std::string>{"time", "steps"}, root, rows)
-                    : std::make_unique<tribodyn::CsvWriter>(
-                      path, std::vector<std::string>{"time", "steps"}, root);
+      const std::vector<std::string> columns{"time",
+                                             "steps",
+                                             "contact_normal_force"};
+      csv = resumed
+              ? std::make_unique<tribodyn::CsvWriter>(path, columns, root, rows)
+              : std::make_unique<tribodyn::CsvWriter>(path, columns, root);
     }
     void
     sample(const Sample &s) override
     {
-      csv->add_row({s.time, double(steps)});
+      double local = 0, normal = 0;
+      for (const ContactNode &node : solver.contact_node_states())
+        local += node.lambda_n;
+      MPI_Allreduce(&local, &normal, 1, MPI_DOUBLE, MPI_SUM, comm);
+      csv->add_row({s.time, double(steps), normal});
     }
     void
     after_step(const double) override
@@ -92,6 +106,8 @@ namespace
   private:
     std::string                          path;
     bool                                 root;
+    const ContactSolver                 &solver;
+    MPI_Comm                             comm;
     std::unique_ptr<tribodyn::CsvWriter> csv;
     unsigned long                        steps = 0;
     std::size_t                          rows  = 0;
@@ -173,16 +189,35 @@ main(int argc, char **argv)
   unsigned int      misaligned = 0;
   // every sample, the end-of-run one included, comes after its step's
   // after_step(): the count is that step's number plus one
-  const std::size_t n = std::min(friction.size(), mine.size());
+  const std::size_t n       = std::min(friction.size(), mine.size());
+  unsigned int      unequal = 0;
   for (std::size_t k = 0; k < n; ++k)
-    misaligned += mine[k][0] != friction[k][0]
-                  || mine[k][1] != std::round(mine[k][0] / dt) + 1;
+    {
+      misaligned += mine[k][0] != friction[k][0]
+                    || mine[k][1] != std::round(mine[k][0] / dt) + 1;
+      // friction.csv's column 4: contact_normal_force
+      unequal += mine[k][2] != friction[k][4];
+    }
   check(friction.size() == mine.size() && friction.size() > 500
           && misaligned == 0,
         "plugin_steps.csv: " + std::to_string(mine.size()) + " rows, "
           + std::to_string(friction.size()) + " in friction.csv; "
           + std::to_string(misaligned)
           + " rows off the sample times or with steps != time / dt + 1");
+
+  {
+    std::ifstream header(dir + "friction.csv");
+    std::string   columns;
+    std::getline(header, columns);
+    check(columns.rfind("time,normal_force,tangential_force,mu_global,"
+                        "contact_normal_force,",
+                        0)
+            == 0,
+          "friction.csv's column 4 is contact_normal_force");
+  }
+  check(unequal == 0 && n > 500,
+        "the plugin's own contact_normal_force equals friction.csv's in "
+          + std::to_string(n - unequal) + " of " + std::to_string(n) + " rows");
 
   std::ifstream        in(dir + "summary.json");
   const nlohmann::json summary = nlohmann::json::parse(in);
