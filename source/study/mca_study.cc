@@ -102,10 +102,41 @@ namespace tribodyn
         {
           ParameterHandler scene_prm;
           scene_parameters(scene, scene_prm);
+          refuse_repeated_scene(scene, scene_prm);
           RunContext check       = context;
           check.output_directory = scene_directory(scene);
           mca::McaProblem problem(scene_prm, check);
         }
+    }
+
+
+    void
+    McaStudyProblem::refuse_repeated_scene(const McaScene   &scene,
+                                           ParameterHandler &prm) const
+    {
+      // A base without inclusions does not depend on the inclusion seed:
+      // on a roughness seed listed twice its scenes would be one scene run
+      // twice, and the pairs sharing it would be counted as independent.
+      const auto &seeds = parameters.roughness_seeds;
+      const bool  repeat
+        = std::count(seeds.begin(), seeds.end(), scene.roughness_seed) > 1;
+      if (!repeat
+          || get_parameter_by_path(prm,
+                                   "Geometry/Inclusions/Enabled",
+                                   "Study/Bases")
+               == "true")
+        return;
+      throw InputError(
+        "'Study/Roughness seeds' lists the seed "
+        + std::to_string(scene.roughness_seed)
+        + " more than once (with other inclusion seeds), but the base '"
+        + parameters.bases[scene.base].name
+        + "' has no inclusions ('Geometry/Inclusions/Enabled = false'): its "
+          "scenes on that seed would be one scene run again, and the pairs "
+          "sharing it would count as independent. Study several inclusion "
+          "seeds of one surface with the bases that have inclusions only "
+          "(and compare with the other base's scene of that seed from "
+          "another study), or list each roughness seed once.");
     }
 
 

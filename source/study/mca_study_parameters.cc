@@ -294,11 +294,6 @@ namespace tribodyn
       if (roughness_seeds.empty())
         throw InputError("'Study/Roughness seeds' is empty: give at least "
                          "one seed, e.g. '1, 2, 3, 4'.");
-      if (std::set<unsigned int>(roughness_seeds.begin(), roughness_seeds.end())
-            .size()
-          != roughness_seeds.size())
-        throw InputError("'Study/Roughness seeds' names a seed twice: each "
-                         "seed is one pairing of the bases; list it once.");
       if (inclusion_seeds.empty())
         inclusion_seeds = roughness_seeds;
       if (inclusion_seeds.size() != roughness_seeds.size())
@@ -308,6 +303,18 @@ namespace tribodyn
                          + std::to_string(roughness_seeds.size())
                          + ": give one inclusion seed per roughness seed, or "
                            "none (then each equals its roughness seed).");
+      // A roughness seed may come back with another inclusion seed (the
+      // fibres of one surface placed anew); a pair of seeds is one scene
+      // per base.
+      std::set<std::pair<unsigned int, unsigned int>> pairs;
+      for (unsigned int s = 0; s < roughness_seeds.size(); ++s)
+        if (!pairs.insert({roughness_seeds[s], inclusion_seeds[s]}).second)
+          throw InputError(
+            "'Study/Roughness seeds' names the seed "
+            + std::to_string(roughness_seeds[s]) + " twice with the inclusion "
+            + "seed " + std::to_string(inclusion_seeds[s])
+            + " ('Study/Inclusion seeds'): each pair of seeds is one pairing "
+              "of the bases; list it once.");
     }
   } // namespace study
 } // namespace tribodyn

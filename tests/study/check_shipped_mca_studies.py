@@ -4,7 +4,10 @@ mca_seed_heights_044.prm, mca_fibre_content.prm, mca_time_step_lever.prm,
 mca_time_step_lever_composite.prm and the two seed-heights levers
 mca_time_step_lever_seed_heights(_composite).prm and the coarse layout's
 mca_coarse_lever_seed_heights(_composite).prm and its campaign
-mca_seed_heights_coarse.prm, each with an
+mca_seed_heights_coarse.prm and the inclusion-seed lever
+mca_inclusion_seed_lever.prm (its roughness seed 1 with inclusion seed 2:
+the scene composite_044_seed1_inclusions2, tagged with both seeds), each
+with an
 override block appended (as a user continues a prm: later entries win; the
 shipped text is not edited) for one roughness seed, 2e-11 s (the bodies
 are still approaching) and an output directory of the test's; the bases
@@ -43,7 +46,11 @@ AUTOMATA = {"mca_laptop": 12288, "mca_seed_heights": 35136,
             "mca_coarse_lever_seed_heights": {"steel_044": 35136, "steel_coarse": 22592},
             "mca_coarse_lever_seed_heights_composite":
                 {"composite_044": 35136, "composite_coarse": 22592},
-            "mca_seed_heights_coarse": 22592}
+            "mca_seed_heights_coarse": 22592,
+            "mca_inclusion_seed_lever": 35136}
+# the inclusion seed a study's cut keeps with roughness seed 1 (the others:
+# each equal to its roughness seed)
+INCLUSION_SEEDS = {"mca_inclusion_seed_lever": 2}
 # the layout each seed-heights scene must run: the study's setting or its
 # base's (the coarse lever's bases), 'interface 8 16' unless named here
 BANDS = {"steel_coarse": "interface 6 18 2", "composite_coarse": "interface 6 18 2"}
@@ -89,8 +96,8 @@ end
 subsection Study
   set Bases           = {absolute}
   set Roughness seeds = 1
-end
-""")
+""" + (f"  set Inclusion seeds = {INCLUSION_SEEDS[name]}\n"
+       if name in INCLUSION_SEEDS else "") + "end\n")
     run = subprocess.run([tribodyn, wrapper], capture_output=True, text=True)
     print(run.stdout[-1500:], run.stderr[-1500:])
     report(run.returncode == 0, f"{name}: the study ran (exit {run.returncode})")
@@ -101,13 +108,17 @@ end
     bases_run = [b.strip() for b, _ in bases(text)]
     report(len(scenes) == len(bases_run) and os.path.exists(os.path.join(out, "study.csv")),
            f"{name}: scenes.csv with the {len(bases_run)} bases' scenes, study.csv written")
+    inclusions = INCLUSION_SEEDS.get(name, 1)
+    suffix = f"_inclusions{inclusions}" if inclusions != 1 else ""
     for base in bases_run:
-        scene = os.path.join(out, "scenes", f"{base}_seed1")
+        scene = os.path.join(out, "scenes", f"{base}_seed1{suffix}")
         with open(os.path.join(scene, "summary.json")) as f:
             summary = json.load(f)
         tag = summary.get("study_scene", {})
         expected = n_automata[base] if isinstance(n_automata, dict) else n_automata
-        report(tag.get("base") == base and summary.get("n_automata") == expected,
+        report(tag.get("base") == base and summary.get("n_automata") == expected
+               and tag.get("roughness_seed") == 1
+               and tag.get("inclusion_seed") == inclusions,
                f"{name} {base}: {summary.get('n_automata')} automata "
                f"(documented {expected}), scene tagged {tag}")
         if "seed_heights" in name:

@@ -143,6 +143,12 @@ namespace tribodyn
       /// scene's legs.csv.
       void
       run_scene(const McaScene &scene, const MPI_Comm group) const;
+      /// Refuse (InputError) a scene of a base without inclusions on a
+      /// roughness seed the study lists more than once: the same scene
+      /// again.
+      void
+      refuse_repeated_scene(const McaScene           &scene,
+                            dealii::ParameterHandler &prm) const;
       std::string
       scene_directory(const McaScene &scene) const;
 
