@@ -6,7 +6,6 @@
 #include <fstream>
 #include <functional>
 #include <limits>
-#include <random>
 #include <sstream>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/morphology.h>
@@ -16,27 +15,8 @@
 
 namespace tribodyn
 {
-  // The sources' defaults (MorphologySource): nothing of their own.
-  void
-  MorphologySource::bind(ParameterBinding &)
-  {
-  }
-
-
-  void
-  MorphologySource::declare_subsections(dealii::ParameterHandler &) const
-  {
-  }
-
-
-  void
-  MorphologySource::parse(dealii::ParameterHandler &,
-                          const ParameterBinding &,
-                          MorphologyParameters &)
-  {
-  }
-
-
+  // The engines' questions to a source (MorphologySource): a generator's
+  // answers.
   bool
   MorphologySource::is_map() const
   {
@@ -119,14 +99,7 @@ namespace tribodyn
   {
     std::unique_ptr<MorphologySource> unused;
     MorphologyParameters().binding(unused).declare(prm);
-    for (const MorphologySources::Entry &e : MorphologySources::list())
-      {
-        const std::unique_ptr<MorphologySource> source = e.create();
-        ParameterBinding                        own("Morphology");
-        source->bind(own);
-        own.declare(prm);
-        source->declare_subsections(prm);
-      }
+    MorphologySources::declare_sources(prm);
   }
 
 
@@ -137,14 +110,9 @@ namespace tribodyn
     std::unique_ptr<MorphologySource> chosen;
     const ParameterBinding            b = binding(chosen);
     b.parse(prm);
-    ParameterBinding own("Morphology");
-    chosen->bind(own);
-    own.parse(prm);
-
     check_parameter_range(b.path("Width"), width, 0, inf, true, true);
     check_parameter_range(b.path("Height"), height, 0, inf, true, true);
-    chosen->parse(prm, b, *this);
-    source = std::move(chosen);
+    source = MorphologySources::parse_chosen(std::move(chosen), prm, b, *this);
   }
 
 

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
-#include <random>
 #include <sstream>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/homogenization/volume_source.h>
@@ -18,27 +17,6 @@ namespace tribodyn
     using dealii::ParameterHandler;
     namespace Patterns = dealii::Patterns;
 
-    // The sources' defaults (VolumeSource): nothing of their own.
-    void
-    VolumeSource::bind(ParameterBinding &)
-    {
-    }
-
-
-    void
-    VolumeSource::declare_subsections(ParameterHandler &) const
-    {
-    }
-
-
-    void
-    VolumeSource::parse(ParameterHandler &,
-                        const ParameterBinding &,
-                        const VolumeMorphologyParameters &)
-    {
-    }
-
-
     VolumeMorphologyParameters::VolumeMorphologyParameters()
         : source(VolumeSources::create("spheres"))
     {
@@ -49,13 +27,8 @@ namespace tribodyn
     VolumeMorphologyParameters::binding(std::unique_ptr<VolumeSource> &chosen)
     {
       ParameterBinding b("Morphology");
-      b.add("Generator",
-            "spheres",
-            "Where the voxels come from: " + VolumeSources::choices() + ".",
-            Patterns::Selection(VolumeSources::pattern()),
-            [&chosen](const std::string &name) {
-              chosen = VolumeSources::create(name);
-            });
+      VolumeSources::add_generator_entry(
+        b, "spheres", "Where the voxels come from: ", chosen);
       const char *axes[3] = {"x", "y", "z"};
       for (unsigned int d = 0; d < 3; ++d)
         b.add(std::string("Voxels in ") + axes[d],
@@ -97,14 +70,7 @@ namespace tribodyn
     {
       std::unique_ptr<VolumeSource> unused;
       VolumeMorphologyParameters().binding(unused).declare(prm);
-      for (const VolumeSources::Entry &e : VolumeSources::list())
-        {
-          const std::unique_ptr<VolumeSource> source = e.create();
-          ParameterBinding                    own("Morphology");
-          source->bind(own);
-          own.declare(prm);
-          source->declare_subsections(prm);
-        }
+      VolumeSources::declare_sources(prm);
     }
 
 
@@ -114,11 +80,7 @@ namespace tribodyn
       std::unique_ptr<VolumeSource> chosen;
       const ParameterBinding        b = binding(chosen);
       b.parse(prm);
-      ParameterBinding own("Morphology");
-      chosen->bind(own);
-      own.parse(prm);
-      chosen->parse(prm, b, *this);
-      source = std::move(chosen);
+      source = VolumeSources::parse_chosen(std::move(chosen), prm, b, *this);
     }
 
 

@@ -54,7 +54,7 @@ namespace
     void
     parse(dealii::ParameterHandler &,
           const tribodyn::ParameterBinding &b,
-          const VolumeMorphologyParameters &common) override
+          VolumeMorphologyParameters       &common) override
     {
       for (const unsigned int n : common.n_voxels)
         tribodyn::check_parameter(n % size == 0,

@@ -30,6 +30,8 @@ namespace tribodyn
   class SourceRegistry
   {
   public:
+    using Common = typename Source::Common;
+
     struct Entry
     {
       std::string name;
@@ -93,6 +95,53 @@ namespace tribodyn
       return d;
     }
 
+    /// Bind the entry `Generator` in @p b: one of the registered names
+    /// (@p default_name by default), documented as @p introduction then
+    /// each one's text; reading it makes the named source in @p chosen.
+    static void
+    add_generator_entry(ParameterBinding        &b,
+                        const std::string       &default_name,
+                        const std::string       &introduction,
+                        std::unique_ptr<Source> &chosen)
+    {
+      b.add("Generator",
+            default_name,
+            introduction + choices() + ".",
+            dealii::Patterns::Selection(pattern()),
+            [&chosen](const std::string &name) { chosen = create(name); });
+    }
+
+    /// Declare every registered source's entries of "Morphology" and its
+    /// subsections (@p prm at the top level).
+    static void
+    declare_sources(dealii::ParameterHandler &prm)
+    {
+      for (const Entry &e : entries())
+        {
+          const std::unique_ptr<Source> source = e.create();
+          ParameterBinding              own("Morphology");
+          source->bind(own);
+          own.declare(prm);
+          source->declare_subsections(prm);
+        }
+    }
+
+    /// Read the entries of @p chosen (the source `Generator` named), then
+    /// let it read its subsections and check its values against
+    /// @p common (Source::parse(); @p b: the common entries' binding).
+    static std::shared_ptr<const Source>
+    parse_chosen(std::unique_ptr<Source>   chosen,
+                 dealii::ParameterHandler &prm,
+                 const ParameterBinding   &b,
+                 Common                   &common)
+    {
+      ParameterBinding own("Morphology");
+      chosen->bind(own);
+      own.parse(prm);
+      chosen->parse(prm, b, common);
+      return chosen;
+    }
+
   private:
     static std::vector<Entry> &
     entries()
@@ -104,32 +153,34 @@ namespace tribodyn
 
 
   /**
-   * One way to make the material map of the subsection "Morphology" of the
-   * 2D engines (a generator or a file reader), with its own parameters. A
-   * source is one file in `source/core/morphology_sources/` that registers
-   * itself in MorphologySources; its header (beside the others in
-   * `include/tribodyn/core/morphology_sources/`) is needed only by code
-   * that sets its parameters without a parameter file (tests, the study's
-   * windows).
-   *
-   * The common entries (size, pixels, volume fraction, seed) are
-   * MorphologyParameters'; the map is made from them and from the
-   * source's own.
+   * One way to make the map of the subsection "Morphology" (a generator or a
+   * file reader), with its own parameters: of a 2D map (Morphology, from
+   * MorphologyParameters: MorphologySource) or of a voxel volume
+   * (homogenization::VolumeSource). A source is one file that registers
+   * itself in its SourceRegistry.
    */
-  class MorphologySource
+  template <typename Map, typename CommonParameters>
+  class SourceBase
   {
   public:
-    virtual ~MorphologySource() = default;
+    /// The entries common to the sources (size, pixels, seed, ...).
+    using Common = CommonParameters;
+
+    virtual ~SourceBase() = default;
 
     /// Bind its own entries of "Morphology" in @p b (every source's are
     /// declared; the chosen one's are read).
     virtual void
-    bind(ParameterBinding &b);
+    bind(ParameterBinding &)
+    {
+    }
 
     /// Declare its subsections of "Morphology" (the handler at the top
     /// level), if it has any.
     virtual void
-    declare_subsections(dealii::ParameterHandler &prm) const;
+    declare_subsections(dealii::ParameterHandler &) const
+    {
+    }
 
     /**
      * After its entries are read, when it is chosen: read its subsections,
@@ -139,14 +190,26 @@ namespace tribodyn
      * parameters.prm says what the run used.
      */
     virtual void
-    parse(dealii::ParameterHandler &prm,
-          const ParameterBinding   &b,
-          MorphologyParameters     &common);
+    parse(dealii::ParameterHandler &, const ParameterBinding &, Common &)
+    {
+    }
 
     /// The map.
-    virtual Morphology
-    create(const MorphologyParameters &common) const = 0;
+    virtual Map
+    create(const Common &common) const = 0;
+  };
 
+
+  /**
+   * A source of the 2D engines' material map. Its file is in
+   * `source/core/morphology_sources/`; its header (beside the others in
+   * `include/tribodyn/core/morphology_sources/`) is needed only by code
+   * that sets its parameters without a parameter file (tests, the study's
+   * windows: MorphologyParameters::use(), edit()).
+   */
+  class MorphologySource : public SourceBase<Morphology, MorphologyParameters>
+  {
+  public:
     /// Whether the map is read from a file rather than generated: it may
     /// hold any number of phases, and a study cuts windows from it.
     virtual bool

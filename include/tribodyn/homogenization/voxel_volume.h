@@ -11,9 +11,19 @@
 
 namespace tribodyn
 {
+  template <typename Map, typename Common>
+  class SourceBase;
+
   namespace homogenization
   {
-    class VolumeSource;
+    struct VolumeMorphologyParameters;
+    class VoxelVolume;
+
+    /// A source of the voxel volume of the 3D problem's "Morphology"
+    /// (homogenization/volume_source.h): one file in
+    /// `source/homogenization/volume_sources/` that registers itself in
+    /// VolumeSources.
+    using VolumeSource = SourceBase<VoxelVolume, VolumeMorphologyParameters>;
 
     /**
      * Parameters of the subsection "Morphology" of the 3D problem (`set

@@ -23,7 +23,7 @@ namespace tribodyn
         void
         parse(dealii::ParameterHandler &prm,
               const ParameterBinding &,
-              const VolumeMorphologyParameters &) override
+              VolumeMorphologyParameters &) override
         {
           stack.parse_parameters(prm, true);
         }

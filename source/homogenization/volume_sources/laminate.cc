@@ -33,8 +33,8 @@ namespace tribodyn
 
         void
         parse(dealii::ParameterHandler &,
-              const ParameterBinding           &b,
-              const VolumeMorphologyParameters &p) override
+              const ParameterBinding     &b,
+              VolumeMorphologyParameters &p) override
         {
           check_parameter(p.n_voxels[normal] % periods == 0,
                           b.path("Laminate periods"),

@@ -30,7 +30,7 @@ namespace tribodyn
         void
         parse(dealii::ParameterHandler &,
               const ParameterBinding &b,
-              const VolumeMorphologyParameters &) override
+              VolumeMorphologyParameters &) override
         {
           check_parameter(!header.empty(),
                           b.path("Raw header"),
