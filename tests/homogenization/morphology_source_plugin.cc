@@ -23,10 +23,7 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <fstream>
-#include <iostream>
 #include <nlohmann/json.hpp>
-#include <regex>
-#include <sstream>
 #include <string>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/morphology_source.h>
@@ -117,16 +114,9 @@ main(int argc, char **argv)
 
   // The parameter reference.
   {
-    std::ostringstream out;
-    std::streambuf    *old  = std::cout.rdbuf(out.rdbuf());
-    std::string        name = "tribodyn", flag = "--print-parameters",
-                problem = "homogenization";
-    char     *args[]    = {name.data(), flag.data(), problem.data(), nullptr};
-    const int code      = tribodyn::run_application(3, args);
-    std::cout.rdbuf(old);
-    // The documentation as one line (the reference wraps it in comments).
+    int               code = 0;
     const std::string text
-      = std::regex_replace(out.str(), std::regex("\\s*\\n\\s*#\\s*"), " ");
+      = tribodyn_test::printed_parameters("homogenization", code);
     check(code == 0
             && text.find("see the subsection 'Image'), 'checkerboard' "
                          "(squares of 'Checker size' pixels).")
@@ -164,15 +154,14 @@ main(int argc, char **argv)
     }
 
   // The source's own refusal.
-  std::ostringstream err;
-  std::streambuf    *old = std::cerr.rdbuf(err.rdbuf());
-  const int          code
+  std::string errors;
+  const int   code
     = tribodyn_test::run_parameter_text("morphology_source_plugin_bad.prm",
-                                        prm(3));
-  std::cerr.rdbuf(old);
+                                        prm(3),
+                                        errors);
   check(code == 2
-          && err.str().find("'Morphology/Checker size'") != std::string::npos
-          && err.str().find("the squares must tile the pixels")
+          && errors.find("'Morphology/Checker size'") != std::string::npos
+          && errors.find("the squares must tile the pixels")
                != std::string::npos,
         "a size of 3 on 8 pixels is refused naming 'Morphology/Checker "
         "size' (exit code "

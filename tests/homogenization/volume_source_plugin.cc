@@ -23,10 +23,7 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <fstream>
-#include <iostream>
 #include <nlohmann/json.hpp>
-#include <regex>
-#include <sstream>
 #include <string>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
@@ -66,7 +63,8 @@ namespace
     create(const VolumeMorphologyParameters &p) const override
     {
       const auto               &n = p.n_voxels;
-      std::vector<std::uint8_t> ids(std::size_t(n[0]) * n[1] * n[2]);
+      std::vector<std::uint8_t> ids(static_cast<std::size_t>(n[0]) * n[1]
+                                    * n[2]);
       std::size_t               v = 0;
       for (unsigned int k = 0; k < n[2]; ++k)
         for (unsigned int j = 0; j < n[1]; ++j)
@@ -119,16 +117,9 @@ main(int argc, char **argv)
 
   // The parameter reference.
   {
-    std::ostringstream out;
-    std::streambuf    *old  = std::cout.rdbuf(out.rdbuf());
-    std::string        name = "tribodyn", flag = "--print-parameters",
-                problem = "volume_homogenization";
-    char     *args[]    = {name.data(), flag.data(), problem.data(), nullptr};
-    const int code      = tribodyn::run_application(3, args);
-    std::cout.rdbuf(old);
-    // The documentation as one line (the reference wraps it in comments).
+    int               code = 0;
     const std::string text
-      = std::regex_replace(out.str(), std::regex("\\s*\\n\\s*#\\s*"), " ");
+      = tribodyn_test::printed_parameters("volume_homogenization", code);
     check(code == 0
             && text.find("subsection 'Image stack'), 'checkerboard' (cubes "
                          "of 'Checker size' voxels).")
@@ -174,15 +165,14 @@ main(int argc, char **argv)
     }
 
   // The source's own refusal.
-  std::ostringstream err;
-  std::streambuf    *old = std::cerr.rdbuf(err.rdbuf());
-  const int          code
-    = tribodyn_test::run_parameter_text("volume_source_plugin_bad.prm", prm(3));
-  std::cerr.rdbuf(old);
+  std::string errors;
+  const int   code
+    = tribodyn_test::run_parameter_text("volume_source_plugin_bad.prm",
+                                        prm(3),
+                                        errors);
   check(code == 2
-          && err.str().find("'Morphology/Checker size'") != std::string::npos
-          && err.str().find("the cubes must tile the voxels")
-               != std::string::npos,
+          && errors.find("'Morphology/Checker size'") != std::string::npos
+          && errors.find("the cubes must tile the voxels") != std::string::npos,
         "a size of 3 on 8 voxels is refused naming 'Morphology/Checker "
         "size' (exit code "
           + std::to_string(code) + ")");
