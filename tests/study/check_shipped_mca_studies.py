@@ -4,7 +4,8 @@ mca_seed_heights_044.prm, mca_fibre_content.prm, mca_time_step_lever.prm,
 mca_time_step_lever_composite.prm and the two seed-heights levers
 mca_time_step_lever_seed_heights(_composite).prm and the coarse layout's
 mca_coarse_lever_seed_heights(_composite).prm and its campaign
-mca_seed_heights_coarse.prm and the inclusion-seed lever
+mca_seed_heights_coarse.prm, the outer layout's
+mca_outer_lever_seed_heights(_composite).prm and the inclusion-seed lever
 mca_inclusion_seed_lever.prm (its roughness seed 1 with inclusion seed 2:
 the scene composite_044_seed1_inclusions2, tagged with both seeds), each
 with an
@@ -20,9 +21,10 @@ with its factors named in summary.json; each scene holds the automata its
 prm documents (the laptop scene: 16 x 16 x 12 FCC cells = 12 288; the seed
 heights with the fine band at 8 cells and 16 of 2d: 35 136, the count
 mca_size_bands_interface derives from the layout; the coarse layout
-'interface 6 18 2': 22 592), and the seed-heights scenes really run the
-study's setting or their base's (their parameters.prm reads 'interface 8
-16', the coarse bases 'interface 6 18 2'); the time-step levers' two bases differ in dt by the
+'interface 6 18 2': 22 592, the outer one 'interface 8 16 2': 26 176), and
+the seed-heights scenes really run the study's setting or their base's
+(their parameters.prm reads 'interface 8 16', the coarse bases 'interface 6
+18 2', the outer ones 'interface 8 16 2'); the time-step levers' two bases differ in dt by the
 ratio of their Courant factors, 0.5/0.35 or 0.44/0.35 (the same d and c_p:
 to 1e-12)."""
 import csv
@@ -47,13 +49,17 @@ AUTOMATA = {"mca_laptop": 12288, "mca_seed_heights": 35136,
             "mca_coarse_lever_seed_heights_composite":
                 {"composite_044": 35136, "composite_coarse": 22592},
             "mca_seed_heights_coarse": 22592,
-            "mca_inclusion_seed_lever": 35136}
+            "mca_inclusion_seed_lever": 35136,
+            "mca_outer_lever_seed_heights": {"steel_044": 35136, "steel_outer": 26176},
+            "mca_outer_lever_seed_heights_composite":
+                {"composite_044": 35136, "composite_outer": 26176}}
 # the inclusion seed a study's cut keeps with roughness seed 1 (the others:
 # each equal to its roughness seed)
 INCLUSION_SEEDS = {"mca_inclusion_seed_lever": 2}
 # the layout each seed-heights scene must run: the study's setting or its
 # base's (the coarse lever's bases), 'interface 8 16' unless named here
-BANDS = {"steel_coarse": "interface 6 18 2", "composite_coarse": "interface 6 18 2"}
+BANDS = {"steel_coarse": "interface 6 18 2", "composite_coarse": "interface 6 18 2",
+         "steel_outer": "interface 8 16 2", "composite_outer": "interface 8 16 2"}
 # the two bases of each time-step lever and the ratio of their Courant
 # factors (0.35 against 0.5 or 0.44)
 LEVERS = {"mca_time_step_lever": ("courant_035", "courant_050", 0.5 / 0.35),
