@@ -42,15 +42,21 @@ namespace tribodyn
       std::function<std::unique_ptr<Source>()> create;
     };
 
-    /// Add @p entry; returns true (for a static initializer).
+    /// Add @p entry; returns true (for a static initializer). A name
+    /// registered twice is a programming error (std::logic_error).
     static bool
     add(Entry entry)
     {
+      for (const Entry &e : entries())
+        if (e.name == entry.name)
+          throw std::logic_error("two morphology sources are registered as '"
+                                 + entry.name + "'");
       entries().push_back(std::move(entry));
       std::stable_sort(entries().begin(),
                        entries().end(),
                        [](const Entry &a, const Entry &b) {
-                         return a.order < b.order;
+                         return a.order < b.order
+                                || (a.order == b.order && a.name < b.name);
                        });
       return true;
     }
