@@ -50,13 +50,8 @@ namespace tribodyn
     using dealii::Patterns::Double;
     using dealii::Patterns::Integer;
     ParameterBinding b("Morphology");
-    b.add("Generator",
-          "random vertical",
-          "How the material map is made: " + MorphologySources::choices() + ".",
-          dealii::Patterns::Selection(MorphologySources::pattern()),
-          [&chosen](const std::string &name) {
-            chosen = MorphologySources::create(name);
-          });
+    MorphologySources::add_generator_entry(
+      b, "random vertical", "How the material map is made: ", chosen);
     b.add("Width",
           width,
           "Size of the rectangle along x (the sliding direction), in m.",
