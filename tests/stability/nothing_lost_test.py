@@ -200,8 +200,12 @@ def killed_case(tribodyn, base, work, end_section, long_end, series):
     rows = 0
     while time.time() - start < 120 and process.poll() is None:
         try:
-            # A's series is moved aside at the claim: rows here are B's.
-            if os.path.exists(os.path.join(out, "previous_run")):
+            # A's series is moved aside at the claim, one file after the
+            # other once previous_run/ exists: the rows are B's only when
+            # the series at the top is a file of its own (another inode;
+            # on a loaded machine the claim can be caught between the two).
+            if (os.path.exists(os.path.join(out, "previous_run"))
+                    and os.stat(watched).st_ino != inodes_a[series]):
                 rows = len(open(watched).read().splitlines())
                 if rows >= 4:
                     break
