@@ -24,6 +24,7 @@
 #include <deal.II/base/mpi.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/morphology_source.h>
@@ -166,5 +167,28 @@ main(int argc, char **argv)
         "a size of 3 on 8 pixels is refused naming 'Morphology/Checker "
         "size' (exit code "
           + std::to_string(code) + ")");
+
+  // A second source under a registered name is a programming error
+  // (add_registered(), shared with the plugin lists), and the list keeps
+  // its first one.
+  bool refused = false;
+  try
+    {
+      tribodyn::MorphologySources::add(
+        {"checkerboard", 11, "again", [] {
+           return std::make_unique<CheckerboardMorphology>();
+         }});
+    }
+  catch (const std::logic_error &e)
+    {
+      refused
+        = std::string(e.what()).find("'checkerboard'") != std::string::npos;
+    }
+  unsigned int n_checkerboards = 0;
+  for (const auto &e : tribodyn::MorphologySources::list())
+    n_checkerboards += e.name == "checkerboard";
+  check(refused && n_checkerboards == 1,
+        "a second 'checkerboard' is refused (std::logic_error naming it) "
+        "and the list keeps one");
   return tribodyn_test::result();
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <tribodyn/core/morphology.h>
 #include <tribodyn/core/parameter_binding.h>
+#include <tribodyn/core/plugin_registry.h>
 #include <vector>
 
 namespace tribodyn
@@ -47,17 +48,7 @@ namespace tribodyn
     static bool
     add(Entry entry)
     {
-      for (const Entry &e : entries())
-        if (e.name == entry.name)
-          throw std::logic_error("two morphology sources are registered as '"
-                                 + entry.name + "'");
-      entries().push_back(std::move(entry));
-      std::stable_sort(entries().begin(),
-                       entries().end(),
-                       [](const Entry &a, const Entry &b) {
-                         return a.order < b.order
-                                || (a.order == b.order && a.name < b.name);
-                       });
+      add_registered(entries(), std::move(entry), "morphology sources");
       return true;
     }
 

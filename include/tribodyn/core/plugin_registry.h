@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/parameter_binding.h>
@@ -22,6 +23,33 @@ namespace tribodyn
     /// "Subsection/Name" of the entry it was read from (messages).
     std::string path;
   };
+
+  /**
+   * Add @p entry to the list @p entries of a registry whose entries have a
+   * `name` and an `order` key, keeping the list sorted by the keys and, for
+   * equal keys, by the names (static initialization runs in an unspecified
+   * order across files: the list is the same whatever it is). A name
+   * registered twice is a programming error (std::logic_error naming
+   * @p what the list holds).
+   */
+  template <typename Entry>
+  void
+  add_registered(std::vector<Entry> &entries,
+                 Entry               entry,
+                 const std::string  &what)
+  {
+    for (const Entry &e : entries)
+      if (e.name == entry.name)
+        throw std::logic_error("two " + what + " are registered as '"
+                               + entry.name + "'");
+    entries.push_back(std::move(entry));
+    std::stable_sort(entries.begin(),
+                     entries.end(),
+                     [](const Entry &a, const Entry &b) {
+                       return a.order < b.order
+                              || (a.order == b.order && a.name < b.name);
+                     });
+  }
 
   /**
    * A list of plugins that register themselves from their own source files
@@ -108,17 +136,12 @@ namespace tribodyn
         });
     }
 
-    /// Add @p entry; returns true (for a static initializer).
+    /// Add @p entry; returns true (for a static initializer). A name
+    /// registered twice is a programming error (std::logic_error).
     static bool
     add(Entry entry)
     {
-      entries().push_back(std::move(entry));
-      std::stable_sort(entries().begin(),
-                       entries().end(),
-                       [](const Entry &a, const Entry &b) {
-                         return a.order < b.order
-                                || (a.order == b.order && a.name < b.name);
-                       });
+      add_registered(entries(), std::move(entry), "plugins");
       return true;
     }
 
