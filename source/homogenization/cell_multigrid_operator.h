@@ -223,6 +223,11 @@ namespace tribodyn
                     matrix_of_cell.push_back(it->second);
                   }
               tabulate_cells(constraints, matrix_of_cell);
+              // The cell loop, the diagonal and the right-hand side read
+              // the element matrices and element_stiffness from here on:
+              // the per-cell stiffness (21 numbers a cell in 3D, 56 B per
+              // DoF in double) is not kept.
+              std::vector<Stiffness>().swap(coefficient);
             }
         }
 
@@ -386,6 +391,7 @@ namespace tribodyn
           const auto        &partitioner = *mf.get_vector_partitioner();
           const unsigned int level       = mf.get_mg_level();
           cells.clear();
+          cells.reserve(matrix_of_cell.size());
           std::vector<types::global_dof_index> dofs(n_dofs);
           for (unsigned int batch = 0; batch < mf.n_cell_batches(); ++batch)
             for (unsigned int lane = 0;
