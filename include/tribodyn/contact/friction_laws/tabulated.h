@@ -8,7 +8,9 @@
 #ifndef tribodyn_contact_friction_laws_tabulated_h
 #define tribodyn_contact_friction_laws_tabulated_h
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <deal.II/base/mpi.h>
 #include <iostream>
 #include <string>
@@ -43,6 +45,7 @@ namespace tribodyn
         std::string file;
         Speed       speed          = Speed::slip_rate;
         double      pressure_scale = 1, speed_scale = 1;
+        double      pressure_exponent = 1, reference_pressure = 1e6;
 
         /// The entries, each written once (the handler is in Contact).
         ParameterBinding
@@ -67,8 +70,28 @@ namespace tribodyn
           e.add("Pressure scale",
                 pressure_scale,
                 "The table is read at p = Pressure scale x (the node's contact "
-                "pressure lambda_n / tributary length): the map from the pin's "
-                "pressure to the table's (e.g. the automata scene's).",
+                "pressure p_node = lambda_n / tributary length), or with a "
+                "Pressure exponent m other than 1 at Pressure scale x p_ref x "
+                "(p_node / p_ref)^m: the map from the pin's pressure to the "
+                "table's (e.g. the automata scene's).",
+                dealii::Patterns::Double(),
+                Interval{0, 1e300, true, false});
+          e.add("Pressure exponent",
+                pressure_exponent,
+                "m of the load-dependent map: the table is read at p = "
+                "Pressure scale x p_ref x (p_node / p_ref)^m, p_node the "
+                "node's contact pressure and p_ref the Reference pressure. "
+                "1 (default): the constant scale above (a real contact area "
+                "in proportion to the nominal one); 1/3: Hertzian spots of a "
+                "fixed number; 0: Greenwood-Williamson's spots of one mean "
+                "pressure whatever the load (the real area grows with it).",
+                dealii::Patterns::Double(0, 10));
+          e.add("Reference pressure",
+                reference_pressure,
+                "p_ref of the load-dependent map (Pa): the node pressure that "
+                "reads the table at Pressure scale x p_ref whatever the "
+                "exponent (e.g. the median contact pressure of the pin's "
+                "operating_range.csv). Unused with Pressure exponent = 1.",
                 dealii::Patterns::Double(),
                 Interval{0, 1e300, true, false});
           e.add("Speed scale",
@@ -92,7 +115,23 @@ namespace tribodyn
           , speed(p.speed)
           , pressure_scale(p.pressure_scale)
           , speed_scale(p.speed_scale)
+          , pressure_exponent(p.pressure_exponent)
+          , reference_pressure(p.reference_pressure)
       {
+      }
+
+      /// The table's pressure for a node of normal multiplier @p lambda_n
+      /// and tributary length @p length (p_node = lambda_n / length):
+      /// Pressure scale x p_ref x (p_node / p_ref)^m; with m = 1 Pressure
+      /// scale x lambda_n / length, the constant map's arithmetic.
+      double
+      table_pressure(const double lambda_n, const double length) const
+      {
+        if (pressure_exponent == 1)
+          return pressure_scale * lambda_n / length;
+        return pressure_scale * reference_pressure
+               * std::pow(std::max(lambda_n / length, 0.) / reference_pressure,
+                          pressure_exponent);
       }
 
       void
@@ -112,7 +151,7 @@ namespace tribodyn
         const double v
           = speed == Speed::slip_rate ? before.slip_rate : plane_speed;
         const double mu
-          = table(pressure_scale * lambda_n / before.length, speed_scale * v);
+          = table(table_pressure(lambda_n, before.length), speed_scale * v);
         return coulomb_tangential(trial, mu * lambda_n, status);
       }
 
@@ -128,7 +167,7 @@ namespace tribodyn
         node.law_state[0] = node.slip_rate;
         if (node.status == separated)
           return;
-        const double p = pressure_scale * node.lambda_n / node.length;
+        const double p = table_pressure(node.lambda_n, node.length);
         const std::vector<double> &P = table.pressure_axis(),
                                   &V = table.speed_axis();
         const bool below             = p < P.front();
@@ -165,18 +204,20 @@ namespace tribodyn
                 << 100 * share(pressure_above) << " %; speed "
                 << 100 * share(speed_outside) << " %)" << std::endl;
         if (share(any_outside) > 0.01)
-          figures << "Warning: 'Contact/Tabulated friction/File': "
-                  << 100 * share(any_outside)
-                  << " % of the pin's friction evaluations fell outside the "
-                     "table and took its edge values (the table covers "
-                  << table.pressure_axis().front() << " to "
-                  << table.pressure_axis().back() << " Pa and "
-                  << table.speed_axis().front() << " to "
-                  << table.speed_axis().back()
-                  << " m/s, read at Pressure scale x lambda_n / length and "
-                     "Speed scale x speed): extend the table over the pin's "
-                     "operating range, or change the scales."
-                  << std::endl;
+          figures
+            << "Warning: 'Contact/Tabulated friction/File': "
+            << 100 * share(any_outside)
+            << " % of the pin's friction evaluations fell outside the "
+               "table and took its edge values (the table covers "
+            << table.pressure_axis().front() << " to "
+            << table.pressure_axis().back() << " Pa and "
+            << table.speed_axis().front() << " to " << table.speed_axis().back()
+            << " m/s, read at the mapped pressure of lambda_n / length and "
+               "Speed scale x speed, with Pressure exponent "
+            << pressure_exponent
+            << "): extend the table over the pin's operating range, "
+               "or change the map."
+            << std::endl;
       }
 
       /// f(name, count) for the counts above (checkpointed by name).
@@ -210,7 +251,8 @@ namespace tribodyn
            "tabulated_clamped_speed"};
 
       Speed  speed;
-      double pressure_scale, speed_scale, plane_speed = 0;
+      double pressure_scale, speed_scale, pressure_exponent, reference_pressure,
+        plane_speed = 0;
       mutable std::array<RunCounter, n_counts> counts;
     };
   } // namespace contact
