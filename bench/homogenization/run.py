@@ -19,7 +19,7 @@
       extrapolation of the three finest meshes, with the run time of each.
   bench/homogenization/run.py volume       [--sizes 16 32 64 128] [--ranks 2]
                                            [--preconditioner multigrid|AMG]
-                                           [--conditions "KUBC, SUBC"]
+                                           [--conditions "KUBC, SUBC, periodic"]
                                            [--contrasts 10 0.1 ...]
       bench/homogenization/volume_128.prm (random glass spheres in epoxy)
       at n^3 voxels for each n of --sizes: DoFs, wall time, CG iterations
@@ -313,7 +313,7 @@ if __name__ == "__main__":
     parser.add_argument("--ranks", type=int, default=2)
     parser.add_argument("--sizes", type=int, nargs="+", default=[16, 32, 64, 128])
     parser.add_argument("--preconditioner", default="multigrid")
-    parser.add_argument("--conditions", default="KUBC, SUBC")
+    parser.add_argument("--conditions", default="KUBC, SUBC, periodic")
     parser.add_argument("--contrasts", type=float, nargs="+", default=[])
     args = parser.parse_args()
     {"scaling": scaling, "convergence": convergence, "morphologies": morphologies,

@@ -62,10 +62,16 @@ namespace tribodyn
             = LinearAlgebra::distributed::Vector<LevelNumber>;
 
         public:
+          /// @p zeroed: vector-local indices of the locally owned DoFs
+          /// the coarse correction leaves at zero (the periodic problem's
+          /// pins, whose rows the factorization keeps with a diagonal
+          /// entry only).
           explicit DirectCoarseSolver(
-            const TrilinosWrappers::SparseMatrix &matrix)
+            const TrilinosWrappers::SparseMatrix &matrix,
+            std::vector<unsigned int>             zeroed = {})
               : control(1, 0)
               , solver(control)
+              , zeroed(std::move(zeroed))
           {
             solver.initialize(matrix);
           }
@@ -83,12 +89,238 @@ namespace tribodyn
             b = src;
             solver.solve(x, b);
             dst = x;
+            for (const unsigned int k : zeroed)
+              dst.local_element(k) = 0;
           }
 
         private:
           SolverControl                          control;
           mutable TrilinosWrappers::SolverDirect solver;
           mutable VectorType                     b, x;
+          std::vector<unsigned int>              zeroed;
+        };
+
+
+        /**
+         * Periodicity on level @p level of a box mesh with periodic faces:
+         * the DoFs of each locally relevant vertex on an upper face
+         * constrained to those of its image with every such coordinate on
+         * the lower face (0), the vertex DoFTools::
+         * make_periodicity_constraints() chains it to on the active mesh
+         * (there, too, the upper faces' DoFs are the images: measured).
+         * Found by the
+         * vertices' lattice coordinates (every cell of a level is the same
+         * box), the same on every rank; the images of the locally owned
+         * cells' vertices are among the level's ghosts (the periodic
+         * faces are registered with the triangulation).
+         */
+        template <int dim>
+        AffineConstraints<double>
+        level_periodicity(const DoFHandler<dim> &dofs,
+                          const unsigned int     level,
+                          const IndexSet        &relevant)
+        {
+          const auto &tria = dofs.get_triangulation();
+          // the coarse cells exist on every rank: the box and the size of
+          // this level's cells
+          std::array<double, dim> upper{}, h{};
+          for (const auto &cell : tria.cell_iterators_on_level(0))
+            for (const unsigned int v : cell->vertex_indices())
+              for (unsigned int d = 0; d < dim; ++d)
+                upper[d] = std::max(upper[d], cell->vertex(v)[d]);
+          const auto            coarse = tria.begin(0);
+          std::array<long, dim> n{};
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              h[d] = (coarse->vertex((1 << dim) - 1)[d] - coarse->vertex(0)[d])
+                     / double(1u << level);
+              n[d] = std::lround(upper[d] / h[d]);
+            }
+          using Key = std::array<long, dim>;
+          std::map<Key, std::array<types::global_dof_index, dim>> vertex_dofs;
+          std::set<Key>                                           owned;
+          std::vector<types::global_dof_index>                    cell_dofs(
+            dofs.get_fe().n_dofs_per_cell());
+          for (const auto &cell : dofs.mg_cell_iterators_on_level(level))
+            if (cell->level_subdomain_id() != numbers::artificial_subdomain_id)
+              {
+                cell->get_mg_dof_indices(cell_dofs);
+                for (const unsigned int v : cell->vertex_indices())
+                  {
+                    Key key;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      key[d] = std::lround(cell->vertex(v)[d] / h[d]);
+                    // only the faces' vertices are images or masters
+                    bool on_face = false;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      on_face = on_face || key[d] == 0 || key[d] == n[d];
+                    if (!on_face)
+                      continue;
+                    auto &entry = vertex_dofs[key];
+                    for (unsigned int c = 0; c < dim; ++c)
+                      entry[c] = cell_dofs[dim * v + c];
+                    if (cell->is_locally_owned_on_level())
+                      owned.insert(key);
+                  }
+              }
+          AffineConstraints<double> periodicity(relevant);
+          for (const auto &[key, image_dofs] : vertex_dofs)
+            {
+              Key  master = key;
+              bool image  = false;
+              for (unsigned int d = 0; d < dim; ++d)
+                if (key[d] == n[d])
+                  {
+                    master[d] = 0;
+                    image     = true;
+                  }
+              if (!image)
+                continue;
+              const auto found = vertex_dofs.find(master);
+              if (found == vertex_dofs.end())
+                {
+                  AssertThrow(owned.count(key) == 0,
+                              ExcMessage("The periodic image of a locally "
+                                         "owned vertex is not among the "
+                                         "level's ghosts."));
+                  continue;
+                }
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  periodicity.add_line(image_dofs[c]);
+                  periodicity.add_entry(image_dofs[c], found->second[c], 1.);
+                }
+            }
+          periodicity.close();
+          return periodicity;
+        }
+
+
+        /// The lines of @p constraints that are periodic images (one entry
+        /// of weight 1, no inhomogeneity).
+        template <typename Number>
+        AffineConstraints<Number>
+        periodic_lines(const AffineConstraints<double> &constraints)
+        {
+          AffineConstraints<Number> lines(constraints.get_local_lines());
+          for (const auto &line : constraints.get_lines())
+            if (line.entries.size() == 1 && line.entries[0].second == 1.
+                && line.inhomogeneity == 0)
+              {
+                lines.add_line(line.index);
+                lines.add_entry(line.index, line.entries[0].first, 1.);
+              }
+          lines.close();
+          return lines;
+        }
+
+
+        /**
+         * The matrix-free level transfer of a periodic problem. The level
+         * operators act on the periodic space: a periodic image's DoF is
+         * kept at zero and its cells read and write its master's
+         * (ElasticityOperator::tabulate_cell_dofs()). Prolongation is that
+         * of deal.II after the coarse images take their masters' values
+         * (the coarse function made periodic), the fine images set to zero
+         * after it; restriction, its transpose: deal.II's of the fine
+         * vector with its images at zero, then each coarse image's value
+         * folded into its master.
+         */
+        template <int dim, typename Number>
+        class PeriodicTransfer : public MGTransferMatrixFree<dim, Number>
+        {
+        public:
+          using VectorType = LinearAlgebra::distributed::Vector<Number>;
+          using Base       = MGTransferMatrixFree<dim, Number>;
+          using Base::Base;
+
+          /// The owned images of each level (vector-local index) with their
+          /// masters (owned or ghosts), in the vectors of @p initialize.
+          void
+          set_images(
+            const unsigned int n_levels,
+            const std::function<void(const unsigned int, VectorType &)> &init,
+            const std::function<AffineConstraints<double>(unsigned int)>
+              &periodicity)
+          {
+            periodic = true;
+            images.resize(0, n_levels - 1);
+            scratch.resize(0, n_levels - 1);
+            for (unsigned int level = 0; level < n_levels; ++level)
+              {
+                init(level, scratch[level]);
+                const auto &partitioner = *scratch[level].get_partitioner();
+                const auto  lines       = periodicity(level);
+                images[level].clear();
+                for (const auto &line : lines.get_lines())
+                  if (partitioner.in_local_range(line.index)
+                      && line.entries.size() == 1)
+                    images[level].emplace_back(
+                      partitioner.global_to_local(line.index),
+                      partitioner.global_to_local(line.entries[0].first));
+              }
+          }
+
+          void
+          prolongate(const unsigned int to_level,
+                     VectorType        &dst,
+                     const VectorType  &src) const override
+          {
+            if (!periodic)
+              return Base::prolongate(to_level, dst, src);
+            dst = Number(0);
+            prolongate_and_add(to_level, dst, src);
+          }
+
+          void
+          prolongate_and_add(const unsigned int to_level,
+                             VectorType        &dst,
+                             const VectorType  &src) const override
+          {
+            if (!periodic)
+              return Base::prolongate_and_add(to_level, dst, src);
+            VectorType &coarse = scratch[to_level - 1];
+            coarse.copy_locally_owned_data_from(src);
+            coarse.update_ghost_values();
+            for (const auto &[image, master] : images[to_level - 1])
+              coarse.local_element(image) = coarse.local_element(master);
+            coarse.zero_out_ghost_values();
+            coarse.update_ghost_values();
+            Base::prolongate_and_add(to_level, dst, coarse);
+            for (const auto &[image, master] : images[to_level])
+              dst.local_element(image) = 0;
+          }
+
+          void
+          restrict_and_add(const unsigned int from_level,
+                           VectorType        &dst,
+                           const VectorType  &src) const override
+          {
+            if (!periodic)
+              return Base::restrict_and_add(from_level, dst, src);
+            VectorType &fine = scratch[from_level];
+            fine.copy_locally_owned_data_from(src);
+            for (const auto &[image, master] : images[from_level])
+              fine.local_element(image) = 0;
+            VectorType &coarse = scratch[from_level - 1];
+            coarse             = Number(0);
+            Base::restrict_and_add(from_level, coarse, fine);
+            coarse.zero_out_ghost_values();
+            for (const auto &[image, master] : images[from_level - 1])
+              {
+                coarse.local_element(master) += coarse.local_element(image);
+                coarse.local_element(image) = 0;
+              }
+            coarse.compress(VectorOperation::add);
+            for (unsigned int k = 0; k < coarse.locally_owned_size(); ++k)
+              dst.local_element(k) += coarse.local_element(k);
+          }
+
+        private:
+          bool periodic = false;
+          MGLevelObject<std::vector<std::pair<unsigned int, unsigned int>>>
+                                            images;
+          mutable MGLevelObject<VectorType> scratch;
         };
 
 
@@ -131,7 +363,7 @@ namespace tribodyn
             = LinearAlgebra::distributed::Vector<LevelNumber>;
           using FineOperator  = ElasticityOperator<dim, degree, double>;
           using LevelOperator = ElasticityOperator<dim, degree, LevelNumber>;
-          using Transfer      = MGTransferMatrixFree<dim, LevelNumber>;
+          using Transfer      = PeriodicTransfer<dim, LevelNumber>;
           static constexpr bool fast_path = FineOperator::fast_path;
           using Smoother
             = PreconditionChebyshev<LevelOperator,
@@ -177,8 +409,13 @@ namespace tribodyn
               }
             AffineConstraints<double> no_constraints;
             no_constraints.close();
-            AffineConstraints<LevelNumber> no_level_constraints;
-            no_level_constraints.close();
+            // The periodic problem (multilinear elements): the matrix-free
+            // objects hold the periodicity (its masters among the vectors'
+            // ghosts), the operator replaces each image's DoFs by its
+            // master's.
+            periodic = fast_path && description.periodic;
+            const AffineConstraints<double> fine_periodicity
+              = periodic ? periodic_lines<double>(constraints) : no_constraints;
 
             // The active mesh.
             {
@@ -190,7 +427,7 @@ namespace tribodyn
                   auto new_mf = std::make_shared<MatrixFree<dim, double>>();
                   new_mf->reinit(mapping,
                                  dof_handler,
-                                 fast_path ? no_constraints : constraints,
+                                 fast_path ? fine_periodicity : constraints,
                                  quadrature,
                                  data);
                   mf = new_mf;
@@ -214,9 +451,20 @@ namespace tribodyn
             }
 
             // The constraints on the levels: the boundary, the pinned
-            // vertices (the triangulation has no periodic faces here).
+            // vertices, the periodicity.
             const unsigned int n_levels
               = dof_handler.get_triangulation().n_global_levels();
+            std::vector<AffineConstraints<double>> periodicity(n_levels);
+            if (periodic)
+              for (unsigned int level = 0; level < n_levels; ++level)
+                {
+                  IndexSet relevant;
+                  DoFTools::extract_locally_relevant_level_dofs(dof_handler,
+                                                                level,
+                                                                relevant);
+                  periodicity[level]
+                    = level_periodicity(dof_handler, level, relevant);
+                }
             mg_constrained_dofs.initialize(dof_handler);
             if (description.zero_boundary)
               {
@@ -226,9 +474,12 @@ namespace tribodyn
                 mg_constrained_dofs.make_zero_boundary_constraints(dof_handler,
                                                                    faces);
               }
+            const auto &coarse_pins = description.coarse_pins.empty()
+                                        ? description.pins
+                                        : description.coarse_pins;
             for (unsigned int level = 0; level < (floating ? 1 : n_levels);
                  ++level)
-              for (const auto &[point, components] : description.pins)
+              for (const auto &[point, components] : coarse_pins)
                 mg_constrained_dofs.add_boundary_indices(
                   dof_handler,
                   level,
@@ -267,6 +518,14 @@ namespace tribodyn
                   constraints.reinit(relevant);
                   constraints.add_lines(
                     mg_constrained_dofs.get_boundary_indices(level));
+                  if (periodic)
+                    for (const auto &line : periodicity[level].get_lines())
+                      if (!constraints.is_constrained(line.index))
+                        {
+                          constraints.add_line(line.index);
+                          for (const auto &[master, weight] : line.entries)
+                            constraints.add_entry(line.index, master, weight);
+                        }
                   constraints.close();
                 };
             for (unsigned int level = 0; level < n_levels; ++level)
@@ -281,9 +540,15 @@ namespace tribodyn
                   {
                     auto new_mf
                       = std::make_shared<MatrixFree<dim, LevelNumber>>();
+                    AffineConstraints<LevelNumber> level_periodicity;
+                    if (periodic)
+                      level_periodicity
+                        = periodic_lines<LevelNumber>(periodicity[level]);
+                    else
+                      level_periodicity.close();
                     new_mf->reinit(mapping,
                                    dof_handler,
-                                   fast_path ? no_level_constraints
+                                   fast_path ? level_periodicity
                                              : level_constraints,
                                    quadrature,
                                    level_data);
@@ -307,8 +572,28 @@ namespace tribodyn
                 level_operators[level].compute_diagonal();
               }
 
-            transfer = std::make_unique<Transfer>(mg_constrained_dofs);
-            transfer->build(dof_handler);
+            if (periodic)
+              {
+                // (without the MGConstrainedDoFs, whose level constraints of
+                // the periodic triangulation deal.II's transfer would set to
+                // zero: the coarse solver zeroes the pins)
+                transfer = std::make_unique<Transfer>();
+                // the level vectors of the operators (their ghosts hold the
+                // images' masters)
+                const auto init
+                  = [&](const unsigned int level, LevelVectorType &v) {
+                      level_operators[level].initialize_dof_vector(v);
+                    };
+                transfer->build(dof_handler, init);
+                transfer->set_images(n_levels, init, [&](unsigned int level) {
+                  return periodic_lines<double>(periodicity[level]);
+                });
+              }
+            else
+              {
+                transfer = std::make_unique<Transfer>(mg_constrained_dofs);
+                transfer->build(dof_handler);
+              }
 
             // Chebyshev smoothing of degree 3 (fewest operator applications
             // per solve of degrees 2-6 on the 1.1e6-DoF bench; with the
@@ -368,8 +653,21 @@ namespace tribodyn
                                                   &FineOperator::local_apply,
                                                   &coarse_operator);
                 }
+              // the periodic problem's coarse pins: left at zero (SUBC's
+              // are, bit for bit as before, what the factorization gives)
+              std::vector<unsigned int> zeroed;
+              if (periodic)
+                {
+                  LevelVectorType v;
+                  level_operators[0].initialize_dof_vector(v);
+                  const auto &partitioner = *v.get_partitioner();
+                  for (const auto dof :
+                       mg_constrained_dofs.get_boundary_indices(0))
+                    if (partitioner.in_local_range(dof))
+                      zeroed.push_back(partitioner.global_to_local(dof));
+                }
               coarse = std::make_unique<DirectCoarseSolver<LevelNumber>>(
-                coarse_matrix);
+                coarse_matrix, std::move(zeroed));
             }
 
             mg_matrix
@@ -417,7 +715,10 @@ namespace tribodyn
           }
 
         private:
-          static constexpr unsigned int n_rigid = dim * (dim + 1) / 2;
+          /// The rigid motions the floating solve projects out: the
+          /// translations and the rotations (SUBC), the translations only
+          /// (periodic: rotations are not periodic).
+          unsigned int n_rigid = dim * (dim + 1) / 2;
 
           /// The V-cycle between two projections on the complement of the
           /// rigid motions (symmetric: CG's preconditioner).
@@ -495,6 +796,9 @@ namespace tribodyn
             const auto &partitioner = *projected_residual.get_partitioner();
             owned_vertex.assign(partitioner.locally_owned_size() / dim,
                                 Point<dim>());
+            owned_image_dofs.clear();
+            if (periodic)
+              n_rigid = dim;
             pinned_dofs.clear();
             Point<dim> lower, upper;
             for (unsigned int d = 0; d < dim; ++d)
@@ -521,6 +825,9 @@ namespace tribodyn
                         = partitioner.global_to_local(dofs[dim * v]);
                       AssertThrow(local % dim == 0, ExcInternalError());
                       owned_vertex[local / dim] = cell->vertex(v);
+                      if (free_constraints.is_constrained(dofs[dim * v]))
+                        for (unsigned int c = 0; c < dim; ++c)
+                          owned_image_dofs.push_back(local + c);
                       for (unsigned int c = 0; c < dim; ++c)
                         if (pinned.count(dofs[dim * v + c]))
                           pinned_dofs.emplace_back(local + c, cell->vertex(v));
@@ -531,15 +838,34 @@ namespace tribodyn
                           * (Utilities::MPI::min(lower[d], comm)
                              + Utilities::MPI::max(upper[d], comm));
             // G = R^T R over the owned DoFs of all ranks
+            // (over the vertices of the periodic space: not the images)
+            std::vector<bool> image(owned_vertex.size());
+            for (const unsigned int k : owned_image_dofs)
+              image[k / dim] = true;
+            std::vector<Point<dim>> counted;
+            for (unsigned int k = 0; k < owned_vertex.size(); ++k)
+              if (!image[k])
+                counted.push_back(owned_vertex[k]);
+            if (n_rigid == dim)
+              gram_inverse = inverse_gram<dim>(counted);
+            else
+              gram_inverse = inverse_gram<dim *(dim + 1) / 2>(counted);
+          }
+
+          /// G^-1, G = R^T R over the vertices @p counted of all ranks.
+          template <unsigned int n_rigid>
+          FullMatrix<double>
+          inverse_gram(const std::vector<Point<dim>> &counted) const
+          {
             FullMatrix<double> gram(n_rigid, n_rigid);
-            for (const Point<dim> &x : owned_vertex)
+            for (const Point<dim> &x : counted)
               for (unsigned int c = 0; c < dim; ++c)
                 for (unsigned int i = 0; i < n_rigid; ++i)
                   for (unsigned int j = 0; j < n_rigid; ++j)
                     gram(i, j) += rigid_value(i, x, c) * rigid_value(j, x, c);
-            Utilities::MPI::sum(gram, comm, gram);
-            gram_inverse = gram;
-            gram_inverse.gauss_jordan();
+            Utilities::MPI::sum(gram, dof_handler.get_communicator(), gram);
+            gram.gauss_jordan();
+            return gram;
           }
 
           /// v -= R a, a = G^-1 R^T v: the orthogonal projection of v on
@@ -547,7 +873,20 @@ namespace tribodyn
           void
           project_rigid_motions(VectorType &v) const
           {
+            // (the motions' count known to the compiler, as it was before
+            // the periodic problem: SUBC's results bit for bit)
+            if (n_rigid == dim)
+              project_rigid_motions<dim>(v);
+            else
+              project_rigid_motions<dim *(dim + 1) / 2>(v);
+          }
+
+          template <unsigned int n_rigid>
+          void
+          project_rigid_motions(VectorType &v) const
+          {
             Vector<double> product(n_rigid), a(n_rigid);
+            // (the periodic images of v are zero: they add nothing)
             for (unsigned int k = 0; k < owned_vertex.size(); ++k)
               for (unsigned int c = 0; c < dim; ++c)
                 {
@@ -560,10 +899,20 @@ namespace tribodyn
                                 product);
             gram_inverse.vmult(a, product);
             a *= -1;
-            add_rigid_motion(v, a);
+            add_rigid_motion<n_rigid>(v, a);
           }
 
           /// v += R a.
+          void
+          add_rigid_motion(VectorType &v, const Vector<double> &a) const
+          {
+            if (n_rigid == dim)
+              add_rigid_motion<dim>(v, a);
+            else
+              add_rigid_motion<dim *(dim + 1) / 2>(v, a);
+          }
+
+          template <unsigned int n_rigid>
           void
           add_rigid_motion(VectorType &v, const Vector<double> &a) const
           {
@@ -575,12 +924,25 @@ namespace tribodyn
                     sum += rigid_value(i, owned_vertex[k], c) * a(i);
                   v.local_element(dim * k + c) += sum;
                 }
+            // a periodic image is no DoF of the periodic space
+            for (const unsigned int k : owned_image_dofs)
+              v.local_element(k) = 0;
           }
 
           /// x += the rigid motion that makes x zero at the pinned DoFs
           /// (the motions' values there form an invertible square system:
           /// the pins remove exactly the rigid motions), by the normal
           /// equations summed over the ranks (each adds the pins it owns).
+          void
+          fix_pins(VectorType &x) const
+          {
+            if (n_rigid == dim)
+              fix_pins<dim>(x);
+            else
+              fix_pins<dim *(dim + 1) / 2>(x);
+          }
+
+          template <unsigned int n_rigid>
           void
           fix_pins(VectorType &x) const
           {
@@ -599,7 +961,7 @@ namespace tribodyn
             Utilities::MPI::sum(b, comm, b);
             M.gauss_jordan();
             M.vmult(a, b);
-            add_rigid_motion(x, a);
+            add_rigid_motion<n_rigid>(x, a);
           }
 
           /// The coarsest level's matrix (level 0, @p depth levels above
@@ -645,9 +1007,14 @@ namespace tribodyn
           /// (dim of them), the centre of the rotations and the inverse
           /// Gram matrix of the rigid motions; the owned pinned DoFs and
           /// their vertices; the preconditioner's work vector.
-          bool                                             floating = false;
-          AffineConstraints<double>                        free_constraints;
-          std::vector<Point<dim>>                          owned_vertex;
+          bool                      floating = false;
+          AffineConstraints<double> free_constraints;
+          std::vector<Point<dim>>   owned_vertex;
+          /// The owned periodic images' DoFs (vector-local; periodic
+          /// problem), kept at zero.
+          std::vector<unsigned int> owned_image_dofs;
+          /// The periodic problem of multilinear elements.
+          bool                                             periodic = false;
           Point<dim>                                       centre;
           FullMatrix<double>                               gram_inverse;
           std::vector<std::pair<unsigned int, Point<dim>>> pinned_dofs;

@@ -24,16 +24,26 @@ namespace tribodyn
     namespace internal
     {
       /// The constraints of a boundary condition, on every level: zero
-      /// fluctuation on the whole boundary (KUBC) and pinned components of
-      /// single vertices (SUBC; vertices of the coarsest mesh, so on every
-      /// level). (Periodic problems are solved with AMG.)
+      /// fluctuation on the whole boundary (KUBC), pinned components of
+      /// single vertices (SUBC: vertices of the coarsest mesh, so on every
+      /// level; periodic: one vertex of the active mesh), and periodicity
+      /// (the triangulation's periodic faces: on every level the DoFs of a
+      /// vertex on an upper face equal those of its image on the lower
+      /// faces x_d = 0, as DoFTools::make_periodicity_constraints() makes
+      /// them on the active mesh).
       template <int dim>
       struct LevelConstraintDescription
       {
         bool zero_boundary = false;
+        bool periodic      = false;
         /// The pinned vertices and their components.
         std::vector<std::pair<dealii::Point<dim>, std::vector<unsigned int>>>
           pins;
+        /// The pins of the coarsest level where they are not @p pins (the
+        /// periodic problem's pin need not be a vertex of the coarsest
+        /// mesh): empty = @p pins.
+        std::vector<std::pair<dealii::Point<dim>, std::vector<unsigned int>>>
+          coarse_pins;
         /// Distance below which a vertex is the pinned point.
         double tolerance = 0;
       };

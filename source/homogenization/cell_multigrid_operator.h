@@ -365,22 +365,37 @@ namespace tribodyn
          * order; FESystem numbers them vertex by vertex, dim v + c, so
          * that the components of a vertex are consecutive, also as
          * vector-local indices: all owned or all ghosts of the same rank),
-         * with its element matrix @p matrix_of_cell. Constrained DoFs (all
-         * homogeneous here: boundary and pins) are read as zero and not
-         * written, as MatrixFree does.
+         * with its element matrix @p matrix_of_cell. Homogeneously
+         * constrained DoFs (boundary and pins) are read as zero and not
+         * written, as MatrixFree does. A vertex whose DoFs are periodic
+         * images (each constrained to one DoF with weight 1: its master
+         * vertex's) takes its master's DoFs: the cell reads and adds to
+         * them, so the cell loop applies C^T K C of the periodic space
+         * (the MatrixFree object holds the periodicity, so that the
+         * masters are among the vector's ghosts).
          */
         void
         tabulate_cells(const AffineConstraints<Number> &constraints,
                        const std::vector<unsigned int> &matrix_of_cell)
         {
           tabulate_cell_dofs(constraints, matrix_of_cell);
-          // the locally owned constrained DoFs: identity rows
-          const auto &partitioner
-            = *this->get_matrix_free()->get_vector_partitioner();
+          // the locally owned constrained DoFs: identity rows (added by
+          // the cell loop, but for those the MatrixFree object holds as
+          // constrained, the periodic images: Base::vmult() adds them)
+          const auto       &mf          = *this->get_matrix_free();
+          const auto       &partitioner = *mf.get_vector_partitioner();
+          std::vector<bool> in_matrix_free(partitioner.locally_owned_size());
+          for (const unsigned int k : mf.get_constrained_dofs())
+            in_matrix_free[k] = true;
           constrained_owned.clear();
+          identity_rows.clear();
           for (unsigned int k = 0; k < partitioner.locally_owned_size(); ++k)
             if (constraints.is_constrained(partitioner.local_to_global(k)))
-              constrained_owned.push_back(k);
+              {
+                constrained_owned.push_back(k);
+                if (!in_matrix_free[k])
+                  identity_rows.push_back(k);
+              }
         }
 
         void
@@ -408,21 +423,33 @@ namespace tribodyn
                 cell_indices.constrained = 0;
                 for (unsigned int v = 0; v < n_vertices; ++v)
                   {
+                    // a periodic image: its master vertex's DoFs
+                    const bool image
+                      = constraints.is_identity_constrained(dofs[dim * v]);
+                    const auto master = [&](const types::global_dof_index dof) {
+                      return image
+                               ? (*constraints.get_constraint_entries(dof))[0]
+                                   .first
+                               : dof;
+                    };
                     const unsigned int x
-                      = partitioner.global_to_local(dofs[dim * v]);
+                      = partitioner.global_to_local(master(dofs[dim * v]));
                     cell_indices.vertex[v] = x;
                     for (unsigned int c = 0; c < dim; ++c)
                       {
                         const auto dof = dofs[dim * v + c];
-                        AssertThrow(partitioner.global_to_local(dof) == x + c,
+                        AssertThrow(
+                          image == constraints.is_identity_constrained(dof),
+                          ExcInternalError());
+                        AssertThrow(partitioner.global_to_local(master(dof))
+                                      == x + c,
                                     ExcInternalError());
                         AssertThrow(
-                          !constraints.is_constrained(dof)
-                            || constraints.is_identity_constrained(dof)
+                          image || !constraints.is_constrained(dof)
                             || (constraints.get_constraint_entries(dof)->empty()
                                 && constraints.get_inhomogeneity(dof) == 0),
                           ExcInternalError());
-                        if (constraints.is_constrained(dof))
+                        if (!image && constraints.is_constrained(dof))
                           cell_indices.constrained |= 1u
                                                       << (n_vertices * c + v);
                       }
@@ -649,8 +676,8 @@ namespace tribodyn
                     out[cell.dof(i)] += y[i / 8][i % 8];
             }
           // constrained rows: the identity (the MatrixFree objects hold
-          // no constraints, see MultigridCache)
-          for (const unsigned int k : constrained_owned)
+          // no constraints but the periodicity, see MultigridCache)
+          for (const unsigned int k : identity_rows)
             out[k] += in[k];
           dst.compress(VectorOperation::add);
           if (!src_had_ghosts)
@@ -703,8 +730,9 @@ namespace tribodyn
         };
         std::vector<CellIndices> cells;
         /// Degree 1: vector-local indices of the locally owned
-        /// constrained DoFs.
-        std::vector<unsigned int> constrained_owned;
+        /// constrained DoFs, and of those whose identity row the cell loop
+        /// adds (not the MatrixFree object's constrained DoFs).
+        std::vector<unsigned int> constrained_owned, identity_rows;
         /// The stiffness entries of each element matrix, and the cells'
         /// size along each axis.
         std::vector<StiffnessEntries> element_stiffness;

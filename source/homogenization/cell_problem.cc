@@ -149,7 +149,8 @@ namespace tribodyn
             "matrix). Multigrid coarsens while the number of elements along "
             "both axes is even; when the coarsest mesh keeps more than "
             "50000 DoFs (pixel counts with few factors of 2), AMG is used "
-            "instead and the screen says so.",
+            "instead and the screen says so; so is it for periodic "
+            "conditions with elements of degree 2 to 4.",
             preconditioner_choices);
       b.add("Multigrid precision",
             multigrid_precision,
@@ -189,16 +190,15 @@ namespace tribodyn
       add_cg_entries(b, solver_tolerance, max_iterations);
       b.add("Preconditioner",
             preconditioner,
-            "Preconditioner of CG: 'multigrid' (KUBC and SUBC: geometric "
-            "multigrid on the voxel hierarchy, matrix-free, one 24 x 24 "
-            "element matrix per distinct cell stiffness; its KUBC "
-            "iteration counts do not grow with the volume; 2-3 times "
-            "faster than AMG in a third to a tenth of its memory, "
+            "Preconditioner of CG: 'multigrid' (geometric multigrid on the "
+            "voxel hierarchy, matrix-free, one 24 x 24 element matrix per "
+            "distinct cell stiffness, the periodicity carried through its "
+            "levels; its iteration counts do not grow with the volume; 2-3 "
+            "times faster than AMG in a third to a tenth of its memory, "
             "doc/performance.md) or 'AMG' (Trilinos ML on the assembled "
-            "matrix, the six rigid-body modes as near-null space). Periodic "
-            "conditions always use AMG, and so do volumes whose coarsest "
-            "mesh (the voxel counts halved while all three are even) keeps "
-            "more than 50000 DoFs.",
+            "matrix, the six rigid-body modes as near-null space). Volumes "
+            "whose coarsest mesh (the voxel counts halved while all three "
+            "are even) keeps more than 50000 DoFs use AMG.",
             preconditioner_choices);
       b.add("Multigrid precision",
             multigrid_precision,
@@ -360,9 +360,9 @@ namespace tribodyn
       TimerOutput::Scope scope(timer, "mesh and dofs");
       multigrid_cache.reset(); // its objects refer to the old DoFs
       dof_handler.distribute_dofs(fe);
-      // Level DoFs only where multigrid will run on this mesh (not for the
-      // periodic problem's mesh, nor when AMG takes over).
-      if (uses_multigrid() && !mesh_is_periodic)
+      // Level DoFs only where multigrid will run on this mesh (not when
+      // AMG takes over).
+      if (uses_multigrid())
         dof_handler.distribute_mg_dofs();
       locally_owned_dofs = dof_handler.locally_owned_dofs();
       DoFTools::extract_locally_relevant_dofs(dof_handler,
@@ -394,10 +394,15 @@ namespace tribodyn
     bool
     CellProblem<dim>::uses_multigrid(const BoundaryCondition bc) const
     {
-      // deal.II 9.4's matrix-free level transfer does not carry the
-      // periodicity constraints between levels (CG took 759 iterations
-      // where KUBC took 8 in 2D): periodic problems keep AMG.
-      return uses_multigrid() && bc != BoundaryCondition::periodic;
+      // Multilinear elements carry the periodicity through the levels
+      // (cell_multigrid.cc: the periodic images' DoFs replaced by their
+      // masters' in the cell tables, a transfer that expands and folds
+      // them); other degrees take deal.II 9.4's matrix-free transfer,
+      // which does not (CG took 759 iterations where KUBC took 8 in 2D):
+      // AMG for them.
+      return uses_multigrid()
+             && (bc != BoundaryCondition::periodic
+                 || parameters.fe_degree == 1);
     }
 
 
@@ -492,8 +497,9 @@ namespace tribodyn
           case BoundaryCondition::periodic:
             {
               // Periodic w is defined up to a translation: pin the interior
-              // vertex nearest to the centre. (Periodic problems are solved
-              // with AMG: the vertex need not exist on coarser levels.)
+              // vertex nearest to the centre (of the active mesh; the
+              // multigrid's coarsest level pins a vertex of its own:
+              // solve_with_multigrid()).
               const auto         h = element_size();
               const unsigned int refinements
                 = n_element_levels + parameters.global_refinements;

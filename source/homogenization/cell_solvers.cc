@@ -219,9 +219,17 @@ namespace tribodyn
       {
         internal::LevelConstraintDescription<dim> levels;
         levels.zero_boundary = bc == BoundaryCondition::kubc;
+        levels.periodic      = bc == BoundaryCondition::periodic;
         levels.pins          = pinned_vertices(bc);
-        levels.tolerance     = 1e-3 * *std::min_element(h.begin(), h.end());
-        solver               = internal::make_cell_multigrid_solver<dim>(
+        if (levels.periodic)
+          {
+            // the coarsest level's pin: the origin, a vertex of every level
+            // that periodicity leaves unconstrained (its images on the
+            // upper faces are constrained to it)
+            levels.coarse_pins = {{Point<dim>(), levels.pins.front().second}};
+          }
+        levels.tolerance = 1e-3 * *std::min_element(h.begin(), h.end());
+        solver           = internal::make_cell_multigrid_solver<dim>(
           parameters.fe_degree,
           parameters.multigrid_precision == MultigridPrecision::single,
           multigrid_cache,

@@ -411,8 +411,9 @@ namespace tribodyn
       /// = multigrid' and a coarsest mesh of at most max_coarse_dofs DoFs).
       bool
       uses_multigrid() const;
-      /// Whether the problem of @p bc is solved with multigrid: KUBC and
-      /// SUBC when uses_multigrid(); periodic problems always use AMG.
+      /// Whether the problem of @p bc is solved with multigrid: when
+      /// uses_multigrid(), but for periodic problems of elements of degree
+      /// 2 to 4 (AMG).
       bool
       uses_multigrid(const BoundaryCondition bc) const;
       /// Levels of the multigrid hierarchy (0 with AMG).
