@@ -846,10 +846,9 @@ namespace tribodyn
             for (unsigned int k = 0; k < owned_vertex.size(); ++k)
               if (!image[k])
                 counted.push_back(owned_vertex[k]);
-            if (n_rigid == dim)
-              gram_inverse = inverse_gram<dim>(counted);
-            else
-              gram_inverse = inverse_gram<dim *(dim + 1) / 2>(counted);
+            with_rigid_count([&](auto n) {
+              gram_inverse = inverse_gram<decltype(n)::value>(counted);
+            });
           }
 
           /// G^-1, G = R^T R over the vertices @p counted of all ranks.
@@ -873,12 +872,21 @@ namespace tribodyn
           void
           project_rigid_motions(VectorType &v) const
           {
-            // (the motions' count known to the compiler, as it was before
-            // the periodic problem: SUBC's results bit for bit)
+            with_rigid_count(
+              [&](auto n) { project_rigid_motions<decltype(n)::value>(v); });
+          }
+
+          /// f(std::integral_constant<unsigned int, n_rigid>()): the
+          /// motions' count known to the compiler, as it was before the
+          /// periodic problem (SUBC's results bit for bit).
+          template <typename F>
+          void
+          with_rigid_count(const F &f) const
+          {
             if (n_rigid == dim)
-              project_rigid_motions<dim>(v);
+              f(std::integral_constant<unsigned int, dim>());
             else
-              project_rigid_motions<dim *(dim + 1) / 2>(v);
+              f(std::integral_constant<unsigned int, dim *(dim + 1) / 2>());
           }
 
           template <unsigned int n_rigid>
@@ -903,15 +911,6 @@ namespace tribodyn
           }
 
           /// v += R a.
-          void
-          add_rigid_motion(VectorType &v, const Vector<double> &a) const
-          {
-            if (n_rigid == dim)
-              add_rigid_motion<dim>(v, a);
-            else
-              add_rigid_motion<dim *(dim + 1) / 2>(v, a);
-          }
-
           template <unsigned int n_rigid>
           void
           add_rigid_motion(VectorType &v, const Vector<double> &a) const
@@ -936,10 +935,7 @@ namespace tribodyn
           void
           fix_pins(VectorType &x) const
           {
-            if (n_rigid == dim)
-              fix_pins<dim>(x);
-            else
-              fix_pins<dim *(dim + 1) / 2>(x);
+            with_rigid_count([&](auto n) { fix_pins<decltype(n)::value>(x); });
           }
 
           template <unsigned int n_rigid>
