@@ -108,11 +108,10 @@ namespace tribodyn
          * the lower face (0), the vertex DoFTools::
          * make_periodicity_constraints() chains it to on the active mesh
          * (there, too, the upper faces' DoFs are the images: measured).
-         * Found by the
-         * vertices' lattice coordinates (every cell of a level is the same
-         * box), the same on every rank; the images of the locally owned
-         * cells' vertices are among the level's ghosts (the periodic
-         * faces are registered with the triangulation).
+         * Found by the vertices' lattice coordinates (every cell of a
+         * level is the same box), the same on every rank; the images of
+         * the locally owned cells' vertices are among the level's ghosts
+         * (the periodic faces are registered with the triangulation).
          */
         template <int dim>
         AffineConstraints<double>
@@ -235,7 +234,8 @@ namespace tribodyn
           using Base::Base;
 
           /// The owned images of each level (vector-local index) with their
-          /// masters (owned or ghosts), in the vectors of @p initialize.
+          /// masters (owned or ghosts) in the vectors @p init makes (the
+          /// level operators'), from the level's @p periodicity.
           void
           set_images(
             const unsigned int n_levels,
