@@ -197,11 +197,10 @@ namespace tribodyn
 
         /// The lines of @p constraints that are periodic images (one entry
         /// of weight 1, no inhomogeneity).
-        template <typename Number>
-        AffineConstraints<Number>
+        AffineConstraints<double>
         periodic_lines(const AffineConstraints<double> &constraints)
         {
-          AffineConstraints<Number> lines(constraints.get_local_lines());
+          AffineConstraints<double> lines(constraints.get_local_lines());
           for (const auto &line : constraints.get_lines())
             if (line.entries.size() == 1 && line.entries[0].second == 1.
                 && line.inhomogeneity == 0)
@@ -235,24 +234,23 @@ namespace tribodyn
 
           /// The owned images of each level (vector-local index) with their
           /// masters (owned or ghosts) in the vectors @p init makes (the
-          /// level operators'), from the level's @p periodicity.
+          /// level operators'), from the levels' @p periodicity
+          /// (level_periodicity()).
           void
           set_images(
-            const unsigned int n_levels,
             const std::function<void(const unsigned int, VectorType &)> &init,
-            const std::function<AffineConstraints<double>(unsigned int)>
-              &periodicity)
+            const std::vector<AffineConstraints<double>> &periodicity)
           {
-            periodic = true;
+            const unsigned int n_levels = periodicity.size();
+            periodic                    = true;
             images.resize(0, n_levels - 1);
             scratch.resize(0, n_levels - 1);
             for (unsigned int level = 0; level < n_levels; ++level)
               {
                 init(level, scratch[level]);
                 const auto &partitioner = *scratch[level].get_partitioner();
-                const auto  lines       = periodicity(level);
                 images[level].clear();
-                for (const auto &line : lines.get_lines())
+                for (const auto &line : periodicity[level].get_lines())
                   if (partitioner.in_local_range(line.index)
                       && line.entries.size() == 1)
                     images[level].emplace_back(
@@ -415,7 +413,7 @@ namespace tribodyn
             // master's.
             periodic = fast_path && description.periodic;
             const AffineConstraints<double> fine_periodicity
-              = periodic ? periodic_lines<double>(constraints) : no_constraints;
+              = periodic ? periodic_lines(constraints) : no_constraints;
 
             // The active mesh.
             {
@@ -540,18 +538,20 @@ namespace tribodyn
                   {
                     auto new_mf
                       = std::make_shared<MatrixFree<dim, LevelNumber>>();
-                    AffineConstraints<LevelNumber> level_periodicity;
-                    if (periodic)
-                      level_periodicity
-                        = periodic_lines<LevelNumber>(periodicity[level]);
+                    // (the fast path: the level's periodicity, or none)
+                    const auto reinit = [&](const auto &constraints) {
+                      new_mf->reinit(mapping,
+                                     dof_handler,
+                                     constraints,
+                                     quadrature,
+                                     level_data);
+                    };
+                    if (!fast_path)
+                      reinit(level_constraints);
+                    else if (periodic)
+                      reinit(periodicity[level]);
                     else
-                      level_periodicity.close();
-                    new_mf->reinit(mapping,
-                                   dof_handler,
-                                   fast_path ? level_periodicity
-                                             : level_constraints,
-                                   quadrature,
-                                   level_data);
+                      reinit(no_constraints);
                     mf = new_mf;
                     if (shared)
                       shared->levels.push_back(mf);
@@ -585,9 +585,7 @@ namespace tribodyn
                       level_operators[level].initialize_dof_vector(v);
                     };
                 transfer->build(dof_handler, init);
-                transfer->set_images(n_levels, init, [&](unsigned int level) {
-                  return periodic_lines<double>(periodicity[level]);
-                });
+                transfer->set_images(init, periodicity);
               }
             else
               {
@@ -658,9 +656,9 @@ namespace tribodyn
               std::vector<unsigned int> zeroed;
               if (periodic)
                 {
-                  LevelVectorType v;
-                  level_operators[0].initialize_dof_vector(v);
-                  const auto &partitioner = *v.get_partitioner();
+                  const auto &partitioner = *level_operators[0]
+                                               .get_matrix_free()
+                                               ->get_vector_partitioner();
                   for (const auto dof :
                        mg_constrained_dofs.get_boundary_indices(0))
                     if (partitioner.in_local_range(dof))
