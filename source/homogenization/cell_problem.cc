@@ -395,7 +395,7 @@ namespace tribodyn
     CellProblem<dim>::uses_multigrid(const BoundaryCondition bc) const
     {
       // Multilinear elements carry the periodicity through the levels
-      // (cell_multigrid.cc: the periodic images' DoFs replaced by their
+      // (cell_multigrid_periodic.h: the periodic images' DoFs replaced by their
       // masters' in the cell tables, a transfer that expands and folds
       // them); other degrees take deal.II 9.4's matrix-free transfer,
       // which does not (CG took 759 iterations where KUBC took 8 in 2D):
