@@ -62,9 +62,11 @@ namespace tribodyn
     BoundaryLoads::value(const BoundaryGroup &g, const double t) const
     {
       const bool   damping = g.type == BoundaryGroup::Type::damping;
-      const double ts
-        = g.switch_on_contact ? st.first_contact_time : g.switch_time;
-      Vec3 out;
+      const double ts      = !g.switch_on_contact ? g.switch_time
+                             : st.first_contact_time < 0
+                               ? -1
+                               : st.first_contact_time + g.switch_time;
+      Vec3         out;
       if (ts < 0 || t <= ts)
         {
           for (unsigned int c = 0; c < 3; ++c)

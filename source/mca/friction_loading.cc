@@ -76,6 +76,17 @@ namespace tribodyn
             "top +V_y, bottom -V_y), >= 0.",
             Double(),
             Interval{0, inf, false, true});
+      b.add("Sliding delay",
+            sliding_delay,
+            "Time from the contact to the start of the sliding (s), >= 0: "
+            "over it the layers carry the Pressure at rest along y, then "
+            "the Sliding velocity ramps in over Boundary conditions/Ramp "
+            "time. 0 = the sliding ramps in with the pressure (the seed). "
+            "With a slow Sliding velocity, the peak of mu after the sliding "
+            "starts (summary.json: mu_peak) is the scene's static friction "
+            "coefficient (the breakaway).",
+            Double(),
+            Interval{0, inf, false, true});
       b.add("Damping",
             damping,
             "Viscous damping coefficient along z of the loading layers (1/s, "
@@ -219,28 +230,58 @@ namespace tribodyn
         for (const char *name : {"top",
                                  "top_load",
                                  "top_damping",
+                                 "top_approach",
                                  "bottom",
                                  "bottom_load",
-                                 "bottom_damping"})
+                                 "bottom_damping",
+                                 "bottom_approach"})
           check_parameter(existing.name != name,
                           "Boundary conditions/Groups",
                           std::string("the group name '") + name
                             + "' is taken by the friction loading.");
+      // The sliding starts at the contact, or Sliding delay after it: then
+      // the approach along z (released at the contact) and the sliding
+      // along x, y (switched later) are two groups on the same automata.
+      const double delay   = L.sliding_delay;
+      const double z_first = delay > 0 ? nan : -Vz;
       groups.push_back(make_group(
-        "top", T::velocity, top_lo, big, {{0, 0, -Vz}}, {{0, Vy, nan}}));
+        "top", T::velocity, top_lo, big, {{0, 0, z_first}}, {{0, Vy, nan}}));
+      groups.back().switch_time = delay;
       groups.push_back(make_group(
         "top_load", T::force, top_lo, big, {{0, 0, 0}}, {{0, 0, -F}}));
       groups.push_back(make_group(
         "top_damping", T::damping, top_lo, big, {{0, 0, c}}, {{0, 0, c}}));
-      groups.push_back(make_group(
-        "bottom", T::velocity, -big, bot_hi, {{0, 0, Vz}}, {{0, -Vy, nan}}));
+      groups.push_back(make_group("bottom",
+                                  T::velocity,
+                                  -big,
+                                  bot_hi,
+                                  {{0, 0, -z_first}},
+                                  {{0, -Vy, nan}}));
+      groups.back().switch_time = delay;
       groups.push_back(make_group(
         "bottom_load", T::force, -big, bot_hi, {{0, 0, 0}}, {{0, 0, F}}));
       groups.push_back(make_group(
         "bottom_damping", T::damping, -big, bot_hi, {{0, 0, c}}, {{0, 0, c}}));
-      check_parameter(groups.size() <= 32,
-                      "Boundary conditions/Groups",
-                      "at most 32 groups (the friction loading adds 6).");
+      if (delay > 0)
+        {
+          groups.push_back(make_group("top_approach",
+                                      T::velocity,
+                                      top_lo,
+                                      big,
+                                      {{nan, nan, -Vz}},
+                                      {{nan, nan, nan}}));
+          groups.push_back(make_group("bottom_approach",
+                                      T::velocity,
+                                      -big,
+                                      bot_hi,
+                                      {{nan, nan, Vz}},
+                                      {{nan, nan, nan}}));
+        }
+      check_parameter(
+        groups.size() <= 32,
+        "Boundary conditions/Groups",
+        "at most 32 groups (the friction loading adds 6, or 8 with a "
+        "Sliding delay).");
     }
   } // namespace mca
 } // namespace tribodyn

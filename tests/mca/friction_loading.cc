@@ -26,7 +26,11 @@
 //   (printed per 0.1 ns): at this size one asperity pair rides over the
 //   other, the plate rises and falls with it and its damper carries part of
 //   the load; over a whole period the plate returns, so only its momentum
-//   change and the damping of its net drift remain (measured 0.1 %).
+//   change and the damping of its net drift remain (measured 0.1 %);
+// - with a Sliding delay D (the static coefficient's loading), the layers
+//   stay at rest along x and y from the contact to the contact + D, with z
+//   released at the contact (the layer moves under the load, not at
+//   -V_z), then slide at exactly +-V_y after the ramp (1e-12: prescribed).
 
 #include "mca_test_tools.h"
 
@@ -39,7 +43,7 @@ namespace
   const double d = 7.5e-9, a = d * std::sqrt(2.), W = 4 * a;
 
   Parameters
-  scene(const bool staged)
+  scene(const bool staged, const double delay = 0)
   {
     dealii::ParameterHandler handler;
     Parameters::declare_parameters(handler);
@@ -59,7 +63,8 @@ namespace
          << "subsection Friction loading\nset Enabled = "
          << (staged ? "true" : "false")
          << "\nset Approach velocity = 5\nset Pressure = 300e6\n"
-         << "set Sliding velocity = 10\nend\n";
+         << "set Sliding velocity = 10\nset Sliding delay = " << delay
+         << "\nend\n";
     handler.parse_input_from_string(text.str());
     Parameters p;
     p.parse_parameters(handler);
@@ -197,5 +202,54 @@ main(int argc, char **argv)
         worst_v = std::max({worst_v, std::abs(v[1] + Vy), std::abs(v[0])});
     }
   check_relative(worst_v, 0, 1e-12, "layers slide at +-V_y, 0 along x", Vy);
+
+  // The sliding delayed by D: at rest along x, y over the delay, z free.
+  const double     D       = 3e-10;
+  const Parameters delayed = scene(true, D);
+  AutomatonSystem  held(delayed, MPI_COMM_WORLD);
+  held.setup();
+  const auto layer_velocities =
+    [&](const double vy, double &worst_xy, double &largest_z_deviation) {
+      const auto &G = delayed.boundary.groups;
+      for (unsigned int k = 0; k < held.n_owned_automata(); ++k)
+        {
+          const double z0 = held.positions()[k][2] - held.displacements()[k][2];
+          const auto  &v  = held.velocities()[k];
+          const double sign = z0 >= G[top].lower[2]      ? 1.
+                              : z0 <= G[bottom].upper[2] ? -1.
+                                                         : 0.;
+          if (sign == 0)
+            continue;
+          worst_xy
+            = std::max({worst_xy, std::abs(v[1] - sign * vy), std::abs(v[0])});
+          largest_z_deviation
+            = std::max(largest_z_deviation, std::abs(v[2] + sign * Vz));
+        }
+    };
+  while (held.contact_time() < 0 && held.time() < 2e-9)
+    held.step();
+  check(held.contact_time() >= 0, "the delayed scene's bodies touch");
+  double at_rest = 0, z_moves = 0;
+  while (held.time() < held.contact_time() + D)
+    {
+      held.step();
+      if (held.time() < held.contact_time() + D)
+        layer_velocities(0, at_rest, z_moves);
+    }
+  check_relative(
+    at_rest, 0, 1e-12, "layers at rest along x, y over the sliding delay", Vy);
+  check(z_moves > 1e-3 * Vz,
+        "the approach along z is released at the contact (largest |v_z -+ "
+        "V_z| over the delay: "
+          + std::to_string(z_moves) + " m/s)");
+  while (held.time() < held.contact_time() + D + ramp + 1e-11)
+    held.step();
+  double sliding = 0, ignored = 0;
+  layer_velocities(Vy, sliding, ignored);
+  check_relative(sliding,
+                 0,
+                 1e-12,
+                 "layers slide at +-V_y after the delay and the ramp",
+                 Vy);
   return result();
 }

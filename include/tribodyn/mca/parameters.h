@@ -383,7 +383,8 @@ namespace tribodyn
       /// on the group; damping: coefficient per component (1/s).
       std::array<double, 3> value = {{0, 0, 0}};
       /// Time at which a second value starts to ramp in (velocity/force),
-      /// to chain e.g. approach then sliding; negative = none.
+      /// to chain e.g. approach then sliding; negative = none. With
+      /// switch_on_contact: the delay from the first contact (>= 0).
       double                switch_time  = -1;
       std::array<double, 3> second_value = {{0, 0, 0}};
       /// The switch happens when the two bodies first touch ('then
@@ -422,6 +423,9 @@ namespace tribodyn
       double       approach_velocity = 5;
       double       pressure          = 300e6;
       double       sliding_velocity  = 10;
+      /// Time from the contact to the start of the sliding (s); 0 = the
+      /// sliding ramps in with the pressure (the seed).
+      double sliding_delay = 0;
       /// Damping along z in the loading layers (1/s); 0 = seed criterion.
       double damping = 0;
 

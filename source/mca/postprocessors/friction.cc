@@ -345,6 +345,21 @@ namespace tribodyn
         summary["steady_state_found"]        = fa.steady.found;
         summary["steady_start_time"]
           = fa.steady.found ? fa.steady.start_time : times[fa.averaged_from];
+        // The peak of the smoothed mu once the sliding has started (from the
+        // contact plus Friction loading/Sliding delay with a staged loading):
+        // with a delay and a slow sliding, the breakaway (static) coefficient.
+        const double slide_from
+          = staged ? system.contact_time() + prm.loading.sliding_delay
+                   : times.front();
+        double peak = 0, peak_time = times.front();
+        for (std::size_t k = 0; k < times.size(); ++k)
+          if (times[k] >= slide_from && fa.mu_smoothed[k] > peak)
+            {
+              peak      = fa.mu_smoothed[k];
+              peak_time = times[k];
+            }
+        summary["mu_peak"]      = peak;
+        summary["mu_peak_time"] = peak_time;
         write_layer(summary, figures, fa);
         figures << "Friction: mean mu = " << mean
                 << " over t >= " << prm.analysis.averaging_start << " s (" << n
