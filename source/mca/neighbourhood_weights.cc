@@ -148,6 +148,11 @@ namespace tribodyn
           changed[k] = 0;
         }
       any_changed = false;
+      // (the j side's pair lists are read again only at the next rebuild
+      // where no event can move a side's weight or offset: the pairs store
+      // no offsets of their own, mb_stored)
+      if (!mb_stored)
+        release_j_lists();
     }
 
 

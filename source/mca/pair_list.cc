@@ -135,19 +135,34 @@ namespace tribodyn
       const unsigned int n_pairs = pi.size();
       i_pairs_first.assign(n_owned, 0);
       i_pairs_count.assign(n_owned, 0);
+      for (unsigned int p = 0; p < n_pairs; ++p)
+        if (pi[p] < n_owned)
+          {
+            if (i_pairs_count[pi[p]]++ == 0)
+              i_pairs_first[pi[p]] = p;
+            Assert(i_pairs_first[pi[p]] + i_pairs_count[pi[p]] == p + 1,
+                   dealii::ExcInternalError());
+          }
+      index_j_side();
+    }
+
+
+    void
+    PairList::release_j_lists()
+    {
+      std::vector<unsigned int>().swap(j_pairs_first);
+      std::vector<unsigned int>().swap(j_pairs);
+    }
+
+
+    void
+    PairList::index_j_side() const
+    {
+      const unsigned int n_pairs = pi.size(), n_owned = i_pairs_first.size();
       j_pairs_first.assign(n_owned + 1, 0);
       for (unsigned int p = 0; p < n_pairs; ++p)
-        {
-          if (pi[p] < n_owned)
-            {
-              if (i_pairs_count[pi[p]]++ == 0)
-                i_pairs_first[pi[p]] = p;
-              Assert(i_pairs_first[pi[p]] + i_pairs_count[pi[p]] == p + 1,
-                     dealii::ExcInternalError());
-            }
-          if (pj[p] < n_owned)
-            ++j_pairs_first[pj[p] + 1];
-        }
+        if (pj[p] < n_owned)
+          ++j_pairs_first[pj[p] + 1];
       for (unsigned int k = 0; k < n_owned; ++k)
         j_pairs_first[k + 1] += j_pairs_first[k];
       j_pairs.resize(j_pairs_first[n_owned]);

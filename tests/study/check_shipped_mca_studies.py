@@ -1,6 +1,7 @@
 """The shipped automata studies run (issue #49 item 2), cut short:
 prm/study/mca_laptop.prm, mca_seed_heights.prm, mca_seed_heights_12.prm,
-mca_seed_heights_044.prm, mca_fibre_content.prm, mca_time_step_lever.prm,
+mca_seed_heights_044.prm, its 48-ns campaign mca_seed_heights_044_48ns.prm,
+mca_fibre_content.prm, mca_time_step_lever.prm,
 mca_time_step_lever_composite.prm and the two seed-heights levers
 mca_time_step_lever_seed_heights(_composite).prm and the coarse layout's
 mca_coarse_lever_seed_heights(_composite).prm and its campaign
@@ -41,6 +42,7 @@ tribodyn, folder, scratch = sys.argv[1], os.path.abspath(sys.argv[2]), sys.argv[
 os.makedirs(scratch, exist_ok=True)
 AUTOMATA = {"mca_laptop": 12288, "mca_seed_heights": 35136,
             "mca_seed_heights_12": 35136, "mca_seed_heights_044": 35136,
+            "mca_seed_heights_044_48ns": 35136,
             "mca_fibre_content": 12288, "mca_time_step_lever": 12288,
             "mca_time_step_lever_composite": 12288,
             "mca_time_step_lever_seed_heights": 35136,

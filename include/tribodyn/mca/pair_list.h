@@ -37,8 +37,14 @@ namespace tribodyn
       /// the key of i, so k's form one block, i_pairs_first[k] ...
       /// + i_pairs_count[k]; as j: j_pairs[j_pairs_first[k] ...
       /// j_pairs_first[k + 1]] (CSR). 32 instead of 52 bytes a list of both.
-      std::vector<unsigned int>  i_pairs_first, j_pairs_first, j_pairs;
+      std::vector<unsigned int>  i_pairs_first;
       std::vector<std::uint16_t> i_pairs_count;
+      /// The j side's lists: built with the i side's by
+      /// index_by_automaton(), dropped by release_j_lists() where no step
+      /// reads them (a scene without events between its rebuilds: 28 bytes
+      /// per automaton neither kept nor moved) and built again, the same,
+      /// by the next for_each_pair_of() that needs them (empty: not built).
+      mutable std::vector<unsigned int> j_pairs_first, j_pairs;
 
       unsigned int
       n_pairs() const
@@ -63,6 +69,10 @@ namespace tribodyn
       /// now (i_pairs_first ... j_pairs).
       void
       index_by_automaton(const unsigned int n_owned);
+      /// Drop the j side's lists (the i side's stay): for_each_pair_of()
+      /// builds them again when next called.
+      void
+      release_j_lists();
 
       /// Call @p f(p, side) for each pair p of owned automaton @p k (side 0:
       /// k is the pair's i, 1: its j), as i first, in pair order.
@@ -70,6 +80,8 @@ namespace tribodyn
       void
       for_each_pair_of(const unsigned int k, const F &f) const
       {
+        if (j_pairs_first.empty()) [[unlikely]]
+          index_j_side();
         const unsigned int first = i_pairs_first[k];
         for (unsigned int p = first; p < first + i_pairs_count[k]; ++p)
           f(p, 0u);
@@ -77,6 +89,12 @@ namespace tribodyn
           f(j_pairs[a], 1u);
       }
 
+    private:
+      /// The j side's lists of the owned automata of the i side's lists.
+      void
+      index_j_side() const;
+
+    public:
       /// Bytes of the list and of the pairs by automaton, as two parts
       /// (name, bytes) appended to @p parts.
       void
