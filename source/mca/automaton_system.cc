@@ -6,6 +6,7 @@
 #include <tribodyn/core/output.h>
 #include <tribodyn/mca/automaton_system.h>
 #include <tribodyn/mca/vector_algebra.h>
+#include <type_traits>
 
 namespace tribodyn
 {
@@ -94,6 +95,7 @@ namespace tribodyn
             "set the stiffness to 0.");
         law.set_up(springs, S);
       });
+      u_stored = prm.displacements_needed();
       register_automaton_fields();
       register_pair_fields();
     }
@@ -201,7 +203,7 @@ namespace tribodyn
       t.add("angular velocity", Kind::carried, w);
       t.add("force", Kind::carried, f);
       t.add("torque", Kind::carried, torque);
-      t.add("displacement", Kind::carried, u);
+      t.add("displacement", Kind::carried, u, 0, [this] { return u_stored; });
       t.add("material", Kind::carried, mat).to_ghosts          = true;
       t.add("body", Kind::carried, body).to_ghosts             = true;
       t.add("size level", Kind::carried, size_level).to_ghosts = true;
@@ -456,14 +458,27 @@ namespace tribodyn
       // step).
       loads.half_kick(work);
       loads.apply_constraints(t + 0.5 * dt, work);
-      // Drift (the pair kernel takes the increment as dt v again).
-      for (unsigned int k = 0; k < n_owned; ++k)
-        for (unsigned int c = 0; c < 3; ++c)
+      // Drift (the pair kernel takes the increment as dt v again); the
+      // automata's displacements where an output reads them, the groups'
+      // as their automata move.
+      const auto drift = [&](auto with_u) {
+        for (unsigned int k = 0; k < n_owned; ++k)
           {
-            const double dx = dt * v[k][c];
-            x[k][c] += dx;
-            u[k][c] += dx;
+            Vec3 dx;
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                dx[c] = dt * v[k][c];
+                x[k][c] += dx[c];
+                if constexpr (decltype(with_u)::value)
+                  u[k][c] += dx[c];
+              }
+            loads.book_displacement(k, dx);
           }
+      };
+      if (u_stored)
+        drift(std::true_type());
+      else
+        drift(std::false_type());
       current_time = t + dt;
       evaluate_pairs(dt);
       detect_first_contact();

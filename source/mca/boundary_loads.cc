@@ -42,6 +42,7 @@ namespace tribodyn
           if (automata.groups[k] & (1u << gi))
             ++group_size[gi];
       dealii::Utilities::MPI::sum(group_size, comm, group_size);
+      st.group_displacement.assign(n_groups, Vec3{{0, 0, 0}});
     }
 
 
@@ -414,7 +415,7 @@ namespace tribodyn
     std::vector<Vec3>
     BoundaryLoads::mean_displacements() const
     {
-      std::vector<Vec3> out = global_sums(local_sums(automata.u));
+      std::vector<Vec3> out = global_sums(st.group_displacement);
       for (unsigned int gi = 0; gi < out.size(); ++gi)
         for (unsigned int c = 0; c < 3; ++c)
           out[gi][c] = group_size[gi] > 0 ? out[gi][c] / group_size[gi] : 0;

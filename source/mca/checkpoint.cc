@@ -49,8 +49,11 @@ namespace tribodyn
       // group reactions; 11: the works of the physical balance
       // (plastic_work_flow_rule, friction_work_law); 12: the sides'
       // many-body offsets stored once the side states are; 13: the
-      // postprocessors' states by name (core/plugin_states.h)
-      constexpr unsigned int state_version = 13;
+      // postprocessors' states by name (core/plugin_states.h); 14: the
+      // groups' displacements as sums of this rank's drifts (the automata's
+      // own only where an output reads them: the parameters, which a
+      // resumed run may not change, decide it alike)
+      constexpr unsigned int state_version = 14;
 
       // Scalars and vectors of trivially copyable types as raw bytes (fast
       // and exact); anything else through Boost's own serialization.
@@ -115,7 +118,8 @@ namespace tribodyn
   apply(partition.state().rebalance_history)                                  \
   /* staged loading and energy bookkeeping */                                 \
   apply(loads.state().first_contact_time)                                     \
-  apply(loads.state().f_damp_rebuild) apply(loads.state().group_reaction)
+  apply(loads.state().f_damp_rebuild) apply(loads.state().group_reaction)    \
+  apply(loads.state().group_displacement)
 // (then the automata, from automaton_fields; the pairs: the list, the
 // persistent fields from pair_fields, the lists of the automata)
 #define MCA_CHECKPOINT_PAIRS(apply)                                           \

@@ -320,6 +320,15 @@ namespace tribodyn
 
 
     bool
+    Parameters::displacements_needed() const
+    {
+      return output.write_particles || output.cross_section
+             || analysis.type == AnalysisParameters::Type::uniaxial
+             || analysis.type == AnalysisParameters::Type::pulse;
+    }
+
+
+    bool
     Parameters::any_plastic() const
     {
       if (!interaction.plasticity)

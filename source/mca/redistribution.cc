@@ -74,11 +74,17 @@ namespace tribodyn
       for (unsigned int i = 0; i < n_works; ++i)
         absorbed.work[i] += work[i];
       absorbed.dropped += dropped_bonds;
-      const auto &group_reaction = loads.state().group_reaction;
-      absorbed.group_reaction.resize(group_reaction.size(), Vec3{{0, 0, 0}});
-      for (unsigned int g = 0; g < group_reaction.size(); ++g)
-        for (unsigned int c = 0; c < 3; ++c)
-          absorbed.group_reaction[g][c] += group_reaction[g][c];
+      // (the groups' reactions and displacements too)
+      const auto add_group_sums
+        = [](std::vector<Vec3> &sums, const std::vector<Vec3> &of_writer) {
+            sums.resize(of_writer.size(), Vec3{{0, 0, 0}});
+            for (unsigned int g = 0; g < of_writer.size(); ++g)
+              for (unsigned int c = 0; c < 3; ++c)
+                sums[g][c] += of_writer[g][c];
+          };
+      add_group_sums(absorbed.group_reaction, loads.state().group_reaction);
+      add_group_sums(absorbed.group_displacement,
+                     loads.state().group_displacement);
 
       // Its owned automata.
       const bool  has_fabric = fabric_inverse.size() >= n_owned;
@@ -234,6 +240,9 @@ namespace tribodyn
       loads_state.group_reaction = absorbed.group_reaction;
       loads_state.group_reaction.resize(prm.boundary.groups.size(),
                                         Vec3{{0, 0, 0}});
+      loads_state.group_displacement = absorbed.group_displacement;
+      loads_state.group_displacement.resize(prm.boundary.groups.size(),
+                                            Vec3{{0, 0, 0}});
       absorbed = Absorbed();
 
       // The last rebuild again, on this partition, at the positions of

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <deal.II/base/exceptions.h>
 #include <tribodyn/mca/automaton_fields.h>
 #include <tribodyn/mca/parameters.h>
 #include <tribodyn/mca/vector_algebra.h>
@@ -56,6 +57,12 @@ namespace tribodyn
       /// v: velocity (the drift of a step is dt v); f: pair forces, then
       /// (BoundaryLoads::apply_forces()) the total force of the kicks.
       std::vector<Vec3> v, w, f, torque, u;
+      /// Whether u, each automaton's displacement since the start, is
+      /// stored: where an output reads it (Parameters::
+      /// displacements_needed(); a resumed run has the parameters of the
+      /// run it resumes). Elsewhere u stays empty (24 bytes per automaton
+      /// neither kept nor written by the drift).
+      bool u_stored = true;
       /// material index; body index, with elastic_flag for the automata
       /// of elastic regions
       std::vector<unsigned char> mat, body;
@@ -191,10 +198,14 @@ namespace tribodyn
         return x;
       }
       /// Displacement accumulated since the start (unaffected by periodic
-      /// wrapping).
+      /// wrapping), where the scene's outputs read it (u_stored; empty
+      /// otherwise).
       const std::vector<Vec3> &
       displacements() const
       {
+        Assert(u_stored,
+               dealii::ExcMessage("no output of this scene reads "
+                                  "the displacements: not stored"));
         return u;
       }
       const std::vector<std::uint32_t> &

@@ -320,10 +320,13 @@ namespace tribodyn
             for (unsigned int c = 0; c < 3; ++c)
               {
                 x[k][c] += du[c];
-                u[k][c] += du[c];
+                if (u_stored)
+                  u[k][c] += du[c];
                 w[k][c] = dtheta[c] / pseudo_dt;
                 v[k][c] = du[c] / pseudo_dt;
               }
+            if (k < n_owned)
+              loads.book_displacement(k, du);
           }
         evaluate_pairs(pseudo_dt);
       }
@@ -595,7 +598,7 @@ namespace tribodyn
         std::vector<double> automata, pairs;
         WorkSums            work{};
         unsigned long long  dropped = 0;
-        std::vector<Vec3>   group_reaction;
+        std::vector<Vec3>   group_reaction, group_displacement;
       };
       Absorbed absorbed;
 

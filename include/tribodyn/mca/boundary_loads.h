@@ -53,6 +53,11 @@ namespace tribodyn
         /// Pair-force reaction of each group on this rank (sum of f over
         /// the group's owned automata before the loads are added).
         std::vector<Vec3> group_reaction;
+        /// Displacement of each group on this rank: the sum of the drifts
+        /// of the group's automata while this rank owned them (their mean
+        /// displacement is the sum over the ranks over the group's size;
+        /// no automaton needs to store its own).
+        std::vector<Vec3> group_displacement;
         /// Damping part of f of each owned automaton (for the damped
         /// work), valid while f_damp_rebuild is the system's rebuild
         /// count; empty without damping.
@@ -127,6 +132,21 @@ namespace tribodyn
       /// Mean displacement of each group's automata, global.
       std::vector<Vec3>
       mean_displacements() const;
+      /// Owned automaton @p k moved by @p dx (the drift): its groups'
+      /// displacements move with it.
+      void
+      book_displacement(const unsigned int k, const Vec3 &dx)
+      {
+        if (st.group_displacement.empty())
+          return;
+        const std::uint32_t in = automata.groups[k];
+        if (in == 0)
+          return;
+        for (unsigned int gi = 0; gi < st.group_displacement.size(); ++gi)
+          if (in & (1u << gi))
+            for (unsigned int c = 0; c < 3; ++c)
+              st.group_displacement[gi][c] += dx[c];
+      }
 
     private:
       /// The smooth (C1) ramp of velocities and forces at time @p t.

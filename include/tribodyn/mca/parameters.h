@@ -616,6 +616,15 @@ namespace tribodyn
 
       bool
       any_plastic() const;
+      /// Whether an output reads each automaton's displacement since the
+      /// start: the particles and the cross sections (their `displacement`
+      /// field, source/mca/postprocessors/visualization.cc) and the
+      /// uniaxial and pulse analyses (the automata's places at the start,
+      /// x - u). Elsewhere no automaton stores one
+      /// (AutomatonArrays::u_stored); the groups' mean displacements are
+      /// summed as they move (BoundaryLoads::book_displacement()).
+      bool
+      displacements_needed() const;
     };
 
     /// (material_index(): core/material_names.h)
