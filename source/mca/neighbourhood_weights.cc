@@ -150,7 +150,8 @@ namespace tribodyn
       any_changed = false;
       // (the j side's pair lists are read again only at the next rebuild
       // where no event can move a side's weight or offset: the pairs store
-      // no offsets of their own, mb_stored)
+      // no offsets of their own, mb_stored; also after a restart on another
+      // number of ranks, whose first step comes here: any_changed)
       if (!mb_stored)
         release_j_lists();
     }

@@ -353,8 +353,6 @@ namespace tribodyn
       mb_shape.assign(n_owned, ManyBodyShape::general);
       for (unsigned int k = 0; k < n_owned; ++k)
         update_many_body_state(k);
-      if (!mb_stored)
-        release_j_lists();
       // the damping forces of the last step stay valid when they were
       // (else recomputed at the next half kick, as after any rebuild)
       loads_state.f_damp_rebuild = rebuild_count;
