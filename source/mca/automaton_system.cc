@@ -1,3 +1,5 @@
+#include "pair_energy.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -125,8 +127,23 @@ namespace tribodyn
                        nullptr,
                        [this] { return q_stored; },
                        {}});
-      pair_fields.add(
-        {"sigma", Relabel::sides, 0, {&sig_i, &sig_j}, nullptr, {}, {}});
+      // the normal stress of each side, or, until the pairs store their
+      // sides' many-body offsets, the part the two sides share
+      // (PairArrays::sig_e)
+      pair_fields.add({"sigma",
+                       Relabel::sides,
+                       0,
+                       {&sig_i, &sig_j},
+                       nullptr,
+                       [this] { return mb_stored; },
+                       {}});
+      pair_fields.add({"sigma (common part)",
+                       Relabel::even,
+                       0,
+                       {&sig_e},
+                       nullptr,
+                       [this] { return !mb_stored; },
+                       {}});
       pair_fields.add({"heat",
                        Relabel::even,
                        0,
@@ -663,7 +680,7 @@ namespace tribodyn
         if (!bonded[p] && in_contact[p] && owned(pi[p]))
           lines.push_back({partition.cells().wrap(x[pi[p]]),
                            pair_vector(p),
-                           0.5 * (sig_i[p] + sig_j[p])});
+                           0.5 * (side_sigma(p, 0) + side_sigma(p, 1))});
       return lines;
     }
 
@@ -678,7 +695,7 @@ namespace tribodyn
           pv.id_i   = id[pi[p]];
           pv.id_j   = id[pj[p]];
           pv.bonded = bonded[p];
-          pv.sigma  = 0.5 * (sig_i[p] + sig_j[p]);
+          pv.sigma  = 0.5 * (side_sigma(p, 0) + side_sigma(p, 1));
           for (unsigned int c = 0; c < 3; ++c)
             pv.tau[c] = 0.5 * (shear_factor(p, 0) + shear_factor(p, 1))
                         * tau.component[c][p];

@@ -52,8 +52,10 @@ namespace tribodyn
       // postprocessors' states by name (core/plugin_states.h); 14: the
       // groups' displacements as sums of this rank's drifts (the automata's
       // own only where an output reads them: the parameters, which a
-      // resumed run may not change, decide it alike)
-      constexpr unsigned int state_version = 14;
+      // resumed run may not change, decide it alike); 15: the sides'
+      // normal stresses stored with their many-body offsets, their common
+      // part until then (PairArrays::sig_e)
+      constexpr unsigned int state_version = 15;
 
       // Scalars and vectors of trivially copyable types as raw bytes (fast
       // and exact); anything else through Boost's own serialization.

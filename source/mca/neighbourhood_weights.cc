@@ -4,6 +4,8 @@
 // fabric tensor of its neighbourhood. Recomputed only for the automata
 // whose contacts or bonds changed.
 
+#include "pair_energy.h"
+
 #include <Eigen/Dense>
 #include <cmath>
 #include <tribodyn/mca/automaton_system.h>
@@ -223,7 +225,7 @@ namespace tribodyn
           return;
         double       r;
         const Vec3   n     = unit_normal(p, r);
-        const double sg    = is_j ? sig_j[p] : sig_i[p];
+        const double sg    = side_sigma(p, is_j);
         const Vec3   shear = side_shear(p, is_j);
         const double q     = moment_arm(p, r, is_j);
         Vec3         traction;

@@ -29,8 +29,8 @@ namespace tribodyn
           // (a pair out of contact holds nothing, but for a bond broken
           // beyond the contact distance at the last step: the next step
           // releases it)
-          if (!bonded[p] && !in_contact[p] && sig_i[p] == 0 && sig_j[p] == 0
-              && t2 == 0)
+          if (!bonded[p] && !in_contact[p] && side_sigma(p, 0) == 0
+              && side_sigma(p, 1) == 0 && t2 == 0)
             continue;
           for (const unsigned int s : {0u, 1u})
             if (owned(s ? j : i))
@@ -38,7 +38,7 @@ namespace tribodyn
                 const double alpha = shear_factor(p, s);
                 energy += pair_energy::side(area_of(p),
                                             side_compliance(p, s),
-                                            (s ? sig_j : sig_i)[p],
+                                            side_sigma(p, s),
                                             side_many_body(p, s),
                                             alpha * alpha * t2);
               }
@@ -150,6 +150,13 @@ namespace tribodyn
         partition.neighbours().update(dsm.data(), 1);
       for (unsigned int k = n_owned; k < n_local; ++k)
         mb_mu[k] += dsm[k];
+      // Where the pairs store their sides' common part only (no event can
+      // occur, PairArrays::sig_e), pass C reads each side's many-body part
+      // m = D mu + c of its automaton instead of adding D dsm to it: dsm
+      // holds m from here on, the ghosts' too.
+      if (!mb_stored)
+        for (unsigned int k = 0; k < n_local; ++k)
+          dsm[k] = mc[mat[k]].D * mb_mu[k] + mb_offset[k];
       return work_mb;
     }
 

@@ -112,6 +112,16 @@ namespace tribodyn
 
 
     inline double
+    AutomatonSystem::side_sigma(const unsigned int p,
+                                const unsigned int s) const
+    {
+      if (mb_stored)
+        return (s ? sig_j : sig_i)[p];
+      return sig_e[p] + side_many_body(p, s);
+    }
+
+
+    inline double
     AutomatonSystem::stored_side_many_body(const unsigned int p,
                                            const unsigned int s) const
     {

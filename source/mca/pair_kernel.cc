@@ -139,6 +139,9 @@ namespace tribodyn
       // work of the step and their new mu (pair_energy.cc); the ghosts'
       // mu from their owners' increments.
       dw[many_body_work] += many_body_step();
+      // (where the pairs store their sides' common part only, dsm holds
+      // each automaton's many-body part m from here on: PairArrays::sig_e)
+      Assert(mb_stored || !plastic, dealii::ExcInternalError());
 
       for (unsigned int k = 0; k < n_owned; ++k)
         {
@@ -226,6 +229,7 @@ namespace tribodyn
                                   n_ahead,
                                   sig_i,
                                   sig_j,
+                                  sig_e,
                                   q_i,
                                   tau.component[0],
                                   tau.component[1],
@@ -322,6 +326,8 @@ namespace tribodyn
               if (!bonded[p])
                 {
                   const double touch = geometry.contact_distance(p);
+                  // (an unbonded pair: its scene stores the sides)
+                  Assert(mb_stored, dealii::ExcInternalError());
                   if (r >= touch)
                     {
                       // separated: no interaction; the energy of a contact
@@ -493,8 +499,16 @@ namespace tribodyn
               const double dqi = kj * dr_p * inv_sum;
               if (q_stored)
                 q_i[p] = qi + dqi;
-              sig_i[p] += ki * dqi;
-              sig_j[p] += kj * (dr_p - dqi);
+              if (plastic || mb_stored)
+                {
+                  sig_i[p] += ki * dqi;
+                  sig_j[p] += kj * (dr_p - dqi);
+                }
+              else
+                // (equal halves of a bonded pair of one material: the two
+                // sides' elastic increments are the same, ki = kj and dqi
+                // = dr / 2 but for round-off; PairArrays::sig_e)
+                sig_e[p] += ki * dqi;
               // (and the many-body work of the sides' parts m = D mu + c:
               // that of their offsets c here, S c dq; that of D mu from the
               // sums S dq of each automaton; none of the weighted sides of
@@ -700,8 +714,10 @@ namespace tribodyn
               const unsigned int i = pi[p0 + b], j = pj[p0 + b];
               if constexpr (!plastic)
                 {
-                  b_dsm_i[b] = mc[mat[i]].D * dsm[i];
-                  b_dsm_j[b] = mc[mat[j]].D * dsm[j];
+                  // D dsm, or the sides' many-body parts m where the pairs
+                  // store their common part only (see above)
+                  b_dsm_i[b] = mb_stored ? mc[mat[i]].D * dsm[i] : dsm[i];
+                  b_dsm_j[b] = mb_stored ? mc[mat[j]].D * dsm[j] : dsm[j];
                 }
               __builtin_prefetch(&f[j], 1);
               if constexpr (rot)
@@ -722,11 +738,12 @@ namespace tribodyn
               // (pass A set both shear factors to 1)
               double ai = 1, aj = 1;
               if constexpr (!plastic)
-                {
-                  // many-body part of the elastic update (gathered above)
-                  sig_i[p] += b_dsm_i[b];
-                  sig_j[p] += b_dsm_j[b];
-                }
+                if (mb_stored)
+                  {
+                    // many-body part of the elastic update (gathered above)
+                    sig_i[p] += b_dsm_i[b];
+                    sig_j[p] += b_dsm_j[b];
+                  }
               // The events of the step (pair_events.h); an elastic kernel
               // calls them for the pairs that can have some (an elastic
               // bulk has none: bonded pairs of one material).
@@ -740,7 +757,12 @@ namespace tribodyn
                   tau_scale_i[p] = ai;
                   tau_scale_j[p] = aj;
                 }
-              const double sn = 0.5 * (sig_i[p] + sig_j[p]);
+              // (where the pairs store their common part only, the mean
+              // of the sides sig_e + m_i and sig_e + m_j: no event above,
+              // bonded pairs of one material)
+              const double sn = plastic || mb_stored
+                                  ? 0.5 * (sig_i[p] + sig_j[p])
+                                  : sig_e[p] + 0.5 * (b_dsm_i[b] + b_dsm_j[b]);
               const double am = 0.5 * Sp * (ai + aj);
               Vec3         ft, F;
               for (unsigned int c = 0; c < 3; ++c)

@@ -24,7 +24,7 @@ namespace tribodyn
       // Seed eq. (4): T^i += (q_ij S / V_i) n_ij (x) F_ij / S, for each
       // owned side of the pair (q_ji = r_ij - q_ij); sigma^i = sym(B^-1 T).
       // (plastic and bond kernels only, which store the shear factors)
-      Assert(shear_factors, dealii::ExcInternalError());
+      Assert(shear_factors && mb_stored, dealii::ExcInternalError());
       if (owned(pi[p]) && !(skip_elastic && elastic(pi[p]))
           && (only == nullptr || only[pi[p]]))
         {

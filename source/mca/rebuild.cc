@@ -317,21 +317,31 @@ namespace tribodyn
           tau_scale_j.assign(n_pairs, 1.);
         }
       shear_factors = needed;
-      // The sides' many-body offsets from then on too, once the new pairs
-      // are in place (the old ones are not at the first call): each side
-      // the common offset of its automaton, the ghosts' as their owners
-      // sent it.
+      // The sides' many-body offsets and normal stresses from then on too,
+      // once the new pairs are in place (the old ones are not at the first
+      // call): each side the common offset of its automaton, the ghosts'
+      // as their owners sent it, and the normal stress sig_e + m of its
+      // side (PairArrays::sig_e: every pair until now a bonded pair of one
+      // material; the new ones, unbonded, hold no stress). (At a rebuild
+      // mu has been folded into the offsets: m = c.)
       if (check_pairs && shear_factors && !mb_stored)
         {
           Assert(mb_offset.size() >= n_local, dealii::ExcInternalError());
+          Assert(sig_e.size() == n_pairs, dealii::ExcInternalError());
           mb_i.resize(n_pairs);
           mb_j.resize(n_pairs);
+          sig_i.resize(n_pairs);
+          sig_j.resize(n_pairs);
           for (unsigned int p = 0; p < n_pairs; ++p)
             {
-              mb_i[p] = mb_offset[pi[p]];
-              mb_j[p] = mb_offset[pj[p]];
+              Assert(bonded[p] || sig_e[p] == 0, dealii::ExcInternalError());
+              mb_i[p]  = mb_offset[pi[p]];
+              mb_j[p]  = mb_offset[pj[p]];
+              sig_i[p] = bonded[p] ? sig_e[p] + mb_i[p] : 0.;
+              sig_j[p] = bonded[p] ? sig_e[p] + mb_j[p] : 0.;
             }
           std::vector<double>().swap(mb_offset);
+          std::vector<double>().swap(sig_e);
           mb_stored = true;
         }
     }

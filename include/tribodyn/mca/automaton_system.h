@@ -525,7 +525,9 @@ namespace tribodyn
       void
       update_many_body_state(const unsigned int k);
       /// The pair kernel's many-body work of a step (after pass A); dsm
-      /// times K (sent to the ghosts) and mu anew.
+      /// times K (sent to the ghosts) and mu anew; where the pairs store
+      /// their sides' common stress only (PairArrays::sig_e), dsm then
+      /// holds each automaton's many-body part m = D mu + c for pass C.
       double
       many_body_step();
       /// The shapes of the owned automata from their lambda (0: general).
@@ -539,6 +541,11 @@ namespace tribodyn
       release_opening(const unsigned int p, const double dr);
       double
       side_many_body(const unsigned int p, const unsigned int s) const;
+      /// Normal stress of side @p s (0: i, 1: j) of pair @p p (stored, or
+      /// the common part plus the side's many-body part:
+      /// PairArrays::sig_e).
+      double
+      side_sigma(const unsigned int p, const unsigned int s) const;
       /// The same where the pairs store their offsets (mb_stored): the
       /// events of a step (plastic returns, the limits of unbonded pairs),
       /// which only such scenes have.

@@ -44,8 +44,18 @@ namespace tribodyn
       /// all times (a new pair starts at half its distance): q_stored is
       /// false, the array empty (8 bytes a pair neither kept nor streamed)
       /// and moment_arm() gives r / 2.
-      std::vector<double> q_i, sig_i, sig_j, heat;
+      std::vector<double> q_i, heat;
       bool                q_stored = true;
+      /// Normal stress of each side, sigma_i and sigma_j: stored where the
+      /// pairs store their sides' many-body offsets (mb_stored). Until
+      /// then every pair is a bonded pair of one material from the start
+      /// (no event), so both sides took the same elastic increments 2G de
+      /// and each side the many-body increments D dmu of its automaton:
+      /// sigma_s = sig_e + m_s, with m_s = D mu + c of the side's automaton
+      /// (AutomatonSystem::side_sigma()). Then only the common part sig_e
+      /// is stored and sig_i, sig_j are empty (8 bytes a pair less, and
+      /// pass C reads one number where it added to two).
+      std::vector<double> sig_i, sig_j, sig_e;
       /// Many-body part m of each side's normal stress, as its offset from
       /// D mu of the side's automaton (doc/theory/mca.md §8.4). Stored
       /// (mb_stored) together with the shear factors, from the rebuild at
