@@ -177,16 +177,37 @@ namespace tribodyn
             if (it.value().is_object())
               {
                 if (it.value().contains("default_value"))
-                  lines.push_back(
-                    path + it.key() + " = "
-                    + it.value()["default_value"].get<std::string>());
+                  {
+                    lines.push_back(
+                      path + it.key() + " = "
+                      + it.value()["default_value"].get<std::string>());
+                    const auto doc = it.value().find("documentation");
+                    if (doc != it.value().end() && doc->is_string()
+                        && doc->get<std::string>().find(
+                             ParameterBinding::analysis_only_tag)
+                             != std::string::npos)
+                      r.analysis_only.push_back(path + it.key());
+                  }
                 else
                   walk(it.value(), path + it.key() + "/");
               }
         };
     walk(nlohmann::json::parse(json.str()), "");
     r.defaults = comparable_lines(lines);
+    std::sort(r.analysis_only.begin(), r.analysis_only.end());
     return r;
+  }
+
+
+  std::vector<std::string>
+  ResumableParameters::differing_in_run(
+    const std::vector<std::string> &stored) const
+  {
+    std::vector<std::string> names;
+    for (const std::string &name : differing(stored))
+      if (!std::binary_search(analysis_only.begin(), analysis_only.end(), name))
+        names.push_back(name);
+    return names;
   }
 
 
@@ -498,7 +519,9 @@ namespace tribodyn
                        + "' does not say how many MPI ranks wrote it (file "
                          "'latest' damaged). Start afresh with "
                          "'Checkpoint/Resume = false'.");
-    const std::vector<std::string> names = parameters.differing(stored);
+    // The analysis-only entries may change: the resumed run analyses its
+    // whole record (saved in the checkpoint) with the new values.
+    const std::vector<std::string> names = parameters.differing_in_run(stored);
     if (!names.empty())
       {
         std::string list;
@@ -507,8 +530,9 @@ namespace tribodyn
         throw InputError(
           "Cannot resume from the checkpoint in '" + path
           + "': these parameters differ from the checkpointed run's: " + list
-          + ". A resumed run may change only 'End time' (to a larger value) "
-            "and the Checkpoint subsection; set the others back, or start "
+          + ". A resumed run may change only 'End time' (to a larger value), "
+            "the Checkpoint subsection and the entries marked 'Analysis "
+            "only'; set the others back, or start "
             "afresh with 'Checkpoint/Resume = false'.");
       }
 

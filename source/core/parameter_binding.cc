@@ -216,6 +216,17 @@ namespace tribodyn
   }
 
 
+  ParameterBinding &
+  ParameterBinding::analysis_only()
+  {
+    if (entries.empty())
+      throw std::logic_error("ParameterBinding::analysis_only() before any "
+                             "entry was added.");
+    entries.back().documentation += analysis_only_tag;
+    return *this;
+  }
+
+
   void
   ParameterBinding::declare(dealii::ParameterHandler &prm) const
   {

@@ -157,6 +157,14 @@ namespace tribodyn
           }
         progress.update(n + 1, t, run.progress_key());
       }
+    // A finished run resumed from its last checkpoint (to analyse its
+    // record again, McaProblem): no step is left, and the end-of-run work,
+    // which follows that checkpoint, is done again on the same state.
+    if (first >= s.n_steps && s.n_steps > 0)
+      {
+        const unsigned long last = s.n_steps - 1;
+        run.end_of_run({last, run.sample_due(last), true});
+      }
     if (s.timer)
       s.timer->leave_subsection(s.timer_section);
     progress.update(run.steps_done(), run.time(), run.progress_key(), true);

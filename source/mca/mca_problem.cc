@@ -484,19 +484,28 @@ namespace tribodyn
           const auto     blobs = store.read(checkpoint_lines, info);
           load_checkpoint(
             blobs, info.n_ranks == n_ranks, system, postprocessors, rows, comm);
-          TimeLoop::check_something_to_resume(system.step_number(),
-                                              system.time(),
-                                              n_steps,
-                                              "Time/End time",
-                                              p.time.end_time);
+          // A finished run's last checkpoint is resumed only to analyse
+          // its record again: with changed analysis-only entries, no step
+          // is left to run and the run's end analyses the whole record.
+          const bool reanalysis
+            = !checkpoint_lines.differing(info.parameters).empty()
+              && system.step_number() >= n_steps;
+          if (!reanalysis)
+            TimeLoop::check_something_to_resume(system.step_number(),
+                                                system.time(),
+                                                n_steps,
+                                                "Time/End time",
+                                                p.time.end_time);
           // Every check passed: the output directory may be touched.
           context.claim_output(OutputClaim::resume);
           for (const auto &pp : postprocessors)
             pp->resume_outputs();
           series
             = std::make_unique<CsvWriter>(series_path, columns, root, rows);
-          pcout << "Resuming from the checkpoint at t = " << info.time
-                << " s (step " << info.step << ")";
+          pcout << (reanalysis ? "Re-analysing the finished run's record "
+                                 "from its checkpoint at t = "
+                               : "Resuming from the checkpoint at t = ")
+                << info.time << " s (step " << info.step << ")";
           if (info.n_ranks != n_ranks)
             pcout << ", written by " << info.n_ranks
                   << " MPI rank(s): automata and pair states redistributed "

@@ -220,19 +220,22 @@ namespace tribodyn
             "pulse: coordinate of the second probe plane (m).");
       b.add("Averaging start",
             averaging_start,
-            "friction: the mean mu is taken from this time on (s).");
+            "friction: the mean mu is taken from this time on (s).")
+        .analysis_only();
       b.add("Smoothing window",
             smoothing_window,
             "friction: width of the centred moving average of mu giving "
             "mu_smoothed (s); 0 = a tenth of the End time.",
-            Double(0));
+            Double(0))
+        .analysis_only();
       b.add("Steady band",
             steady_band,
             "friction: the quasi-steady regime starts when the smoothed mu "
             "stays within this fraction of its later mean for the rest of the "
             "run (and for at least a fifth of it); its mu is block-averaged "
             "from there, with a standard error.",
-            Double(0, 1));
+            Double(0, 1))
+        .analysis_only();
       b.add("Layer bin width",
             layer_bin_width,
             "friction: bin width along the normal axis of the quasi-fluid "

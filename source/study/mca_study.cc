@@ -105,7 +105,9 @@ namespace tribodyn
           refuse_repeated_scene(scene, scene_prm);
           RunContext check       = context;
           check.output_directory = scene_directory(scene);
-          mca::McaProblem problem(scene_prm, check);
+          mca::McaProblem          problem(scene_prm, check);
+          std::vector<std::string> changed;
+          scene_start(scene, scene_prm, changed);
         }
     }
 
@@ -197,8 +199,9 @@ namespace tribodyn
 
 
     McaStudyProblem::Start
-    McaStudyProblem::scene_start(const McaScene   &scene,
-                                 ParameterHandler &prm) const
+    McaStudyProblem::scene_start(const McaScene           &scene,
+                                 ParameterHandler         &prm,
+                                 std::vector<std::string> &changed) const
     {
       const std::string         dir = scene_directory(scene);
       const ResumableParameters wanted
@@ -210,23 +213,58 @@ namespace tribodyn
       // parameters.prm is read as text, so that a scene written by a
       // version before a parameter was renamed or added (at its default
       // here) is still recognised.
+      bool finished = false;
       if (file_exists(join_path(dir, "summary.json"))
           && file_exists(join_path(dir, "parameters.prm")))
         {
           std::ifstream in(join_path(dir, "parameters.prm"));
           double        old_end = -1;
-          if (wanted.same_as(resumable_parameter_lines(
-                in, McaStudyParameters::end_time_path, &old_end))
-              && std::abs(old_end - end_time) <= 1e-12 * end_time)
-            return Start::reuse;
+          const auto    lines
+            = resumable_parameter_lines(in,
+                                        McaStudyParameters::end_time_path,
+                                        &old_end);
+          if (std::abs(old_end - end_time) <= 1e-12 * end_time
+              && wanted.differing_in_run(lines).empty())
+            {
+              if (wanted.same_as(lines))
+                return Start::reuse;
+              finished = true;
+              changed  = wanted.differing(lines);
+            }
         }
       // An interrupted run (or a shorter finished one) with a checkpoint
-      // of these parameters before the end time: resumed.
+      // of these parameters before the end time: resumed. A finished one
+      // that differs only in how its record is analysed, with its
+      // checkpoint at the end time: resumed there to analyse it again.
       CheckpointInfo info;
       if (read_latest_checkpoint_info(dir, info) && info.problem == "mca"
-          && wanted.same_as(info.parameters)
-          && info.time < end_time * (1 - 1e-12))
-        return Start::resume;
+          && wanted.differing_in_run(info.parameters).empty())
+        {
+          if (info.time < end_time * (1 - 1e-12))
+            return Start::resume;
+          if (finished)
+            return Start::reanalyse;
+        }
+      // A finished run that differs only in how its record is analysed,
+      // but without the checkpoint to analyse it again from (its
+      // summary.json and series copied without checkpoints/, as data/
+      // keeps them): not run again silently (an hour's scene overwritten),
+      // refused.
+      if (finished)
+        {
+          std::string list;
+          for (const std::string &name : changed)
+            list += (list.empty() ? "'" : ", '") + name + "'";
+          throw InputError(
+            "Scene " + scene.name + ": the finished run in " + dir
+            + " differs from this study only in the analysis-only " + list
+            + ", but it has no checkpoint at its end time to analyse its "
+              "record again from (was it copied without its checkpoint/ "
+              "directory?). Copy its checkpoint/ in beside its "
+              "summary.json, or set those entries as its parameters.prm "
+              "has them to reuse it as it is, or remove "
+            + dir + " to run the scene again.");
+        }
       return Start::fresh;
     }
 
@@ -243,30 +281,42 @@ namespace tribodyn
 
       ParameterHandler prm;
       scene_parameters(scene, prm);
-      int start = 0;
+      int                      start = 0;
+      std::vector<std::string> changed;
       if (group_root)
-        start = static_cast<int>(scene_start(scene, prm));
+        start = static_cast<int>(scene_start(scene, prm, changed));
       start = dealii::Utilities::MPI::broadcast(group, start, 0);
-      const std::string how = start == int(Start::reuse)    ? "reused"
-                              : start == int(Start::resume) ? "resumed"
-                                                            : "run";
+      const std::string how = start == int(Start::reuse)       ? "reused"
+                              : start == int(Start::resume)    ? "resumed"
+                              : start == int(Start::reanalyse) ? "reanalysed"
+                                                               : "run";
       if (group_root)
-        std::cout << "Scene " << scene.name << ": "
-                  << (start == int(Start::reuse)
-                        ? "reused (a finished run of the same parameters "
-                          "in "
-                            + dir + ")"
-                      : start == int(Start::resume)
-                        ? "resumed from its checkpoint in " + dir
-                        : "run in " + dir)
-                  << " on " << n_ranks << " MPI rank(s)" << std::endl;
+        {
+          std::string list;
+          for (const std::string &name : changed)
+            list += (list.empty() ? "'" : ", '") + name + "'";
+          std::cout << "Scene " << scene.name << ": "
+                    << (start == int(Start::reuse)
+                          ? "reused (a finished run of the same parameters "
+                            "in "
+                              + dir + ")"
+                        : start == int(Start::resume)
+                          ? "resumed from its checkpoint in " + dir
+                        : start == int(Start::reanalyse)
+                          ? "re-analysed (a finished run in " + dir
+                              + " whose analysis-only " + list
+                              + " changed: resumed from its checkpoint at "
+                                "the end time, no step run)"
+                          : "run in " + dir)
+                    << " on " << n_ranks << " MPI rank(s)" << std::endl;
+        }
       if (start == int(Start::reuse))
         {
           if (group_root)
             tag_scene_summary(dir, scene, parameters);
           return;
         }
-      if (start == int(Start::resume))
+      if (start == int(Start::resume) || start == int(Start::reanalyse))
         set_parameter_by_path(prm, "Checkpoint/Resume", "true", "Study");
 
       RunContext scene_context       = context;

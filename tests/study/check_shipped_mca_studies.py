@@ -31,6 +31,7 @@ to 1e-12)."""
 import csv
 import json
 import os
+import shutil
 import subprocess
 import sys
 
@@ -39,7 +40,10 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 from check_tools import finish, report  # noqa: E402
 
 tribodyn, folder, scratch = sys.argv[1], os.path.abspath(sys.argv[2]), sys.argv[3]
-os.makedirs(scratch, exist_ok=True)
+# a fresh scratch: scenes left by an earlier run (of another version) would
+# be reused, resumed or re-analysed instead of run
+shutil.rmtree(scratch, ignore_errors=True)
+os.makedirs(scratch)
 AUTOMATA = {"mca_laptop": 12288, "mca_seed_heights": 35136,
             "mca_seed_heights_12": 35136, "mca_seed_heights_044": 35136,
             "mca_seed_heights_044_48ns": 35136,

@@ -60,12 +60,21 @@ namespace tribodyn
     std::vector<std::string> lines;
     /// Every entry at its default, as comparable lines (sorted).
     std::vector<std::string> defaults;
+    /// The paths of the entries that only analyse the run's record
+    /// (ParameterBinding::analysis_only(); sorted).
+    std::vector<std::string> analysis_only;
 
     /// The names of the entries in which the stored lines @p stored
     /// (resumable_parameter_lines() of a stored run, any version) differ
     /// from this run's: empty for the same run.
     std::vector<std::string>
     differing(const std::vector<std::string> &stored) const;
+
+    /// differing() without the analysis-only entries: the names of the
+    /// entries that change the run's steps. Empty: a checkpoint of
+    /// @p stored may be resumed by this run.
+    std::vector<std::string>
+    differing_in_run(const std::vector<std::string> &stored) const;
 
     /// The same run as @p stored?
     bool

@@ -145,6 +145,24 @@ namespace tribodyn
         const dealii::Patterns::PatternBase            &pattern,
         const std::function<void(const std::string &)> &read);
 
+    /**
+     * Mark the entry added last as one that only analyses the run's record
+     * after the fact (a smoothing window, a band test): changing it changes
+     * no step of the run. A run resumed from a checkpoint may change it,
+     * and a study re-analyses a finished scene instead of running it again
+     * (resumable_parameters(), core/checkpoint.h). The mark is
+     * analysis_only_tag at the end of the entry's documentation, so the
+     * declared tree carries it and the parameter reference shows it.
+     */
+    ParameterBinding &
+    analysis_only();
+
+    /// What analysis_only() appends to an entry's documentation.
+    static constexpr const char *analysis_only_tag
+      = " [Analysis only: a resumed run may change it; a study re-analyses "
+        "its finished scenes with the new value instead of running them "
+        "again.]";
+
     /// Declare the entries in @p prm (which is at the subsection `outer`).
     void
     declare(dealii::ParameterHandler &prm) const;

@@ -127,7 +127,10 @@ namespace tribodyn
       {
         fresh,
         resume,
-        reuse
+        reuse,
+        /// a finished run whose analysis-only parameters changed: resumed
+        /// from its checkpoint at the end time, no step run
+        reanalyse
       };
 
       /// The scene's mca parameters: its base file with the study's
@@ -136,9 +139,16 @@ namespace tribodyn
       scene_parameters(const McaScene           &scene,
                        dealii::ParameterHandler &prm) const;
       /// What the scene's directory holds: a finished run of the same
-      /// parameters (reuse), an interrupted one (resume), or neither.
+      /// parameters (reuse), one that differs only in analysis-only
+      /// entries and kept its last checkpoint (reanalyse), an interrupted
+      /// one (resume), or none of these. @p changed receives the entries
+      /// a re-analysis changes. Throws InputError for a finished run that
+      /// differs only in analysis-only entries but has no checkpoint at
+      /// its end time (rather than run the scene again over it).
       Start
-      scene_start(const McaScene &scene, dealii::ParameterHandler &prm) const;
+      scene_start(const McaScene           &scene,
+                  dealii::ParameterHandler &prm,
+                  std::vector<std::string> &changed) const;
       /// Run (or resume) one scene on @p group; appends the leg to the
       /// scene's legs.csv.
       void
