@@ -199,6 +199,16 @@ namespace tribodyn
   }
 
 
+  std::string
+  quoted_names(const std::vector<std::string> &names)
+  {
+    std::string list;
+    for (const std::string &name : names)
+      list += (list.empty() ? "'" : ", '") + name + "'";
+    return list;
+  }
+
+
   std::vector<std::string>
   ResumableParameters::differing_in_run(
     const std::vector<std::string> &stored) const
@@ -524,12 +534,10 @@ namespace tribodyn
     const std::vector<std::string> names = parameters.differing_in_run(stored);
     if (!names.empty())
       {
-        std::string list;
-        for (const auto &n : names)
-          list += (list.empty() ? "'" : ", '") + n + "'";
         throw InputError(
           "Cannot resume from the checkpoint in '" + path
-          + "': these parameters differ from the checkpointed run's: " + list
+          + "': these parameters differ from the checkpointed run's: "
+          + quoted_names(names)
           + ". A resumed run may change only 'End time' (to a larger value), "
             "the Checkpoint subsection and the entries marked 'Analysis "
             "only'; set the others back, or start "

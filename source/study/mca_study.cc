@@ -252,12 +252,10 @@ namespace tribodyn
       // refused.
       if (finished)
         {
-          std::string list;
-          for (const std::string &name : changed)
-            list += (list.empty() ? "'" : ", '") + name + "'";
           throw InputError(
             "Scene " + scene.name + ": the finished run in " + dir
-            + " differs from this study only in the analysis-only " + list
+            + " differs from this study only in the analysis-only "
+            + quoted_names(changed)
             + ", but it has no checkpoint at its end time to analyse its "
               "record again from (was it copied without its checkpoint/ "
               "directory?). Copy its checkpoint/ in beside its "
@@ -292,9 +290,6 @@ namespace tribodyn
                                                                : "run";
       if (group_root)
         {
-          std::string list;
-          for (const std::string &name : changed)
-            list += (list.empty() ? "'" : ", '") + name + "'";
           std::cout << "Scene " << scene.name << ": "
                     << (start == int(Start::reuse)
                           ? "reused (a finished run of the same parameters "
@@ -304,7 +299,7 @@ namespace tribodyn
                           ? "resumed from its checkpoint in " + dir
                         : start == int(Start::reanalyse)
                           ? "re-analysed (a finished run in " + dir
-                              + " whose analysis-only " + list
+                              + " whose analysis-only " + quoted_names(changed)
                               + " changed: resumed from its checkpoint at "
                                 "the end time, no step run)"
                           : "run in " + dir)

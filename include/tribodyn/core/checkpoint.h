@@ -84,6 +84,11 @@ namespace tribodyn
     }
   };
 
+  /// Entry names (those differing() returns) as a message lists them:
+  /// 'A', 'B', 'C'.
+  std::string
+  quoted_names(const std::vector<std::string> &names);
+
   /// The ResumableParameters of @p prm (declared and read).
   ResumableParameters
   resumable_parameters(dealii::ParameterHandler &prm,
