@@ -119,11 +119,28 @@ namespace tribodyn
                               const unsigned int                 n_ranks,
                               const unsigned int mesh_cells_per_rank)
     {
-      if (level == 0 || mesh_cells_per_rank == 0)
+      // Each level coarser divides the deal.II cells by 8; at most
+      // max_split_levels of them, while every rank keeps its share.
+      if (mesh_cells_per_rank == 0)
         return 1;
-      const double mesh_cells
-        = double(trees[0]) * trees[1] * trees[2] * std::pow(8., level - 1);
-      return mesh_cells >= double(mesh_cells_per_rank) * n_ranks ? 2 : 1;
+      const double trees_total = double(trees[0]) * trees[1] * trees[2];
+      unsigned int coarser     = 0;
+      while (coarser < max_split_levels && coarser < level
+             && trees_total * std::pow(8., level - coarser - 1)
+                  >= double(mesh_cells_per_rank) * n_ranks)
+        ++coarser;
+      return 1u << coarser;
+    }
+
+
+    unsigned int
+    Decomposition::mesh_level(const unsigned int level,
+                              const unsigned int split)
+    {
+      unsigned int coarser = 0;
+      while ((1u << coarser) < split)
+        ++coarser;
+      return level - coarser;
     }
 
 
@@ -159,14 +176,13 @@ namespace tribodyn
             tria, 2 * c, 2 * c + 1, c, faces);
       if (!faces.empty())
         tria.add_periodicity(faces);
-      // (the mesh one level coarser than the cells where it can be)
-      split                         = cell_split(trees,
+      // (the mesh one or two levels coarser than the cells where it can be)
+      split = cell_split(trees,
                          level,
                          dealii::Utilities::MPI::n_mpi_processes(comm),
                          mesh_cells_per_rank);
-      const unsigned int mesh_level = split == 2 ? level - 1 : level;
-      if (mesh_level > 0)
-        tria.refine_global(mesh_level);
+      if (mesh_level(level, split) > 0)
+        tria.refine_global(mesh_level(level, split));
       for (unsigned int c = 0; c < 3; ++c)
         {
           n_cells[c] = trees[c] << level;
@@ -236,9 +252,9 @@ namespace tribodyn
     {
       return tria.memory_consumption()
              + cell_index.capacity() * sizeof(cell_index[0])
-             + cell_owner.capacity() * sizeof(cell_owner[0])
-             + cells.capacity() * sizeof(cells[0])
-             + local_of_key.capacity() * sizeof(local_of_key[0]);
+             + mesh_cells.capacity() * sizeof(mesh_cells[0])
+             + mesh_cell_of.capacity() * sizeof(mesh_cell_of[0])
+             + local_by_key.capacity() * sizeof(local_by_key[0]);
     }
 
 
@@ -265,9 +281,9 @@ namespace tribodyn
     dealii::Point<3>
     Decomposition::reference_point(const unsigned int c, const Point3 &x) const
     {
-      const dealii::Point<3> lower = cells[c]->vertex(0),
-                             upper = cells[c]->vertex(7);
-      dealii::Point<3> reference;
+      const CellIterator     cell  = dealii_cell(c);
+      const dealii::Point<3> lower = cell->vertex(0), upper = cell->vertex(7);
+      dealii::Point<3>       reference;
       for (unsigned int e = 0; e < 3; ++e)
         reference[e]
           = std::clamp((x[e] - lower[e]) / (upper[e] - lower[e]), 0., 1.);
@@ -285,14 +301,17 @@ namespace tribodyn
       {
         std::uint64_t               z;
         std::array<unsigned int, 3> ijk;
-        CellIterator                cell;
+        unsigned int                mesh_cell;
       };
       std::vector<Entry> owned, candidates, ghost;
       const unsigned int per_cell = split * split * split;
+      mesh_cells.clear();
       for (const auto &cell : tria.active_cell_iterators())
         if (cell->is_locally_owned() || cell->is_ghost())
           {
-            const auto first = first_cell_of(cell);
+            const auto         first = first_cell_of(cell);
+            const unsigned int m     = mesh_cells.size();
+            mesh_cells.push_back(cell);
             for (unsigned int b = 0; b < per_cell; ++b)
               {
                 const auto          ijk = cell_in_mesh_cell(first, split, b);
@@ -300,9 +319,10 @@ namespace tribodyn
                                         | spread_bits(ijk[1]) << 1
                                         | spread_bits(ijk[2]) << 2;
                 (cell->is_locally_owned() ? owned : candidates)
-                  .push_back({z, ijk, cell});
+                  .push_back({z, ijk, m});
               }
           }
+      mesh_cells.shrink_to_fit();
       std::vector<std::uint64_t> owned_keys;
       owned_keys.reserve(owned.size());
       for (const Entry &e : owned)
@@ -328,24 +348,25 @@ namespace tribodyn
       std::sort(owned.begin(), owned.end(), by_curve);
       std::sort(ghost.begin(), ghost.end(), by_curve);
       n_owned = owned.size();
-      cells.clear();
       cell_index.clear();
-      cell_owner.clear();
-      local_of_key.clear();
+      mesh_cell_of.clear();
+      local_by_key.clear();
       const std::size_t n_local = owned.size() + ghost.size();
-      cells.reserve(n_local);
       cell_index.reserve(n_local);
-      cell_owner.reserve(n_local);
-      local_of_key.reserve(n_local);
+      mesh_cell_of.reserve(n_local);
+      local_by_key.reserve(n_local);
       for (const auto *list : {&owned, &ghost})
         for (const Entry &entry : *list)
           {
-            local_of_key.emplace_back(key(entry.ijk), cells.size());
-            cells.push_back(entry.cell);
+            local_by_key.push_back(cell_index.size());
             cell_index.push_back(entry.ijk);
-            cell_owner.push_back(entry.cell->subdomain_id());
+            mesh_cell_of.push_back(entry.mesh_cell);
           }
-      std::sort(local_of_key.begin(), local_of_key.end());
+      std::sort(local_by_key.begin(),
+                local_by_key.end(),
+                [this](const unsigned int a, const unsigned int b) {
+                  return key(cell_index[a]) < key(cell_index[b]);
+                });
 
       // Ranks owning neighbours of the owned cells (periodic images
       // included), and the owned cells each of them needs as ghosts.
@@ -353,7 +374,7 @@ namespace tribodyn
       ranks.clear();
       for (unsigned int c = 0; c < n_owned; ++c)
         for_each_neighbour(c, [&](const Neighbour &nb) {
-          const unsigned int r = cell_owner[nb.cell];
+          const unsigned int r = owner(nb.cell);
           if (r == rank)
             return;
           auto it = std::lower_bound(ranks.begin(), ranks.end(), r);
@@ -462,12 +483,14 @@ namespace tribodyn
     {
       const std::uint64_t k = key(ijk);
       const auto          it
-        = std::lower_bound(local_of_key.begin(),
-                           local_of_key.end(),
+        = std::lower_bound(local_by_key.begin(),
+                           local_by_key.end(),
                            k,
-                           [](const std::pair<std::uint64_t, unsigned int> &e,
-                              const std::uint64_t v) { return e.first < v; });
-      return it == local_of_key.end() || it->first != k ? invalid : it->second;
+                           [this](const unsigned int c, const std::uint64_t v) {
+                             return key(cell_index[c]) < v;
+                           });
+      return it == local_by_key.end() || key(cell_index[*it]) != k ? invalid
+                                                                   : *it;
     }
 
 

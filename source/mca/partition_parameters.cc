@@ -30,9 +30,10 @@ namespace tribodyn
             mesh_cells_per_rank,
             "The automata are searched for in cells one interaction range "
             "wide; the background mesh (deal.II's cells, ~280 bytes each in "
-            "3D, ~150 bytes per automaton of a uniform scene) holds 2 x 2 x 2 "
-            "of them per cell where every rank still gets at least this many "
-            "mesh cells, one otherwise. The mesh cell is the partition's "
+            "3D, ~130 bytes per automaton of a uniform scene at one search "
+            "cell each) holds 4 x 4 x 4 of them per cell where every rank "
+            "still gets at least this many mesh cells, else 2 x 2 x 2 where "
+            "it does, one otherwise. The mesh cell is the partition's "
             "grain: fewer than ~1000 a rank make the ranks' work uneven in "
             "graded scenes, whose cells weigh up to 64 times more than "
             "others. Results do not change. 0 = one search cell per mesh "

@@ -79,7 +79,7 @@ namespace tribodyn
       // (p4est's cells hold split^3 cells: Decomposition::cell_split())
       const unsigned int split = Decomposition::cell_split(
         trees, level, n_ranks, prm.partition.mesh_cells_per_rank);
-      const unsigned int  mesh_level = split == 2 ? level - 1 : level;
+      const unsigned int  mesh_level = Decomposition::mesh_level(level, split);
       const std::uint64_t per_tree   = std::uint64_t(1) << (3 * mesh_level);
       const std::uint64_t n_mesh_cells
         = n_cells / (std::uint64_t(split) * split * split);

@@ -66,10 +66,6 @@ namespace tribodyn
         }
       partition.order_owned_automata();
       partition.exchange_ghosts();
-      x_at_rebuild.resize(n_owned);
-      for (unsigned int k = 0; k < n_owned; ++k)
-        for (unsigned int c = 0; c < 3; ++c)
-          x_at_rebuild[k][c] = static_cast<float>(x[k][c]);
       build_pair_list();
       // the order keys are needed again at the next rebuild only
       std::vector<std::uint64_t>().swap(order);
@@ -79,6 +75,12 @@ namespace tribodyn
       update_neighbourhood_weights(true);
       // (the weights anew: the change of the many-body energy is booked)
       work[switching_work] += mb_energy_before - many_body_energy();
+      // the positions for the skin test (stored last: at the first
+      // rebuild they then take memory the weights' j-side lists freed)
+      x_at_rebuild.resize(n_owned);
+      for (unsigned int k = 0; k < n_owned; ++k)
+        for (unsigned int c = 0; c < 3; ++c)
+          x_at_rebuild[k][c] = static_cast<float>(x[k][c]);
       ++rebuild_count;
     }
 

@@ -105,9 +105,27 @@ namespace tribodyn
           refuse_repeated_scene(scene, scene_prm);
           RunContext check       = context;
           check.output_directory = scene_directory(scene);
-          mca::McaProblem          problem(scene_prm, check);
-          std::vector<std::string> changed;
-          scene_start(scene, scene_prm, changed);
+          mca::McaProblem problem(scene_prm, check);
+          // (the scene's files read on the first rank alone, its verdict
+          // sent to the others: the work per rank does not grow with the
+          // ranks)
+          std::string refusal;
+          if (dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator)
+              == 0)
+            try
+              {
+                std::vector<std::string> changed;
+                scene_start(scene, scene_prm, changed);
+              }
+            catch (const InputError &e)
+              {
+                refusal = e.what();
+              }
+          refusal = dealii::Utilities::MPI::broadcast(context.mpi_communicator,
+                                                      refusal,
+                                                      0);
+          if (!refusal.empty())
+            throw InputError(refusal);
         }
     }
 

@@ -2,7 +2,7 @@
 
 Arguments: the build folder of tests/mca, the 1-rank test, the rebalanced
 test, their output folder and, optionally, the rebalanced run's mesh split
-(summary.json's mesh_cell_split: 2 where the deal.II cells hold 2 x 2 x 2
+(summary.json's mesh_cell_split: 4 where the deal.II cells hold 4 x 4 x 4
 search cells, partition/block_lifted_split.prm; default 1). The rebalanced run (partition/block_lifted.prm:
 a block lifted and sheared across the partition's cuts, K_ij on, 3 ranks,
 Partition/Rebalance threshold = 1.0001: a new partition whenever the

@@ -81,19 +81,30 @@ namespace tribodyn
                   const double                 interaction_range,
                   std::array<unsigned int, 3> &trees,
                   unsigned int                &level);
+      /// The most levels the mesh is coarser than the cells (split 4).
+      static constexpr unsigned int max_split_levels = 2;
+
       /// Cells per deal.II cell and direction for the grid of @p trees
-      /// refined @p level times (choose_grid()) on @p n_ranks ranks: 2
-      /// (the mesh refined once less) where that leaves at least
-      /// @p mesh_cells_per_rank (Partition/Mesh cells per rank; 0: never)
-      /// deal.II cells a rank, so that the partition's grain stays a small
-      /// part of a rank's work (the cells of a graded scene weigh up to 64
-      /// times more than others: the seed's graded scene on 256 ranks with
-      /// the mesh split has a work imbalance of 1.12, 1.02 not), else 1.
+      /// refined @p level times (choose_grid()) on @p n_ranks ranks: 4 (the
+      /// mesh refined twice less) or 2 (once less) where that still leaves
+      /// at least @p mesh_cells_per_rank (Partition/Mesh cells per rank;
+      /// 0: never) deal.II cells a rank, so that the partition's grain
+      /// stays a small part of a rank's work (the cells of a graded scene
+      /// weigh up to 64 times more than others: the seed's graded scene on
+      /// 256 ranks with the mesh split has a work imbalance of 1.12, 1.02
+      /// not), else 1. A deal.II cell costs ~280 bytes in 3D: a cell per
+      /// search cell is ~130 bytes per automaton of a uniform scene, a
+      /// split of 2 one eighth of it, a split of 4 one 64th.
       static unsigned int
       cell_split(const std::array<unsigned int, 3> &trees,
                  const unsigned int                 level,
                  const unsigned int                 n_ranks,
                  const unsigned int                 mesh_cells_per_rank);
+
+      /// The refinement level of the deal.II mesh whose cells hold
+      /// @p split^3 cells of the grid refined @p level times.
+      static unsigned int
+      mesh_level(const unsigned int level, const unsigned int split);
 
       /**
        * The work held by the cell of structured index @p ijk, the box
@@ -170,7 +181,7 @@ namespace tribodyn
       {
         return h;
       }
-      /// Cells per deal.II cell in each direction (1 or 2: cell_split()).
+      /// Cells per deal.II cell in each direction (1, 2 or 4: cell_split()).
       unsigned int
       cells_per_mesh_cell() const
       {
@@ -187,13 +198,13 @@ namespace tribodyn
       unsigned int
       owner(const unsigned int c) const
       {
-        return cell_owner[c];
+        return mesh_cells[mesh_cell_of[c]]->subdomain_id();
       }
       /// The deal.II cell holding local cell @p c.
       CellIterator
       dealii_cell(const unsigned int c) const
       {
-        return cells[c];
+        return mesh_cells[mesh_cell_of[c]];
       }
       /// Reference coordinates of @p x in the deal.II cell of local cell
       /// @p c (the cells are boxes), clamped to the unit cell.
@@ -330,13 +341,15 @@ namespace tribodyn
 
       unsigned int                             n_owned = 0;
       std::vector<std::array<unsigned int, 3>> cell_index;
-      std::vector<unsigned int>                cell_owner;
-      std::vector<CellIterator>                cells;
-      /// (key, local index) of the local cells, sorted by key: 16 bytes a
-      /// cell (a hash map costs ~50)
-      std::vector<std::pair<std::uint64_t, unsigned int>> local_of_key;
-      std::vector<unsigned int>                           ranks;
-      std::vector<std::vector<unsigned int>>              send_cells;
+      /// The owned and ghost deal.II cells, and the one of each local cell
+      /// (an index into them: split^3 local cells share one).
+      std::vector<CellIterator> mesh_cells;
+      std::vector<unsigned int> mesh_cell_of;
+      /// The local cells' indices in the order of their keys (key() of
+      /// cell_index): 4 bytes a cell (a hash map costs ~50)
+      std::vector<unsigned int>              local_by_key;
+      std::vector<unsigned int>              ranks;
+      std::vector<std::vector<unsigned int>> send_cells;
     };
 
 
