@@ -242,7 +242,7 @@ def main():
         big, rss_big = tribodyn_block(args, 40, 40, 20, 1, "memory_big")
         per = (rss_big - rss_tiny) * 1024 / (big["n_automata"] - tiny["n_automata"])
         print("memory    1 rank: peak RSS %d KB (%d automata) - %d KB (%d) = %.0f B per automaton "
-              "(target <= 1000); arrays: %.0f B per automaton"
+              "(target <= 600, issue #48); arrays: %.0f B per automaton"
               % (rss_big, big["n_automata"], rss_tiny, tiny["n_automata"], per,
                  big["memory_bytes_max"] / big["n_automata"]))
         big2, rss_big2 = tribodyn_block(args, 40, 40, 20, 2, "memory_big_2")
