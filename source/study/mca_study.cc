@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
@@ -28,6 +29,41 @@ namespace tribodyn
 
     namespace
     {
+      /// @p verdict() run on the first rank of @p comm alone (it reads a
+      /// scene's files), its result sent to the others; an error it throws
+      /// is thrown on every rank (an InputError as one), so that none waits
+      /// for a result that never comes.
+      template <typename Verdict>
+      int
+      first_rank_verdict(const MPI_Comm comm, const Verdict &verdict)
+      {
+        int         result = 0, kind = 0;
+        std::string message;
+        if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+          try
+            {
+              result = verdict();
+            }
+          catch (const InputError &e)
+            {
+              kind    = 1;
+              message = e.what();
+            }
+          catch (const std::exception &e)
+            {
+              kind    = 2;
+              message = e.what();
+            }
+        kind    = dealii::Utilities::MPI::broadcast(comm, kind, 0);
+        message = dealii::Utilities::MPI::broadcast(comm, message, 0);
+        if (kind == 1)
+          throw InputError(message);
+        if (kind == 2)
+          throw std::runtime_error(message);
+        return dealii::Utilities::MPI::broadcast(comm, result, 0);
+      }
+
+
       /// A directory-name piece of a factor's value or name.
       std::string
       name_piece(const std::string &text)
@@ -106,26 +142,12 @@ namespace tribodyn
           RunContext check       = context;
           check.output_directory = scene_directory(scene);
           mca::McaProblem problem(scene_prm, check);
-          // (the scene's files read on the first rank alone, its verdict
-          // sent to the others: the work per rank does not grow with the
-          // ranks)
-          std::string refusal;
-          if (dealii::Utilities::MPI::this_mpi_process(context.mpi_communicator)
-              == 0)
-            try
-              {
-                std::vector<std::string> changed;
-                scene_start(scene, scene_prm, changed);
-              }
-            catch (const InputError &e)
-              {
-                refusal = e.what();
-              }
-          refusal = dealii::Utilities::MPI::broadcast(context.mpi_communicator,
-                                                      refusal,
-                                                      0);
-          if (!refusal.empty())
-            throw InputError(refusal);
+          // (the scene's files read on the first rank alone: the work per
+          // rank does not grow with the ranks)
+          first_rank_verdict(context.mpi_communicator, [&] {
+            std::vector<std::string> changed;
+            return int(scene_start(scene, scene_prm, changed));
+          });
         }
     }
 
@@ -297,15 +319,15 @@ namespace tribodyn
 
       ParameterHandler prm;
       scene_parameters(scene, prm);
-      int                      start = 0;
       std::vector<std::string> changed;
-      if (group_root)
-        start = static_cast<int>(scene_start(scene, prm, changed));
-      start = dealii::Utilities::MPI::broadcast(group, start, 0);
-      const std::string how = start == int(Start::reuse)       ? "reused"
-                              : start == int(Start::resume)    ? "resumed"
-                              : start == int(Start::reanalyse) ? "reanalysed"
-                                                               : "run";
+      // (changed: on the group's first rank, which prints it)
+      const int         start = first_rank_verdict(group, [&] {
+        return int(scene_start(scene, prm, changed));
+      });
+      const std::string how   = start == int(Start::reuse)       ? "reused"
+                                : start == int(Start::resume)    ? "resumed"
+                                : start == int(Start::reanalyse) ? "reanalysed"
+                                                                 : "run";
       if (group_root)
         {
           std::cout << "Scene " << scene.name << ": "
