@@ -649,7 +649,8 @@ namespace tribodyn
             __attribute__((vector_size(8 * sizeof(Number))));
           constexpr unsigned int n_chunks  = n_dofs / 8;
           constexpr unsigned int n_partial = 4;
-          static_assert(n_dofs % n_partial == 0, "whole column groups");
+          static_assert(n_dofs % n_partial == 0 && n_partial == 4,
+                        "whole column groups, summed pairwise below");
           for (const CellIndices &cell : cells)
             {
               Number x[n_dofs];
