@@ -57,6 +57,44 @@ namespace tribodyn
       }
 
       /**
+       * y = K x for the element matrix @p K (n x n, row-major) of a
+       * multilinear element: K is symmetric (its rows are its columns), so
+       * y = sum_j x_j K(:, j) is n multiply-adds of n-vectors, in chunks of
+       * eight Numbers that the compiler vectorizes (GCC's vector
+       * extension). The sum over j runs in four independent partial sums
+       * (columns j = p, p + 4, ...), added pairwise at the end: with one
+       * sum per chunk, each multiply-add waited for the previous one (3
+       * chains of 24 dependent FMAs a cell in 3D, bound by the FMA latency,
+       * not by its throughput). The mesh's operator (ElasticityOperator)
+       * and the voxel grid's (voxel_grid_solver.cc) share it.
+       */
+      template <typename Number, unsigned int n>
+      inline void
+      multiply_element_matrix(const Number *K, const Number *x, Number *y)
+      {
+        typedef Number Column __attribute__((vector_size(8 * sizeof(Number))));
+        constexpr unsigned int n_chunks  = n / 8;
+        constexpr unsigned int n_partial = 4;
+        static_assert(n % 8 == 0 && n % n_partial == 0 && n_partial == 4,
+                      "whole chunks and column groups, summed pairwise below");
+        Column partial[n_partial][n_chunks] = {};
+        for (unsigned int j = 0; j < n; j += n_partial)
+          for (unsigned int p = 0; p < n_partial; ++p)
+            for (unsigned int b = 0; b < n_chunks; ++b)
+              {
+                Column column;
+                std::memcpy(&column, K + n * (j + p) + 8 * b, sizeof(Column));
+                partial[p][b] += column * x[j + p];
+              }
+        for (unsigned int b = 0; b < n_chunks; ++b)
+          {
+            const Column sum = (partial[0][b] + partial[1][b])
+                               + (partial[2][b] + partial[3][b]);
+            std::memcpy(y + 8 * b, &sum, sizeof(Column));
+          }
+      }
+
+      /**
        * Elasticity, int eps(v) : C eps(u), with one constant stiffness per
        * cell: on the active mesh or on one level of the hierarchy
        * (whichever MatrixFree object it is initialized with). C is
@@ -516,48 +554,13 @@ namespace tribodyn
                               const dealii::Tensor<1, n_voigt> &load,
                               const bool strain_driven) const
         {
-          std::vector<std::array<double, n_dofs>> loads(
-            element_matrices.size());
+          std::vector<std::array<double, n_dofs>> loads;
           for (unsigned int m = 0; m < element_matrices.size(); ++m)
-            {
-              dealii::Tensor<1, n_voigt> strain = load;
-              if (!strain_driven)
-                {
-                  const auto                &c = element_stiffness[m];
-                  dealii::Tensor<2, n_voigt> C;
-                  for (unsigned int a = 0; a < n_voigt; ++a)
-                    for (unsigned int b = 0; b < n_voigt; ++b)
-                      C[a][b] = c[entry(a, b)];
-                  if constexpr (dim == 2)
-                    strain = invert(C) * load;
-                  else
-                    strain = invert6(C) * load;
-                }
-              // u_c = sum_d eps_cd x_d at the vertices, eps_cd = gamma_cd/2
-              double u[n_dofs];
-              for (unsigned int v = 0; v < n_vertices; ++v)
-                for (unsigned int c = 0; c < dim; ++c)
-                  {
-                    double sum = 0;
-                    for (unsigned int d = 0; d < dim; ++d)
-                      {
-                        const double e
-                          = c == d ? strain[c]
-                                   : 0.5 * strain[voigt_shear<dim>(c, d)];
-                        const double x = ((v >> d) & 1) * cell_size[d];
-                        sum            = d == 0 ? e * x : sum + e * x;
-                      }
-                    u[n_vertices * c + v] = sum;
-                  }
-              const double sign = strain_driven ? -1. : 1.;
-              for (unsigned int i = 0; i < n_dofs; ++i)
-                {
-                  double sum = 0;
-                  for (unsigned int j = 0; j < n_dofs; ++j)
-                    sum += double(element_matrices[m][n_dofs * i + j]) * u[j];
-                  loads[m][i] = sign * sum;
-                }
-            }
+            loads.push_back(element_load(element_matrices[m],
+                                         element_stiffness[m],
+                                         load,
+                                         strain_driven,
+                                         cell_size));
           double scale = 0;
           for (const CellIndices &cell : cells)
             {
@@ -572,6 +575,55 @@ namespace tribodyn
           rhs.compress(VectorOperation::add);
           return std::sqrt(
             Utilities::MPI::sum(scale, rhs.get_mpi_communicator()));
+        }
+
+        /// The load of one element of stiffness @p c and element matrix
+        /// @p K (see assemble_rhs_bilinear()), of the size @p cell_size.
+        static std::array<double, n_dofs>
+        element_load(const ElementMatrix<Number>      &K,
+                     const StiffnessEntries           &c,
+                     const dealii::Tensor<1, n_voigt> &load,
+                     const bool                        strain_driven,
+                     const std::array<double, dim>    &cell_size)
+        {
+          dealii::Tensor<1, n_voigt> strain = load;
+          if (!strain_driven)
+            {
+              dealii::Tensor<2, n_voigt> C;
+              for (unsigned int a = 0; a < n_voigt; ++a)
+                for (unsigned int b = 0; b < n_voigt; ++b)
+                  C[a][b] = c[entry(a, b)];
+              if constexpr (dim == 2)
+                strain = invert(C) * load;
+              else
+                strain = invert6(C) * load;
+            }
+          // u_c = sum_d eps_cd x_d at the vertices, eps_cd = gamma_cd/2
+          double u[n_dofs];
+          for (unsigned int v = 0; v < n_vertices; ++v)
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                double sum = 0;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    const double e = c == d
+                                       ? strain[c]
+                                       : 0.5 * strain[voigt_shear<dim>(c, d)];
+                    const double x = ((v >> d) & 1) * cell_size[d];
+                    sum            = d == 0 ? e * x : sum + e * x;
+                  }
+                u[n_vertices * c + v] = sum;
+              }
+          const double               sign = strain_driven ? -1. : 1.;
+          std::array<double, n_dofs> f;
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            {
+              double sum = 0;
+              for (unsigned int j = 0; j < n_dofs; ++j)
+                sum += double(K[n_dofs * i + j]) * u[j];
+              f[i] = sign * sum;
+            }
+          return f;
         }
 
         void
@@ -625,16 +677,10 @@ namespace tribodyn
                                   src);
         }
 
-        /// Degree 1: gather, multiply by the cell's element matrix,
-        /// scatter; ghost values exchanged as MatrixFree's cell loop does.
-        /// The product y = sum_j x_j K(:, j) (K is symmetric: its rows are
-        /// its columns) is n multiply-adds of n-vectors, in chunks of eight
-        /// Numbers that the compiler vectorizes; constrained DoFs read 0
-        /// and are not written. The sum over j runs in n_partial
-        /// independent partial sums (columns j = p, p + n_partial, ...),
-        /// added at the end: with one sum per chunk, each multiply-add
-        /// waited for the previous one (3 chains of 24 dependent FMAs a
-        /// cell in 3D, bound by the FMA latency, not by its throughput).
+        /// Degree 1: gather, multiply by the cell's element matrix
+        /// (multiply_element_matrix()), scatter; ghost values exchanged as
+        /// MatrixFree's cell loop does. Constrained DoFs read 0 and are not
+        /// written.
         void
         apply_add_bilinear(VectorType &dst, const VectorType &src) const
         {
@@ -644,13 +690,6 @@ namespace tribodyn
           dst.zero_out_ghost_values();
           const Number *in  = src.begin();
           Number       *out = dst.begin();
-          // eight Numbers in one SIMD register (GCC's vector extension)
-          typedef Number Column
-            __attribute__((vector_size(8 * sizeof(Number))));
-          constexpr unsigned int n_chunks  = n_dofs / 8;
-          constexpr unsigned int n_partial = 4;
-          static_assert(n_dofs % n_partial == 0 && n_partial == 4,
-                        "whole column groups, summed pairwise below");
           for (const CellIndices &cell : cells)
             {
               Number x[n_dofs];
@@ -661,31 +700,17 @@ namespace tribodyn
               else
                 for (unsigned int i = 0; i < n_dofs; ++i)
                   x[i] = cell.is_constrained(i) ? Number(0) : in[cell.dof(i)];
-              const Number *K = element_matrices[cell.matrix].data();
-              Column        partial[n_partial][n_chunks] = {};
-              for (unsigned int j = 0; j < n_dofs; j += n_partial)
-                for (unsigned int p = 0; p < n_partial; ++p)
-                  for (unsigned int b = 0; b < n_chunks; ++b)
-                    {
-                      Column column;
-                      std::memcpy(&column,
-                                  K + n_dofs * (j + p) + 8 * b,
-                                  sizeof(Column));
-                      partial[p][b] += column * x[j + p];
-                    }
-              Column y[n_chunks];
-              for (unsigned int b = 0; b < n_chunks; ++b)
-                y[b] = (partial[0][b] + partial[1][b])
-                       + (partial[2][b] + partial[3][b]);
+              Number y[n_dofs];
+              multiply_element_matrix<Number, n_dofs>(
+                element_matrices[cell.matrix].data(), x, y);
               if (cell.constrained == 0)
                 for (unsigned int v = 0; v < n_vertices; ++v)
                   for (unsigned int c = 0; c < dim; ++c)
-                    out[cell.vertex[v] + c]
-                      += y[(n_vertices * c + v) / 8][(n_vertices * c + v) % 8];
+                    out[cell.vertex[v] + c] += y[n_vertices * c + v];
               else
                 for (unsigned int i = 0; i < n_dofs; ++i)
                   if (!cell.is_constrained(i))
-                    out[cell.dof(i)] += y[i / 8][i % 8];
+                    out[cell.dof(i)] += y[i];
             }
           // constrained rows: the identity (the MatrixFree objects hold
           // no constraints but the periodicity, see MultigridCache)

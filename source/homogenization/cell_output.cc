@@ -85,16 +85,9 @@ namespace tribodyn
           else
             for (unsigned int d = 0; d < 3; ++d)
               shear[d] = sigma[3 + d];
-          const double von_mises = std::sqrt(
-            0.5
-              * ((normal[0] - normal[1]) * (normal[0] - normal[1])
-                 + (normal[1] - normal[2]) * (normal[1] - normal[2])
-                 + (normal[2] - normal[0]) * (normal[2] - normal[0]))
-            + 3
-                * (shear[0] * shear[0] + shear[1] * shear[1]
-                   + shear[2] * shear[2]));
-          const unsigned int k = cell->active_cell_index();
-          unsigned int       f = 0;
+          const double       von_mises = von_mises_stress(normal, shear);
+          const unsigned int k         = cell->active_cell_index();
+          unsigned int       f         = 0;
           for (unsigned int a = 0; a < n_voigt; ++a)
             values[f++][k] = sigma[a];
           if (dim == 2)

@@ -37,6 +37,10 @@ namespace tribodyn
       constexpr SelectionTable<CellPreconditioner, 2> preconditioner_choices{
         {{"multigrid", CellPreconditioner::multigrid},
          {"AMG", CellPreconditioner::amg}}};
+      constexpr SelectionTable<VolumeGrid, 3> grid_choices{
+        {{"auto", VolumeGrid::automatic},
+         {"mesh", VolumeGrid::mesh},
+         {"voxel grid", VolumeGrid::voxel_grid}}};
       constexpr SelectionTable<MultigridPrecision, 2> precision_choices{
         {{"single", MultigridPrecision::single},
          {"double", MultigridPrecision::double_}}};
@@ -207,6 +211,20 @@ namespace tribodyn
             "and CG always runs in double): 'single' halves the memory "
             "traffic and the memory of the levels, 'double' as in 2D.",
             precision_choices);
+      b.add("Grid",
+            grid,
+            "How the cell problems are discretized (trilinear elements on "
+            "the voxels either way, the same constants to the solver "
+            "tolerance): 'voxel grid' finds the nodes, cells and coarse "
+            "levels by index arithmetic, the ranks owning slabs of node "
+            "planes along z (no triangulation, DoF tables or per-cell "
+            "indices: about a quarter of the memory of the mesh and faster; "
+            "multigrid only, the voxel counts halved while all three are "
+            "even must reach a grid of at most 3000 unknowns, and it writes "
+            "no VTU fields); 'mesh' a deal.II triangulation (any voxel "
+            "counts, AMG, 'Output/Write fields'); 'auto' the voxel grid "
+            "where it can, else the mesh (the screen says which).",
+            grid_choices);
       return b;
     }
 

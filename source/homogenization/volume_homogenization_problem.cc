@@ -13,6 +13,7 @@
 #include <tribodyn/core/output.h>
 #include <tribodyn/homogenization/postprocessor.h>
 #include <tribodyn/homogenization/volume_homogenization_problem.h>
+#include <tribodyn/homogenization/voxel_grid_solver.h>
 #include <tuple>
 
 namespace tribodyn
@@ -127,15 +128,53 @@ namespace tribodyn
                                 pcout,
                                 dealii::TimerOutput::summary,
                                 dealii::TimerOutput::wall_times);
-      CellProblem<3>      cell_problem(
-        comm, volume, stiffness, parameters.cell_problem, timer);
-      pcout << "Mesh: " << volume.n_voxels(0) << " x " << volume.n_voxels(1)
-            << " x " << volume.n_voxels(2) << " voxels, "
-            << cell_problem.n_cells() << " hexahedra (Q1), "
-            << cell_problem.n_dofs() << " degrees of freedom, "
+      // The discretization: the voxel grid where it can (multigrid, a grid
+      // that coarsens to a small one, no VTU fields), else the mesh.
+      const auto       &cell_parameters = parameters.cell_problem;
+      const std::string grid_refusal
+        = cell_parameters.preconditioner != CellPreconditioner::multigrid
+            ? "it has no AMG ('Cell problem/Preconditioner = AMG')"
+          : parameters.output.write_fields
+            ? "it writes no VTU fields ('Output/Write fields = true')"
+            : VoxelGridSolver::unsupported(volume);
+      if (cell_parameters.grid == VolumeGrid::voxel_grid)
+        check_parameter(grid_refusal.empty(),
+                        "Cell problem/Grid",
+                        "'voxel grid' cannot solve this run: " + grid_refusal
+                          + ". Set it to 'mesh' or 'auto'.");
+      const bool on_grid
+        = cell_parameters.grid != VolumeGrid::mesh && grid_refusal.empty();
+      std::unique_ptr<CellProblem<3>>  mesh_problem;
+      std::unique_ptr<VoxelGridSolver> grid_problem;
+      if (on_grid)
+        grid_problem = std::make_unique<VoxelGridSolver>(comm,
+                                                         volume,
+                                                         stiffness,
+                                                         cell_parameters);
+      else
+        mesh_problem = std::make_unique<CellProblem<3>>(
+          comm, volume, stiffness, cell_parameters, timer);
+      const dealii::types::global_dof_index n_dofs
+        = on_grid ? grid_problem->n_dofs() : mesh_problem->n_dofs();
+      const std::size_t n_voxels = std::size_t(volume.n_voxels(0))
+                                   * volume.n_voxels(1) * volume.n_voxels(2);
+      pcout << (on_grid ? "Voxel grid: " : "Mesh: ") << volume.n_voxels(0)
+            << " x " << volume.n_voxels(1) << " x " << volume.n_voxels(2)
+            << " voxels, "
+            << (on_grid
+                  ? std::to_string(n_voxels) + " trilinear cells"
+                  : std::to_string(mesh_problem->n_cells()) + " hexahedra (Q1)")
+            << ", " << n_dofs << " degrees of freedom, "
             << dealii::Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s)"
             << std::endl;
-      const std::vector<double> fractions = cell_problem.phase_fractions();
+      if (on_grid)
+        pcout << "  multigrid levels " << grid_problem->describe_levels()
+              << " (no mesh: 'Cell problem/Grid')" << std::endl;
+      else if (cell_parameters.grid == VolumeGrid::automatic)
+        pcout << "  on the mesh: the voxel grid cannot solve this run ("
+              << grid_refusal << ")" << std::endl;
+      const std::vector<double> fractions
+        = on_grid ? volume.phase_fractions() : mesh_problem->phase_fractions();
       // SUBC loads the faces with Sigma n, pores too: their ersatz material
       // then deforms by about Sigma / E_pore (as in 2D).
       if (std::find(parameters.cell_problem.boundary_conditions.begin(),
@@ -195,10 +234,10 @@ namespace tribodyn
           }
         summary["phases"] = list;
       }
-      summary["n_cells"]
-        = static_cast<unsigned long long>(cell_problem.n_cells());
-      summary["n_dofs"]
-        = static_cast<unsigned long long>(cell_problem.n_dofs());
+      summary["n_cells"] = static_cast<unsigned long long>(
+        on_grid ? n_voxels : mesh_problem->n_cells());
+      summary["n_dofs"] = static_cast<unsigned long long>(n_dofs);
+      summary["grid"]   = on_grid ? "voxel grid" : "mesh";
 
       // The outputs (source/homogenization/postprocessors/volume_*.cc), in
       // their order: each adds its rows to the screen's table and its keys
@@ -207,7 +246,8 @@ namespace tribodyn
       const auto               outputs = PostprocessorRegistry<3>::create_all(
         {parameters,
                        volume,
-                       cell_problem,
+                       mesh_problem.get(),
+                       n_dofs,
                        phases,
                        stiffness,
                        fractions,
@@ -229,7 +269,9 @@ namespace tribodyn
           for (const auto &o : outputs)
             for (const SlicePlane &plane : o->slice_planes(bc))
               planes.push_back(plane);
-          const CellResult<3> r = cell_problem.solve(bc, observer, planes);
+          const CellResult<3> r = on_grid
+                                    ? grid_problem->solve(bc, planes)
+                                    : mesh_problem->solve(bc, observer, planes);
           for (const auto &o : outputs)
             o->solved(r, summary, table);
           pcout << to_string(bc) << ": solved 6 load cases in " << std::fixed
@@ -238,8 +280,7 @@ namespace tribodyn
             pcout << " " << lc.cg_iterations;
           pcout << "; CG " << r.cg_time() << " s, " << std::setprecision(1)
                 << (r.cg_iterations() > 0
-                      ? 1e9 * r.cg_time()
-                          / (double(cell_problem.n_dofs()) * r.cg_iterations())
+                      ? 1e9 * r.cg_time() / (double(n_dofs) * r.cg_iterations())
                       : 0.)
                 << " ns per DoF per iteration)" << std::endl;
         }
@@ -253,13 +294,13 @@ namespace tribodyn
       const double peak
         = dealii::Utilities::MPI::sum(1024. * stats.VmHWM, comm);
       summary["memory_peak_bytes"]    = peak;
-      summary["memory_bytes_per_dof"] = peak / cell_problem.n_dofs();
+      summary["memory_bytes_per_dof"] = peak / n_dofs;
       summary["wall_time_s"]          = std::chrono::duration<double>(
                                  std::chrono::steady_clock::now() - start)
                                  .count();
       pcout << "Peak memory " << std::fixed << std::setprecision(1)
             << peak / 1048576. << " MiB (" << std::setprecision(0)
-            << peak / cell_problem.n_dofs() << " B per DoF)" << std::endl;
+            << peak / n_dofs << " B per DoF)" << std::endl;
       if (root)
         write_file_atomically(join_path(out_dir, "summary.json"),
                               summary.dump() + "\n");

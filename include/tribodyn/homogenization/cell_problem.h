@@ -4,6 +4,7 @@
 #include <Epetra_MultiVector.h>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
@@ -75,6 +76,15 @@ namespace tribodyn
       amg        ///< Trilinos ML algebraic multigrid on the assembled matrix
     };
 
+    /// How a 3D volume's cell problems are discretized (`Cell problem/Grid`;
+    /// the same Q1 elements either way).
+    enum class VolumeGrid
+    {
+      automatic, ///< the voxel grid where it can, else the mesh
+      mesh,      ///< a deal.II triangulation of the voxels (CellProblem<3>)
+      voxel_grid ///< the voxel grid by index arithmetic (VoxelGridSolver)
+    };
+
     /// Floating-point precision of the multigrid V-cycle (CG itself is
     /// always in double precision).
     enum class MultigridPrecision
@@ -137,6 +147,9 @@ namespace tribodyn
     /// degree.
     struct VolumeCellProblemParameters : CellSolverParameters
     {
+      /// Cell problem/Grid.
+      VolumeGrid grid = VolumeGrid::automatic;
+
       /// The entries of "Cell problem", bound to the members above.
       ParameterBinding
       binding();
@@ -275,6 +288,20 @@ namespace tribodyn
       std::vector<std::vector<double>> values;
     };
 
+    /// The von Mises stress of the normal stresses @p normal (xx, yy, zz)
+    /// and the shears @p shear (yz, xz, xy).
+    inline double
+    von_mises_stress(const double normal[3], const double shear[3])
+    {
+      return std::sqrt(0.5
+                         * ((normal[0] - normal[1]) * (normal[0] - normal[1])
+                            + (normal[1] - normal[2]) * (normal[1] - normal[2])
+                            + (normal[2] - normal[0]) * (normal[2] - normal[0]))
+                       + 3
+                           * (shear[0] * shear[0] + shear[1] * shear[1]
+                              + shear[2] * shear[2]));
+    }
+
     /// The load cases of one boundary condition (one per Voigt component)
     /// and what follows from them.
     template <int dim>
@@ -358,6 +385,11 @@ namespace tribodyn
     class CellProblem
     {
     public:
+      /// stress_xx, ... (the Voigt components; in 2D then stress_zz),
+      /// von_mises, strain_xx, ... (engineering shears strain_gamma_xy,
+      /// ...), material_id.
+      static std::vector<std::string>
+      cell_field_names();
       using Traits                          = CellTraits<dim>;
       static constexpr unsigned int n_voigt = Traits::n_voigt;
       using Voigt                           = dealii::Tensor<1, n_voigt>;
@@ -508,11 +540,6 @@ namespace tribodyn
         const BoundaryCondition                                   bc,
         const unsigned int                                        load_case,
         const dealii::LinearAlgebra::distributed::Vector<double> &field) const;
-      /// stress_xx, ... (the Voigt components; in 2D then stress_zz),
-      /// von_mises, strain_xx, ... (engineering shears strain_gamma_xy,
-      /// ...), material_id.
-      static std::vector<std::string>
-      cell_field_names();
       /// The cell fields @p values on @p plane, summed over the ranks.
       FieldSlice
       slice(const SlicePlane                         &plane,

@@ -59,8 +59,12 @@ namespace tribodyn
     {
       const VolumeHomogenizationParameters &parameters;
       const VoxelVolume                    &volume;
-      const CellProblem<3>                 &cell_problem;
-      const std::vector<ElasticPhase>      &phases;
+      /// The mesh's cell problems; null where the voxel grid solves them
+      /// (`Cell problem/Grid`: no VTU fields then).
+      const CellProblem<3> *cell_problem;
+      /// The unknowns of the (non-periodic) problem.
+      dealii::types::global_dof_index  n_dofs;
+      const std::vector<ElasticPhase> &phases;
       /// The phases' 6 x 6 stiffnesses, by material id.
       const std::vector<VoigtMatrix6> &stiffness;
       /// Volume fraction of each phase on the mesh.

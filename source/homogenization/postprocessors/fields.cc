@@ -14,12 +14,27 @@ namespace tribodyn
   {
     namespace
     {
+      /// The mesh's cell problems (3D: the voxel grid writes no fields,
+      /// and 'Cell problem/Grid = auto' takes the mesh when they are asked
+      /// for).
+      const CellProblem<2> &
+      mesh_of(const CellProblem<2> &problem)
+      {
+        return problem;
+      }
+      const CellProblem<3> &
+      mesh_of(const CellProblem<3> *problem)
+      {
+        AssertThrow(problem != nullptr, dealii::ExcInternalError());
+        return *problem;
+      }
+
       template <int dim>
       class Fields : public Postprocessor<dim>
       {
       public:
         explicit Fields(const PostprocessorInputs<dim> &in)
-            : cell_problem(in.cell_problem)
+            : cell_problem(mesh_of(in.cell_problem))
             , directory(in.output_directory)
         {
         }

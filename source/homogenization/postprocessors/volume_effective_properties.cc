@@ -131,7 +131,7 @@ namespace tribodyn
           JsonValue per_dof    = JsonValue::array();
           // time per DoF per CG iteration: of each solve (null when CG
           // took no iteration) and over the six
-          const double n_dofs = in.cell_problem.n_dofs();
+          const double n_dofs = in.n_dofs;
           for (const auto &lc : r.load_cases)
             {
               iterations.push_back(lc.cg_iterations);

@@ -1,0 +1,1135 @@
+// The 3D cell problems on the voxel grid (issue #51 item 5): the same Q1
+// discretization as CellProblem<3>, with the nodes, cells, levels and
+// ranks' slabs found by index arithmetic. See voxel_grid_solver.h and
+// doc/theory/homogenization.md ("The voxel grid without a mesh").
+
+#include "cell_multigrid_galerkin.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/partitioner.h>
+#include <deal.II/lac/diagonal_matrix.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <map>
+#include <sstream>
+#include <tribodyn/homogenization/voxel_grid_solver.h>
+
+namespace tribodyn
+{
+  namespace homogenization
+  {
+    namespace internal
+    {
+      namespace
+      {
+        using dealii::types::global_dof_index;
+        template <typename Number>
+        using GridVector = dealii::LinearAlgebra::distributed::Vector<Number>;
+        using Element    = ElasticityOperator<3, 1, double>;
+        constexpr unsigned int n_vertices = 8;
+        constexpr unsigned int n_dofs     = 24;
+
+        /// The coarsest grid's unknowns at most (its dense factorization).
+        constexpr global_dof_index max_coarse_dofs = 3000;
+
+        /// The number of grids: every axis halved while all are even and at
+        /// least 4 and the grid has more than 1000 unknowns (the last grid
+        /// is the coarsest); 0 if the coarsest has more than
+        /// max_coarse_dofs.
+        unsigned int
+        n_grids(std::array<unsigned int, 3> n)
+        {
+          unsigned int levels = 1;
+          auto         nodes  = [&]() {
+            return global_dof_index(n[0] + 1) * (n[1] + 1) * (n[2] + 1);
+          };
+          while (3 * nodes() > 1000 && n[0] % 2 == 0 && n[1] % 2 == 0
+                 && n[2] % 2 == 0 && n[0] >= 4 && n[1] >= 4 && n[2] >= 4)
+            {
+              for (auto &m : n)
+                m /= 2;
+              ++levels;
+            }
+          return 3 * nodes() <= max_coarse_dofs ? levels : 0;
+        }
+      } // namespace
+
+
+      /**
+       * One grid of the hierarchy on this rank: its cells and nodes, the
+       * rank's slab of node planes [kb, ke) and the vector-local index of
+       * each node plane it reads (its own and the ghost planes kb - 1 and
+       * ke).
+       */
+      struct VoxelGrid
+      {
+        std::array<unsigned int, 3> n;  // cells per axis
+        std::array<unsigned int, 3> nn; // nodes per axis
+        std::array<double, 3>       h;  // cell size
+        bool                        periodic = false;
+        unsigned int                kb = 0, ke = 0;
+        std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
+        std::vector<std::int64_t>                                  plane_offset;
+
+        /// The grid of @p cells cells per axis, node planes [kb, ke) on this
+        /// rank.
+        VoxelGrid(const std::array<unsigned int, 3> &cells,
+                  const std::array<double, 3>       &size,
+                  const bool                         periodic,
+                  const unsigned int                 kb,
+                  const unsigned int                 ke,
+                  const MPI_Comm                     comm)
+            : n(cells)
+            , h(size)
+            , periodic(periodic)
+            , kb(kb)
+            , ke(ke)
+        {
+          for (unsigned int d = 0; d < 3; ++d)
+            nn[d] = periodic ? n[d] : n[d] + 1;
+          const global_dof_index plane = plane_dofs();
+          dealii::IndexSet       owned(plane * nn[2]), ghosts(plane * nn[2]);
+          owned.add_range(plane * kb, plane * ke);
+          std::vector<unsigned int> ghost_planes;
+          for (const int p : {int(kb) - 1, int(ke)})
+            {
+              const int q = periodic ? (p + int(nn[2])) % int(nn[2]) : p;
+              if (q >= 0 && q < int(nn[2])
+                  && !(unsigned(q) >= kb && unsigned(q) < ke))
+                {
+                  ghosts.add_range(plane * q, plane * (q + 1));
+                  ghost_planes.push_back(q);
+                }
+            }
+          partitioner
+            = std::make_shared<dealii::Utilities::MPI::Partitioner>(owned,
+                                                                    ghosts,
+                                                                    comm);
+          plane_offset.assign(nn[2], -1);
+          for (unsigned int p = kb; p < ke; ++p)
+            plane_offset[p] = std::int64_t(plane) * (p - kb);
+          for (const unsigned int q : ghost_planes)
+            plane_offset[q] = partitioner->global_to_local(plane * q);
+        }
+
+        global_dof_index
+        plane_dofs() const
+        {
+          return 3 * global_dof_index(nn[0]) * nn[1];
+        }
+        global_dof_index
+        size() const
+        {
+          return plane_dofs() * nn[2];
+        }
+        /// The node index i + 1 along axis @p d (0 past the periodic end).
+        unsigned int
+        next(const unsigned int i, const unsigned int d) const
+        {
+          return i + 1 == nn[d] ? 0 : i + 1;
+        }
+        /// The owned cell planes: [kb, cells_end()).
+        unsigned int
+        cells_end() const
+        {
+          return std::min(ke, n[2]);
+        }
+        /// Vector-local index of component 0 of node (i, j, k).
+        std::size_t
+        local(const unsigned int i,
+              const unsigned int j,
+              const unsigned int k) const
+        {
+          return plane_offset[k] + 3 * (std::size_t(j) * nn[0] + i);
+        }
+        /// Whether the node is on the boundary (KUBC's constraints).
+        bool
+        on_boundary(const unsigned int i,
+                    const unsigned int j,
+                    const unsigned int k) const
+        {
+          return !periodic
+                 && (i == 0 || j == 0 || k == 0 || i == n[0] || j == n[1]
+                     || k == n[2]);
+        }
+        /// The vector-local indices of a cell's vertices (lexicographic, x
+        /// fastest: ElasticityOperator's vertex order).
+        std::array<std::size_t, n_vertices>
+        vertices(const unsigned int i,
+                 const unsigned int j,
+                 const unsigned int k) const
+        {
+          const unsigned int i1 = next(i, 0), j1 = next(j, 1), k1 = next(k, 2);
+          return {{local(i, j, k),
+                   local(i1, j, k),
+                   local(i, j1, k),
+                   local(i1, j1, k),
+                   local(i, j, k1),
+                   local(i1, j, k1),
+                   local(i, j1, k1),
+                   local(i1, j1, k1)}};
+        }
+      };
+
+
+      /**
+       * The elasticity operator of one grid: the cells' element matrices
+       * (one per distinct index), applied cell by cell; KUBC's boundary
+       * nodes as identity rows (read as zero by the cells). What
+       * PreconditionChebyshev and SolverCG need of a matrix.
+       */
+      template <typename Number>
+      struct GridOperator : public dealii::Subscriptor
+      {
+        const VoxelGrid                                 *grid        = nullptr;
+        const std::vector<std::uint32_t>                *cell_matrix = nullptr;
+        std::vector<std::array<Number, n_dofs * n_dofs>> matrices;
+        bool                                             dirichlet = false;
+        std::vector<std::size_t>                         constrained_owned;
+        std::shared_ptr<dealii::DiagonalMatrix<GridVector<Number>>>
+          inverse_diagonal;
+
+        void
+        initialize(const VoxelGrid                  &g,
+                   const std::vector<std::uint32_t> &cells,
+                   const bool                        kubc)
+        {
+          grid        = &g;
+          cell_matrix = &cells;
+          dirichlet   = kubc;
+          constrained_owned.clear();
+          if (dirichlet)
+            for (unsigned int k = g.kb; k < g.ke; ++k)
+              for (unsigned int j = 0; j < g.nn[1]; ++j)
+                for (unsigned int i = 0; i < g.nn[0]; ++i)
+                  if (g.on_boundary(i, j, k))
+                    constrained_owned.push_back(g.local(i, j, k));
+        }
+
+        void
+        initialize_dof_vector(GridVector<Number> &v) const
+        {
+          v.reinit(grid->partitioner);
+        }
+        global_dof_index
+        m() const
+        {
+          return grid->size();
+        }
+        /// (PreconditionChebyshev's fallback when it has no diagonal: it
+        /// always gets inverse_diagonal)
+        Number
+        el(const global_dof_index, const global_dof_index) const
+        {
+          AssertThrow(false, dealii::ExcNotImplemented());
+          return 0;
+        }
+
+        /// Apply @p f(the vector-local indices of the cell's vertices, its
+        /// element matrix, its constraint mask: bit 8 c + v for component c
+        /// of vertex v, its indices (i, j, k)) to every owned cell.
+        template <class F>
+        void
+        for_each_cell(const F &f) const
+        {
+          const VoxelGrid &g    = *grid;
+          std::size_t      cell = 0;
+          for (unsigned int k = g.kb; k < g.cells_end(); ++k)
+            for (unsigned int j = 0; j < g.n[1]; ++j)
+              for (unsigned int i = 0; i < g.n[0]; ++i, ++cell)
+                {
+                  const auto    v    = g.vertices(i, j, k);
+                  std::uint32_t mask = 0;
+                  if (dirichlet
+                      && (i == 0 || j == 0 || k == 0 || i + 1 == g.n[0]
+                          || j + 1 == g.n[1] || k + 1 == g.n[2]))
+                    for (unsigned int q = 0; q < n_vertices; ++q)
+                      if (g.on_boundary(i + (q & 1),
+                                        j + ((q >> 1) & 1),
+                                        k + ((q >> 2) & 1)))
+                        for (unsigned int c = 0; c < 3; ++c)
+                          mask |= 1u << (n_vertices * c + q);
+                  f(v, (*cell_matrix)[cell], mask, {{i, j, k}});
+                }
+        }
+
+        void
+        vmult(GridVector<Number> &dst, const GridVector<Number> &src) const
+        {
+          const bool had_ghosts = src.has_ghost_elements();
+          if (!had_ghosts)
+            src.update_ghost_values();
+          dst = Number(0);
+          dst.zero_out_ghost_values();
+          const Number *in  = src.begin();
+          Number       *out = dst.begin();
+          for_each_cell([&](const std::array<std::size_t, n_vertices> &v,
+                            const std::uint32_t                        m,
+                            const std::uint32_t                        mask,
+                            const std::array<unsigned int, 3> &) {
+            Number x[n_dofs], y[n_dofs];
+            for (unsigned int q = 0; q < n_vertices; ++q)
+              for (unsigned int c = 0; c < 3; ++c)
+                x[n_vertices * c + q] = in[v[q] + c];
+            if (mask != 0)
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                if ((mask >> i) & 1u)
+                  x[i] = 0;
+            multiply_element_matrix<Number, n_dofs>(matrices[m].data(), x, y);
+            if (mask != 0)
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                if ((mask >> i) & 1u)
+                  y[i] = 0;
+            for (unsigned int q = 0; q < n_vertices; ++q)
+              for (unsigned int c = 0; c < 3; ++c)
+                out[v[q] + c] += y[n_vertices * c + q];
+          });
+          dst.compress(dealii::VectorOperation::add);
+          for (const std::size_t k : constrained_owned)
+            for (unsigned int c = 0; c < 3; ++c)
+              out[k + c] = in[k + c];
+          if (!had_ghosts)
+            src.zero_out_ghost_values();
+        }
+        void
+        Tvmult(GridVector<Number> &dst, const GridVector<Number> &src) const
+        {
+          vmult(dst, src);
+        }
+
+        void
+        compute_inverse_diagonal()
+        {
+          inverse_diagonal
+            = std::make_shared<dealii::DiagonalMatrix<GridVector<Number>>>();
+          auto &d = inverse_diagonal->get_vector();
+          initialize_dof_vector(d);
+          Number *out = d.begin();
+          for_each_cell([&](const std::array<std::size_t, n_vertices> &v,
+                            const std::uint32_t                        m,
+                            const std::uint32_t                        mask,
+                            const std::array<unsigned int, 3> &) {
+            for (unsigned int q = 0; q < n_vertices; ++q)
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  const unsigned int i = n_vertices * c + q;
+                  if (!((mask >> i) & 1u))
+                    out[v[q] + c] += matrices[m][(n_dofs + 1) * i];
+                }
+          });
+          d.compress(dealii::VectorOperation::add);
+          for (const std::size_t k : constrained_owned)
+            for (unsigned int c = 0; c < 3; ++c)
+              d.local_element(k + c) = 1;
+          for (unsigned int i = 0; i < d.locally_owned_size(); ++i)
+            d.local_element(i) = Number(1) / d.local_element(i);
+        }
+      };
+
+
+      /**
+       * The grids of one kind (periodic or not) and their element
+       * matrices: the voxels' phases on the finest, the Galerkin products
+       * on the coarser ones (cell_multigrid_galerkin.h: the same matrices
+       * as the mesh's hierarchy).
+       */
+      struct VoxelGridLevels
+      {
+        bool                                    periodic = false;
+        std::vector<VoxelGrid>                  grids;
+        std::vector<std::vector<std::uint32_t>> cell_matrix;
+        /// Per grid the distinct element matrices (double).
+        std::vector<std::vector<Element::ElementMatrix<double>>> matrices;
+        /// The phase (material id) of each fine element matrix.
+        std::vector<unsigned int> fine_phase;
+        /// The coarsest grid's assembled matrix (all ranks, unconstrained).
+        dealii::FullMatrix<double> coarse_matrix;
+
+        VoxelGridLevels(const MPI_Comm                   comm,
+                        const VoxelVolume               &volume,
+                        const std::vector<VoigtMatrix6> &stiffness,
+                        const bool                       periodic)
+            : periodic(periodic)
+        {
+          std::array<unsigned int, 3> n;
+          std::array<double, 3>       h;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              n[d] = volume.n_voxels(d);
+              h[d] = volume.voxel_size(d);
+            }
+          const unsigned int levels = n_grids(n);
+          AssertThrow(levels > 0, dealii::ExcInternalError());
+          // The ranks' slabs: balanced cell planes on the finest grid, each
+          // coarser grid's boundaries the finer ones halved (rounded up),
+          // so that a rank's fine planes read the coarse planes of its slab
+          // and the two next to it.
+          const unsigned int R = dealii::Utilities::MPI::n_mpi_processes(comm);
+          const unsigned int r = dealii::Utilities::MPI::this_mpi_process(comm);
+          const unsigned int planes = periodic ? n[2] : n[2] + 1;
+          unsigned int       kb     = std::size_t(r) * n[2] / R;
+          unsigned int ke = r + 1 == R ? planes : std::size_t(r + 1) * n[2] / R;
+          for (unsigned int l = 0; l < levels; ++l)
+            {
+              grids.emplace_back(n, h, periodic, kb, ke, comm);
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  n[d] /= 2;
+                  h[d] *= 2;
+                }
+              kb = (kb + 1) / 2;
+              ke = (ke + 1) / 2;
+            }
+
+          // The element matrices of the owned cells of every grid.
+          const StiffnessOverBox<3> stiffness_of_box =
+            [&](const dealii::Point<3> &lower, const dealii::Point<3> &upper) {
+              std::array<unsigned int, 3> index;
+              for (unsigned int d = 0; d < 3; ++d)
+                index[d] = static_cast<unsigned int>(0.5 * (lower[d] + upper[d])
+                                                     / volume.voxel_size(d));
+              return stiffness[volume.voxel(index[0], index[1], index[2])];
+            };
+          GalerkinElementMatrices<3> galerkin(stiffness_of_box,
+                                              {{volume.voxel_size(0),
+                                                volume.voxel_size(1),
+                                                volume.voxel_size(2)}});
+          cell_matrix.resize(levels);
+          matrices.resize(levels);
+          for (unsigned int l = 0; l < levels; ++l)
+            {
+              const VoxelGrid                      &g = grids[l];
+              std::map<unsigned int, std::uint32_t> index_of;
+              auto                                 &cells = cell_matrix[l];
+              cells.reserve(
+                std::size_t(g.cells_end() - std::min(g.kb, g.cells_end()))
+                * g.n[0] * g.n[1]);
+              for (unsigned int k = g.kb; k < g.cells_end(); ++k)
+                for (unsigned int j = 0; j < g.n[1]; ++j)
+                  for (unsigned int i = 0; i < g.n[0]; ++i)
+                    {
+                      const dealii::Point<3> lower(i * g.h[0],
+                                                   j * g.h[1],
+                                                   k * g.h[2]);
+                      const dealii::Point<3> upper((i + 1) * g.h[0],
+                                                   (j + 1) * g.h[1],
+                                                   (k + 1) * g.h[2]);
+                      const unsigned int     id = galerkin.id(lower, upper, l);
+                      const auto [it, inserted]
+                        = index_of.emplace(id, matrices[l].size());
+                      if (inserted)
+                        {
+                          matrices[l].push_back(galerkin.matrix(l, id));
+                          if (l == 0)
+                            fine_phase.push_back(volume.voxel(i, j, k));
+                        }
+                      cells.push_back(it->second);
+                    }
+            }
+
+          // The coarsest grid's matrix: each rank adds its cells', the sum
+          // over the ranks on every rank.
+          const VoxelGrid &c = grids.back();
+          coarse_matrix.reinit(c.size(), c.size());
+          std::size_t cell = 0;
+          for (unsigned int k = c.kb; k < c.cells_end(); ++k)
+            for (unsigned int j = 0; j < c.n[1]; ++j)
+              for (unsigned int i = 0; i < c.n[0]; ++i, ++cell)
+                {
+                  const auto &K = matrices.back()[cell_matrix.back()[cell]];
+                  global_dof_index dof[n_dofs];
+                  for (unsigned int q = 0; q < n_vertices; ++q)
+                    {
+                      const unsigned int x = (q & 1) ? c.next(i, 0) : i;
+                      const unsigned int y = ((q >> 1) & 1) ? c.next(j, 1) : j;
+                      const unsigned int z = ((q >> 2) & 1) ? c.next(k, 2) : k;
+                      const global_dof_index node
+                        = (global_dof_index(z) * c.nn[1] + y) * c.nn[0] + x;
+                      for (unsigned int d = 0; d < 3; ++d)
+                        dof[n_vertices * d + q] = 3 * node + d;
+                    }
+                  for (unsigned int a = 0; a < n_dofs; ++a)
+                    for (unsigned int b = 0; b < n_dofs; ++b)
+                      coarse_matrix(dof[a], dof[b]) += K[n_dofs * a + b];
+                }
+          dealii::Utilities::MPI::sum(
+            dealii::ArrayView<const double>(&coarse_matrix(0, 0),
+                                            coarse_matrix.n_elements()),
+            comm,
+            dealii::ArrayView<double>(&coarse_matrix(0, 0),
+                                      coarse_matrix.n_elements()));
+        }
+      };
+
+
+      /**
+       * CG with the V-cycle on the grids for one boundary condition, in
+       * @p LevelNumber (float: the mixed-precision default).
+       */
+      template <typename LevelNumber>
+      class GridMultigrid
+      {
+        using LevelVector = GridVector<LevelNumber>;
+        using Smoother
+          = dealii::PreconditionChebyshev<GridOperator<LevelNumber>,
+                                          LevelVector,
+                                          dealii::DiagonalMatrix<LevelVector>>;
+
+      public:
+        GridMultigrid(const VoxelGridLevels  &levels,
+                      const BoundaryCondition bc,
+                      const MPI_Comm          comm)
+            : levels(levels)
+            , comm(comm)
+            , kubc(bc == BoundaryCondition::kubc)
+            , n_rigid(bc == BoundaryCondition::subc
+                        ? 6
+                        : (bc == BoundaryCondition::periodic ? 3 : 0))
+        {
+          const unsigned int n_levels = levels.grids.size();
+          fine.initialize(levels.grids[0], levels.cell_matrix[0], kubc);
+          fine.matrices = levels.matrices[0];
+          operators.resize(n_levels);
+          smoothers.resize(n_levels);
+          r.resize(n_levels);
+          b.resize(n_levels);
+          x.resize(n_levels);
+          for (unsigned int l = 0; l < n_levels; ++l)
+            {
+              auto &op = operators[l];
+              op.initialize(levels.grids[l], levels.cell_matrix[l], kubc);
+              for (const auto &K : levels.matrices[l])
+                {
+                  std::array<LevelNumber, n_dofs * n_dofs> k;
+                  for (unsigned int i = 0; i < k.size(); ++i)
+                    k[i] = LevelNumber(K[i]);
+                  op.matrices.push_back(k);
+                }
+              op.initialize_dof_vector(r[l]);
+              op.initialize_dof_vector(b[l]);
+              op.initialize_dof_vector(x[l]);
+              if (l + 1 == n_levels)
+                break;
+              op.compute_inverse_diagonal();
+              typename Smoother::AdditionalData data;
+              data.smoothing_range     = 15.;
+              data.degree              = 3;
+              data.eig_cg_n_iterations = 10;
+              data.preconditioner      = op.inverse_diagonal;
+              smoothers[l].initialize(op, data);
+            }
+          set_up_coarse_solve();
+          if (n_rigid > 0)
+            set_up_rigid_motions();
+        }
+
+        /// The load of @p load on the fine grid; the norm of the element
+        /// loads (the tolerance's scale).
+        double
+        assemble_rhs(GridVector<double>              &rhs,
+                     const dealii::Tensor<1, 6>      &load,
+                     const bool                       strain_driven,
+                     const std::vector<VoigtMatrix6> &stiffness) const
+        {
+          fine.initialize_dof_vector(rhs);
+          std::vector<std::array<double, n_dofs>> loads;
+          const auto                             &g = levels.grids[0];
+          for (unsigned int m = 0; m < fine.matrices.size(); ++m)
+            loads.push_back(
+              Element::element_load(fine.matrices[m],
+                                    entries(stiffness[levels.fine_phase[m]]),
+                                    load,
+                                    strain_driven,
+                                    g.h));
+          double  scale = 0;
+          double *out   = rhs.begin();
+          fine.for_each_cell([&](const std::array<std::size_t, n_vertices> &v,
+                                 const std::uint32_t                        m,
+                                 const std::uint32_t mask,
+                                 const std::array<unsigned int, 3> &) {
+            for (unsigned int q = 0; q < n_vertices; ++q)
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  const unsigned int i = n_vertices * c + q;
+                  const double       f = loads[m][i];
+                  scale += f * f;
+                  if (!((mask >> i) & 1u))
+                    out[v[q] + c] += f;
+                }
+          });
+          rhs.compress(dealii::VectorOperation::add);
+          if (n_rigid > 0)
+            project(rhs);
+          return std::sqrt(dealii::Utilities::MPI::sum(scale, comm));
+        }
+
+        void
+        solve(dealii::SolverControl    &control,
+              GridVector<double>       &solution,
+              const GridVector<double> &rhs) const
+        {
+          fine.initialize_dof_vector(solution);
+          dealii::SolverCG<GridVector<double>> cg(control);
+          cg.solve(fine, solution, rhs, *this);
+          if (n_rigid > 0)
+            project(solution);
+        }
+
+        /// CG's preconditioner: one V-cycle (between two projections on
+        /// the complement of the rigid motions, for the floating problems).
+        void
+        vmult(GridVector<double> &dst, const GridVector<double> &src) const
+        {
+          b[0].copy_locally_owned_data_from(src);
+          if (n_rigid > 0)
+            project(b[0]);
+          vcycle(0);
+          dst.copy_locally_owned_data_from(x[0]);
+          if (n_rigid > 0)
+            project(dst);
+        }
+
+        const GridOperator<double> &
+        fine_operator() const
+        {
+          return fine;
+        }
+
+      private:
+        static Element::StiffnessEntries
+        entries(const VoigtMatrix6 &C)
+        {
+          Element::StiffnessEntries e;
+          for (unsigned int i = 0; i < 6; ++i)
+            for (unsigned int j = i; j < 6; ++j)
+              e[Element::entry(i, j)] = C[i][j];
+          return e;
+        }
+
+        /// x[l] from b[l].
+        void
+        vcycle(const unsigned int l) const
+        {
+          if (l + 1 == levels.grids.size())
+            {
+              coarse_solve(x[l], b[l]);
+              return;
+            }
+          smoothers[l].vmult(x[l], b[l]);
+          operators[l].vmult(r[l], x[l]);
+          r[l].sadd(LevelNumber(-1), LevelNumber(1), b[l]);
+          restrict_residual(l);
+          vcycle(l + 1);
+          prolongate_add(l);
+          smoothers[l].step(x[l], b[l]);
+        }
+
+        /// The trilinear weights of a fine node index @p I's coarse nodes
+        /// along one axis: I / 2 (weight 1) if I is even, else (I - 1) / 2
+        /// and (I + 1) / 2 (weights 1/2; the second wrapped on the periodic
+        /// grid).
+        static unsigned int
+        parents(const unsigned int I,
+                const VoxelGrid   &coarse,
+                const unsigned int d,
+                unsigned int       index[2],
+                LevelNumber        weight[2])
+        {
+          if (I % 2 == 0)
+            {
+              index[0]  = I / 2;
+              weight[0] = 1;
+              return 1;
+            }
+          index[0]  = I / 2;
+          index[1]  = coarse.next(I / 2, d);
+          weight[0] = weight[1] = LevelNumber(0.5);
+          return 2;
+        }
+
+        /// Apply @p f(fine local index, coarse local index, weight) to
+        /// every owned fine node and its coarse parents.
+        template <class F>
+        void
+        for_each_parent(const unsigned int l, const F &f) const
+        {
+          const VoxelGrid &g = levels.grids[l], &c = levels.grids[l + 1];
+          for (unsigned int K = g.kb; K < g.ke; ++K)
+            {
+              unsigned int       kz[2], jy[2], ix[2];
+              LevelNumber        wz[2], wy[2], wx[2];
+              const unsigned int nz = parents(K, c, 2, kz, wz);
+              for (unsigned int J = 0; J < g.nn[1]; ++J)
+                {
+                  const unsigned int ny = parents(J, c, 1, jy, wy);
+                  for (unsigned int I = 0; I < g.nn[0]; ++I)
+                    {
+                      const unsigned int nx   = parents(I, c, 0, ix, wx);
+                      const std::size_t  fine = g.local(I, J, K);
+                      for (unsigned int a = 0; a < nz; ++a)
+                        for (unsigned int e = 0; e < ny; ++e)
+                          for (unsigned int s = 0; s < nx; ++s)
+                            f(fine,
+                              c.local(ix[s], jy[e], kz[a]),
+                              wz[a] * wy[e] * wx[s]);
+                    }
+                }
+            }
+        }
+
+        /// b[l + 1] = P^T r[l] (KUBC: zero on the boundary).
+        void
+        restrict_residual(const unsigned int l) const
+        {
+          LevelVector &coarse = b[l + 1];
+          coarse              = LevelNumber(0);
+          coarse.zero_out_ghost_values();
+          LevelNumber       *out = coarse.begin();
+          const LevelNumber *in  = r[l].begin();
+          for_each_parent(l,
+                          [&](const std::size_t fine,
+                              const std::size_t parent,
+                              const LevelNumber w) {
+                            for (unsigned int c = 0; c < 3; ++c)
+                              out[parent + c] += w * in[fine + c];
+                          });
+          coarse.compress(dealii::VectorOperation::add);
+          for (const std::size_t k : operators[l + 1].constrained_owned)
+            for (unsigned int c = 0; c < 3; ++c)
+              out[k + c] = 0;
+        }
+
+        /// x[l] += P x[l + 1].
+        void
+        prolongate_add(const unsigned int l) const
+        {
+          const LevelVector &coarse = x[l + 1];
+          coarse.update_ghost_values();
+          const LevelNumber *in  = coarse.begin();
+          LevelNumber       *out = x[l].begin();
+          for_each_parent(l,
+                          [&](const std::size_t fine,
+                              const std::size_t parent,
+                              const LevelNumber w) {
+                            for (unsigned int c = 0; c < 3; ++c)
+                              out[fine + c] += w * in[parent + c];
+                          });
+          coarse.zero_out_ghost_values();
+        }
+
+        /// The coarsest grid's matrix with its constraints (KUBC: the
+        /// boundary; SUBC: pins of the rigid motions; periodic: the
+        /// translations at node 0) as identity rows, factorized.
+        void
+        set_up_coarse_solve()
+        {
+          const VoxelGrid &c = levels.grids.back();
+          coarse_fixed.clear();
+          auto dof = [&](unsigned int i,
+                         unsigned int j,
+                         unsigned int k,
+                         unsigned int d) {
+            return 3 * ((global_dof_index(k) * c.nn[1] + j) * c.nn[0] + i) + d;
+          };
+          if (kubc)
+            {
+              for (unsigned int k = 0; k < c.nn[2]; ++k)
+                for (unsigned int j = 0; j < c.nn[1]; ++j)
+                  for (unsigned int i = 0; i < c.nn[0]; ++i)
+                    if (c.on_boundary(i, j, k))
+                      for (unsigned int d = 0; d < 3; ++d)
+                        coarse_fixed.push_back(dof(i, j, k, d));
+            }
+          else
+            {
+              // node 0 fixed; SUBC also the node on the x axis in y and z
+              // and the node on the y axis in z (the rotations)
+              for (unsigned int d = 0; d < 3; ++d)
+                coarse_fixed.push_back(dof(0, 0, 0, d));
+              if (n_rigid == 6)
+                {
+                  coarse_fixed.push_back(dof(c.n[0], 0, 0, 1));
+                  coarse_fixed.push_back(dof(c.n[0], 0, 0, 2));
+                  coarse_fixed.push_back(dof(0, c.n[1], 0, 2));
+                }
+            }
+          dealii::FullMatrix<double> A(levels.coarse_matrix);
+          for (const global_dof_index f : coarse_fixed)
+            for (unsigned int k = 0; k < A.m(); ++k)
+              {
+                A(f, k) = 0;
+                A(k, f) = 0;
+              }
+          for (const global_dof_index f : coarse_fixed)
+            A(f, f) = 1;
+          coarse_lu.reinit(A.m());
+          coarse_lu = A;
+          coarse_lu.compute_lu_factorization();
+        }
+
+        void
+        coarse_solve(LevelVector &dst, const LevelVector &src) const
+        {
+          const VoxelGrid       &c     = levels.grids.back();
+          const global_dof_index first = c.plane_dofs() * c.kb;
+          dealii::Vector<double> full(c.size());
+          for (unsigned int k = 0; k < src.locally_owned_size(); ++k)
+            full[first + k] = src.local_element(k);
+          dealii::Utilities::MPI::sum(full, comm, full);
+          for (const global_dof_index f : coarse_fixed)
+            full[f] = 0;
+          coarse_lu.solve(full);
+          for (unsigned int k = 0; k < dst.locally_owned_size(); ++k)
+            dst.local_element(k) = LevelNumber(full[first + k]);
+        }
+
+        /// The rigid motions (SUBC: translations and rotations about the
+        /// box's centre; periodic: translations) and their Gram matrix over
+        /// the fine grid's nodes.
+        void
+        set_up_rigid_motions()
+        {
+          const VoxelGrid &g = levels.grids[0];
+          for (unsigned int d = 0; d < 3; ++d)
+            centre[d] = 0.5 * g.n[d] * g.h[d];
+          dealii::FullMatrix<double> gram(n_rigid, n_rigid);
+          for_each_owned_node([&](const std::size_t, const double *y) {
+            double m[6][3];
+            rigid_motions(y, m);
+            for (unsigned int a = 0; a < n_rigid; ++a)
+              for (unsigned int b = 0; b < n_rigid; ++b)
+                gram(a, b)
+                  += m[a][0] * m[b][0] + m[a][1] * m[b][1] + m[a][2] * m[b][2];
+          });
+          dealii::Utilities::MPI::sum(
+            dealii::ArrayView<const double>(&gram(0, 0), gram.n_elements()),
+            comm,
+            dealii::ArrayView<double>(&gram(0, 0), gram.n_elements()));
+          gram_inverse.reinit(n_rigid, n_rigid);
+          gram_inverse.invert(gram);
+        }
+
+        /// @p f(local index of component 0, position relative to the
+        /// centre) for each owned node of the fine grid.
+        template <class F>
+        void
+        for_each_owned_node(const F &f) const
+        {
+          const VoxelGrid &g = levels.grids[0];
+          for (unsigned int k = g.kb; k < g.ke; ++k)
+            for (unsigned int j = 0; j < g.nn[1]; ++j)
+              for (unsigned int i = 0; i < g.nn[0]; ++i)
+                {
+                  const double y[3] = {i * g.h[0] - centre[0],
+                                       j * g.h[1] - centre[1],
+                                       k * g.h[2] - centre[2]};
+                  f(g.local(i, j, k), y);
+                }
+        }
+
+        /// The rigid motions' values m[k][c] at the position @p y (relative
+        /// to the centre): translations e_k, k < 3, and rotations about
+        /// axis k - 3, e_axis x y.
+        void
+        rigid_motions(const double *y, double m[6][3]) const
+        {
+          for (unsigned int k = 0; k < n_rigid; ++k)
+            for (unsigned int c = 0; c < 3; ++c)
+              m[k][c] = k == c ? 1. : 0.;
+          for (unsigned int k = 3; k < n_rigid; ++k)
+            {
+              const unsigned int axis = k - 3, a = (axis + 1) % 3,
+                                 b = (axis + 2) % 3;
+              m[k][a]              = -y[b];
+              m[k][b]              = y[a];
+            }
+        }
+
+        /// v -= R G^-1 R^T v: the l2 projection on the complement of the
+        /// rigid motions.
+        template <typename Number>
+        void
+        project(GridVector<Number> &v) const
+        {
+          double s[6] = {};
+          for_each_owned_node([&](const std::size_t k, const double *y) {
+            double m[6][3];
+            rigid_motions(y, m);
+            for (unsigned int a = 0; a < n_rigid; ++a)
+              for (unsigned int c = 0; c < 3; ++c)
+                s[a] += m[a][c] * double(v.local_element(k + c));
+          });
+          dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(s, 6),
+                                      comm,
+                                      dealii::ArrayView<double>(s, 6));
+          double alpha[6] = {};
+          for (unsigned int a = 0; a < n_rigid; ++a)
+            for (unsigned int b = 0; b < n_rigid; ++b)
+              alpha[a] += gram_inverse(a, b) * s[b];
+          for_each_owned_node([&](const std::size_t k, const double *y) {
+            double m[6][3];
+            rigid_motions(y, m);
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                double sum = 0;
+                for (unsigned int a = 0; a < n_rigid; ++a)
+                  sum += alpha[a] * m[a][c];
+                v.local_element(k + c) -= Number(sum);
+              }
+          });
+        }
+
+        const VoxelGridLevels                 &levels;
+        const MPI_Comm                         comm;
+        const bool                             kubc;
+        const unsigned int                     n_rigid;
+        GridOperator<double>                   fine;
+        std::vector<GridOperator<LevelNumber>> operators;
+        std::vector<Smoother>                  smoothers;
+        mutable std::vector<LevelVector>       r, b, x;
+        std::vector<global_dof_index>          coarse_fixed;
+        dealii::LAPACKFullMatrix<double>       coarse_lu;
+        double                                 centre[3] = {};
+        dealii::FullMatrix<double>             gram_inverse;
+      };
+
+
+      /**
+       * The averages of one load case from the solution @p u (the
+       * fluctuation for KUBC and periodic, the displacement for SUBC): the
+       * mean over the voxels of the strain (the cell average of the Q1
+       * strain: differences of face means) and of the stress C strain;
+       * and the voxels' fields on the @p slices (CellProblem's names and
+       * order: stresses, von Mises, strains, material id), summed over the
+       * ranks.
+       */
+      template <class Operator>
+      CellLoadCase<3>
+      grid_averages(const Operator                  &fine,
+                    const VoxelGridLevels           &levels,
+                    const std::vector<VoigtMatrix6> &stiffness,
+                    const VoxelVolume               &volume,
+                    const GridVector<double>        &u,
+                    const dealii::Tensor<1, 6>      &load,
+                    const bool                       strain_driven,
+                    std::vector<FieldSlice>         &slices,
+                    const MPI_Comm                   comm)
+      {
+        const VoxelGrid &g = levels.grids[0];
+        for (FieldSlice &s : slices)
+          {
+            s.names = CellProblem<3>::cell_field_names();
+            for (unsigned int d = 0, a = 0; d < 3; ++d)
+              if (d != s.plane.axis)
+                {
+                  s.axes[a] = d;
+                  s.n[a]    = g.n[d];
+                  ++a;
+                }
+            s.values.assign(s.names.size(),
+                            std::vector<double>(std::size_t(s.n[0]) * s.n[1]));
+          }
+        u.update_ghost_values();
+        const double *in       = u.begin();
+        double        sums[12] = {};
+        fine.for_each_cell([&](const std::array<std::size_t, n_vertices> &v,
+                               const std::uint32_t                        m,
+                               const std::uint32_t,
+                               const std::array<unsigned int, 3> &cell) {
+          double G[3][3] = {};
+          for (unsigned int q = 0; q < n_vertices; ++q)
+            for (unsigned int c = 0; c < 3; ++c)
+              for (unsigned int d = 0; d < 3; ++d)
+                G[c][d]
+                  += ((q >> d) & 1 ? 0.25 : -0.25) * in[v[q] + c] / g.h[d];
+          dealii::Tensor<1, 6> e;
+          e[0] = G[0][0];
+          e[1] = G[1][1];
+          e[2] = G[2][2];
+          e[3] = G[1][2] + G[2][1];
+          e[4] = G[0][2] + G[2][0];
+          e[5] = G[0][1] + G[1][0];
+          if (strain_driven)
+            e += load;
+          const dealii::Tensor<1, 6> s = stiffness[levels.fine_phase[m]] * e;
+          for (unsigned int i = 0; i < 6; ++i)
+            {
+              sums[i] += s[i];
+              sums[6 + i] += e[i];
+            }
+          for (FieldSlice &slice : slices)
+            if (cell[slice.plane.axis] == slice.plane.index)
+              {
+                const std::size_t at
+                  = cell[slice.axes[0]]
+                    + std::size_t(slice.n[0]) * cell[slice.axes[1]];
+                const double normal[3] = {s[0], s[1], s[2]};
+                const double shear[3]  = {s[3], s[4], s[5]};
+                unsigned int f         = 0;
+                for (unsigned int a = 0; a < 6; ++a)
+                  slice.values[f++][at] = s[a];
+                slice.values[f++][at] = von_mises_stress(normal, shear);
+                for (unsigned int a = 0; a < 6; ++a)
+                  slice.values[f++][at] = e[a];
+                slice.values[f][at] = volume.voxel(cell[0], cell[1], cell[2]);
+              }
+        });
+        u.zero_out_ghost_values();
+        dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 12),
+                                    comm,
+                                    dealii::ArrayView<double>(sums, 12));
+        // each voxel is owned by one rank, zero on the others
+        for (FieldSlice &slice : slices)
+          for (auto &values : slice.values)
+            dealii::Utilities::MPI::sum(values, comm, values);
+        const double    n_cells = double(g.n[0]) * g.n[1] * g.n[2];
+        CellLoadCase<3> result;
+        for (unsigned int i = 0; i < 6; ++i)
+          {
+            result.mean_stress[i] = sums[i] / n_cells;
+            result.mean_strain[i] = sums[6 + i] / n_cells;
+          }
+        return result;
+      }
+    } // namespace internal
+
+
+    VoxelGridSolver::VoxelGridSolver(MPI_Comm                         comm,
+                                     const VoxelVolume               &volume,
+                                     const std::vector<VoigtMatrix6> &stiffness,
+                                     const CellSolverParameters &parameters)
+        : comm(comm)
+        , volume(volume)
+        , stiffness(stiffness)
+        , parameters(parameters)
+    {
+      const std::string why = unsupported(volume);
+      AssertThrow(why.empty(), dealii::ExcMessage(why));
+    }
+
+
+    VoxelGridSolver::~VoxelGridSolver() = default;
+
+
+    std::string
+    VoxelGridSolver::unsupported(const VoxelVolume &volume)
+    {
+      std::array<unsigned int, 3> n;
+      for (unsigned int d = 0; d < 3; ++d)
+        n[d] = volume.n_voxels(d);
+      if (internal::n_grids(n) > 0)
+        return "";
+      std::ostringstream s;
+      s << "the voxel grid " << n[0] << " x " << n[1] << " x " << n[2]
+        << " does not coarsen to at most " << internal::max_coarse_dofs
+        << " unknowns by halving every axis while all are even";
+      return s.str();
+    }
+
+
+    dealii::types::global_dof_index
+    VoxelGridSolver::n_dofs() const
+    {
+      return 3 * dealii::types::global_dof_index(volume.n_voxels(0) + 1)
+             * (volume.n_voxels(1) + 1) * (volume.n_voxels(2) + 1);
+    }
+
+
+    std::string
+    VoxelGridSolver::describe_levels() const
+    {
+      std::array<unsigned int, 3> n;
+      for (unsigned int d = 0; d < 3; ++d)
+        n[d] = volume.n_voxels(d);
+      std::ostringstream s;
+      const unsigned int levels = internal::n_grids(n);
+      for (unsigned int l = 0; l < levels; ++l)
+        {
+          s << (l > 0 ? ", " : "") << n[0] << " x " << n[1] << " x " << n[2];
+          for (auto &m : n)
+            m /= 2;
+        }
+      return s.str();
+    }
+
+
+    CellResult<3>
+    VoxelGridSolver::solve(const BoundaryCondition        bc,
+                           const std::vector<SlicePlane> &slices)
+    {
+      const auto start    = std::chrono::steady_clock::now();
+      const bool periodic = bc == BoundaryCondition::periodic;
+      if (!levels || levels->periodic != periodic)
+        {
+          levels.reset();
+          levels = std::make_unique<internal::VoxelGridLevels>(comm,
+                                                               volume,
+                                                               stiffness,
+                                                               periodic);
+        }
+      CellResult<3> result;
+      result.boundary_condition = bc;
+      result.multigrid          = true;
+      const bool strain_driven  = bc != BoundaryCondition::subc;
+
+      auto solve_all = [&](const auto &multigrid) {
+        internal::GridVector<double> rhs, solution;
+        for (unsigned int load_case = 0; load_case < 6; ++load_case)
+          {
+            dealii::Tensor<1, 6> load;
+            load[load_case] = 1;
+            const double scale
+              = multigrid.assemble_rhs(rhs, load, strain_driven, stiffness);
+            dealii::SolverControl control(parameters.max_iterations,
+                                          parameters.solver_tolerance * scale);
+            const auto            cg_start = std::chrono::steady_clock::now();
+            multigrid.solve(control, solution, rhs);
+            std::vector<FieldSlice> sliced;
+            if (load_case == 0)
+              for (const SlicePlane &plane : slices)
+                sliced.push_back({plane, {}, {}, {}, {}});
+            CellLoadCase<3> averaged
+              = internal::grid_averages(multigrid.fine_operator(),
+                                        *levels,
+                                        stiffness,
+                                        volume,
+                                        solution,
+                                        load,
+                                        strain_driven,
+                                        sliced,
+                                        comm);
+            for (FieldSlice &s : sliced)
+              result.slices.push_back(std::move(s));
+            averaged.cg_iterations = control.last_step();
+            averaged.cg_time       = std::chrono::duration<double>(
+                                 std::chrono::steady_clock::now() - cg_start)
+                                 .count();
+            result.load_cases[load_case] = averaged;
+          }
+      };
+      if (parameters.multigrid_precision == MultigridPrecision::single)
+        solve_all(internal::GridMultigrid<float>(*levels, bc, comm));
+      else
+        solve_all(internal::GridMultigrid<double>(*levels, bc, comm));
+
+      VoigtMatrix6 M;
+      for (unsigned int j = 0; j < 6; ++j)
+        for (unsigned int i = 0; i < 6; ++i)
+          M[i][j] = strain_driven ? result.load_cases[j].mean_stress[i]
+                                  : result.load_cases[j].mean_strain[i];
+      result.properties = strain_driven ? volume_properties_from_stiffness(M)
+                                        : volume_properties_from_compliance(M);
+      result.wall_time  = std::chrono::duration<double>(
+                           std::chrono::steady_clock::now() - start)
+                           .count();
+      return result;
+    }
+  } // namespace homogenization
+} // namespace tribodyn
