@@ -95,6 +95,37 @@ namespace tribodyn
       }
 
       /**
+       * y_t = K x_t for @p count cells t of the same element matrix @p K
+       * (as multiply_element_matrix()): each column of K is loaded once for
+       * all of them, and their sums are the independent chains that the
+       * partial sums are for one cell.
+       */
+      template <typename Number, unsigned int n, unsigned int count>
+      inline void
+      multiply_element_matrices(const Number *K, Number (*x)[n], Number (*y)[n])
+      {
+        typedef Number Column __attribute__((vector_size(8 * sizeof(Number))));
+        constexpr unsigned int n_chunks = n / 8;
+        static_assert(n % 8 == 0, "whole chunks");
+        // (unrolled, so that the count x n_chunks sums stay in registers)
+        Column sum[count][n_chunks] = {};
+        for (unsigned int j = 0; j < n; ++j)
+          {
+#pragma GCC unroll 8
+            for (unsigned int b = 0; b < n_chunks; ++b)
+              {
+                Column column;
+                std::memcpy(&column, K + n * j + 8 * b, sizeof(Column));
+#pragma GCC unroll 8
+                for (unsigned int t = 0; t < count; ++t)
+                  sum[t][b] += column * x[t][j];
+              }
+          }
+        for (unsigned int t = 0; t < count; ++t)
+          std::memcpy(y[t], sum[t], sizeof(sum[t]));
+      }
+
+      /**
        * Elasticity, int eps(v) : C eps(u), with one constant stiffness per
        * cell: on the active mesh or on one level of the hierarchy
        * (whichever MatrixFree object it is initialized with). C is

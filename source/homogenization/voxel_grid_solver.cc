@@ -233,8 +233,8 @@ namespace tribodyn
         }
 
         /// Apply @p f(the vector-local indices of the cell's vertices, its
-        /// element matrix, its constraint mask: bit 8 c + v for component c
-        /// of vertex v, its indices (i, j, k)) to every owned cell.
+        /// element matrix, its constraint mask (constraint_mask()), its
+        /// indices (i, j, k)) to every owned cell.
         template <class F>
         void
         for_each_cell(const F &f) const
@@ -245,21 +245,44 @@ namespace tribodyn
             for (unsigned int j = 0; j < g.n[1]; ++j)
               for (unsigned int i = 0; i < g.n[0]; ++i, ++cell)
                 {
-                  const auto    v    = g.vertices(i, j, k);
-                  std::uint32_t mask = 0;
-                  if (dirichlet
-                      && (i == 0 || j == 0 || k == 0 || i + 1 == g.n[0]
-                          || j + 1 == g.n[1] || k + 1 == g.n[2]))
-                    for (unsigned int q = 0; q < n_vertices; ++q)
-                      if (g.on_boundary(i + (q & 1),
-                                        j + ((q >> 1) & 1),
-                                        k + ((q >> 2) & 1)))
-                        for (unsigned int c = 0; c < 3; ++c)
-                          mask |= 1u << (n_vertices * c + q);
-                  f(v, (*cell_matrix)[cell], mask, {{i, j, k}});
+                  f(g.vertices(i, j, k),
+                    (*cell_matrix)[cell],
+                    constraint_mask(i, j, k),
+                    {{i, j, k}});
                 }
         }
 
+        /// The element matrices @p K (FEEvaluation's component-major DoF
+        /// order 8 c + v), stored in the node-major order 3 v + c of the
+        /// vectors: a cell's two vertices along x are six consecutive
+        /// Numbers of one node row.
+        void
+        set_matrices(const std::vector<Element::ElementMatrix<double>> &K)
+        {
+          matrices.resize(K.size());
+          for (unsigned int m = 0; m < K.size(); ++m)
+            for (unsigned int a = 0; a < n_dofs; ++a)
+              for (unsigned int b = 0; b < n_dofs; ++b)
+                matrices[m][n_dofs * node_major(a) + node_major(b)]
+                  = Number(K[m][n_dofs * a + b]);
+        }
+        /// The node-major index of the component-major DoF @p i = 8 c + v.
+        static constexpr unsigned int
+        node_major(const unsigned int i)
+        {
+          return 3 * (i % n_vertices) + i / n_vertices;
+        }
+
+        /**
+         * dst = A src. The cells go row by row (x fastest); a cell's eight
+         * vertices are two consecutive nodes in each of four node rows, so
+         * its 24 values are four copies of six consecutive Numbers. Up to
+         * four consecutive cells of the same element matrix are multiplied
+         * together (multiply_element_matrices(): each column of the matrix
+         * loaded once for all), as they are in a phase's bulk; the cells of
+         * KUBC's boundary and the periodic wrap take the general path, one
+         * at a time.
+         */
         void
         vmult(GridVector<Number> &dst, const GridVector<Number> &src) const
         {
@@ -268,29 +291,60 @@ namespace tribodyn
             src.update_ghost_values();
           dst = Number(0);
           dst.zero_out_ghost_values();
-          const Number *in  = src.begin();
-          Number       *out = dst.begin();
-          for_each_cell([&](const std::array<std::size_t, n_vertices> &v,
-                            const std::uint32_t                        m,
-                            const std::uint32_t                        mask,
-                            const std::array<unsigned int, 3> &) {
-            Number x[n_dofs], y[n_dofs];
-            for (unsigned int q = 0; q < n_vertices; ++q)
-              for (unsigned int c = 0; c < 3; ++c)
-                x[n_vertices * c + q] = in[v[q] + c];
-            if (mask != 0)
-              for (unsigned int i = 0; i < n_dofs; ++i)
-                if ((mask >> i) & 1u)
-                  x[i] = 0;
-            multiply_element_matrix<Number, n_dofs>(matrices[m].data(), x, y);
-            if (mask != 0)
-              for (unsigned int i = 0; i < n_dofs; ++i)
-                if ((mask >> i) & 1u)
-                  y[i] = 0;
-            for (unsigned int q = 0; q < n_vertices; ++q)
-              for (unsigned int c = 0; c < 3; ++c)
-                out[v[q] + c] += y[n_vertices * c + q];
-          });
+          const Number    *in   = src.begin();
+          Number          *out  = dst.begin();
+          const VoxelGrid &g    = *grid;
+          const auto      &ids  = *cell_matrix;
+          std::size_t      cell = 0;
+          for (unsigned int k = g.kb; k < g.cells_end(); ++k)
+            for (unsigned int j = 0; j < g.n[1]; ++j, cell += g.n[0])
+              {
+                const unsigned int j1 = g.next(j, 1), k1 = g.next(k, 2);
+                const std::size_t  row[4] = {g.local(0, j, k),
+                                             g.local(0, j1, k),
+                                             g.local(0, j, k1),
+                                             g.local(0, j1, k1)};
+                // the cells of the general path: KUBC's boundary rows and
+                // end cells, the periodic wrap
+                const bool boundary_row
+                  = dirichlet
+                    && (j == 0 || k == 0 || j + 1 == g.n[1] || k + 1 == g.n[2]);
+                const unsigned int first = boundary_row ? g.n[0]
+                                           : dirichlet  ? 1
+                                                        : 0;
+                const unsigned int last
+                  = boundary_row
+                      ? g.n[0]
+                      : (dirichlet || g.periodic ? g.n[0] - 1 : g.n[0]);
+                for (unsigned int i = 0; i < std::min(first, g.n[0]); ++i)
+                  general_cell(in, out, i, j, k, ids[cell + i]);
+                for (unsigned int i = first; i < last;)
+                  {
+                    const std::uint32_t m     = ids[cell + i];
+                    unsigned int        count = 1;
+                    while (count < 4 && i + count < last
+                           && ids[cell + i + count] == m)
+                      ++count;
+                    const Number *K = matrices[m].data();
+                    switch (count)
+                      {
+                        case 4:
+                          row_cells<4>(K, in, out, row, i);
+                          break;
+                        case 3:
+                          row_cells<3>(K, in, out, row, i);
+                          break;
+                        case 2:
+                          row_cells<2>(K, in, out, row, i);
+                          break;
+                        default:
+                          row_cells<1>(K, in, out, row, i);
+                      }
+                    i += count;
+                  }
+                for (unsigned int i = std::max(last, first); i < g.n[0]; ++i)
+                  general_cell(in, out, i, j, k, ids[cell + i]);
+              }
           dst.compress(dealii::VectorOperation::add);
           for (const std::size_t k : constrained_owned)
             for (unsigned int c = 0; c < 3; ++c)
@@ -298,6 +352,75 @@ namespace tribodyn
           if (!had_ghosts)
             src.zero_out_ghost_values();
         }
+
+        /// @p count consecutive cells from (i, row) of the element matrix
+        /// @p K, their nodes within the rows @p row.
+        template <unsigned int count>
+        static void
+        row_cells(const Number      *K,
+                  const Number      *in,
+                  Number            *out,
+                  const std::size_t *row,
+                  const unsigned int i)
+        {
+          Number x[count][n_dofs], y[count][n_dofs];
+          for (unsigned int t = 0; t < count; ++t)
+            for (unsigned int r = 0; r < 4; ++r)
+              std::memcpy(&x[t][6 * r],
+                          in + row[r] + 3 * (i + t),
+                          6 * sizeof(Number));
+          if constexpr (count == 1)
+            multiply_element_matrix<Number, n_dofs>(K, x[0], y[0]);
+          else
+            multiply_element_matrices<Number, n_dofs, count>(K, x, y);
+          for (unsigned int t = 0; t < count; ++t)
+            for (unsigned int r = 0; r < 4; ++r)
+              for (unsigned int a = 0; a < 6; ++a)
+                out[row[r] + 3 * (i + t) + a] += y[t][6 * r + a];
+        }
+
+        /// One cell by its vertices' indices, with KUBC's constraints.
+        void
+        general_cell(const Number       *in,
+                     Number             *out,
+                     const unsigned int  i,
+                     const unsigned int  j,
+                     const unsigned int  k,
+                     const std::uint32_t m) const
+        {
+          const auto          v    = grid->vertices(i, j, k);
+          const std::uint32_t mask = constraint_mask(i, j, k);
+          Number              x[n_dofs], y[n_dofs];
+          for (unsigned int q = 0; q < n_vertices; ++q)
+            for (unsigned int c = 0; c < 3; ++c)
+              x[3 * q + c] = ((mask >> (3 * q)) & 1u) ? 0 : in[v[q] + c];
+          multiply_element_matrix<Number, n_dofs>(matrices[m].data(), x, y);
+          for (unsigned int q = 0; q < n_vertices; ++q)
+            if (!((mask >> (3 * q)) & 1u))
+              for (unsigned int c = 0; c < 3; ++c)
+                out[v[q] + c] += y[3 * q + c];
+        }
+
+        /// KUBC: bit 3 v + c set for the components of the cell's vertices
+        /// v on the boundary.
+        std::uint32_t
+        constraint_mask(const unsigned int i,
+                        const unsigned int j,
+                        const unsigned int k) const
+        {
+          const VoxelGrid &g    = *grid;
+          std::uint32_t    mask = 0;
+          if (dirichlet
+              && (i == 0 || j == 0 || k == 0 || i + 1 == g.n[0]
+                  || j + 1 == g.n[1] || k + 1 == g.n[2]))
+            for (unsigned int q = 0; q < n_vertices; ++q)
+              if (g.on_boundary(i + (q & 1),
+                                j + ((q >> 1) & 1),
+                                k + ((q >> 2) & 1)))
+                mask |= 7u << (3 * q);
+          return mask;
+        }
+
         void
         Tvmult(GridVector<Number> &dst, const GridVector<Number> &src) const
         {
@@ -319,7 +442,7 @@ namespace tribodyn
             for (unsigned int q = 0; q < n_vertices; ++q)
               for (unsigned int c = 0; c < 3; ++c)
                 {
-                  const unsigned int i = n_vertices * c + q;
+                  const unsigned int i = 3 * q + c;
                   if (!((mask >> i) & 1u))
                     out[v[q] + c] += matrices[m][(n_dofs + 1) * i];
                 }
@@ -495,7 +618,7 @@ namespace tribodyn
         {
           const unsigned int n_levels = levels.grids.size();
           fine.initialize(levels.grids[0], levels.cell_matrix[0], kubc);
-          fine.matrices = levels.matrices[0];
+          fine.set_matrices(levels.matrices[0]);
           operators.resize(n_levels);
           smoothers.resize(n_levels);
           r.resize(n_levels);
@@ -505,13 +628,7 @@ namespace tribodyn
             {
               auto &op = operators[l];
               op.initialize(levels.grids[l], levels.cell_matrix[l], kubc);
-              for (const auto &K : levels.matrices[l])
-                {
-                  std::array<LevelNumber, n_dofs * n_dofs> k;
-                  for (unsigned int i = 0; i < k.size(); ++i)
-                    k[i] = LevelNumber(K[i]);
-                  op.matrices.push_back(k);
-                }
+              op.set_matrices(levels.matrices[l]);
               op.initialize_dof_vector(r[l]);
               op.initialize_dof_vector(b[l]);
               op.initialize_dof_vector(x[l]);
@@ -541,9 +658,9 @@ namespace tribodyn
           fine.initialize_dof_vector(rhs);
           std::vector<std::array<double, n_dofs>> loads;
           const auto                             &g = levels.grids[0];
-          for (unsigned int m = 0; m < fine.matrices.size(); ++m)
+          for (unsigned int m = 0; m < levels.matrices[0].size(); ++m)
             loads.push_back(
-              Element::element_load(fine.matrices[m],
+              Element::element_load(levels.matrices[0][m],
                                     entries(stiffness[levels.fine_phase[m]]),
                                     load,
                                     strain_driven,
@@ -557,10 +674,9 @@ namespace tribodyn
             for (unsigned int q = 0; q < n_vertices; ++q)
               for (unsigned int c = 0; c < 3; ++c)
                 {
-                  const unsigned int i = n_vertices * c + q;
-                  const double       f = loads[m][i];
+                  const double f = loads[m][n_vertices * c + q];
                   scale += f * f;
-                  if (!((mask >> i) & 1u))
+                  if (!((mask >> (3 * q + c)) & 1u))
                     out[v[q] + c] += f;
                 }
           });
