@@ -373,10 +373,23 @@ namespace tribodyn
             multiply_element_matrix<Number, n_dofs>(K, x[0], y[0]);
           else
             multiply_element_matrices<Number, n_dofs, count>(K, x, y);
-          for (unsigned int t = 0; t < count; ++t)
-            for (unsigned int r = 0; r < 4; ++r)
-              for (unsigned int a = 0; a < 6; ++a)
-                out[row[r] + 3 * (i + t) + a] += y[t][6 * r + a];
+          // node i + s of a row gets its left cell's (s - 1) right vertex
+          // and its right cell's (s) left vertex: each node added once
+          for (unsigned int r = 0; r < 4; ++r)
+            {
+              Number node[3 * (count + 1)];
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  node[c]             = y[0][6 * r + c];
+                  node[3 * count + c] = y[count - 1][6 * r + 3 + c];
+                }
+              for (unsigned int t = 1; t < count; ++t)
+                for (unsigned int c = 0; c < 3; ++c)
+                  node[3 * t + c] = y[t][6 * r + c] + y[t - 1][6 * r + 3 + c];
+              Number *o = out + row[r] + 3 * i;
+              for (unsigned int a = 0; a < 3 * (count + 1); ++a)
+                o[a] += node[a];
+            }
         }
 
         /// One cell by its vertices' indices, with KUBC's constraints.
@@ -969,37 +982,81 @@ namespace tribodyn
         }
 
         /// v -= R G^-1 R^T v: the l2 projection on the complement of the
-        /// rigid motions.
+        /// rigid motions. R^T v from the sums of v_c and of v_c y_d over
+        /// the owned nodes (y the position relative to the centre: the
+        /// rotation about axis e, components a = e + 1 and b = e + 2,
+        /// gives sum y_a v_b - y_b v_a), the motion to subtract as
+        /// t + W y: one pass each, with the coordinates by the rows.
         template <typename Number>
         void
         project(GridVector<Number> &v) const
         {
-          double s[6] = {};
-          for_each_owned_node([&](const std::size_t k, const double *y) {
-            double m[6][3];
-            rigid_motions(y, m);
-            for (unsigned int a = 0; a < n_rigid; ++a)
-              for (unsigned int c = 0; c < 3; ++c)
-                s[a] += m[a][c] * double(v.local_element(k + c));
-          });
-          dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(s, 6),
-                                      comm,
-                                      dealii::ArrayView<double>(s, 6));
-          double alpha[6] = {};
-          for (unsigned int a = 0; a < n_rigid; ++a)
-            for (unsigned int b = 0; b < n_rigid; ++b)
-              alpha[a] += gram_inverse(a, b) * s[b];
-          for_each_owned_node([&](const std::size_t k, const double *y) {
-            double m[6][3];
-            rigid_motions(y, m);
-            for (unsigned int c = 0; c < 3; ++c)
+          const VoxelGrid &g        = levels.grids[0];
+          Number          *values   = v.begin();
+          double           sums[12] = {}; // S_c, then M_cd = sum v_c y_d
+          for (unsigned int k = g.kb; k < g.ke; ++k)
+            for (unsigned int j = 0; j < g.nn[1]; ++j)
               {
-                double sum = 0;
-                for (unsigned int a = 0; a < n_rigid; ++a)
-                  sum += alpha[a] * m[a][c];
-                v.local_element(k + c) -= Number(sum);
+                const Number *row  = values + g.local(0, j, k);
+                double        s[3] = {}, m[3] = {};
+                for (unsigned int i = 0; i < g.nn[0]; ++i)
+                  {
+                    const double y0 = i * g.h[0] - centre[0];
+                    for (unsigned int c = 0; c < 3; ++c)
+                      {
+                        s[c] += row[3 * i + c];
+                        m[c] += row[3 * i + c] * y0;
+                      }
+                  }
+                const double y1 = j * g.h[1] - centre[1],
+                             y2 = k * g.h[2] - centre[2];
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    sums[c] += s[c];
+                    sums[3 + 3 * c] += m[c];
+                    sums[4 + 3 * c] += s[c] * y1;
+                    sums[5 + 3 * c] += s[c] * y2;
+                  }
               }
-          });
+          dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 12),
+                                      comm,
+                                      dealii::ArrayView<double>(sums, 12));
+          const auto M = [&](const unsigned int c, const unsigned int d) {
+            return sums[3 + 3 * c + d];
+          };
+          double rt[6] = {sums[0], sums[1], sums[2]};
+          for (unsigned int axis = 0; axis + 3 < n_rigid; ++axis)
+            {
+              const unsigned int a = (axis + 1) % 3, b = (axis + 2) % 3;
+              rt[3 + axis] = M(b, a) - M(a, b);
+            }
+          double alpha[6] = {};
+          for (unsigned int p = 0; p < n_rigid; ++p)
+            for (unsigned int q = 0; q < n_rigid; ++q)
+              alpha[p] += gram_inverse(p, q) * rt[q];
+          double W[3][3] = {};
+          for (unsigned int axis = 0; axis + 3 < n_rigid; ++axis)
+            {
+              const unsigned int a = (axis + 1) % 3, b = (axis + 2) % 3;
+              W[a][b] -= alpha[3 + axis];
+              W[b][a] += alpha[3 + axis];
+            }
+          for (unsigned int k = g.kb; k < g.ke; ++k)
+            for (unsigned int j = 0; j < g.nn[1]; ++j)
+              {
+                Number      *row = values + g.local(0, j, k);
+                const double y1  = j * g.h[1] - centre[1],
+                             y2  = k * g.h[2] - centre[2];
+                double t[3];
+                for (unsigned int c = 0; c < 3; ++c)
+                  t[c] = alpha[c] + W[c][1] * y1 + W[c][2] * y2;
+                for (unsigned int i = 0; i < g.nn[0]; ++i)
+                  {
+                    const double y0 = i * g.h[0] - centre[0];
+                    for (unsigned int c = 0; c < 3; ++c)
+                      row[3 * i + c] -= Number(t[c] + W[c][0] * y0);
+                  }
+              }
         }
 
         const VoxelGridLevels                 &levels;
