@@ -261,18 +261,19 @@ VOLUME_PRM = os.path.join(ROOT, "bench", "homogenization", "volume_128.prm")
 def volume(args):
     contrasts = args.contrasts or [None]
     print("| voxels | " + ("contrast | " if args.contrasts else "")
-          + "DoFs | ranks | preconditioner | wall time (s) | "
+          + "DoFs | ranks | preconditioner | grid | wall time (s) | "
           + " | ".join("%s: iterations, time (s)" % bc
                        for bc in args.conditions.split(", "))
           + " | B per DoF | core-ns per DoF and iteration | load |")
-    print("|---" * (8 + bool(args.contrasts) + len(args.conditions.split(", ")))
+    print("|---" * (9 + bool(args.contrasts) + len(args.conditions.split(", ")))
           + "|")
     for n, contrast in [(n, c) for n in args.sizes for c in contrasts]:
         overrides = ["subsection Morphology"]
         overrides += ["  set Voxels in %s = %d" % (axis, n) for axis in "xyz"]
         overrides += ["end", "subsection Cell problem",
                       "  set Boundary conditions = " + args.conditions,
-                      "  set Preconditioner = " + args.preconditioner, "end"]
+                      "  set Preconditioner = " + args.preconditioner,
+                      "  set Grid = " + args.grid, "end"]
         name = "volume_%d" % n
         if contrast is not None:
             overrides += ["subsection Materials", "  subsection Matrix",
@@ -294,8 +295,9 @@ def volume(args):
                                        r["wall_time_s"]))
             solve_time += r["wall_time_s"]
             iterations += sum(its)
-        print("| %d³ | %s%d | %d | %s | %.1f | %s | %.0f | %.0f | %s |" % (
-            n, "" if contrast is None else "%g | " % contrast, s["n_dofs"], s["n_mpi_ranks"], args.preconditioner, elapsed,
+        print("| %d³ | %s%d | %d | %s | %s | %.1f | %s | %.0f | %.0f | %s |" % (
+            n, "" if contrast is None else "%g | " % contrast, s["n_dofs"], s["n_mpi_ranks"], args.preconditioner,
+            s.get("grid", "mesh"), elapsed,
             " | ".join(cells), s["memory_bytes_per_dof"],
             1e9 * solve_time / (s["n_dofs"] * max(iterations, 1)) * s["n_mpi_ranks"],
             load), flush=True)
@@ -313,6 +315,8 @@ if __name__ == "__main__":
     parser.add_argument("--ranks", type=int, default=2)
     parser.add_argument("--sizes", type=int, nargs="+", default=[16, 32, 64, 128])
     parser.add_argument("--preconditioner", default="multigrid")
+    parser.add_argument("--grid", default="auto",
+                        help="Cell problem/Grid of the volume study: auto, mesh or 'voxel grid'")
     parser.add_argument("--conditions", default="KUBC, SUBC, periodic")
     parser.add_argument("--contrasts", type=float, nargs="+", default=[])
     args = parser.parse_args()

@@ -488,41 +488,15 @@ namespace tribodyn
         /// The coarsest grid's assembled matrix (all ranks, unconstrained).
         dealii::FullMatrix<double> coarse_matrix;
 
+        /// The grids (not periodic) and their element matrices.
         VoxelGridLevels(const MPI_Comm                   comm,
                         const VoxelVolume               &volume,
-                        const std::vector<VoigtMatrix6> &stiffness,
-                        const bool                       periodic)
-            : periodic(periodic)
+                        const std::vector<VoigtMatrix6> &stiffness)
+            : comm(comm)
+            , volume(volume)
         {
-          std::array<unsigned int, 3> n;
-          std::array<double, 3>       h;
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              n[d] = volume.n_voxels(d);
-              h[d] = volume.voxel_size(d);
-            }
-          const unsigned int levels = n_grids(n);
-          AssertThrow(levels > 0, dealii::ExcInternalError());
-          // The ranks' slabs: balanced cell planes on the finest grid, each
-          // coarser grid's boundaries the finer ones halved (rounded up),
-          // so that a rank's fine planes read the coarse planes of its slab
-          // and the two next to it.
-          const unsigned int R = dealii::Utilities::MPI::n_mpi_processes(comm);
-          const unsigned int r = dealii::Utilities::MPI::this_mpi_process(comm);
-          const unsigned int planes = periodic ? n[2] : n[2] + 1;
-          unsigned int       kb     = std::size_t(r) * n[2] / R;
-          unsigned int ke = r + 1 == R ? planes : std::size_t(r + 1) * n[2] / R;
-          for (unsigned int l = 0; l < levels; ++l)
-            {
-              grids.emplace_back(n, h, periodic, kb, ke, comm);
-              for (unsigned int d = 0; d < 3; ++d)
-                {
-                  n[d] /= 2;
-                  h[d] *= 2;
-                }
-              kb = (kb + 1) / 2;
-              ke = (ke + 1) / 2;
-            }
+          make_grids(false);
+          const unsigned int levels = grids.size();
 
           // The element matrices of the owned cells of every grid.
           const StiffnessOverBox<3> stiffness_of_box =
@@ -570,8 +544,64 @@ namespace tribodyn
                     }
             }
 
-          // The coarsest grid's matrix: each rank adds its cells', the sum
-          // over the ranks on every rank.
+          assemble_coarse_matrix();
+        }
+
+        /// Switch the grids to periodic or not: their nodes, slabs and the
+        /// coarsest matrix change, the cells and their matrices do not (the
+        /// owned cell planes are the same).
+        void
+        set_periodic(const bool p)
+        {
+          if (p == periodic)
+            return;
+          make_grids(p);
+          assemble_coarse_matrix();
+        }
+
+      private:
+        /// The grids of 2^l voxels while they coarsen (n_grids()). The
+        /// ranks' slabs: balanced cell planes on the finest grid, each
+        /// coarser grid's boundaries the finer ones halved (rounded up),
+        /// so that a rank's fine planes read the coarse planes of its slab
+        /// and the two next to it.
+        void
+        make_grids(const bool p)
+        {
+          periodic = p;
+          grids.clear();
+          std::array<unsigned int, 3> n;
+          std::array<double, 3>       h;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              n[d] = volume.n_voxels(d);
+              h[d] = volume.voxel_size(d);
+            }
+          const unsigned int levels = n_grids(n);
+          AssertThrow(levels > 0, dealii::ExcInternalError());
+          const unsigned int R = dealii::Utilities::MPI::n_mpi_processes(comm);
+          const unsigned int r = dealii::Utilities::MPI::this_mpi_process(comm);
+          const unsigned int planes = periodic ? n[2] : n[2] + 1;
+          unsigned int       kb     = std::size_t(r) * n[2] / R;
+          unsigned int ke = r + 1 == R ? planes : std::size_t(r + 1) * n[2] / R;
+          for (unsigned int l = 0; l < levels; ++l)
+            {
+              grids.emplace_back(n, h, periodic, kb, ke, comm);
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  n[d] /= 2;
+                  h[d] *= 2;
+                }
+              kb = (kb + 1) / 2;
+              ke = (ke + 1) / 2;
+            }
+        }
+
+        /// The coarsest grid's matrix: each rank adds its cells', the sum
+        /// over the ranks on every rank.
+        void
+        assemble_coarse_matrix()
+        {
           const VoxelGrid &c = grids.back();
           coarse_matrix.reinit(c.size(), c.size());
           std::size_t cell = 0;
@@ -602,6 +632,9 @@ namespace tribodyn
             dealii::ArrayView<double>(&coarse_matrix(0, 0),
                                       coarse_matrix.n_elements()));
         }
+
+        MPI_Comm           comm;
+        const VoxelVolume &volume;
       };
 
 
@@ -1239,14 +1272,11 @@ namespace tribodyn
     {
       const auto start    = std::chrono::steady_clock::now();
       const bool periodic = bc == BoundaryCondition::periodic;
-      if (!levels || levels->periodic != periodic)
-        {
-          levels.reset();
-          levels = std::make_unique<internal::VoxelGridLevels>(comm,
-                                                               volume,
-                                                               stiffness,
-                                                               periodic);
-        }
+      if (!levels)
+        levels = std::make_unique<internal::VoxelGridLevels>(comm,
+                                                             volume,
+                                                             stiffness);
+      levels->set_periodic(periodic);
       CellResult<3> result;
       result.boundary_condition = bc;
       result.multigrid          = true;
