@@ -43,17 +43,7 @@ subsection Morphology
   set Radius          = 3
   set Seed            = 1
 end
-subsection Materials
-  subsection Matrix
-    set Young modulus = 3e9
-    set Poisson ratio = 0.35
-  end
-  subsection Heterogeneity
-    set Young modulus = 70e9
-    set Poisson ratio = 0.22
-  end
-end
-subsection Cell problem
+""" + v.GLASS_EPOXY_MATERIALS + """subsection Cell problem
   set Boundary conditions = KUBC, SUBC, periodic
   set Solver tolerance    = 1e-10
   set Grid                = %s
@@ -62,7 +52,7 @@ subsection Output
   set Write slices     = false
   set Write morphology = false
 end
-""" % grid
+""".replace("%s", grid)
 
 
 mesh = v.run(tribodyn, os.path.join(work, "mesh"), prm("mesh"))
