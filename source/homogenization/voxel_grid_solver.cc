@@ -434,11 +434,6 @@ namespace tribodyn
           return mask;
         }
 
-        void
-        Tvmult(GridVector<Number> &dst, const GridVector<Number> &src) const
-        {
-          vmult(dst, src);
-        }
 
         void
         compute_inverse_diagonal()

@@ -220,16 +220,18 @@ namespace tribodyn
         }
       bins.resize(std::size_t(n_bins[0]) * n_bins[1] * n_bins[2]);
       // the bins b - 1, b, b + 1 along one axis (periodic), each once
-      const auto neighbour_bins
-        = [](const unsigned int b, const unsigned int n_bins) {
-            std::vector<unsigned int> list;
-            if (n_bins <= 3)
-              for (unsigned int k = 0; k < n_bins; ++k)
-                list.push_back(k);
-            else
-              list = {(b + n_bins - 1) % n_bins, b, (b + 1) % n_bins};
-            return list;
-          };
+      struct Neighbours
+      {
+        unsigned int bin[3];
+        unsigned int n;
+      };
+      const auto neighbour_bins = [](const unsigned int b,
+                                     const unsigned int n_bins) {
+        return n_bins <= 3
+                 ? Neighbours{{0, 1, 2}, n_bins}
+                 : Neighbours{{(b + n_bins - 1) % n_bins, b, (b + 1) % n_bins},
+                              3};
+      };
       while (centres.size() < n_target && attempts < max_attempts)
         {
           ++attempts;
@@ -250,11 +252,17 @@ namespace tribodyn
           unsigned int b[3];
           for (unsigned int d = 0; d < 3; ++d)
             b[d] = bin_of(c, d);
-          for (const unsigned int bz : neighbour_bins(b[2], n_bins[2]))
-            for (const unsigned int by : neighbour_bins(b[1], n_bins[1]))
-              for (const unsigned int bx : neighbour_bins(b[0], n_bins[0]))
+          Neighbours around[3];
+          for (unsigned int d = 0; d < 3; ++d)
+            around[d] = neighbour_bins(b[d], n_bins[d]);
+          for (unsigned int z = 0; z < around[2].n; ++z)
+            for (unsigned int y = 0; y < around[1].n; ++y)
+              for (unsigned int x = 0; x < around[0].n; ++x)
                 for (const unsigned int o :
-                     bins[(std::size_t(bz) * n_bins[1] + by) * n_bins[0] + bx])
+                     bins[(std::size_t(around[2].bin[z]) * n_bins[1]
+                           + around[1].bin[y])
+                            * n_bins[0]
+                          + around[0].bin[x]])
                   near.push_back(o);
           std::sort(near.begin(), near.end());
           bool free = true;
