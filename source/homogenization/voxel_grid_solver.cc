@@ -17,6 +17,9 @@
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#ifdef __AVX2__
+#  include <immintrin.h>
+#endif
 #include <map>
 #include <sstream>
 #include <tribodyn/homogenization/voxel_grid_solver.h>
@@ -58,6 +61,17 @@ namespace tribodyn
               ++levels;
             }
           return 3 * nodes() <= max_coarse_dofs ? levels : 0;
+        }
+
+        /// The upper triangle of @p C, as the element matrices take it.
+        Element::StiffnessEntries
+        entries(const VoigtMatrix6 &C)
+        {
+          Element::StiffnessEntries e;
+          for (unsigned int i = 0; i < 6; ++i)
+            for (unsigned int j = i; j < 6; ++j)
+              e[Element::entry(i, j)] = C[i][j];
+          return e;
         }
       } // namespace
 
@@ -180,6 +194,244 @@ namespace tribodyn
 
 
       /**
+       * The finest grid's operator node by node: each owned node's three
+       * rows of the assembled matrix, a 27-node stencil of 3 x 3 blocks,
+       * depend only on its eight cells' phases (and, for KUBC, on which
+       * of its neighbours are on the boundary: their columns are zero). A
+       * volume of a few phases has a few hundred such configurations; each
+       * node keeps the index of its own. Applying the stencil reads the
+       * nine rows of nodes around the node, three consecutive nodes (nine
+       * Numbers) of each, and writes the node's three values once: no
+       * element products, no scatter, no ghost contributions to send back
+       * (doc/theory/homogenization.md, "The voxel grid without a mesh").
+       */
+      struct NodeStencils
+      {
+        /// The configuration of KUBC's boundary nodes: identity rows.
+        static constexpr std::uint32_t identity = ~std::uint32_t(0);
+        /// Per configuration and row of nodes (dy, dz) (rp = (dy + 1) +
+        /// 3 (dz + 1)), 28 coefficients: for each output component a the
+        /// first eight of the segment s = 3 (dx + 1) + b (the input
+        /// component b of the node dx = -1, 0, 1), then the ninth (s = 8)
+        /// of the three components and a zero (index()).
+        static constexpr unsigned int n_coefficients = 9 * 28;
+        static constexpr unsigned int
+        index(const unsigned int rp, const unsigned int a, const unsigned int s)
+        {
+          return 28 * rp + (s < 8 ? 8 * a + s : 24 + a);
+        }
+
+        /// Per owned node (x fastest, then y, then z) its configuration.
+        std::vector<std::uint32_t>                      config;
+        std::vector<std::array<double, n_coefficients>> table;
+        static_assert(sizeof(std::array<double, n_coefficients>)
+                        == n_coefficients * sizeof(double),
+                      "the table is read as one array");
+
+        /// The stencils of the owned nodes of @p g, whose cell (i, j, k)
+        /// has the element matrix @p K[phase(i, j, k)]; none (empty()) if
+        /// the volume has more than @p max_configurations of them.
+        template <class Phase>
+        NodeStencils(const VoxelGrid                                   &g,
+                     const std::vector<Element::ElementMatrix<double>> &K,
+                     const Phase                                       &phase,
+                     const bool                                         kubc,
+                     const std::size_t max_configurations)
+        {
+          constexpr std::uint32_t absent = ~std::uint32_t(0);
+          // the key: the phases of the eight cells around the node (x
+          // fastest; absent outside a non-periodic box) and the mask of
+          // its constrained neighbours (KUBC)
+          using Key = std::array<std::uint32_t, 9>;
+          std::map<Key, std::uint32_t> index_of;
+          Key                          last{};
+          std::uint32_t                last_index = identity;
+          auto wrap = [&](const int i, const unsigned int d) -> int {
+            if (g.periodic)
+              return (i + int(g.n[d])) % int(g.n[d]);
+            return (i < 0 || i >= int(g.n[d])) ? -1 : i;
+          };
+          config.reserve(std::size_t(g.ke - g.kb) * g.nn[0] * g.nn[1]);
+          for (unsigned int k = g.kb; k < g.ke; ++k)
+            for (unsigned int j = 0; j < g.nn[1]; ++j)
+              for (unsigned int i = 0; i < g.nn[0]; ++i)
+                {
+                  if (kubc && g.on_boundary(i, j, k))
+                    {
+                      config.push_back(identity);
+                      continue;
+                    }
+                  Key key{};
+                  for (unsigned int c = 0; c < 8; ++c)
+                    {
+                      const int x = wrap(int(i) - 1 + (c & 1), 0),
+                                y = wrap(int(j) - 1 + ((c >> 1) & 1), 1),
+                                z = wrap(int(k) - 1 + ((c >> 2) & 1), 2);
+                      key[c]
+                        = (x < 0 || y < 0 || z < 0) ? absent : phase(x, y, z);
+                    }
+                  if (kubc)
+                    for (unsigned int nb = 0; nb < 27; ++nb)
+                      if (g.on_boundary(i + nb % 3 - 1,
+                                        j + (nb / 3) % 3 - 1,
+                                        k + nb / 9 - 1))
+                        key[8] |= 1u << nb;
+                  if (key != last || last_index == identity)
+                    {
+                      const auto [it, inserted]
+                        = index_of.emplace(key, table.size());
+                      if (inserted)
+                        {
+                          if (table.size() == max_configurations)
+                            {
+                              config.clear();
+                              table.clear();
+                              return;
+                            }
+                          table.push_back(stencil(key, K));
+                        }
+                      last       = key;
+                      last_index = it->second;
+                    }
+                  config.push_back(last_index);
+                }
+        }
+
+        bool
+        empty() const
+        {
+          return table.empty();
+        }
+
+      private:
+        /// The stencil of the cells' phases and constrained neighbours
+        /// @p key: each cell c adds the rows of the node's vertex in it (v,
+        /// opposite to c) against its vertices w, the neighbours
+        /// dx = (c & 1) - 1 + (w & 1), ...
+        static std::array<double, n_coefficients>
+        stencil(const std::array<std::uint32_t, 9>                &key,
+                const std::vector<Element::ElementMatrix<double>> &K)
+        {
+          std::array<double, n_coefficients> S{};
+          for (unsigned int c = 0; c < 8; ++c)
+            {
+              if (key[c] == ~std::uint32_t(0))
+                continue;
+              const auto        &Kc = K[key[c]];
+              const unsigned int v  = 7 - c;
+              for (unsigned int w = 0; w < 8; ++w)
+                {
+                  const unsigned int dx = (c & 1) + (w & 1),
+                                     dy = ((c >> 1) & 1) + ((w >> 1) & 1),
+                                     dz = ((c >> 2) & 1) + ((w >> 2) & 1);
+                  if ((key[8] >> (dx + 3 * dy + 9 * dz)) & 1u)
+                    continue;
+                  const unsigned int rp = dy + 3 * dz;
+                  for (unsigned int a = 0; a < 3; ++a)
+                    for (unsigned int b = 0; b < 3; ++b)
+                      S[index(rp, a, 3 * dx + b)]
+                        += Kc[n_dofs * (n_vertices * a + v) + n_vertices * b
+                              + w];
+                }
+            }
+          return S;
+        }
+      };
+
+
+      /**
+       * y (3 values) = the stencil @p S applied to the nine segments @p x
+       * (each three consecutive nodes' nine values; NodeStencils'
+       * layout): per segment, the first eight values in one vector times
+       * each output component's coefficients, the ninth alone; two
+       * partial sums, so that the chains of dependent multiply-adds are
+       * short. Any precision (double: CG's operator).
+       */
+      template <typename Number>
+      inline void
+      apply_stencil(const Number *S, const Number *const *x, Number *y)
+      {
+        typedef Number Segment __attribute__((vector_size(8 * sizeof(Number))));
+        Segment        sum[2][3] = {};
+        Number         last[3]   = {};
+#pragma GCC unroll 9
+        for (unsigned int rp = 0; rp < 9; ++rp)
+          {
+            Segment values;
+            std::memcpy(&values, x[rp], sizeof(Segment));
+            const Number ninth = x[rp][8];
+#pragma GCC unroll 3
+            for (unsigned int a = 0; a < 3; ++a)
+              {
+                Segment coefficients;
+                std::memcpy(&coefficients,
+                            S + 28 * rp + 8 * a,
+                            sizeof(Segment));
+                sum[rp & 1][a] += coefficients * values;
+                last[a] += S[28 * rp + 24 + a] * ninth;
+              }
+          }
+        for (unsigned int a = 0; a < 3; ++a)
+          {
+            const Segment s = sum[0][a] + sum[1][a];
+            Number        r = last[a];
+            for (unsigned int l = 0; l < 8; ++l)
+              r += s[l];
+            y[a] = r;
+          }
+      }
+
+
+      /**
+       * The same in single precision (the V-cycle's) with AVX2: the ninth
+       * values times the three components' coefficients at once, and the
+       * eight-wide sums of the three components reduced together
+       * (horizontal adds). (The compiler's own vectorization of the
+       * generic version spent more on shuffles than on the products.)
+       */
+      inline void
+      apply_stencil(const float *S, const float *const *x, float *y)
+      {
+#ifdef __AVX2__
+        __m256 sum[2][3];
+        __m128 last[2];
+        for (unsigned int p = 0; p < 2; ++p)
+          {
+            for (unsigned int a = 0; a < 3; ++a)
+              sum[p][a] = _mm256_setzero_ps();
+            last[p] = _mm_setzero_ps();
+          }
+#  pragma GCC unroll 9
+        for (unsigned int rp = 0; rp < 9; ++rp)
+          {
+            const __m256 values = _mm256_loadu_ps(x[rp]);
+            const __m128 ninth  = _mm_broadcast_ss(x[rp] + 8);
+            const float *s      = S + 28 * rp;
+#  pragma GCC unroll 3
+            for (unsigned int a = 0; a < 3; ++a)
+              sum[rp & 1][a] = _mm256_fmadd_ps(_mm256_loadu_ps(s + 8 * a),
+                                               values,
+                                               sum[rp & 1][a]);
+            last[rp & 1]
+              = _mm_fmadd_ps(_mm_loadu_ps(s + 24), ninth, last[rp & 1]);
+          }
+        const __m256 s0 = _mm256_add_ps(sum[0][0], sum[1][0]),
+                     s1 = _mm256_add_ps(sum[0][1], sum[1][1]),
+                     s2 = _mm256_add_ps(sum[0][2], sum[1][2]);
+        // [s0, s1, s2, s2] in each half, then the halves added
+        const __m256 h
+          = _mm256_hadd_ps(_mm256_hadd_ps(s0, s1), _mm256_hadd_ps(s2, s2));
+        const __m128 r = _mm_add_ps(_mm_add_ps(_mm256_castps256_ps128(h),
+                                               _mm256_extractf128_ps(h, 1)),
+                                    _mm_add_ps(last[0], last[1]));
+        _mm_storel_pi(reinterpret_cast<__m64 *>(y), r);
+        y[2] = _mm_cvtss_f32(_mm_movehl_ps(r, r));
+#else
+        apply_stencil<float>(S, x, y);
+#endif
+      }
+
+      /**
        * The elasticity operator of one grid: the cells' element matrices
        * (one per distinct index), applied cell by cell; KUBC's boundary
        * nodes as identity rows (read as zero by the cells). What
@@ -195,6 +447,14 @@ namespace tribodyn
         std::vector<std::size_t>                         constrained_owned;
         std::shared_ptr<dealii::DiagonalMatrix<GridVector<Number>>>
           inverse_diagonal;
+        /// If set (the finest grid), vmult() applies these node by node
+        /// instead of the cells' element matrices.
+        std::shared_ptr<const NodeStencils> stencils;
+        /// Their coefficients in Number, NodeStencils::n_coefficients per
+        /// configuration (the table itself in double, a copy in float);
+        /// a row of zeros for the rows outside the box.
+        const Number       *coefficients = nullptr;
+        std::vector<Number> coefficients_copy, zero_row;
 
         void
         initialize(const VoxelGrid                  &g,
@@ -273,6 +533,25 @@ namespace tribodyn
           return 3 * (i % n_vertices) + i / n_vertices;
         }
 
+        /// Apply @p node_stencils (of this grid) in vmult().
+        void
+        use_stencils(const std::shared_ptr<const NodeStencils> &node_stencils)
+        {
+          stencils = node_stencils;
+          if constexpr (std::is_same_v<Number, double>)
+            coefficients = stencils->table.front().data();
+          else
+            {
+              coefficients_copy.clear();
+              for (const auto &S : stencils->table)
+                coefficients_copy.insert(coefficients_copy.end(),
+                                         S.begin(),
+                                         S.end());
+              coefficients = coefficients_copy.data();
+            }
+          zero_row.assign(3 * grid->nn[0] + 8, Number(0));
+        }
+
         /**
          * dst = A src. The cells go row by row (x fastest); a cell's eight
          * vertices are two consecutive nodes in each of four node rows, so
@@ -286,6 +565,11 @@ namespace tribodyn
         void
         vmult(GridVector<Number> &dst, const GridVector<Number> &src) const
         {
+          if (stencils)
+            {
+              vmult_by_nodes(dst, src);
+              return;
+            }
           const bool had_ghosts = src.has_ghost_elements();
           if (!had_ghosts)
             src.update_ghost_values();
@@ -349,6 +633,86 @@ namespace tribodyn
           for (const std::size_t k : constrained_owned)
             for (unsigned int c = 0; c < 3; ++c)
               out[k + c] = in[k + c];
+          if (!had_ghosts)
+            src.zero_out_ghost_values();
+        }
+
+        /**
+         * dst = A src by the node stencils: each owned node's three values
+         * from the nine rows of nodes around it (the ghost planes next to
+         * the slab; wrapped on the periodic grid; zeros outside the box);
+         * the nodes at the ends of a row read their segments from a copy
+         * (wrapped or zero), the others straight from the rows.
+         */
+        void
+        vmult_by_nodes(GridVector<Number>       &dst,
+                       const GridVector<Number> &src) const
+        {
+          const bool had_ghosts = src.has_ghost_elements();
+          if (!had_ghosts)
+            src.update_ghost_values();
+          const VoxelGrid     &g      = *grid;
+          const Number        *in     = src.begin();
+          Number              *out    = dst.begin();
+          const std::uint32_t *config = stencils->config.data();
+          const unsigned int   nx     = g.nn[0];
+          auto                 row    = [&](const int j, const int k) {
+            if (g.periodic)
+              return in
+                     + g.local(0,
+                               (j + int(g.nn[1])) % int(g.nn[1]),
+                               (k + int(g.nn[2])) % int(g.nn[2]));
+            if (j < 0 || k < 0 || j >= int(g.nn[1]) || k >= int(g.nn[2]))
+              return zero_row.data();
+            return in + g.local(0, j, k);
+          };
+          std::size_t node = 0;
+          for (unsigned int k = g.kb; k < g.ke; ++k)
+            for (unsigned int j = 0; j < g.nn[1]; ++j)
+              {
+                const Number *rows[9];
+                for (unsigned int rp = 0; rp < 9; ++rp)
+                  rows[rp]
+                    = row(int(j) + int(rp % 3) - 1, int(k) + int(rp / 3) - 1);
+                Number *o = out + g.local(0, j, k);
+                for (unsigned int i = 0; i < nx; ++i, ++node)
+                  {
+                    const std::uint32_t c = config[node];
+                    if (c == NodeStencils::identity)
+                      {
+                        for (unsigned int a = 0; a < 3; ++a)
+                          o[3 * i + a] = rows[4][3 * i + a];
+                        continue;
+                      }
+                    const Number *S
+                      = coefficients
+                        + std::size_t(c) * NodeStencils::n_coefficients;
+                    const Number *x[9];
+                    Number        ends[9][9];
+                    if (i > 0 && i + 1 < nx)
+                      for (unsigned int rp = 0; rp < 9; ++rp)
+                        x[rp] = rows[rp] + 3 * (i - 1);
+                    else
+                      for (unsigned int rp = 0; rp < 9; ++rp)
+                        {
+                          // the row's first or last node: its neighbours
+                          // along x wrapped (periodic) or zero
+                          for (unsigned int s = 0; s < 3; ++s)
+                            {
+                              const int  n      = int(i) + int(s) - 1;
+                              const bool inside = n >= 0 && n < int(nx);
+                              const int  m      = (n + int(nx)) % int(nx);
+                              for (unsigned int a = 0; a < 3; ++a)
+                                ends[rp][3 * s + a] = inside || g.periodic
+                                                        ? rows[rp][3 * m + a]
+                                                        : Number(0);
+                            }
+                          x[rp] = ends[rp];
+                        }
+                    apply_stencil(S, x, o + 3 * i);
+                  }
+              }
+          dst.zero_out_ghost_values();
           if (!had_ghosts)
             src.zero_out_ghost_values();
         }
@@ -443,6 +807,23 @@ namespace tribodyn
           auto &d = inverse_diagonal->get_vector();
           initialize_dof_vector(d);
           Number *out = d.begin();
+          if (stencils)
+            {
+              // the node's own block (rp = 4, dx = 0, b = a)
+              for (std::size_t n = 0; n < stencils->config.size(); ++n)
+                for (unsigned int a = 0; a < 3; ++a)
+                  {
+                    const std::uint32_t c = stencils->config[n];
+                    out[3 * n + a]
+                      = c == NodeStencils::identity
+                          ? Number(1)
+                          : Number(1)
+                              / Number(
+                                stencils
+                                  ->table[c][NodeStencils::index(4, a, 3 + a)]);
+                  }
+              return;
+            }
           for_each_cell([&](const std::array<std::size_t, n_vertices> &v,
                             const std::uint32_t                        m,
                             const std::uint32_t                        mask,
@@ -476,10 +857,9 @@ namespace tribodyn
         bool                                    periodic = false;
         std::vector<VoxelGrid>                  grids;
         std::vector<std::vector<std::uint32_t>> cell_matrix;
-        /// Per grid the distinct element matrices (double).
+        /// Per grid the distinct element matrices (double); on the finest
+        /// one the phases' (its cells' matrix index is their phase).
         std::vector<std::vector<Element::ElementMatrix<double>>> matrices;
-        /// The phase (material id) of each fine element matrix.
-        std::vector<unsigned int> fine_phase;
         /// The coarsest grid's assembled matrix (all ranks, unconstrained).
         dealii::FullMatrix<double> coarse_matrix;
 
@@ -508,6 +888,12 @@ namespace tribodyn
                                                 volume.voxel_size(2)}});
           cell_matrix.resize(levels);
           matrices.resize(levels);
+          for (const VoigtMatrix6 &C : stiffness)
+            matrices[0].push_back(
+              Element::element_matrix(entries(C),
+                                      {{volume.voxel_size(0),
+                                        volume.voxel_size(1),
+                                        volume.voxel_size(2)}}));
           for (unsigned int l = 0; l < levels; ++l)
             {
               const VoxelGrid                      &g = grids[l];
@@ -520,6 +906,11 @@ namespace tribodyn
                 for (unsigned int j = 0; j < g.n[1]; ++j)
                   for (unsigned int i = 0; i < g.n[0]; ++i)
                     {
+                      if (l == 0)
+                        {
+                          cells.push_back(volume.voxel(i, j, k));
+                          continue;
+                        }
                       const dealii::Point<3> lower(i * g.h[0],
                                                    j * g.h[1],
                                                    k * g.h[2]);
@@ -530,16 +921,36 @@ namespace tribodyn
                       const auto [it, inserted]
                         = index_of.emplace(id, matrices[l].size());
                       if (inserted)
-                        {
-                          matrices[l].push_back(galerkin.matrix(l, id));
-                          if (l == 0)
-                            fine_phase.push_back(volume.voxel(i, j, k));
-                        }
+                        matrices[l].push_back(galerkin.matrix(l, id));
                       cells.push_back(it->second);
                     }
             }
 
           assemble_coarse_matrix();
+        }
+
+        /// The finest grid's node stencils (KUBC's or the others'), or
+        /// none if the volume has so many configurations that they would
+        /// take more memory than a few bytes per node.
+        std::shared_ptr<const NodeStencils>
+        fine_stencils(const bool kubc) const
+        {
+          const VoxelGrid  &g = grids[0];
+          const std::size_t owned_nodes
+            = std::size_t(g.ke - g.kb) * g.nn[0] * g.nn[1];
+          auto stencils = std::make_shared<NodeStencils>(
+            g,
+            matrices[0],
+            [&](const unsigned int i,
+                const unsigned int j,
+                const unsigned int k) {
+              return std::uint32_t(volume.voxel(i, j, k));
+            },
+            kubc,
+            std::max<std::size_t>(1024, owned_nodes / 256));
+          if (stencils->empty())
+            return nullptr;
+          return stencils;
         }
 
         /// Switch the grids to periodic or not: their nodes, slabs and the
@@ -660,6 +1071,9 @@ namespace tribodyn
           const unsigned int n_levels = levels.grids.size();
           fine.initialize(levels.grids[0], levels.cell_matrix[0], kubc);
           fine.set_matrices(levels.matrices[0]);
+          const auto stencils = levels.fine_stencils(kubc);
+          if (stencils)
+            fine.use_stencils(stencils);
           operators.resize(n_levels);
           smoothers.resize(n_levels);
           r.resize(n_levels);
@@ -670,6 +1084,8 @@ namespace tribodyn
               auto &op = operators[l];
               op.initialize(levels.grids[l], levels.cell_matrix[l], kubc);
               op.set_matrices(levels.matrices[l]);
+              if (l == 0 && stencils)
+                op.use_stencils(stencils);
               op.initialize_dof_vector(r[l]);
               op.initialize_dof_vector(b[l]);
               op.initialize_dof_vector(x[l]);
@@ -700,12 +1116,11 @@ namespace tribodyn
           std::vector<std::array<double, n_dofs>> loads;
           const auto                             &g = levels.grids[0];
           for (unsigned int m = 0; m < levels.matrices[0].size(); ++m)
-            loads.push_back(
-              Element::element_load(levels.matrices[0][m],
-                                    entries(stiffness[levels.fine_phase[m]]),
-                                    load,
-                                    strain_driven,
-                                    g.h));
+            loads.push_back(Element::element_load(levels.matrices[0][m],
+                                                  entries(stiffness[m]),
+                                                  load,
+                                                  strain_driven,
+                                                  g.h));
           double  scale = 0;
           double *out   = rhs.begin();
           fine.for_each_cell([&](const std::array<std::size_t, n_vertices> &v,
@@ -760,16 +1175,6 @@ namespace tribodyn
         }
 
       private:
-        static Element::StiffnessEntries
-        entries(const VoigtMatrix6 &C)
-        {
-          Element::StiffnessEntries e;
-          for (unsigned int i = 0; i < 6; ++i)
-            for (unsigned int j = i; j < 6; ++j)
-              e[Element::entry(i, j)] = C[i][j];
-          return e;
-        }
-
         /// x[l] from b[l].
         void
         vcycle(const unsigned int l) const
@@ -1159,7 +1564,7 @@ namespace tribodyn
           e[5] = G[0][1] + G[1][0];
           if (strain_driven)
             e += load;
-          const dealii::Tensor<1, 6> s = stiffness[levels.fine_phase[m]] * e;
+          const dealii::Tensor<1, 6> s = stiffness[m] * e;
           for (unsigned int i = 0; i < 6; ++i)
             {
               sums[i] += s[i];
