@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <deal.II/base/aligned_vector.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/partitioner.h>
 #include <deal.II/lac/diagonal_matrix.h>
@@ -210,20 +211,22 @@ namespace tribodyn
         /// The configuration of KUBC's boundary nodes: identity rows.
         static constexpr std::uint32_t identity = ~std::uint32_t(0);
         /// Per configuration and row of nodes (dy, dz) (rp = (dy + 1) +
-        /// 3 (dz + 1)), 28 coefficients: for each output component a the
+        /// 3 (dz + 1)), 32 coefficients: for each output component a the
         /// first eight of the segment s = 3 (dx + 1) + b (the input
         /// component b of the node dx = -1, 0, 1), then the ninth (s = 8)
-        /// of the three components and a zero (index()).
-        static constexpr unsigned int n_coefficients = 9 * 28;
+        /// of the three components and zeros (index(); 32: vectors of
+        /// eight aligned).
+        static constexpr unsigned int row_stride     = 32;
+        static constexpr unsigned int n_coefficients = 9 * row_stride;
         static constexpr unsigned int
         index(const unsigned int rp, const unsigned int a, const unsigned int s)
         {
-          return 28 * rp + (s < 8 ? 8 * a + s : 24 + a);
+          return row_stride * rp + (s < 8 ? 8 * a + s : 24 + a);
         }
 
         /// Per owned node (x fastest, then y, then z) its configuration.
-        std::vector<std::uint32_t>                      config;
-        std::vector<std::array<double, n_coefficients>> table;
+        std::vector<std::uint32_t>                                config;
+        dealii::AlignedVector<std::array<double, n_coefficients>> table;
         static_assert(sizeof(std::array<double, n_coefficients>)
                         == n_coefficients * sizeof(double),
                       "the table is read as one array");
@@ -365,10 +368,10 @@ namespace tribodyn
               {
                 Segment coefficients;
                 std::memcpy(&coefficients,
-                            S + 28 * rp + 8 * a,
+                            S + NodeStencils::row_stride * rp + 8 * a,
                             sizeof(Segment));
                 sum[rp & 1][a] += coefficients * values;
-                last[a] += S[28 * rp + 24 + a] * ninth;
+                last[a] += S[NodeStencils::row_stride * rp + 24 + a] * ninth;
               }
           }
         for (unsigned int a = 0; a < 3; ++a)
@@ -406,7 +409,7 @@ namespace tribodyn
           {
             const __m256 values = _mm256_loadu_ps(x[rp]);
             const __m128 ninth  = _mm_broadcast_ss(x[rp] + 8);
-            const float *s      = S + 28 * rp;
+            const float *s      = S + NodeStencils::row_stride * rp;
 #  pragma GCC unroll 3
             for (unsigned int a = 0; a < 3; ++a)
               sum[rp & 1][a] = _mm256_fmadd_ps(_mm256_loadu_ps(s + 8 * a),
@@ -432,6 +435,138 @@ namespace tribodyn
       }
 
       /**
+       * Two neighbouring nodes along x at once (their stencils @p S0 and
+       * @p S1, the same one if @p same; the second node's segments three
+       * numbers after the first's): the six sums reduced together into
+       * the six consecutive outputs @p y.
+       */
+      template <bool same, typename Number>
+      inline void
+      apply_stencils(const Number        *S0,
+                     const Number        *S1,
+                     const Number *const *x,
+                     Number              *y)
+      {
+        const Number *x1[9];
+        for (unsigned int rp = 0; rp < 9; ++rp)
+          x1[rp] = x[rp] + 3;
+        apply_stencil(S0, x, y);
+        apply_stencil(S1, x1, y + 3);
+      }
+
+#ifdef __AVX2__
+      /// In single precision with AVX2: if the two nodes have the same
+      /// stencil (as in a phase's bulk), each coefficient is loaded once
+      /// for both (the loads, not the multiply-adds, bound the single
+      /// node's product); the first node's ninth value is taken from the
+      /// second node's vector.
+      template <bool same>
+      inline void
+      apply_stencils(const float        *S0,
+                     const float        *S1,
+                     const float *const *x,
+                     float              *y)
+      {
+        __m256 sum[2][3];
+        __m128 last[2];
+        for (unsigned int n = 0; n < 2; ++n)
+          {
+            for (unsigned int a = 0; a < 3; ++a)
+              sum[n][a] = _mm256_setzero_ps();
+            last[n] = _mm_setzero_ps();
+          }
+        const __m256i lane5 = _mm256_set1_epi32(5);
+#  pragma GCC unroll 9
+        for (unsigned int rp = 0; rp < 9; ++rp)
+          {
+            const __m256 values[2]
+              = {_mm256_loadu_ps(x[rp]), _mm256_loadu_ps(x[rp] + 3)};
+            const __m128 ninth[2]
+              = {_mm256_castps256_ps128(
+                   _mm256_permutevar8x32_ps(values[1], lane5)),
+                 _mm_broadcast_ss(x[rp] + 11)};
+            const float *s[2] = {S0 + NodeStencils::row_stride * rp,
+                                 S1 + NodeStencils::row_stride * rp};
+#  pragma GCC unroll 3
+            for (unsigned int a = 0; a < 3; ++a)
+              {
+                const __m256 c0 = _mm256_load_ps(s[0] + 8 * a);
+                const __m256 c1 = same ? c0 : _mm256_load_ps(s[1] + 8 * a);
+                sum[0][a]       = _mm256_fmadd_ps(c0, values[0], sum[0][a]);
+                sum[1][a]       = _mm256_fmadd_ps(c1, values[1], sum[1][a]);
+              }
+            const __m128 t0 = _mm_load_ps(s[0] + 24);
+            const __m128 t1 = same ? t0 : _mm_load_ps(s[1] + 24);
+            last[0]         = _mm_fmadd_ps(t0, ninth[0], last[0]);
+            last[1]         = _mm_fmadd_ps(t1, ninth[1], last[1]);
+          }
+        // [y0, y1, y2, y3] and [y4, y5, y4, y5] in each half, the halves
+        // added; the ninth values' sums [l0 l1 l2 0] of the two nodes
+        // moved to the same places
+        const __m256 h0 = _mm256_hadd_ps(_mm256_hadd_ps(sum[0][0], sum[0][1]),
+                                         _mm256_hadd_ps(sum[0][2], sum[1][0])),
+                     h1 = _mm256_hadd_ps(_mm256_hadd_ps(sum[1][1], sum[1][2]),
+                                         _mm256_hadd_ps(sum[1][1], sum[1][2]));
+        const __m128 l0 = _mm_insert_ps(last[0], last[1], 0x30),
+                     l1 = _mm_shuffle_ps(last[1], last[1], 0x09);
+        const __m128 r0 = _mm_add_ps(_mm_add_ps(_mm256_castps256_ps128(h0),
+                                                _mm256_extractf128_ps(h0, 1)),
+                                     l0),
+                     r1 = _mm_add_ps(_mm_add_ps(_mm256_castps256_ps128(h1),
+                                                _mm256_extractf128_ps(h1, 1)),
+                                     l1);
+        _mm_storeu_ps(y, r0);
+        _mm_storel_pi(reinterpret_cast<__m64 *>(y + 4), r1);
+      }
+#endif
+
+      /// The same in double precision (CG's operator) with AVX2: a segment
+      /// is two vectors of four and the ninth value.
+      inline void
+      apply_stencil(const double *S, const double *const *x, double *y)
+      {
+#ifdef __AVX2__
+        __m256d sum[3][2], last = _mm256_setzero_pd();
+        for (unsigned int a = 0; a < 3; ++a)
+          sum[a][0] = sum[a][1] = _mm256_setzero_pd();
+#  pragma GCC unroll 9
+        for (unsigned int rp = 0; rp < 9; ++rp)
+          {
+            const __m256d low   = _mm256_loadu_pd(x[rp]);
+            const __m256d high  = _mm256_loadu_pd(x[rp] + 4);
+            const __m256d ninth = _mm256_broadcast_sd(x[rp] + 8);
+            const double *s     = S + NodeStencils::row_stride * rp;
+#  pragma GCC unroll 3
+            for (unsigned int a = 0; a < 3; ++a)
+              {
+                sum[a][0]
+                  = _mm256_fmadd_pd(_mm256_loadu_pd(s + 8 * a), low, sum[a][0]);
+                sum[a][1] = _mm256_fmadd_pd(_mm256_loadu_pd(s + 8 * a + 4),
+                                            high,
+                                            sum[a][1]);
+              }
+            last = _mm256_fmadd_pd(_mm256_loadu_pd(s + 24), ninth, last);
+          }
+        const __m256d s0 = _mm256_add_pd(sum[0][0], sum[0][1]),
+                      s1 = _mm256_add_pd(sum[1][0], sum[1][1]),
+                      s2 = _mm256_add_pd(sum[2][0], sum[2][1]);
+        // [s0, s1 | s0, s1] and [s2, s2 | s2, s2] (pairs summed), halves
+        // added
+        const __m256d h01 = _mm256_hadd_pd(s0, s1),
+                      h22 = _mm256_hadd_pd(s2, s2);
+        const __m128d r01 = _mm_add_pd(_mm256_castpd256_pd128(h01),
+                                       _mm256_extractf128_pd(h01, 1)),
+                      r22 = _mm_add_pd(_mm256_castpd256_pd128(h22),
+                                       _mm256_extractf128_pd(h22, 1));
+        _mm_storeu_pd(y, _mm_add_pd(r01, _mm256_castpd256_pd128(last)));
+        y[2]
+          = _mm_cvtsd_f64(r22) + _mm_cvtsd_f64(_mm256_extractf128_pd(last, 1));
+#else
+        apply_stencil<double>(S, x, y);
+#endif
+      }
+
+      /**
        * The elasticity operator of one grid: the cells' element matrices
        * (one per distinct index), applied cell by cell; KUBC's boundary
        * nodes as identity rows (read as zero by the cells). What
@@ -453,8 +588,9 @@ namespace tribodyn
         /// Their coefficients in Number, NodeStencils::n_coefficients per
         /// configuration (the table itself in double, a copy in float);
         /// a row of zeros for the rows outside the box.
-        const Number       *coefficients = nullptr;
-        std::vector<Number> coefficients_copy, zero_row;
+        const Number                 *coefficients = nullptr;
+        dealii::AlignedVector<Number> coefficients_copy;
+        std::vector<Number>           zero_row;
 
         void
         initialize(const VoxelGrid                  &g,
@@ -539,14 +675,16 @@ namespace tribodyn
         {
           stencils = node_stencils;
           if constexpr (std::is_same_v<Number, double>)
-            coefficients = stencils->table.front().data();
+            coefficients = stencils->table[0].data();
           else
             {
-              coefficients_copy.clear();
-              for (const auto &S : stencils->table)
-                coefficients_copy.insert(coefficients_copy.end(),
-                                         S.begin(),
-                                         S.end());
+              const auto &table = stencils->table;
+              coefficients_copy.resize(table.size()
+                                       * NodeStencils::n_coefficients);
+              for (std::size_t c = 0; c < table.size(); ++c)
+                for (unsigned int i = 0; i < NodeStencils::n_coefficients; ++i)
+                  coefficients_copy[c * NodeStencils::n_coefficients + i]
+                    = Number(table[c][i]);
               coefficients = coefficients_copy.data();
             }
           zero_row.assign(3 * grid->nn[0] + 8, Number(0));
@@ -674,43 +812,72 @@ namespace tribodyn
                 for (unsigned int rp = 0; rp < 9; ++rp)
                   rows[rp]
                     = row(int(j) + int(rp % 3) - 1, int(k) + int(rp / 3) - 1);
-                Number *o = out + g.local(0, j, k);
-                for (unsigned int i = 0; i < nx; ++i, ++node)
-                  {
-                    const std::uint32_t c = config[node];
-                    if (c == NodeStencils::identity)
+                Number              *o   = out + g.local(0, j, k);
+                const std::uint32_t *c_j = config + node;
+                node += nx;
+                // the interior nodes two at a time, the others one by one
+                unsigned int i   = 0;
+                auto         one = [&](const unsigned int i) {
+                  const std::uint32_t c = c_j[i];
+                  if (c == NodeStencils::identity)
+                    {
+                      for (unsigned int a = 0; a < 3; ++a)
+                        o[3 * i + a] = rows[4][3 * i + a];
+                      return;
+                    }
+                  const Number *S
+                    = coefficients
+                      + std::size_t(c) * NodeStencils::n_coefficients;
+                  const Number *x[9];
+                  Number        ends[9][9];
+                  if (i > 0 && i + 1 < nx)
+                    for (unsigned int rp = 0; rp < 9; ++rp)
+                      x[rp] = rows[rp] + 3 * (i - 1);
+                  else
+                    for (unsigned int rp = 0; rp < 9; ++rp)
                       {
-                        for (unsigned int a = 0; a < 3; ++a)
-                          o[3 * i + a] = rows[4][3 * i + a];
+                        // the row's first or last node: its neighbours
+                        // along x wrapped (periodic) or zero
+                        for (unsigned int s = 0; s < 3; ++s)
+                          {
+                            const int  n      = int(i) + int(s) - 1;
+                            const bool inside = n >= 0 && n < int(nx);
+                            const int  m      = (n + int(nx)) % int(nx);
+                            for (unsigned int a = 0; a < 3; ++a)
+                              ends[rp][3 * s + a] = inside || g.periodic
+                                                              ? rows[rp][3 * m + a]
+                                                              : Number(0);
+                          }
+                        x[rp] = ends[rp];
+                      }
+                  apply_stencil(S, x, o + 3 * i);
+                };
+                one(i++);
+                for (; i + 2 < nx; i += 2)
+                  {
+                    const std::uint32_t c0 = c_j[i], c1 = c_j[i + 1];
+                    if (c0 == NodeStencils::identity
+                        || c1 == NodeStencils::identity)
+                      {
+                        one(i);
+                        one(i + 1);
                         continue;
                       }
-                    const Number *S
-                      = coefficients
-                        + std::size_t(c) * NodeStencils::n_coefficients;
                     const Number *x[9];
-                    Number        ends[9][9];
-                    if (i > 0 && i + 1 < nx)
-                      for (unsigned int rp = 0; rp < 9; ++rp)
-                        x[rp] = rows[rp] + 3 * (i - 1);
+                    for (unsigned int rp = 0; rp < 9; ++rp)
+                      x[rp] = rows[rp] + 3 * (i - 1);
+                    const Number *S0
+                      = coefficients
+                        + std::size_t(c0) * NodeStencils::n_coefficients,
+                      *S1 = coefficients
+                            + std::size_t(c1) * NodeStencils::n_coefficients;
+                    if (c0 == c1)
+                      apply_stencils<true>(S0, S0, x, o + 3 * i);
                     else
-                      for (unsigned int rp = 0; rp < 9; ++rp)
-                        {
-                          // the row's first or last node: its neighbours
-                          // along x wrapped (periodic) or zero
-                          for (unsigned int s = 0; s < 3; ++s)
-                            {
-                              const int  n      = int(i) + int(s) - 1;
-                              const bool inside = n >= 0 && n < int(nx);
-                              const int  m      = (n + int(nx)) % int(nx);
-                              for (unsigned int a = 0; a < 3; ++a)
-                                ends[rp][3 * s + a] = inside || g.periodic
-                                                        ? rows[rp][3 * m + a]
-                                                        : Number(0);
-                            }
-                          x[rp] = ends[rp];
-                        }
-                    apply_stencil(S, x, o + 3 * i);
+                      apply_stencils<false>(S0, S1, x, o + 3 * i);
                   }
+                for (; i < nx; ++i)
+                  one(i);
               }
           dst.zero_out_ghost_values();
           if (!had_ghosts)

@@ -39,10 +39,15 @@ namespace tribodyn
      * of their rigid motions (pins on the coarsest grid only), as on the
      * mesh.
      *
+     * The finest grid's product goes node by node (each node's 27-node
+     * stencil, one of the few hundred configurations of its eight cells'
+     * phases), the coarser grids' cell by cell.
+     *
      * What it keeps: per level the cells' element-matrix index (4 B per
-     * cell) and the distinct element matrices; the vectors of CG (double)
-     * and of the V-cycle (float). No triangulation, DoF tables or index
-     * arrays per cell.
+     * cell) and the distinct element matrices; per node of the finest grid
+     * its stencil's index (4 B) and the stencils; the vectors of CG
+     * (double) and of the V-cycle (float). No triangulation, DoF tables or
+     * index arrays per cell.
      */
     class VoxelGridSolver
     {
