@@ -218,7 +218,7 @@ namespace tribodyn
             "tolerance): 'voxel grid' finds the nodes, cells and coarse "
             "levels by index arithmetic, the ranks owning slabs of node "
             "planes along z (no triangulation, DoF tables or per-cell "
-            "indices: about a quarter of the memory of the mesh and faster; "
+            "indices: a third to a fifth of the mesh's memory, and faster; "
             "multigrid only, the voxel counts halved while all three are "
             "even must reach a grid of at most 3000 unknowns, and it writes "
             "no VTU fields); 'mesh' a deal.II triangulation (any voxel "
