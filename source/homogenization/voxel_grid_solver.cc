@@ -1,7 +1,7 @@
 // The 3D cell problems on the voxel grid (issue #51 item 5): the same Q1
 // discretization as CellProblem<3>, with the nodes, cells, levels and
 // ranks' slabs found by index arithmetic. See voxel_grid_solver.h and
-// doc/theory/homogenization.md ("The voxel grid without a mesh").
+// doc/theory/homogenization.md ("3D voxel volumes", Solver, "The voxel grid").
 
 #include "cell_multigrid_galerkin.h"
 
@@ -204,7 +204,8 @@ namespace tribodyn
        * nine rows of nodes around the node, three consecutive nodes (nine
        * Numbers) of each, and writes the node's three values once: no
        * element products, no scatter, no ghost contributions to send back
-       * (doc/theory/homogenization.md, "The voxel grid without a mesh").
+       * (doc/theory/homogenization.md, "3D voxel volumes", Solver, "The
+       * voxel grid").
        */
       struct NodeStencils
       {
