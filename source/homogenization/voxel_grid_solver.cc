@@ -211,6 +211,8 @@ namespace tribodyn
       {
         /// The configuration of KUBC's boundary nodes: identity rows.
         static constexpr std::uint32_t identity = ~std::uint32_t(0);
+        /// The phase of a cell outside a non-periodic box, in the keys.
+        static constexpr std::uint32_t absent = ~std::uint32_t(0);
         /// Per configuration and row of nodes (dy, dz) (rp = (dy + 1) +
         /// 3 (dz + 1)), 32 coefficients: for each output component a the
         /// first eight of the segment s = 3 (dx + 1) + b (the input
@@ -242,7 +244,6 @@ namespace tribodyn
                      const bool                                         kubc,
                      const std::size_t max_configurations)
         {
-          constexpr std::uint32_t absent = ~std::uint32_t(0);
           // the key: the phases of the eight cells around the node (x
           // fastest; absent outside a non-periodic box) and the mask of
           // its constrained neighbours (KUBC)
@@ -319,7 +320,7 @@ namespace tribodyn
           std::array<double, n_coefficients> S{};
           for (unsigned int c = 0; c < 8; ++c)
             {
-              if (key[c] == ~std::uint32_t(0))
+              if (key[c] == absent)
                 continue;
               const auto        &Kc = K[key[c]];
               const unsigned int v  = 7 - c;
