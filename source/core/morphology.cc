@@ -24,13 +24,6 @@ namespace tribodyn
   }
 
 
-  bool
-  MorphologySource::uses_seed() const
-  {
-    return false;
-  }
-
-
   std::string
   MorphologySource::phases_set_by() const
   {

@@ -1,6 +1,8 @@
-// The RVE-size study (Kanit et al. 2003): its parameters, the windows,
-// their cell problems spread over MPI rank groups, and the statistics.
-// Tables and plot: rve_output.cc; fits: rve_statistics.cc.
+// The RVE-size study (Kanit et al. 2003), the same in 2D and 3D: its
+// parameters, the windows, their cell problems spread over MPI rank
+// groups, and the statistics. What a window is: rve_study_plane.cc (2D),
+// rve_study_volume.cc (3D); tables and plot: rve_output.cc; fits:
+// rve_statistics.cc.
 
 #include <algorithm>
 #include <chrono>
@@ -14,7 +16,6 @@
 #include <random>
 #include <sstream>
 #include <tribodyn/core/errors.h>
-#include <tribodyn/core/morphology_source.h>
 #include <tribodyn/core/number_list.h>
 #include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/progress.h>
@@ -37,31 +38,35 @@ namespace tribodyn
       const std::string sizes_name = "RVE study/Window sizes";
 
 
-      /// "140x40" -> {140, 40}; "32" -> {32, 32}.
-      std::array<unsigned int, 2>
+      /// "140x40" -> {140, 40, 0}; "16x16x8" -> {16, 16, 8}; "32" -> {32,
+      /// 0, 0} (a square or a cube: resolve_window_sizes()).
+      std::array<unsigned int, 3>
       parse_window_size(const std::string &word)
       {
         const auto fail = [&]() {
           throw InputError(
             "Parameter '" + sizes_name + "': '" + word
             + "' is not a window size. Give each size in pixels as "
-              "WIDTHxHEIGHT (e.g. 140x40) or as one number for a square, "
-              "the sizes separated by commas.");
+              "WIDTHxHEIGHT (e.g. 140x40), in voxels as WIDTHxHEIGHTxDEPTH "
+              "(e.g. 16x16x8), or as one number for a square or a cube, the "
+              "sizes separated by commas.");
         };
-        const std::size_t           x = word.find_first_of("xX");
-        std::array<unsigned int, 2> size{{0, 0}};
-        const std::string           parts[2]
-          = {word.substr(0, x),
-             x == std::string::npos ? word : word.substr(x + 1)};
-        for (unsigned int d = 0; d < 2; ++d)
+        std::array<unsigned int, 3> size{{0, 0, 0}};
+        std::size_t                 begin = 0;
+        for (unsigned int d = 0;; ++d)
           {
-            if (parts[d].empty()
-                || parts[d].find_first_not_of("0123456789") != std::string::npos
-                || parts[d].size() > 6)
+            const std::size_t end  = word.find_first_of("xX", begin);
+            const std::string part = word.substr(begin, end - begin);
+            if (d == 3 || part.empty()
+                || part.find_first_not_of("0123456789") != std::string::npos
+                || part.size() > 6)
               fail();
-            size[d] = std::stoul(parts[d]);
+            size[d] = std::stoul(part);
             if (size[d] == 0)
               fail();
+            if (end == std::string::npos)
+              break;
+            begin = end + 1;
           }
         return size;
       }
@@ -75,23 +80,7 @@ namespace tribodyn
         return static_cast<unsigned int>(
           (static_cast<std::uint64_t>(rng()) * (std::uint64_t(n) + 1)) >> 32);
       }
-
-
-      bool
-      random_generator(const MorphologyParameters &m)
-      {
-        return m.source->uses_seed();
-      }
     } // namespace
-
-
-    const std::vector<std::string> &
-    rve_constant_names()
-    {
-      static const std::vector<std::string> names
-        = {"E_L", "E_T", "G_LT", "nu_LT", "nu_TT"};
-      return names;
-    }
 
 
     ParameterBinding
@@ -106,7 +95,8 @@ namespace tribodyn
       std::string sizes_text, per_size_text, realisations_text;
       for (const auto &size : window_sizes)
         sizes_text += (sizes_text.empty() ? "" : ", ") + std::to_string(size[0])
-                      + "x" + std::to_string(size[1]);
+                      + "x" + std::to_string(size[1])
+                      + (size[2] > 1 ? "x" + std::to_string(size[2]) : "");
       const bool same_per_size = std::all_of(windows_per_size.begin(),
                                              windows_per_size.end(),
                                              [this](const unsigned int n) {
@@ -123,10 +113,12 @@ namespace tribodyn
       ParameterBinding b("RVE study");
       b.add("Window sizes",
             sizes_text,
-            "Sizes of the windows in pixels of the morphology, WIDTHxHEIGHT "
-            "(along x and y) or one number for a square, separated by commas, "
-            "at least two, of increasing area. Keep the aspect ratio of the "
-            "cell you want to judge (the seed's cell is 280x80).",
+            "Sizes of the windows in pixels of a 2D morphology, WIDTHxHEIGHT "
+            "(along x and y), or in voxels of a volume ('Problem = "
+            "volume_rve'), WIDTHxHEIGHTxDEPTH, or one number for a square or "
+            "a cube, separated by commas, at least two, of increasing area or "
+            "volume. Keep the aspect ratio of the cell you want to judge (the "
+            "seed's cell is 280x80).",
             Anything(),
             [this](const std::string &value) {
               std::string text = value;
@@ -225,7 +217,8 @@ namespace tribodyn
 
 
     void
-    RveStudyParameters::parse_parameters(ParameterHandler &prm)
+    RveStudyParameters::parse_parameters(ParameterHandler  &prm,
+                                         const unsigned int dim)
     {
       const ParameterBinding b = binding();
       b.parse(prm);
@@ -235,18 +228,42 @@ namespace tribodyn
                       "give at least two window sizes (the variance law is "
                       "fitted over the sizes), e.g. '70x20, 140x40, "
                       "280x80'.");
+      // One number is a square or a cube; otherwise dim numbers.
+      for (auto &size : window_sizes)
+        {
+          const unsigned int given = size[2] > 0 ? 3 : size[1] > 0 ? 2 : 1;
+          if (given == 1)
+            size[1] = size[2] = size[0];
+          check_parameter(
+            given == 1 || given == dim,
+            b.path("Window sizes"),
+            "'" + std::to_string(size[0]) + "x" + std::to_string(size[1])
+              + (given == 3 ? "x" + std::to_string(size[2]) : "") + "' has "
+              + std::to_string(given) + " numbers, but the windows of "
+              + (dim == 2 ? "'Problem = rve' are 2D: give "
+                            "WIDTHxHEIGHT in pixels"
+                          : "'Problem = volume_rve' are 3D: "
+                            "give WIDTHxHEIGHTxDEPTH in voxels")
+              + ", or one number for a " + (dim == 2 ? "square." : "cube."));
+          if (dim == 2)
+            size[2] = 1;
+        }
+      const auto elements = [&](const unsigned int i) {
+        return 1. * window_sizes[i][0] * window_sizes[i][1]
+               * window_sizes[i][2];
+      };
+      const auto text = [&](const unsigned int i) {
+        return std::to_string(window_sizes[i][0]) + "x"
+               + std::to_string(window_sizes[i][1])
+               + (dim == 3 ? "x" + std::to_string(window_sizes[i][2]) : "");
+      };
       for (unsigned int i = 1; i < window_sizes.size(); ++i)
-        check_parameter(1. * window_sizes[i][0] * window_sizes[i][1]
-                          > 1. * window_sizes[i - 1][0]
-                              * window_sizes[i - 1][1],
+        check_parameter(elements(i) > elements(i - 1),
                         b.path("Window sizes"),
-                        "the sizes must have increasing areas, but "
-                          + std::to_string(window_sizes[i][0]) + "x"
-                          + std::to_string(window_sizes[i][1]) + " follows "
-                          + std::to_string(window_sizes[i - 1][0]) + "x"
-                          + std::to_string(window_sizes[i - 1][1])
-                          + ". List them from the "
-                            "smallest to the largest.");
+                        std::string("the sizes must have increasing ")
+                          + (dim == 2 ? "areas" : "volumes") + ", but "
+                          + text(i) + " follows " + text(i - 1)
+                          + ". List them from the smallest to the largest.");
       check_parameter(!windows_per_size.empty()
                         && (windows_per_size.size() == 1
                             || windows_per_size.size() == window_sizes.size()),
@@ -270,145 +287,66 @@ namespace tribodyn
     void
     RveStudy::declare_parameters(ParameterHandler &prm)
     {
-      MorphologyParameters::declare_parameters(prm);
-      MaterialsParameters::declare_parameters(prm);
-      CellProblemParameters::declare_parameters(prm);
       RveStudyParameters::declare_parameters(prm);
     }
 
 
-    RveStudy::RveStudy(ParameterHandler &prm, const RunContext &context)
+    RveStudy::RveStudy(const RunContext &context, const unsigned int dim)
         : context(context)
+        , dim(dim)
     {
-      morphology_parameters.parse_parameters(prm);
-      materials.parse_parameters(prm);
-      cell_problem_parameters.parse_parameters(prm);
-      parameters.parse_parameters(prm);
+    }
 
-      const bool random    = random_generator(morphology_parameters);
-      const auto size_text = [](const std::array<unsigned int, 2> &s) {
-        return std::to_string(s[0]) + "x" + std::to_string(s[1]);
-      };
-      if (parameters.source == Source::realisations)
-        {
-          check_parameter(random,
-                          "RVE study/Source",
-                          "'realisations' runs the morphology generator at "
-                          "each window size with a new seed, which needs a "
-                          "random generator ('Morphology/Generator = random "
-                          "vertical'). For an image, a grid file or a "
-                          "laminate use 'Source = crops'.");
-          pixel_width
-            = morphology_parameters.width / morphology_parameters.n_pixels_x;
-          pixel_height
-            = morphology_parameters.height / morphology_parameters.n_pixels_y;
-        }
-      else
-        {
-          // The map the windows are cut from (for a random generator, the
-          // first of the per-window realisations: same size).
-          const Morphology map = Morphology::create(morphology_parameters);
-          pixel_width          = map.pixel_width();
-          pixel_height         = map.pixel_height();
-          for (const auto &s : parameters.window_sizes)
-            check_parameter(
-              s[0] <= map.n_pixels_x() && s[1] <= map.n_pixels_y(),
-              sizes_name,
-              "the window " + size_text(s)
-                + " is larger than the morphology it is cut from ("
-                + std::to_string(map.n_pixels_x()) + "x"
-                + std::to_string(map.n_pixels_y())
-                + " pixels). Use smaller windows, or a larger map "
-                  "('Morphology/Pixels in x', 'Pixels in y' with 'Width', "
-                  "'Height' in proportion, or a larger image).");
-          if (!random)
-            fixed_map = std::make_unique<Morphology>(map);
-        }
 
-      // Every phase of the maps has a name and constants.
-      const unsigned int n_named = materials.names().size();
-      if (fixed_map)
-        check_parameter(fixed_map->n_phases() <= n_named,
-                        "Materials/Names",
-                        "the morphology has material ids up to "
-                          + std::to_string(fixed_map->n_phases() - 1)
-                          + " but only " + std::to_string(n_named)
-                          + " materials are named. Name one material per "
-                            "phase, in the order of the material ids.");
-
-      plan_windows();
-
-      // A generator that cannot fill a window is refused now, not after
-      // an hour of cell problems: build the first window of each size.
-      if (parameters.source == Source::realisations)
-        for (const RveWindow &w : windows)
-          if (w.index == 0)
-            try
-              {
-                make_window(w);
-              }
-            catch (const InputError &e)
-              {
-                throw InputError(
-                  "Parameter '" + sizes_name + "': the generator cannot make "
-                  + "a window of "
-                  + size_text(parameters.window_sizes[w.size_index])
-                  + " pixels ('Source = realisations'): " + e.what()
-                  + " Use larger windows, or 'Source = crops'.");
-              }
+    std::string
+    RveStudy::size_text(const unsigned int size_index) const
+    {
+      const auto &s = parameters.window_sizes[size_index];
+      return std::to_string(s[0]) + "x" + std::to_string(s[1])
+             + (dim == 3 ? "x" + std::to_string(s[2]) : "");
     }
 
 
     void
-    RveStudy::plan_windows()
+    RveStudy::plan_windows(const std::uint64_t morphology_seed)
     {
+      for (const auto &s : parameters.window_sizes)
+        for (unsigned int d = 0; d < dim; ++d)
+          check_parameter(
+            parameters.source == Source::realisations || s[d] <= map_size[d],
+            sizes_name,
+            "the window " + std::to_string(s[0]) + "x" + std::to_string(s[1])
+              + (dim == 3 ? "x" + std::to_string(s[2]) : "")
+              + " is larger than the morphology it is cut from ("
+              + std::to_string(map_size[0]) + "x" + std::to_string(map_size[1])
+              + (dim == 3 ? "x" + std::to_string(map_size[2]) : "")
+              + (dim == 2 ? " pixels). Use smaller windows, or a larger map "
+                            "('Morphology/Pixels in x', 'Pixels in y' with "
+                            "'Width', 'Height' in proportion, or a larger "
+                            "image)."
+                          : " voxels). Use smaller windows, or a larger "
+                            "volume ('Morphology/Voxels in x', 'Voxels in "
+                            "y', 'Voxels in z', or a larger image stack or "
+                            "raw file)."));
       // Positions drawn in window order from one generator: the same list
       // on every rank and for any number of ranks.
-      std::mt19937       rng(parameters.random_seed);
-      const unsigned int map_nx = morphology_parameters.n_pixels_x,
-                         map_ny = morphology_parameters.n_pixels_y;
+      std::mt19937 rng(parameters.random_seed);
       windows.clear();
       for (unsigned int s = 0; s < parameters.window_sizes.size(); ++s)
         for (unsigned int k = 0; k < parameters.windows_per_size[s]; ++k)
           {
             RveWindow w;
-            w.size_index   = s;
-            w.index        = k;
-            w.global_index = windows.size();
-            w.morphology_seed
-              = morphology_parameters.random_seed
-                + (random_generator(morphology_parameters) ? w.global_index
-                                                           : 0);
+            w.size_index      = s;
+            w.index           = k;
+            w.global_index    = windows.size();
+            w.morphology_seed = morphology_seed + (random ? w.global_index : 0);
             if (parameters.source == Source::crops)
-              {
-                const auto        &size = parameters.window_sizes[s];
-                const unsigned int nx
-                  = fixed_map ? fixed_map->n_pixels_x() : map_nx;
-                const unsigned int ny
-                  = fixed_map ? fixed_map->n_pixels_y() : map_ny;
-                w.i0 = uniform_up_to(rng, nx - size[0]);
-                w.j0 = uniform_up_to(rng, ny - size[1]);
-              }
+              for (unsigned int d = 0; d < dim; ++d)
+                w.first[d]
+                  = uniform_up_to(rng,
+                                  map_size[d] - parameters.window_sizes[s][d]);
             windows.push_back(w);
           }
-    }
-
-
-    Morphology
-    RveStudy::make_window(const RveWindow &w) const
-    {
-      const auto &size = parameters.window_sizes[w.size_index];
-      if (fixed_map)
-        return fixed_map->window(w.i0, w.j0, size[0], size[1]);
-      MorphologyParameters p = morphology_parameters;
-      p.random_seed          = w.morphology_seed;
-      if (parameters.source == Source::crops)
-        return Morphology::create(p).window(w.i0, w.j0, size[0], size[1]);
-      p.n_pixels_x = size[0];
-      p.n_pixels_y = size[1];
-      p.width      = size[0] * pixel_width;
-      p.height     = size[1] * pixel_height;
-      return Morphology::create(p);
     }
 
 
@@ -416,9 +354,7 @@ namespace tribodyn
     RveStudy::boundary_conditions() const
     {
       static const std::vector<BoundaryCondition> none;
-      return parameters.solve_cell_problems
-               ? cell_problem_parameters.boundary_conditions
-               : none;
+      return parameters.solve_cell_problems ? cell_boundary_conditions() : none;
     }
 
 
@@ -426,10 +362,10 @@ namespace tribodyn
     RveStudy::value_names() const
     {
       std::vector<std::pair<std::string, std::string>> names;
-      for (const std::string &phase : materials.names())
+      for (const std::string &phase : phase_names())
         names.emplace_back("fraction_" + phase, "none");
       for (const BoundaryCondition bc : boundary_conditions())
-        for (const std::string &c : rve_constant_names())
+        for (const std::string &c : constant_names())
           names.emplace_back(c, to_string(bc));
       return names;
     }
@@ -438,58 +374,14 @@ namespace tribodyn
     std::vector<double>
     RveStudy::point_variances(const std::vector<double> &fractions) const
     {
-      // each constant of each phase, as the cell problems' constants are
-      // read (E_L, E_T, G_LT, nu_LT, nu_TT: E, E, G, nu, nu when isotropic)
-      std::array<std::vector<double>, 5> constant;
-      for (const auto &p : materials.phases())
-        {
-          const EngineeringConstants c
-            = properties_from_stiffness(p.C, p.c_z).constants;
-          constant[0].push_back(c.E_L);
-          constant[1].push_back(c.E_T);
-          constant[2].push_back(c.G_LT);
-          constant[3].push_back(c.nu_LT);
-          constant[4].push_back(c.nu_TT);
-        }
       std::vector<double> v;
       for (unsigned int k = 0; k < fractions.size(); ++k)
         v.push_back(fractions[k] * (1 - fractions[k]));
+      const auto constants = phase_constants();
       for (unsigned int b = 0; b < boundary_conditions().size(); ++b)
-        for (const auto &values : constant)
+        for (const auto &values : constants)
           v.push_back(rve::point_variance(fractions, values));
       return v;
-    }
-
-
-    std::vector<double>
-    RveStudy::measure(const RveWindow     &w,
-                      const MPI_Comm       group,
-                      dealii::TimerOutput &timer) const
-    {
-      const Morphology   window   = make_window(w);
-      const unsigned int n_phases = materials.names().size();
-      check_parameter(window.n_phases() <= n_phases,
-                      "Materials/Names",
-                      "a window holds material id "
-                        + std::to_string(window.n_phases() - 1) + " but only "
-                        + std::to_string(n_phases) + " materials are named.");
-      std::vector<double> values(n_phases, 0.);
-      const auto          f = window.phase_fractions();
-      for (unsigned int k = 0; k < f.size() && k < n_phases; ++k)
-        values[k] = f[k];
-
-      if (boundary_conditions().empty())
-        return values;
-      const auto     phases = materials.phases();
-      CellProblem<2> cell(
-        group, window, phases, cell_problem_parameters, timer);
-      for (const BoundaryCondition bc : boundary_conditions())
-        {
-          const EngineeringConstants c = cell.solve(bc).properties.constants;
-          for (const double v : {c.E_L, c.E_T, c.G_LT, c.nu_LT, c.nu_TT})
-            values.push_back(v);
-        }
-      return values;
     }
 
 
@@ -526,7 +418,7 @@ namespace tribodyn
       // (the cost of a window grows with its pixels, slightly faster).
       const auto pixels = [&](const RveWindow &w) {
         const auto &s = parameters.window_sizes[w.size_index];
-        return 1. * s[0] * s[1];
+        return 1. * s[0] * s[1] * s[2];
       };
       unsigned int n_mine = 0, n_done = 0;
       double       pixels_mine = 0, pixels_done = 0;
@@ -583,20 +475,21 @@ namespace tribodyn
               && (elapsed - last_report >= context.progress_interval
                   || n_done == n_mine || n_done == 1))
             {
-              last_report          = elapsed;
-              const auto        &s = parameters.window_sizes[w.size_index];
+              last_report = elapsed;
               std::ostringstream line;
               line << "Window " << i + 1 << "/" << windows.size() << " ("
-                   << s[0] << "x" << s[1] << " px, map seed "
-                   << w.morphology_seed << ")";
-              const unsigned int n_phases = materials.names().size();
-              line << "  fraction_" << materials.names().back() << " = "
-                   << std::fixed << std::setprecision(4)
-                   << values[n_phases - 1];
+                   << size_text(w.size_index) << (dim == 2 ? " px" : " voxels")
+                   << ", map seed " << w.morphology_seed << ")";
+              const auto         phases   = phase_names();
+              const unsigned int n_phases = phases.size();
+              line << "  fraction_" << phases.back() << " = " << std::fixed
+                   << std::setprecision(4) << values[n_phases - 1];
+              const unsigned int n_constants = constant_names().size();
               for (unsigned int b = 0; b < boundary_conditions().size(); ++b)
-                line << "  " << names[n_phases + 5 * b].second
-                     << " E_L = " << std::fixed << std::setprecision(3)
-                     << values[n_phases + 5 * b] / 1e9 << " GPa";
+                line << "  " << names[n_phases + n_constants * b].second << " "
+                     << constant_names()[0] << " = " << std::fixed
+                     << std::setprecision(3)
+                     << values[n_phases + n_constants * b] / 1e9 << " GPa";
               if (n_done < n_mine)
                 line << "  ETA "
                      << format_duration(elapsed * (pixels_mine - pixels_done)
@@ -621,7 +514,7 @@ namespace tribodyn
       // Samples per (size, value); mean fractions over all windows for the
       // point variances.
       const unsigned int  n_sizes  = parameters.window_sizes.size();
-      const unsigned int  n_phases = materials.names().size();
+      const unsigned int  n_phases = phase_names().size();
       std::vector<double> mean_fractions(n_phases, 0.);
       for (unsigned int i = 0; i < windows.size(); ++i)
         for (unsigned int k = 0; k < n_phases; ++k)
@@ -630,9 +523,12 @@ namespace tribodyn
 
       std::vector<RveSample> samples;
       std::vector<RveFit>    fits;
-      std::vector<double>    areas;
+      // (the areas of 2D windows, the volumes of 3D ones: the fits take
+      // either)
+      std::vector<double> measures;
       for (const auto &s : parameters.window_sizes)
-        areas.push_back(s[0] * pixel_width * s[1] * pixel_height);
+        measures.push_back(s[0] * element_size[0] * s[1] * element_size[1]
+                           * s[2] * element_size[2]);
       for (unsigned int v = 0; v < n_values; ++v)
         {
           std::vector<rve::SampleStatistics> stats;
@@ -658,10 +554,10 @@ namespace tribodyn
           RveFit f;
           f.property           = names[v].first;
           f.boundary_condition = names[v].second;
-          f.fit                = rve::fit_variance(areas, stats, D2[v]);
+          f.fit                = rve::fit_variance(measures, stats, D2[v]);
           f.mean               = largest;
           for (const unsigned int n : parameters.realisations)
-            f.rve_area.push_back(
+            f.rve_measure.push_back(
               rve::rve_area(f.fit, largest, parameters.relative_error, n));
           fits.push_back(f);
         }
@@ -669,27 +565,14 @@ namespace tribodyn
       const double wall_time = std::chrono::duration<double>(
                                  std::chrono::steady_clock::now() - start)
                                  .count();
+      // (the voxel grid does not time itself: no empty table)
+      if (timer->get_summary_data(dealii::TimerOutput::total_wall_time).empty())
+        timer->disable_output();
       if (rank == 0)
         write_results(samples, fits, n_groups, wall_time);
       MPI_Barrier(world);
       timer.reset(); // collective over the group: before freeing it
       MPI_Comm_free(&group);
     }
-
-
-    namespace
-    {
-      const bool rve_study_registered = register_problem(
-        {"rve",
-         "RVE-size study (Kanit et al. 2003): apparent constants of windows "
-         "of growing size, their mean and variance per boundary condition, "
-         "the fitted integral range and the RVE size for a relative error",
-         &RveStudy::declare_parameters,
-         [](ParameterHandler &prm, const RunContext &context) {
-           return std::unique_ptr<Problem>(new RveStudy(prm, context));
-         },
-         {},
-         &MorphologyMaterials::declare_material_sections});
-    } // namespace
-  }   // namespace homogenization
+  } // namespace homogenization
 } // namespace tribodyn

@@ -130,20 +130,10 @@ namespace tribodyn
                                 dealii::TimerOutput::wall_times);
       // The discretization: the voxel grid where it can (multigrid, a grid
       // that coarsens to a small one, no VTU fields), else the mesh.
-      const auto       &cell_parameters = parameters.cell_problem;
-      const std::string grid_refusal
-        = cell_parameters.preconditioner != CellPreconditioner::multigrid
-            ? "it has no AMG ('Cell problem/Preconditioner = AMG')"
-          : parameters.output.write_fields
-            ? "it writes no VTU fields ('Output/Write fields = true')"
-            : VoxelGridSolver::unsupported(volume);
-      if (cell_parameters.grid == VolumeGrid::voxel_grid)
-        check_parameter(grid_refusal.empty(),
-                        "Cell problem/Grid",
-                        "'voxel grid' cannot solve this run: " + grid_refusal
-                          + ". Set it to 'mesh' or 'auto'.");
-      const bool on_grid
-        = cell_parameters.grid != VolumeGrid::mesh && grid_refusal.empty();
+      const auto &cell_parameters = parameters.cell_problem;
+      std::string grid_refusal;
+      const bool  on_grid = VoxelGridSolver::chosen(
+        cell_parameters, volume, parameters.output.write_fields, grid_refusal);
       std::unique_ptr<CellProblem<3>>  mesh_problem;
       std::unique_ptr<VoxelGridSolver> grid_problem;
       if (on_grid)

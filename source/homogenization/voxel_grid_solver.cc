@@ -23,6 +23,7 @@
 #endif
 #include <map>
 #include <sstream>
+#include <tribodyn/core/errors.h>
 #include <tribodyn/homogenization/voxel_grid_solver.h>
 
 namespace tribodyn
@@ -1806,6 +1807,26 @@ namespace tribodyn
         << " does not coarsen to at most " << internal::max_coarse_dofs
         << " unknowns by halving every axis while all are even";
       return s.str();
+    }
+
+
+    bool
+    VoxelGridSolver::chosen(const VolumeCellProblemParameters &parameters,
+                            const VoxelVolume                 &volume,
+                            const bool                         write_fields,
+                            std::string                       &why)
+    {
+      why = parameters.preconditioner != CellPreconditioner::multigrid
+              ? "it has no AMG ('Cell problem/Preconditioner = AMG')"
+            : write_fields
+              ? "it writes no VTU fields ('Output/Write fields = true')"
+              : unsupported(volume);
+      if (parameters.grid == VolumeGrid::voxel_grid)
+        check_parameter(why.empty(),
+                        "Cell problem/Grid",
+                        "'voxel grid' cannot solve this run: " + why
+                          + ". Set it to 'mesh' or 'auto'.");
+      return parameters.grid != VolumeGrid::mesh && why.empty();
     }
 
 

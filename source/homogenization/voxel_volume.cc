@@ -6,6 +6,7 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/homogenization/volume_source.h>
 #include <tribodyn/homogenization/voxel_volume.h>
@@ -93,6 +94,29 @@ namespace tribodyn
         , ids(std::move(ids))
         , origin(origin)
     {
+    }
+
+
+    VoxelVolume
+    VoxelVolume::window(const std::array<unsigned int, 3> &first,
+                        const std::array<unsigned int, 3> &size) const
+    {
+      for (unsigned int d = 0; d < 3; ++d)
+        if (size[d] == 0 || first[d] + size[d] > n[d])
+          throw std::logic_error("VoxelVolume::window(): the window leaves "
+                                 "the volume");
+      const std::size_t count = std::size_t(size[0]) * size[1] * size[2];
+      std::vector<std::uint8_t> window_ids(count);
+      std::size_t               m = 0;
+      for (unsigned int k = 0; k < size[2]; ++k)
+        for (unsigned int j = 0; j < size[1]; ++j)
+          for (unsigned int i = 0; i < size[0]; ++i)
+            window_ids[m++] = voxel(first[0] + i, first[1] + j, first[2] + k);
+      std::ostringstream s;
+      s << "window of " << size[0] << " x " << size[1] << " x " << size[2]
+        << " voxels from (" << first[0] << ", " << first[1] << ", " << first[2]
+        << ") of " << origin;
+      return VoxelVolume(size, h, std::move(window_ids), s.str());
     }
 
 

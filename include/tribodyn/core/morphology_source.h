@@ -194,6 +194,14 @@ namespace tribodyn
     /// The map.
     virtual Map
     create(const Common &common) const = 0;
+
+    /// Whether the map depends on `Morphology/Seed` (a study or an
+    /// RVE-size study draws new maps by changing it).
+    virtual bool
+    uses_seed() const
+    {
+      return false;
+    }
   };
 
 
@@ -211,11 +219,6 @@ namespace tribodyn
     /// hold any number of phases, and a study cuts windows from it.
     virtual bool
     is_map() const;
-
-    /// Whether the map depends on `Morphology/Seed` (a study or an
-    /// RVE-size study draws new maps by changing it).
-    virtual bool
-    uses_seed() const;
 
     /// The entry that fixes the map's number of phases (an image's
     /// segmentation), if any: the materials must then name exactly that

@@ -9,6 +9,7 @@
 #ifndef tribodyn_homogenization_rve_output_h
 #define tribodyn_homogenization_rve_output_h
 
+#include <array>
 #include <ostream>
 #include <string>
 #include <tribodyn/core/plugin_registry.h>
@@ -32,9 +33,12 @@ namespace tribodyn
       /// Whether both KUBC and SUBC were solved (the systematic error).
       bool         kubc_and_subc = false;
       unsigned int n_windows     = 0;
-      /// Pixel size of the windows (m).
-      double             pixel_width = 0, pixel_height = 0;
-      const std::string &output_directory;
+      /// 2: windows of pixels (`set Problem = rve`); 3: of voxels
+      /// (`set Problem = volume_rve`).
+      unsigned int dim = 2;
+      /// Edges of a pixel (the third 1) or of a voxel (m).
+      std::array<double, 3> element_size = {{1, 1, 1}};
+      const std::string    &output_directory;
 
       /// The fit of the property and boundary condition of @p sample.
       const RveFit &
@@ -45,10 +49,35 @@ namespace tribodyn
       sample_of(const std::string &property,
                 const std::string &boundary_condition,
                 const unsigned int size) const;
-      /// "0.5 mm² (≈ 0.7 × 0.7 mm)": an area as a window of the largest
-      /// size's aspect ratio ("–" when not finite).
+      /// "px" or "vox": the unit of the sizes and integral ranges.
       std::string
-      as_window(const double area) const;
+      element_unit() const;
+      /// "area" or "volume", with the SI unit of the csv columns ("m2",
+      /// "m3").
+      std::string
+      measure_name() const;
+      std::string
+      measure_si_unit() const;
+      /// Area (m^2) or volume (m^3) of a pixel or voxel.
+      double
+      element_measure() const;
+      /// Pixels or voxels of the windows of size @p size.
+      double
+      elements(const unsigned int size) const;
+      /// "70 × 20" or "16 × 16 × 16" (@p separator between the numbers),
+      /// in elements or, with @p in_mm, in mm.
+      std::string
+      size_text(const unsigned int size,
+                const std::string &separator = " × ",
+                const bool         in_mm     = false) const;
+      /// "0.5 mm² (≈ 0.7 × 0.7 mm)": an area or volume as a window of the
+      /// largest size's aspect ratios ("–" when not finite).
+      std::string
+      as_window(const double measure) const;
+      /// Whether @p property is a modulus (Pa; GPa in rve.md): E_*, G_*,
+      /// k, mu.
+      static bool
+      is_modulus(const std::string &property);
     };
 
     class RveOutput : public PostprocessorBase

@@ -2,16 +2,15 @@
 #define tribodyn_homogenization_rve_study_h
 
 #include <array>
+#include <cstdint>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <memory>
 #include <string>
-#include <tribodyn/core/morphology.h>
 #include <tribodyn/core/parameter_binding.h>
 #include <tribodyn/core/plugin_registry.h>
 #include <tribodyn/core/problem.h>
 #include <tribodyn/homogenization/cell_problem.h>
-#include <tribodyn/homogenization/homogenization_problem.h>
 #include <tribodyn/homogenization/rve_statistics.h>
 #include <vector>
 
@@ -34,9 +33,10 @@ namespace tribodyn
         realisations
       };
 
-      /// Window sizes in pixels (x, y), increasing.
-      std::vector<std::array<unsigned int, 2>> window_sizes
-        = {{{70, 20}}, {{140, 40}}, {{280, 80}}};
+      /// Window sizes in pixels (x, y; the third 1) or voxels (x, y, z),
+      /// increasing.
+      std::vector<std::array<unsigned int, 3>> window_sizes
+        = {{{70, 20, 1}}, {{140, 40, 1}}, {{280, 80, 1}}};
       /// Windows of each size (one per size).
       std::vector<unsigned int> windows_per_size = {8, 8, 8};
       Source                    source           = Source::crops;
@@ -63,8 +63,10 @@ namespace tribodyn
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
+      /// Read the entries for a study of dimension @p dim: a window size
+      /// is one number (a square or a cube) or @p dim numbers.
       void
-      parse_parameters(dealii::ParameterHandler &prm);
+      parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim);
     };
 
     /// One window of the study: its size, which realisation, where.
@@ -75,8 +77,8 @@ namespace tribodyn
       unsigned int index = 0, global_index = 0;
       /// Seed of the morphology the window is made from.
       unsigned int morphology_seed = 0;
-      /// Lower-left pixel in that morphology (crops).
-      unsigned int i0 = 0, j0 = 0;
+      /// First pixel or voxel (lowest x, y, z) in that morphology (crops).
+      std::array<unsigned int, 3> first = {{0, 0, 0}};
     };
 
     /// The sample of one (size, boundary condition, property).
@@ -98,18 +100,28 @@ namespace tribodyn
       rve::VarianceFit fit;
       /// Mean of the largest windows (the Z of the relative error).
       double mean = 0;
-      /// V(eps_rel, n) (m^2) for each number of realisations asked for.
-      std::vector<double> rve_area;
+      /// V(eps_rel, n) (m^2 in 2D, m^3 in 3D) for each number of
+      /// realisations asked for.
+      std::vector<double> rve_measure;
     };
 
     /**
-     * `set Problem = rve`: the RVE-size study of Kanit et al. (2003)
-     * in one parameter file. Windows of the sizes of "RVE study/Window
+     * The RVE-size study of Kanit et al. (2003) in one parameter file, in
+     * 2D (`set Problem = rve`: windows of a 2D morphology, plane-strain
+     * cell problems; rve_study_plane.cc) and in 3D (`set Problem =
+     * volume_rve`: windows of a voxel volume, 3D cell problems;
+     * rve_study_volume.cc). Windows of the sizes of "RVE study/Window
      * sizes", "Windows per size" of each, are cut from (or generated as)
      * the morphology of "Morphology"; each is homogenized under the
      * boundary conditions of "Cell problem"; the windows are spread
      * round-robin over groups of "Ranks per window" MPI ranks. Writes
      * rve.csv, rve.md, rve.png (scripts/plot_rve) and summary.json.
+     *
+     * This class is the study's procedure, the same in both dimensions:
+     * the windows' positions, their distribution over the rank groups with
+     * progress and failures, the statistics and fits, the results. A
+     * derived class says what a window of its morphology is and what is
+     * measured on it.
      */
     class RveStudy : public Problem
     {
@@ -117,28 +129,61 @@ namespace tribodyn
       static void
       declare_parameters(dealii::ParameterHandler &prm);
 
-      RveStudy(dealii::ParameterHandler &prm, const RunContext &context);
-
       void
       run() override;
 
-    private:
-      /// The windows, the same list on every rank.
+    protected:
+      /// The derived class reads its subsections and "RVE study"
+      /// (parameters.parse_parameters(prm, dim)), sets the geometry below
+      /// and calls plan_windows().
+      RveStudy(const RunContext &context, const unsigned int dim);
+
+      /// The windows, the same list on every rank: positions drawn in the
+      /// map of map_size (crops), seeds Morphology/Seed + window number
+      /// when the generator is random.
       void
-      plan_windows();
-      /// The material map of window @p w.
-      Morphology
-      make_window(const RveWindow &w) const;
-      /// The values of window @p w (fractions, then per BC the constants)
-      /// on the communicator @p group; the cell problems time themselves
-      /// in @p timer.
-      std::vector<double>
+      plan_windows(const std::uint64_t morphology_seed);
+
+      /// The phases' names (the fractions' properties).
+      virtual std::vector<std::string>
+      phase_names() const = 0;
+      /// The boundary conditions of "Cell problem".
+      virtual const std::vector<BoundaryCondition> &
+      cell_boundary_conditions() const = 0;
+      /// The constants measured per boundary condition.
+      virtual const std::vector<std::string> &
+      constant_names() const = 0;
+      /// The value of each constant in each phase ([constant][phase]), for
+      /// the point variances.
+      virtual std::vector<std::vector<double>>
+      phase_constants() const = 0;
+      /// The values of window @p w on the communicator @p group: the phase
+      /// fractions, then per boundary condition solved the constants; the
+      /// cell problems time themselves in @p timer.
+      virtual std::vector<double>
       measure(const RveWindow     &w,
               const MPI_Comm       group,
-              dealii::TimerOutput &timer) const;
+              dealii::TimerOutput &timer) const = 0;
+
+      /// "140x40" or "16x16x16".
+      std::string
+      size_text(const unsigned int size_index) const;
       /// The boundary conditions solved (none without cell problems).
       const std::vector<BoundaryCondition> &
       boundary_conditions() const;
+
+      RunContext         context;
+      RveStudyParameters parameters;
+      const unsigned int dim;
+      /// Edges of a pixel (the third 1) or a voxel (m).
+      std::array<double, 3> element_size = {{1, 1, 1}};
+      /// Size of the map crops are cut from (pixels or voxels).
+      std::array<unsigned int, 3> map_size = {{1, 1, 1}};
+      /// Whether the morphology's generator draws a new map per seed.
+      bool                   random = false;
+      std::vector<RveWindow> windows;
+
+    private:
       /// Names of the values measure() returns and their BC ("none").
       std::vector<std::pair<std::string, std::string>>
       value_names() const;
@@ -151,22 +196,8 @@ namespace tribodyn
                     const std::vector<RveFit>    &fits,
                     const unsigned int            n_groups,
                     const double                  wall_time) const;
-
-      RunContext            context;
-      MorphologyParameters  morphology_parameters;
-      MaterialsParameters   materials;
-      CellProblemParameters cell_problem_parameters;
-      RveStudyParameters    parameters;
-      /// The map windows are cut from (crops of a map without a seed).
-      std::unique_ptr<Morphology> fixed_map;
-      /// Pixel size of the windows (m).
-      double                 pixel_width = 0, pixel_height = 0;
-      std::vector<RveWindow> windows;
     };
 
-    /// The constants reported for each boundary condition.
-    const std::vector<std::string> &
-    rve_constant_names();
   } // namespace homogenization
 } // namespace tribodyn
 

@@ -65,6 +65,19 @@ namespace tribodyn
       static std::string
       unsupported(const VoxelVolume &volume);
 
+      /**
+       * Whether a run of @p parameters on @p volume solves on the voxel
+       * grid ('Cell problem/Grid': 'auto' takes it where it can: multigrid,
+       * a grid that coarsens, no VTU fields, @p write_fields false). When
+       * it takes the mesh, @p why says why the grid cannot; 'Grid = voxel
+       * grid' on such a run is refused (InputError naming the entry).
+       */
+      static bool
+      chosen(const VolumeCellProblemParameters &parameters,
+             const VoxelVolume                 &volume,
+             const bool                         write_fields,
+             std::string                       &why);
+
       /// The six load cases of @p bc: averages, CG counts and times, and
       /// the fields of the first load case on @p slices.
       CellResult<3>

@@ -127,6 +127,11 @@ namespace tribodyn
       {
         return ids[(std::size_t(k) * n[1] + j) * n[0] + i];
       }
+      /// The window of @p size voxels whose first voxel is @p first (it
+      /// must lie in the volume): the crops of an RVE-size study.
+      VoxelVolume
+      window(const std::array<unsigned int, 3> &first,
+             const std::array<unsigned int, 3> &size) const;
       /// Number of phases: the largest material id plus one (at least 2).
       unsigned int
       n_phases() const;

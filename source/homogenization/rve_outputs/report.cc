@@ -14,20 +14,12 @@ namespace tribodyn
   {
     namespace
     {
-      /// Moduli are written in GPa in rve.md (Pa in rve.csv).
-      bool
-      is_modulus(const std::string &property)
-      {
-        return property.rfind("E_", 0) == 0 || property.rfind("G_", 0) == 0;
-      }
-
-
       /// "31.92 GPa" or "0.2001": a value of @p property for rve.md.
       std::string
       format_value(const std::string &property, const double v)
       {
         std::ostringstream s;
-        if (is_modulus(property))
+        if (RveResults::is_modulus(property))
           s << std::fixed << std::setprecision(3) << v / 1e9;
         else
           s << std::fixed << std::setprecision(4) << v;
@@ -63,32 +55,35 @@ namespace tribodyn
         void
         write(const RveResults &r, std::ostream &screen) const override
         {
-          const RveStudyParameters &parameters  = r.parameters;
-          const auto               &sizes       = parameters.window_sizes;
-          const auto               &ns          = parameters.realisations;
-          const double              pixel_width = r.pixel_width,
-                       pixel_height             = r.pixel_height;
-          const double       pixel_area         = pixel_width * pixel_height;
-          const std::string &dir                = r.output_directory;
-          const double       eps                = parameters.relative_error;
-          const auto        &samples            = r.samples;
-          const auto        &fits               = r.fits;
+          const RveStudyParameters &parameters = r.parameters;
+          const auto               &sizes      = parameters.window_sizes;
+          const auto               &ns         = parameters.realisations;
+          const double              element    = r.element_measure();
+          const std::string         unit       = r.element_unit();
+          const std::string        &dir        = r.output_directory;
+          const double              eps        = parameters.relative_error;
+          const auto               &samples    = r.samples;
+          const auto               &fits       = r.fits;
           // rve.md
           std::ostringstream md;
+          md << "# RVE-size study (Kanit et al. 2003)\n\n"
+             << r.n_windows << " windows ("
+             << (parameters.source == RveStudyParameters::Source::crops
+                   ? "cut at random positions"
+                   : "independent generator realisations")
+             << "), " << (r.dim == 2 ? "pixel " : "voxel ")
+             << r.element_size[0] * 1e3 << " × " << r.element_size[1] * 1e3;
+          if (r.dim == 3)
+            md << " × " << r.element_size[2] * 1e3;
           md
-            << "# RVE-size study (Kanit et al. 2003)\n\n"
-            << r.n_windows << " windows ("
-            << (parameters.source == RveStudyParameters::Source::crops
-                  ? "cut at random positions"
-                  : "independent generator realisations")
-            << "), pixel " << pixel_width * 1e3 << " × " << pixel_height * 1e3
             << " mm; moduli in GPa. `std` is the sample standard deviation of "
                "the windows of one size; `bias` is the mean against the "
                "largest windows' mean (same boundary condition); `eps_rel(n) = "
                "2 std / (mean sqrt(n))` is the relative error of the mean of n "
                "such windows (two standard errors).\n\n"
             << "## Means and standard deviations\n\n"
-            << "| property | BC | window (px) | window (mm) | n | mean | std | "
+            << "| property | BC | window (" << unit
+            << ") | window (mm) | n | mean | std | "
                "std/mean | bias |";
           for (const unsigned int n : ns)
             md << " eps_rel(n=" << n << ") |";
@@ -98,13 +93,11 @@ namespace tribodyn
           md << "\n";
           for (const RveSample &row : samples)
             {
-              const auto &s  = sizes[row.size_index];
               const auto &st = row.statistics;
               md << "| " << row.property << " | " << row.boundary_condition
-                 << " | " << s[0] << " × " << s[1] << " | "
-                 << s[0] * pixel_width * 1e3 << " × "
-                 << s[1] * pixel_height * 1e3 << " | " << st.n << " | "
-                 << format_value(row.property, st.mean) << " | "
+                 << " | " << r.size_text(row.size_index) << " | "
+                 << r.size_text(row.size_index, " × ", true) << " | " << st.n
+                 << " | " << format_value(row.property, st.mean) << " | "
                  << format_value(row.property, st.std) << " | "
                  << percent(st.mean != 0 ? st.std / std::abs(st.mean) : 0.)
                  << " | " << percent(row.bias) << " |";
@@ -120,13 +113,14 @@ namespace tribodyn
                "sampling error of a variance, 1/Var(ln s²) ≈ (n − 1)/2); D² is "
                "the point variance (Σ f_k (Z_k − Z̄)², f_k the mean phase "
                "fractions); A from the free fit, A₁ from the fit with α = 1 "
-               "(± its relative standard error), both in pixels; V_RVE = (4 K "
-               "/ (ε² Z̄² n))^(1/α) for ε = "
-            << percent(eps, 1)
-            << ", Z̄ the mean of the largest windows, as an area and as a "
-               "window of the largest windows' aspect ratio.\n\n"
-            << "| property | BC | Z̄ | D² | α ± se | A (px) | A₁ (px) | χ²/dof "
-               "|";
+               "(± its relative standard error), both in "
+            << (r.dim == 2 ? "pixels" : "voxels")
+            << "; V_RVE = (4 K / (ε² Z̄² n))^(1/α) for ε = " << percent(eps, 1)
+            << ", Z̄ the mean of the largest windows, as "
+            << (r.dim == 2 ? "an area" : "a volume")
+            << " and as a window of the largest windows' aspect ratio.\n\n"
+            << "| property | BC | Z̄ | D² | α ± se | A (" << unit << ") | A₁ ("
+            << unit << ") | χ²/dof |";
           for (const unsigned int n : ns)
             md << " V_RVE (n=" << n << ") |";
           md << "\n|---|---|---|---|---|---|---|---|";
@@ -140,11 +134,11 @@ namespace tribodyn
                  << format_general(f.fit.point_variance) << " | "
                  << format_general(f.fit.alpha) << " ± "
                  << format_general(f.fit.alpha_se, 2) << " | "
-                 << format_general(f.fit.integral_range / pixel_area) << " | "
-                 << format_general(f.fit.integral_range_alpha1 / pixel_area)
+                 << format_general(f.fit.integral_range / element) << " | "
+                 << format_general(f.fit.integral_range_alpha1 / element)
                  << " ± " << percent(f.fit.integral_range_alpha1_se, 0) << " | "
                  << format_general(f.fit.chi2_dof, 2) << " |";
-              for (const double a : f.rve_area)
+              for (const double a : f.rve_measure)
                 md << " " << r.as_window(a) << " |";
               md << "\n";
             }
@@ -152,11 +146,8 @@ namespace tribodyn
           // The answer: for each constant, BC and n, which window sizes are
           // RVEs at eps (measured), and the fitted size; then the systematic
           // error, the KUBC - SUBC gap.
-          const auto size_name = [&](const unsigned int i) {
-            std::ostringstream s;
-            s << sizes[i][0] << "×" << sizes[i][1];
-            return s.str();
-          };
+          const auto size_name
+            = [&](const unsigned int i) { return r.size_text(i, "×"); };
           md << "\n## Which windows are RVEs at " << percent(eps, 1) << "?\n\n"
              << "A size is an RVE for a constant, a boundary condition and n "
                 "realisations when the mean of n such windows is within "
@@ -165,7 +156,8 @@ namespace tribodyn
                 "standard deviation of its windows; the fitted V_RVE "
                 "interpolates). This is the statistical error only; the "
                 "systematic one (bias, KUBC–SUBC gap) follows.\n\n"
-             << "| property | BC | n | eps_rel(n) per window size (px) | "
+             << "| property | BC | n | eps_rel(n) per window size (" << unit
+             << ") | "
                 "smallest RVE size (measured) | V_RVE (fit) |\n"
              << "|---|---|---|---|---|---|\n";
           for (const RveFit &f : fits)
@@ -194,8 +186,8 @@ namespace tribodyn
                     }
                   md << " | "
                      << (smallest < 0 ? std::string("none of them")
-                                      : size_name(smallest) + " px")
-                     << " | " << r.as_window(f.rve_area[k]) << " |\n";
+                                      : size_name(smallest) + " " + unit)
+                     << " | " << r.as_window(f.rve_measure[k]) << " |\n";
                 }
             }
 
@@ -211,17 +203,27 @@ namespace tribodyn
                    "of "
                    "the windows). An RVE at "
                 << percent(eps, 1) << " also needs it below " << percent(eps, 1)
-                << ".\n\n| property | window (px) | KUBC | SUBC | (KUBC − "
-                   "SUBC)/SUBC |\n|---|---|---|---|---|\n";
-              for (const char *c : {"E_L", "E_T", "G_LT"})
-                for (unsigned int i = 0; i < sizes.size(); ++i)
-                  {
-                    const double K = r.sample_of(c, "KUBC", i)->statistics.mean,
-                                 S = r.sample_of(c, "SUBC", i)->statistics.mean;
-                    md << "| " << c << " | " << size_name(i) << " | "
-                       << format_value(c, K) << " | " << format_value(c, S)
-                       << " | " << percent(K / S - 1) << " |\n";
-                  }
+                << ".\n\n| property | window (" << unit
+                << ") | KUBC | SUBC | (KUBC − SUBC)/SUBC "
+                   "|\n|---|---|---|---|---|"
+                   "\n";
+              // the moduli, in the order of the constants
+              for (const RveFit &f : fits)
+                {
+                  if (f.boundary_condition != "KUBC"
+                      || !RveResults::is_modulus(f.property))
+                    continue;
+                  const std::string &c = f.property;
+                  for (unsigned int i = 0; i < sizes.size(); ++i)
+                    {
+                      const double K
+                        = r.sample_of(c, "KUBC", i)->statistics.mean,
+                        S = r.sample_of(c, "SUBC", i)->statistics.mean;
+                      md << "| " << c << " | " << size_name(i) << " | "
+                         << format_value(c, K) << " | " << format_value(c, S)
+                         << " | " << percent(K / S - 1) << " |\n";
+                    }
+                }
             }
           write_file_atomically(join_path(dir, "rve.md"), md.str());
           screen << "\n" << md.str();

@@ -48,6 +48,12 @@ namespace tribodyn
         {
           return make_random_inclusions(p, shape);
         }
+
+        bool
+        uses_seed() const override
+        {
+          return true;
+        }
       };
     } // namespace
 

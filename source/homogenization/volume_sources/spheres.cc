@@ -17,6 +17,12 @@ namespace tribodyn
         {
           return make_random_inclusions(p, InclusionShape());
         }
+
+        bool
+        uses_seed() const override
+        {
+          return true;
+        }
       };
     } // namespace
 
