@@ -308,6 +308,55 @@ namespace tribodyn
 
 
     void
+    RveStudy::check_phases_named(const unsigned int n_phases,
+                                 const std::string &what) const
+    {
+      const unsigned int n_named = phase_names().size();
+      check_parameter(n_phases <= n_named,
+                      "Materials/Names",
+                      what + " has material ids up to "
+                        + std::to_string(n_phases - 1) + " but only "
+                        + std::to_string(n_named)
+                        + " materials are named. Name one material per "
+                          "phase, in the order of the material ids.");
+    }
+
+
+    std::vector<double>
+    RveStudy::fraction_values(const std::vector<double> &fractions,
+                              const unsigned int         n_phases) const
+    {
+      check_phases_named(n_phases, "a window");
+      std::vector<double> values(phase_names().size(), 0.);
+      for (unsigned int k = 0; k < fractions.size() && k < values.size(); ++k)
+        values[k] = fractions[k];
+      return values;
+    }
+
+
+    void
+    RveStudy::make_first_windows(
+      const std::function<void(const RveWindow &)> &make) const
+    {
+      for (const RveWindow &w : windows)
+        if (w.index == 0)
+          try
+            {
+              make(w);
+            }
+          catch (const InputError &e)
+            {
+              throw InputError("Parameter '" + sizes_name
+                               + "': the generator cannot make a window of "
+                               + size_text(w.size_index)
+                               + (dim == 2 ? " pixels" : " voxels")
+                               + " ('Source = realisations'): " + e.what()
+                               + " Use larger windows, or 'Source = crops'.");
+            }
+    }
+
+
+    void
     RveStudy::plan_windows(const std::uint64_t morphology_seed)
     {
       for (const auto &s : parameters.window_sizes)

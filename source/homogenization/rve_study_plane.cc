@@ -66,34 +66,10 @@ namespace tribodyn
           plan_windows(morphology_parameters.random_seed);
 
           // Every phase of the maps has a name and constants.
-          const unsigned int n_named = materials.names().size();
           if (fixed_map)
-            check_parameter(fixed_map->n_phases() <= n_named,
-                            "Materials/Names",
-                            "the morphology has material ids up to "
-                              + std::to_string(fixed_map->n_phases() - 1)
-                              + " but only " + std::to_string(n_named)
-                              + " materials are named. Name one material per "
-                                "phase, in the order of the material ids.");
-
-          // A generator that cannot fill a window is refused now, not after
-          // an hour of cell problems: build the first window of each size.
+            check_phases_named(fixed_map->n_phases(), "the morphology");
           if (parameters.source == Source::realisations)
-            for (const RveWindow &w : windows)
-              if (w.index == 0)
-                try
-                  {
-                    make_window(w);
-                  }
-                catch (const InputError &e)
-                  {
-                    throw InputError(
-                      "Parameter 'RVE study/Window sizes': the generator "
-                      "cannot make a window of "
-                      + size_text(w.size_index)
-                      + " pixels ('Source = realisations'): " + e.what()
-                      + " Use larger windows, or 'Source = crops'.");
-                  }
+            make_first_windows([this](const RveWindow &w) { make_window(w); });
         }
 
       protected:
@@ -142,19 +118,9 @@ namespace tribodyn
                 const MPI_Comm       group,
                 dealii::TimerOutput &timer) const override
         {
-          const Morphology   window   = make_window(w);
-          const unsigned int n_phases = materials.names().size();
-          check_parameter(window.n_phases() <= n_phases,
-                          "Materials/Names",
-                          "a window holds material id "
-                            + std::to_string(window.n_phases() - 1)
-                            + " but only " + std::to_string(n_phases)
-                            + " materials are named.");
-          std::vector<double> values(n_phases, 0.);
-          const auto          f = window.phase_fractions();
-          for (unsigned int k = 0; k < f.size() && k < n_phases; ++k)
-            values[k] = f[k];
-
+          const Morphology    window = make_window(w);
+          std::vector<double> values
+            = fraction_values(window.phase_fractions(), window.n_phases());
           if (boundary_conditions().empty())
             return values;
           const auto     phases = materials.phases();

@@ -70,41 +70,24 @@ namespace tribodyn
             }
           plan_windows(morphology.random_seed);
 
-          const unsigned int n_named = materials.names().size();
           if (fixed_volume)
-            check_parameter(fixed_volume->n_phases() <= n_named,
-                            "Materials/Names",
-                            "the volume has material ids up to "
-                              + std::to_string(fixed_volume->n_phases() - 1)
-                              + " but only " + std::to_string(n_named)
-                              + " materials are named. Name one material per "
-                                "phase, in the order of the material ids.");
+            check_phases_named(fixed_volume->n_phases(), "the volume");
           for (const auto &phase : materials.phases())
             stiffness.push_back(stiffness_3d(phase));
-
-          // A generator that cannot fill a window, or a window the grid
-          // cannot solve with 'Grid = voxel grid', is refused now, not after
-          // an hour of cell problems: build the first window of each size.
-          for (const RveWindow &w : windows)
-            if (w.index == 0)
-              {
-                std::unique_ptr<VoxelVolume> window;
-                try
-                  {
-                    window = std::make_unique<VoxelVolume>(make_window(w));
-                  }
-                catch (const InputError &e)
-                  {
-                    throw InputError(
-                      "Parameter 'RVE study/Window sizes': the generator "
-                      "cannot make a window of "
-                      + size_text(w.size_index)
-                      + " voxels ('Source = realisations'): " + e.what()
-                      + " Use larger windows, or 'Source = crops'.");
-                  }
-                std::string why;
-                VoxelGridSolver::chosen(cell_problem, *window, false, why);
-              }
+          if (parameters.source == Source::realisations)
+            make_first_windows([this](const RveWindow &w) { make_window(w); });
+          // A window size the grid cannot solve with 'Grid = voxel grid' is
+          // refused now too.
+          if (cell_problem.grid == VolumeGrid::voxel_grid)
+            for (const RveWindow &w : windows)
+              if (w.index == 0)
+                {
+                  std::string why;
+                  VoxelGridSolver::chosen(cell_problem,
+                                          make_window(w),
+                                          false,
+                                          why);
+                }
         }
 
       protected:
@@ -149,18 +132,9 @@ namespace tribodyn
                 const MPI_Comm       group,
                 dealii::TimerOutput &timer) const override
         {
-          const VoxelVolume  window   = make_window(w);
-          const unsigned int n_phases = materials.names().size();
-          check_parameter(window.n_phases() <= n_phases,
-                          "Materials/Names",
-                          "a window holds material id "
-                            + std::to_string(window.n_phases() - 1)
-                            + " but only " + std::to_string(n_phases)
-                            + " materials are named.");
-          std::vector<double> values(n_phases, 0.);
-          const auto          f = window.phase_fractions();
-          for (unsigned int k = 0; k < f.size() && k < n_phases; ++k)
-            values[k] = f[k];
+          const VoxelVolume   window = make_window(w);
+          std::vector<double> values
+            = fraction_values(window.phase_fractions(), window.n_phases());
           if (boundary_conditions().empty())
             return values;
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
+#include <functional>
 #include <memory>
 #include <string>
 #include <tribodyn/core/parameter_binding.h>
@@ -168,6 +169,23 @@ namespace tribodyn
       /// "140x40" or "16x16x16".
       std::string
       size_text(const unsigned int size_index) const;
+      /// Refuse (InputError on 'Materials/Names') @p what holding more
+      /// phases, @p n_phases, than the materials name.
+      void
+      check_phases_named(const unsigned int n_phases,
+                         const std::string &what) const;
+      /// The first values of measure(): the phase fractions @p fractions of
+      /// a window of @p n_phases phases (checked against the names), one
+      /// per named phase.
+      std::vector<double>
+      fraction_values(const std::vector<double> &fractions,
+                      const unsigned int         n_phases) const;
+      /// Call @p make on the first window of each size, so that a
+      /// generator that cannot fill a window is refused before an hour of
+      /// cell problems (its InputError, with the size and the fix).
+      void
+      make_first_windows(
+        const std::function<void(const RveWindow &)> &make) const;
       /// The boundary conditions solved (none without cell problems).
       const std::vector<BoundaryCondition> &
       boundary_conditions() const;
