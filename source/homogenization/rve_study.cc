@@ -39,7 +39,7 @@ namespace tribodyn
 
 
       /// "140x40" -> {140, 40, 0}; "16x16x8" -> {16, 16, 8}; "32" -> {32,
-      /// 0, 0} (a square or a cube: resolve_window_sizes()).
+      /// 0, 0} (a square or a cube: RveStudyParameters::parse_parameters()).
       std::array<unsigned int, 3>
       parse_window_size(const std::string &word)
       {
@@ -69,6 +69,15 @@ namespace tribodyn
             begin = end + 1;
           }
         return size;
+      }
+
+
+      /// "140x40" (2D) or "16x16x8" (3D).
+      std::string
+      size_word(const std::array<unsigned int, 3> &s, const unsigned int dim)
+      {
+        return std::to_string(s[0]) + "x" + std::to_string(s[1])
+               + (dim == 3 ? "x" + std::to_string(s[2]) : "");
       }
 
 
@@ -252,17 +261,13 @@ namespace tribodyn
         return 1. * window_sizes[i][0] * window_sizes[i][1]
                * window_sizes[i][2];
       };
-      const auto text = [&](const unsigned int i) {
-        return std::to_string(window_sizes[i][0]) + "x"
-               + std::to_string(window_sizes[i][1])
-               + (dim == 3 ? "x" + std::to_string(window_sizes[i][2]) : "");
-      };
       for (unsigned int i = 1; i < window_sizes.size(); ++i)
         check_parameter(elements(i) > elements(i - 1),
                         b.path("Window sizes"),
                         std::string("the sizes must have increasing ")
                           + (dim == 2 ? "areas" : "volumes") + ", but "
-                          + text(i) + " follows " + text(i - 1)
+                          + size_word(window_sizes[i], dim) + " follows "
+                          + size_word(window_sizes[i - 1], dim)
                           + ". List them from the smallest to the largest.");
       check_parameter(!windows_per_size.empty()
                         && (windows_per_size.size() == 1
@@ -301,9 +306,7 @@ namespace tribodyn
     std::string
     RveStudy::size_text(const unsigned int size_index) const
     {
-      const auto &s = parameters.window_sizes[size_index];
-      return std::to_string(s[0]) + "x" + std::to_string(s[1])
-             + (dim == 3 ? "x" + std::to_string(s[2]) : "");
+      return size_word(parameters.window_sizes[size_index], dim);
     }
 
 
@@ -364,11 +367,9 @@ namespace tribodyn
           check_parameter(
             parameters.source == Source::realisations || s[d] <= map_size[d],
             sizes_name,
-            "the window " + std::to_string(s[0]) + "x" + std::to_string(s[1])
-              + (dim == 3 ? "x" + std::to_string(s[2]) : "")
+            "the window " + size_word(s, dim)
               + " is larger than the morphology it is cut from ("
-              + std::to_string(map_size[0]) + "x" + std::to_string(map_size[1])
-              + (dim == 3 ? "x" + std::to_string(map_size[2]) : "")
+              + size_word(map_size, dim)
               + (dim == 2 ? " pixels). Use smaller windows, or a larger map "
                             "('Morphology/Pixels in x', 'Pixels in y' with "
                             "'Width', 'Height' in proportion, or a larger "
