@@ -71,8 +71,7 @@ namespace tribodyn
     double
     RveResults::elements(const unsigned int size) const
     {
-      const auto &s = parameters.window_sizes[size];
-      return 1. * s[0] * s[1] * s[2];
+      return parameters.window_elements(size);
     }
 
 
@@ -81,15 +80,14 @@ namespace tribodyn
                           const std::string &separator,
                           const bool         in_mm) const
     {
+      if (!in_mm)
+        return format_window_size(parameters.window_sizes[size],
+                                  dim,
+                                  separator);
       std::ostringstream s;
       for (unsigned int d = 0; d < dim; ++d)
-        {
-          s << (d == 0 ? "" : separator);
-          if (in_mm)
-            s << parameters.window_sizes[size][d] * element_size[d] * 1e3;
-          else
-            s << parameters.window_sizes[size][d];
-        }
+        s << (d == 0 ? "" : separator)
+          << parameters.window_sizes[size][d] * element_size[d] * 1e3;
       return s.str();
     }
 

@@ -72,15 +72,6 @@ namespace tribodyn
       }
 
 
-      /// "140x40" (2D) or "16x16x8" (3D).
-      std::string
-      size_word(const std::array<unsigned int, 3> &s, const unsigned int dim)
-      {
-        return std::to_string(s[0]) + "x" + std::to_string(s[1])
-               + (dim == 3 ? "x" + std::to_string(s[2]) : "");
-      }
-
-
       /// Uniform integer in [0, n] from a 32-bit generator (multiply-shift,
       /// the same on every platform, unlike std::uniform_int_distribution).
       unsigned int
@@ -90,6 +81,18 @@ namespace tribodyn
           (static_cast<std::uint64_t>(rng()) * (std::uint64_t(n) + 1)) >> 32);
       }
     } // namespace
+
+
+    std::string
+    format_window_size(const std::array<unsigned int, 3> &size,
+                       const unsigned int                 dim,
+                       const std::string                 &separator)
+    {
+      std::string text = std::to_string(size[0]);
+      for (unsigned int d = 1; d < dim; ++d)
+        text += separator + std::to_string(size[d]);
+      return text;
+    }
 
 
     ParameterBinding
@@ -103,9 +106,8 @@ namespace tribodyn
       // same ("8"), "1, 6".
       std::string sizes_text, per_size_text, realisations_text;
       for (const auto &size : window_sizes)
-        sizes_text += (sizes_text.empty() ? "" : ", ") + std::to_string(size[0])
-                      + "x" + std::to_string(size[1])
-                      + (size[2] > 1 ? "x" + std::to_string(size[2]) : "");
+        sizes_text += (sizes_text.empty() ? "" : ", ")
+                      + format_window_size(size, size[2] > 1 ? 3 : 2);
       const bool same_per_size = std::all_of(windows_per_size.begin(),
                                              windows_per_size.end(),
                                              [this](const unsigned int n) {
@@ -257,17 +259,14 @@ namespace tribodyn
           if (dim == 2)
             size[2] = 1;
         }
-      const auto elements = [&](const unsigned int i) {
-        return 1. * window_sizes[i][0] * window_sizes[i][1]
-               * window_sizes[i][2];
-      };
       for (unsigned int i = 1; i < window_sizes.size(); ++i)
-        check_parameter(elements(i) > elements(i - 1),
+        check_parameter(window_elements(i) > window_elements(i - 1),
                         b.path("Window sizes"),
                         std::string("the sizes must have increasing ")
                           + (dim == 2 ? "areas" : "volumes") + ", but "
-                          + size_word(window_sizes[i], dim) + " follows "
-                          + size_word(window_sizes[i - 1], dim)
+                          + format_window_size(window_sizes[i], dim)
+                          + " follows "
+                          + format_window_size(window_sizes[i - 1], dim)
                           + ". List them from the smallest to the largest.");
       check_parameter(!windows_per_size.empty()
                         && (windows_per_size.size() == 1
@@ -306,7 +305,7 @@ namespace tribodyn
     std::string
     RveStudy::size_text(const unsigned int size_index) const
     {
-      return size_word(parameters.window_sizes[size_index], dim);
+      return format_window_size(parameters.window_sizes[size_index], dim);
     }
 
 
@@ -367,9 +366,9 @@ namespace tribodyn
           check_parameter(
             parameters.source == Source::realisations || s[d] <= map_size[d],
             sizes_name,
-            "the window " + size_word(s, dim)
+            "the window " + format_window_size(s, dim)
               + " is larger than the morphology it is cut from ("
-              + size_word(map_size, dim)
+              + format_window_size(map_size, dim)
               + (dim == 2 ? " pixels). Use smaller windows, or a larger map "
                             "('Morphology/Pixels in x', 'Pixels in y' with "
                             "'Width', 'Height' in proportion, or a larger "
@@ -467,8 +466,7 @@ namespace tribodyn
       // reports its group's progress, with an ETA from the pixels done
       // (the cost of a window grows with its pixels, slightly faster).
       const auto pixels = [&](const RveWindow &w) {
-        const auto &s = parameters.window_sizes[w.size_index];
-        return 1. * s[0] * s[1] * s[2];
+        return parameters.window_elements(w.size_index);
       };
       unsigned int n_mine = 0, n_done = 0;
       double       pixels_mine = 0, pixels_done = 0;

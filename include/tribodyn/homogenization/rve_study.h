@@ -68,7 +68,21 @@ namespace tribodyn
       /// is one number (a square or a cube) or @p dim numbers.
       void
       parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim);
+      /// Pixels or voxels of the windows of size @p size.
+      double
+      window_elements(const unsigned int size) const
+      {
+        const auto &s = window_sizes[size];
+        return 1. * s[0] * s[1] * s[2];
+      }
     };
+
+    /// "140x40" or "16x16x8": the first @p dim numbers of @p size joined
+    /// by @p separator.
+    std::string
+    format_window_size(const std::array<unsigned int, 3> &size,
+                       const unsigned int                 dim,
+                       const std::string                 &separator = "x");
 
     /// One window of the study: its size, which realisation, where.
     struct RveWindow
