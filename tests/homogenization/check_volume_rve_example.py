@@ -23,14 +23,11 @@ import os
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "mca"))
+from check_tools import finish, report as check  # noqa: E402
+
 out = os.path.join(sys.argv[1], "output", "homogenization", "volume_rve")
-failures = []
-
-
-def check(condition, what):
-    print(("PASS  " if condition else "FAIL  ") + what)
-    if not condition:
-        failures.append(what)
 
 
 with open(os.path.join(out, "rve.csv")) as f:
@@ -78,6 +75,4 @@ has_mpl = subprocess.run(["/usr/bin/python3", "-c", "import matplotlib"],
 if has_mpl:
     with open(os.path.join(out, "rve.png"), "rb") as f:
         check(f.read(8) == b"\x89PNG\r\n\x1a\n", "rve.png written (a PNG)")
-if failures:
-    print("%d check(s) failed" % len(failures))
-sys.exit(1 if failures else 0)
+finish()
