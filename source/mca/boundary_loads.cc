@@ -3,6 +3,7 @@
 // and damping layers, with smooth ramps and switches; the half kick with
 // its works; the group reductions reported to the observers.
 
+#include <array>
 #include <cmath>
 #include <tribodyn/mca/boundary_loads.h>
 #include <tribodyn/mca/vector_algebra.h>
@@ -209,9 +210,32 @@ namespace tribodyn
           // (one partial sum per component and kind: independent chains
           // of additions)
           double wp[6] = {0, 0, 0, 0, 0, 0}, excess = 0;
+          // (without automata of several sizes, every automaton of a
+          // material has its mass and moment of inertia: the factors
+          // dt/2m and dt/2I of each material are computed at its first
+          // automaton, the same divisions once instead of per automaton)
+          const bool          per_material = !scalars.graded;
+          std::vector<double> a_of(per_material ? scalars.n_materials : 0, 0.),
+            b_of(a_of.size(), 0.);
+          const auto factors = [&](const unsigned int k) {
+            if (!per_material)
+              return std::array<double, 2>{
+                {0.5 * dt / scalars.automaton_mass(automata, k),
+                 0.5 * dt / scalars.automaton_inertia(automata, k)}};
+            const unsigned int m = automata.mat[k];
+            if (a_of[m] == 0) [[unlikely]]
+              {
+                a_of[m] = 0.5 * dt / scalars.automaton_mass(automata, k);
+                b_of[m] = rotations
+                            ? 0.5 * dt / scalars.automaton_inertia(automata, k)
+                            : 0.;
+              }
+            return std::array<double, 2>{{a_of[m], b_of[m]}};
+          };
           for (unsigned int k = 0; k < automata.n_owned; ++k)
             {
-              const double a = 0.5 * dt / scalars.automaton_mass(automata, k);
+              const auto         ab   = factors(k);
+              const double       a    = ab[0];
               const unsigned int mask = constrained(k);
               for (unsigned int c = 0; c < 3; ++c)
                 {
@@ -227,8 +251,7 @@ namespace tribodyn
                 }
               if (rotations)
                 {
-                  const double b
-                    = 0.5 * dt / scalars.automaton_inertia(automata, k);
+                  const double b = ab[1];
                   for (unsigned int c = 0; c < 3; ++c)
                     {
                       const double wb = automata.w[k][c];

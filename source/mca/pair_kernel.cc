@@ -12,6 +12,7 @@
 #include "pair_energy.h"
 #include "pair_events.h"
 #include "pair_geometry.h"
+#include "pair_geometry_choice.h"
 #include "pair_stress.h"
 
 #include <algorithm>
@@ -37,22 +38,16 @@ namespace tribodyn
       // (pair_law.h), chosen once here: no per-pair flags in its loops.
       // Adding a law to a family adds its kernels here through the
       // family's list; nothing to change in this function.
-      const auto geometry = choice_of([&](const auto &f) {
-        if (graded)
-          {
-            const GradedPairs g{pair_area.data(),
-                                pair_half_rest.data(),
-                                r0,
-                                &face_offset,
-                                1. / S};
-            f(g);
-          }
-        else
-          {
-            const UniformPairs u{S, r0, 1. / r0, d};
-            f(u);
-          }
-      });
+      // An elastic bulk (every pair bonded, of one material, equally stiff
+      // halves, no plasticity and no bond law: no event can occur) has a
+      // kernel of its own (pair_kernel_bulk.cc).
+      if (!mb_stored && !q_stored)
+        {
+          Assert(!plastic_scene && !bond_scene, dealii::ExcInternalError());
+          evaluate_bulk_pairs(step_dt);
+          return;
+        }
+      const auto geometry = pair_geometry_choice();
       with_chosen(
         [&](auto        rot,
             auto        plastic,

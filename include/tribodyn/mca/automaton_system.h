@@ -491,6 +491,38 @@ namespace tribodyn
                   const Pairs    &geometry,
                   FrictionLaw    &law,
                   MomentLaw      &moment);
+      /// The pair geometry of the scene as a choice for with_chosen()
+      /// (source/mca/pair_geometry_choice.h).
+      auto
+      pair_geometry_choice() const;
+      /// The kernel of an elastic bulk (source/mca/pair_kernel_bulk.cc):
+      /// every pair bonded, of one material, equally stiff halves, no
+      /// plasticity and no bond law, so that no event can occur (the pairs
+      /// store their sides' common normal stress only, PairArrays::sig_e).
+      /// Its own translation unit: the other kernels' code, and so their
+      /// rounding, stay as they were.
+      void
+      evaluate_bulk_pairs(const double step);
+      template <bool rotations, class Pairs, class FrictionLaw, class MomentLaw>
+      void
+      bulk_pair_kernel(const double step,
+                       const Pairs &geometry,
+                       FrictionLaw &law,
+                       MomentLaw   &moment);
+      /// Its passes A and C: each block's pair law in one branch-free loop
+      /// the compiler vectorizes; only the scattered sums of the automata
+      /// pair by pair.
+      template <bool rotations, class Pairs, class MomentLaw>
+      [[gnu::always_inline]] inline void
+      pair_pass_a_bulk(const PairStep &step,
+                       WorkSums       &works,
+                       const Pairs    &geometry,
+                       MomentLaw      &moment);
+      template <bool rotations, class Pairs, class MomentLaw>
+      [[gnu::always_inline]] inline void
+      pair_pass_c_bulk(const PairStep &step,
+                       const Pairs    &geometry,
+                       MomentLaw      &moment);
       /// The events of pair @p p at the end of its step (plastic
       /// returns, no tension, friction limits) and the energy they release,
       /// added to @p works (source/mca/pair_events.h).
