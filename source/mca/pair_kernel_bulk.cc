@@ -16,6 +16,13 @@
 // automaton's sum takes the terms in another order (the order of the pairs
 // in each pass, the same on any partition; doc/theory/mca.md §8.4,
 // doc/performance.md "The elastic bulk's passes").
+//
+// The step's geometry (distances, normals, the turned shear stress, the
+// contact points' slip) is written here again, term for term as in
+// pair_pass_a(), not shared with it through inline helpers: such helpers
+// change how the compiler fuses the general kernels' products into FMAs
+// (measured: the plastic uniaxial_steel's series moved in its last bits),
+// and the general kernels' results are to stay bit for bit.
 
 #include "pair_blocks.h"
 #include "pair_geometry_choice.h"
