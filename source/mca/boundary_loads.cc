@@ -221,7 +221,8 @@ namespace tribodyn
             if (!per_material)
               return std::array<double, 2>{
                 {0.5 * dt / scalars.automaton_mass(automata, k),
-                 0.5 * dt / scalars.automaton_inertia(automata, k)}};
+                 rotations ? 0.5 * dt / scalars.automaton_inertia(automata, k)
+                           : 0.}};
             const unsigned int m = automata.mat[k];
             if (a_of[m] == 0) [[unlikely]]
               {
