@@ -365,6 +365,21 @@ namespace tribodyn
               si.take(arrays, i);
               const double Sp    = geometry.area(p);
               const double scale = geometry.inv_half_rest(p);
+              // a side's volumetric strain increment into @p sum (its
+              // automaton's), and the many-body work of the side of an
+              // automaton that is not uniform
+              const auto book_side = [&](const unsigned int a,
+                                         const double       beta,
+                                         const double       dq,
+                                         double            &sum) {
+                sum += beta * dq * scale;
+                if (beta == 0 || mb_shape[a] == ManyBodyShape::general)
+                  [[unlikely]]
+                  {
+                    side_dq[a] += Sp * dq;
+                    dw[many_body_work] += Sp * dq * mb_offset[a];
+                  }
+              };
               if (si.a == i)
                 {
                   for (unsigned int c = 0; c < 3; ++c)
@@ -378,14 +393,7 @@ namespace tribodyn
                   if constexpr (Moment::active)
                     for (unsigned int c = 0; c < 3; ++c)
                       si.t[c] += K[c];
-                  const double beta = beta_i[p], dq = b_dq[0][b];
-                  si.m += beta * dq * scale;
-                  if (beta == 0 || mb_shape[i] == ManyBodyShape::general)
-                    [[unlikely]]
-                    {
-                      side_dq[i] += Sp * dq;
-                      dw[many_body_work] += Sp * dq * mb_offset[i];
-                    }
+                  book_side(i, beta_i[p], b_dq[0][b], si.m);
                 }
               if (owned(j))
                 {
@@ -400,14 +408,7 @@ namespace tribodyn
                   if constexpr (Moment::active)
                     for (unsigned int c = 0; c < 3; ++c)
                       torque[j][c] -= K[c];
-                  const double beta = beta_j[p], dq = b_dq[1][b];
-                  dsm[j] += beta * dq * scale;
-                  if (beta == 0 || mb_shape[j] == ManyBodyShape::general)
-                    [[unlikely]]
-                    {
-                      side_dq[j] += Sp * dq;
-                      dw[many_body_work] += Sp * dq * mb_offset[j];
-                    }
+                  book_side(j, beta_j[p], b_dq[1][b], dsm[j]);
                 }
             }
           si.flush(arrays);
