@@ -193,6 +193,10 @@ namespace tribodyn
       alignas(64) double     b_r[block], b_ro[block], b_inv_r[block],
         b_inv_ro[block], b_inv_nm[block], b_dr[block], b_t[3][block],
         b_wi[3][block], b_wj[3][block], b_n[3][block], b_nold[3][block];
+      // (a relative-rotation moment law's trial moments of the block, from
+      // the mid-step normals; the pairs' materials and size factors)
+      alignas(64) double b_nm[3][block], b_K[3][block], b_f[block];
+      unsigned int       b_type[block];
       for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
         {
           const unsigned int nb = std::min(block, n_pairs - p0);
@@ -217,6 +221,11 @@ namespace tribodyn
                     b_wi[c][b] = w[i][c];
                     b_wj[c][b] = w[j][c];
                   }
+              if constexpr (Moment::active)
+                {
+                  b_type[b] = mat[i] * n_materials + mat[j];
+                  b_f[b]    = geometry.moment_scale(p);
+                }
               __builtin_prefetch(&dsm[j], 1);
               // (and those of the block after next, and the pair arrays
               // further on: pair_blocks.h)
@@ -289,6 +298,27 @@ namespace tribodyn
                   b_n[c][b]    = b_dnew[c][b] * b_inv_r[b];
                   b_nold[c][b] = (b_dnew[c][b] - b_du[c][b]) * b_inv_ro[b];
                 }
+          // The relative-rotation moment's trial update of the block
+          // (moment_laws.h), in one vectorized loop; the pairs that stay in
+          // contact keep it below, and pass C limits it and adds its
+          // torques.
+          if constexpr (Moment::active)
+            {
+              for (unsigned int b = 0; b < nb; ++b)
+                for (unsigned int c = 0; c < 3; ++c)
+                  b_nm[c][b] = (b_n[c][b] + b_nold[c][b]) * b_inv_nm[b];
+              moment.trial_block(p0,
+                                 nb,
+                                 b_type,
+                                 b_f,
+                                 b_nold,
+                                 b_n,
+                                 b_nm,
+                                 b_wi,
+                                 b_wj,
+                                 step_dt,
+                                 b_K);
+            }
           for (unsigned int b = 0; b < nb; ++b)
             {
               const unsigned int p = p0 + b, i = pi[p], j = pj[p];
@@ -387,28 +417,10 @@ namespace tribodyn
                 }
               const double qi = moment_arm(p, r_prev, 0), qj = r_prev - qi;
 
-              // Relative-rotation moment K_ij (moment_laws.h): its trial
-              // update from this step's kinematics, gathered above; pass C
-              // limits it and adds its torques.
+              // Relative-rotation moment K_ij: the pair keeps its trial
+              // moment (above).
               if constexpr (Moment::active)
-                {
-                  Vec3 n_old, wi, wj;
-                  for (unsigned int c = 0; c < 3; ++c)
-                    {
-                      n_old[c] = b_nold[c][b];
-                      wi[c]    = b_wi[c][b];
-                      wj[c]    = b_wj[c][b];
-                    }
-                  moment.trial(p,
-                               mat[i] * n_materials + mat[j],
-                               n_old,
-                               n,
-                               nm,
-                               wi,
-                               wj,
-                               step_dt,
-                               geometry.moment_scale(p));
-                }
+                moment.store_trial(p, b, b_K);
 
               // Tangential: relative displacement of the contact points.
               if constexpr (rot)

@@ -158,7 +158,9 @@ namespace tribodyn
       alignas(64) double b_F[3][block], b_nxf[3][block], b_exf[3][block],
         b_q[2][block];
       // (the normals of the step, for a relative-rotation moment law)
-      alignas(64) double b_n[3][block], b_nold[3][block], b_nm[3][block];
+      alignas(64) double b_n[3][block], b_nold[3][block], b_nm[3][block],
+        b_K[3][block], b_f[block];
+      unsigned int b_type[block];
       // (a scene of one material has one pair of springs)
       const bool one_material = n_materials == 1;
       for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
@@ -322,28 +324,27 @@ namespace tribodyn
             }
           // The relative-rotation moment's trial update (pass A).
           if constexpr (rot && Moment::active)
-            for (unsigned int b = 0; b < nb; ++b)
-              {
-                const unsigned int p = p0 + b;
-                Vec3               n_old, n, nm, wi, wj;
-                for (unsigned int c = 0; c < 3; ++c)
-                  {
-                    n_old[c] = b_nold[c][b];
-                    n[c]     = b_n[c][b];
-                    nm[c]    = b_nm[c][b];
-                    wi[c]    = b_wi[c][b];
-                    wj[c]    = b_wj[c][b];
-                  }
-                moment.trial(p,
-                             mat[pi[p]] * n_materials + mat[pj[p]],
-                             n_old,
-                             n,
-                             nm,
-                             wi,
-                             wj,
-                             step_dt,
-                             geometry.moment_scale(p));
-              }
+            {
+              for (unsigned int b = 0; b < nb; ++b)
+                {
+                  const unsigned int p = p0 + b;
+                  b_type[b]            = mat[pi[p]] * n_materials + mat[pj[p]];
+                  b_f[b]               = geometry.moment_scale(p);
+                }
+              moment.trial_block(p0,
+                                 nb,
+                                 b_type,
+                                 b_f,
+                                 b_nold,
+                                 b_n,
+                                 b_nm,
+                                 b_wi,
+                                 b_wj,
+                                 step_dt,
+                                 b_K);
+              for (unsigned int b = 0; b < nb; ++b)
+                moment.store_trial(p0 + b, b, b_K);
+            }
           // The pair by pair part (the loops above read and write only the
           // block's arrays, which the compiler sees cannot alias): the
           // pair's new stresses; the forces and torques; the volumetric
