@@ -8,7 +8,6 @@
 #ifndef tribodyn_mca_bond_switching_h
 #define tribodyn_mca_bond_switching_h
 
-#include "pair_blocks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -82,76 +81,87 @@ namespace tribodyn
               Breaking::screen_norm(&ex[7 * k]) * (1 + 1e-6));
         }
       const unsigned int n_pairs = pi.size();
-      // (the pairs' normals as pass A kept them, or anew)
-      NormalBlock nblock;
-      auto        pair_vector_of
-        = [this](const unsigned int p) { return pair_vector(p); };
-      for (unsigned int p0 = 0; p0 < n_pairs; p0 += NormalBlock::size)
+      // The distance and normal of a pair, as pass A kept them or anew
+      // (the same bits as NormalBlock): asked for only by the pairs that
+      // pass the screen or are in contact, most bonded pairs of a bulk far
+      // below the criterion need neither.
+      const auto geometry_of = [&](const unsigned int p) {
+        if (!step_normals.empty())
+          {
+            Vec3 n;
+            for (unsigned int c = 0; c < 3; ++c)
+              n[c] = step_normals[(c + 1) * std::size_t(n_pairs) + p];
+            return std::make_pair(step_normals[p], n);
+          }
+        const Vec3   dn = pair_vector(p);
+        const double r
+          = std::sqrt(dn[0] * dn[0] + dn[1] * dn[1] + dn[2] * dn[2]);
+        const double inv_r = 1. / r;
+        return std::make_pair(
+          r, Vec3{{dn[0] * inv_r, dn[1] * inv_r, dn[2] * inv_r}});
+      };
+      for (unsigned int p = 0; p < n_pairs; ++p)
         {
-          const unsigned int nb = std::min(NormalBlock::size, n_pairs - p0);
-          nblock.fill(p0, nb, step_normals, n_pairs, pair_vector_of);
-          for (unsigned int b = 0; b < nb; ++b)
+          const unsigned int i = pi[p], j = pj[p];
+          if (elastic(i) && elastic(j))
+            continue; // no bond switching inside elastic regions
+          if (!bonded[p] && !in_contact[p])
+            continue;
+          const double sn = 0.5 * (sig_i[p] + sig_j[p]);
+          const double am = 0.5 * (shear_factor(p, 0) + shear_factor(p, 1));
+          if (bonded[p])
             {
-              const unsigned int p = p0 + b, i = pi[p], j = pj[p];
-              if (elastic(i) && elastic(j))
-                continue; // no bond switching inside elastic regions
-              const double r  = nblock.r[b];
-              const Vec3   n  = nblock.normal(b);
-              const double sn = 0.5 * (sig_i[p] + sig_j[p]);
-              const double am = 0.5 * (shear_factor(p, 0) + shear_factor(p, 1));
-              if (bonded[p])
-                {
-                  if constexpr (Breaking::active)
-                    if constexpr (screened)
-                      if (!breaking.may_break(stress_norm[i],
-                                              stress_norm[j],
-                                              sn,
-                                              am,
-                                              tau[p],
-                                              mc[mat[i]].sigma_b,
-                                              mc[mat[j]].sigma_b))
-                        continue;
-                  if constexpr (Breaking::active)
-                    if (breaking.breaks(&ex[7 * i],
-                                        &ex[7 * j],
-                                        n,
-                                        sn,
-                                        am,
-                                        tau[p],
-                                        mc[mat[i]].sigma_b,
-                                        mc[mat[j]].sigma_b))
-                      {
-                        bonded[p] = 0;
-                        in_contact[p]
-                          = r < (graded ? 2 * pair_half_rest[p] : d);
-                        // a new contact for the friction law
-                        friction_laws.with_selected(
-                          [p](auto &law) { law.start_contact(p); });
-                        if (!heat.empty())
-                          heat[p] = 0;
-                        changed[i] = changed[j] = 1;
-                        any_changed             = true;
-                      }
-                }
-              else if (in_contact[p])
-                {
-                  if constexpr (Formation::active)
-                    if (formation.forms(sn,
-                                        ex[7 * i + 6],
-                                        ex[7 * j + 6],
-                                        heat.empty() ? 0. : heat[p],
-                                        mc[mat[i]].w_b,
-                                        mc[mat[j]].w_b,
-                                        area_of(p),
-                                        r))
-                      {
-                        bonded[p] = 1;
-                        if (!heat.empty())
-                          heat[p] = 0;
-                        changed[i] = changed[j] = 1;
-                        any_changed             = true;
-                      }
-                }
+              if constexpr (Breaking::active)
+                if constexpr (screened)
+                  if (!breaking.may_break(stress_norm[i],
+                                          stress_norm[j],
+                                          sn,
+                                          am,
+                                          tau[p],
+                                          mc[mat[i]].sigma_b,
+                                          mc[mat[j]].sigma_b))
+                    continue;
+              if constexpr (Breaking::active)
+                if (const auto [r, n] = geometry_of(p);
+                    breaking.breaks(&ex[7 * i],
+                                    &ex[7 * j],
+                                    n,
+                                    sn,
+                                    am,
+                                    tau[p],
+                                    mc[mat[i]].sigma_b,
+                                    mc[mat[j]].sigma_b))
+                  {
+                    bonded[p]     = 0;
+                    in_contact[p] = r < (graded ? 2 * pair_half_rest[p] : d);
+                    // a new contact for the friction law
+                    friction_laws.with_selected(
+                      [p](auto &law) { law.start_contact(p); });
+                    if (!heat.empty())
+                      heat[p] = 0;
+                    changed[i] = changed[j] = 1;
+                    any_changed             = true;
+                  }
+            }
+          else
+            {
+              if constexpr (Formation::active)
+                if (const double r = geometry_of(p).first;
+                    formation.forms(sn,
+                                    ex[7 * i + 6],
+                                    ex[7 * j + 6],
+                                    heat.empty() ? 0. : heat[p],
+                                    mc[mat[i]].w_b,
+                                    mc[mat[j]].w_b,
+                                    area_of(p),
+                                    r))
+                  {
+                    bonded[p] = 1;
+                    if (!heat.empty())
+                      heat[p] = 0;
+                    changed[i] = changed[j] = 1;
+                    any_changed             = true;
+                  }
             }
         }
     }

@@ -203,6 +203,29 @@ namespace tribodyn
             }
         return mask;
       };
+      // (without automata of several sizes, every automaton of a
+      // material has its mass and moment of inertia: the factors
+      // dt/2m and dt/2I of each material are computed at its first
+      // automaton, the same divisions once instead of per automaton)
+      const bool          per_material = !scalars.graded;
+      std::vector<double> a_of(per_material ? scalars.n_materials : 0, 0.),
+        b_of(a_of.size(), 0.);
+      const auto factors = [&](const unsigned int k) {
+        if (!per_material)
+          return std::array<double, 2>{
+            {0.5 * dt / scalars.automaton_mass(automata, k),
+             rotations ? 0.5 * dt / scalars.automaton_inertia(automata, k)
+                       : 0.}};
+        const unsigned int m = automata.mat[k];
+        if (a_of[m] == 0) [[unlikely]]
+          {
+            a_of[m] = 0.5 * dt / scalars.automaton_mass(automata, k);
+            b_of[m] = rotations
+                        ? 0.5 * dt / scalars.automaton_inertia(automata, k)
+                        : 0.;
+          }
+        return std::array<double, 2>{{a_of[m], b_of[m]}};
+      };
       if (!damping_on && !any_load)
         {
           // the common case of a free or kinematically driven scene: all
@@ -210,29 +233,6 @@ namespace tribodyn
           // (one partial sum per component and kind: independent chains
           // of additions)
           double wp[6] = {0, 0, 0, 0, 0, 0}, excess = 0;
-          // (without automata of several sizes, every automaton of a
-          // material has its mass and moment of inertia: the factors
-          // dt/2m and dt/2I of each material are computed at its first
-          // automaton, the same divisions once instead of per automaton)
-          const bool          per_material = !scalars.graded;
-          std::vector<double> a_of(per_material ? scalars.n_materials : 0, 0.),
-            b_of(a_of.size(), 0.);
-          const auto factors = [&](const unsigned int k) {
-            if (!per_material)
-              return std::array<double, 2>{
-                {0.5 * dt / scalars.automaton_mass(automata, k),
-                 rotations ? 0.5 * dt / scalars.automaton_inertia(automata, k)
-                           : 0.}};
-            const unsigned int m = automata.mat[k];
-            if (a_of[m] == 0) [[unlikely]]
-              {
-                a_of[m] = 0.5 * dt / scalars.automaton_mass(automata, k);
-                b_of[m] = rotations
-                            ? 0.5 * dt / scalars.automaton_inertia(automata, k)
-                            : 0.;
-              }
-            return std::array<double, 2>{{a_of[m], b_of[m]}};
-          };
           for (unsigned int k = 0; k < automata.n_owned; ++k)
             {
               const auto         ab   = factors(k);
@@ -284,7 +284,8 @@ namespace tribodyn
       double wp = 0, wl = 0, wd = 0;
       for (unsigned int k = 0; k < automata.n_owned; ++k)
         {
-          const double a  = 0.5 * dt / scalars.automaton_mass(automata, k);
+          const auto   ab = factors(k);
+          const double a  = ab[0];
           const Vec3   vb = automata.v[k];
           // after a rebuild st.f_damp is in the old order: recompute it (from
           // the current velocity: an O(dt) error at that step only)
@@ -314,9 +315,8 @@ namespace tribodyn
             }
           if (rotations)
             {
-              const double b
-                = 0.5 * dt / scalars.automaton_inertia(automata, k);
-              const Vec3 wb = automata.w[k];
+              const double b  = ab[1];
+              const Vec3   wb = automata.w[k];
               for (unsigned int c = 0; c < 3; ++c)
                 {
                   automata.w[k][c] += b * automata.torque[k][c];

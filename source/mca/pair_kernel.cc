@@ -557,17 +557,36 @@ namespace tribodyn
       NormalBlock            nblock;
       auto                   pair_vector_of
         = [this](const unsigned int p) { return pair_vector(p); };
-      // Many-body part of the elastic update of the side stresses.
-      auto elastic_update = [&](const unsigned int p) {
-        const unsigned int i = pi[p], j = pj[p];
-        sig_i[p] += mc[mat[i]].D * dsm[i];
-        sig_j[p] += mc[mat[j]].D * dsm[j];
-      };
       trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
       // (the automata with an unbonded contact, whose final tensor pass C
       // of a bond kernel sums anew)
       if (step.anew_tensors)
         stress_anew.assign(n_local, 0);
+      // The trial tensor T^a += (q S / V_a) n (x) (sigma n + tau) of seed
+      // eq. (4) for each owned side outside elastic regions (which need
+      // no trial stress); both shear factors are 1 after pass A. The i
+      // side of consecutive pairs of one automaton is summed in registers,
+      // from its tensor as the run starts and in the pairs' order: the
+      // same sums as term by term (no pair of the run adds to i as its j).
+      Mat3               ti{};
+      constexpr unsigned none  = static_cast<unsigned int>(-1);
+      unsigned int       ti_of = none, run_of = none;
+      const auto         add_side = [&](Mat3              &target,
+                                const unsigned int p,
+                                const unsigned int side,
+                                const unsigned int a,
+                                const double       sigma,
+                                const double       r,
+                                const Vec3        &n) {
+        Vec3 t;
+        for (unsigned int c = 0; c < 3; ++c)
+          t[c] = sigma * n[c] + tau.component[c][p];
+        add_outer(target,
+                  moment_arm(p, r, side) * area_of(p)
+                    / automaton_volume(*this, a),
+                  n,
+                  t);
+      };
       for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
         {
           const unsigned int nb = std::min(block, n_pairs - p0);
@@ -578,13 +597,33 @@ namespace tribodyn
               prefetch_ahead(pj.data(), p, n_ahead, x, dsm);
               if (!bonded[p] && !in_contact[p])
                 continue;
+              const unsigned int i = pi[p], j = pj[p];
+              Assert(tau_scale_i[p] == 1 && tau_scale_j[p] == 1,
+                     dealii::ExcInternalError());
               if (step.anew_tensors && !bonded[p])
-                stress_anew[pi[p]] = stress_anew[pj[p]] = 1;
-              elastic_update(p);
-              // automata of elastic regions need no trial stress
-              add_pair_stress(p, nblock.normal(b), nblock.r[b], trial, true);
+                stress_anew[i] = stress_anew[j] = 1;
+              // many-body part of the elastic update of the side stresses
+              sig_i[p] += mc[mat[i]].D * dsm[i];
+              sig_j[p] += mc[mat[j]].D * dsm[j];
+              const Vec3   n = nblock.normal(b);
+              const double r = nblock.r[b];
+              if (i != run_of)
+                {
+                  if (ti_of != none)
+                    trial[ti_of] = ti;
+                  run_of = i;
+                  ti_of  = owned(i) && !elastic(i) ? i : none;
+                  if (ti_of != none)
+                    ti = trial[i];
+                }
+              if (ti_of != none)
+                add_side(ti, p, 0, i, sig_i[p], r, n);
+              if (owned(j) && !elastic(j))
+                add_side(trial[j], p, 1, j, sig_j[p], r, n);
             }
         }
+      if (ti_of != none)
+        trial[ti_of] = ti;
     }
 
 
