@@ -8,7 +8,6 @@
 #ifndef tribodyn_mca_bond_switching_h
 #define tribodyn_mca_bond_switching_h
 
-
 #include <algorithm>
 #include <cmath>
 #include <tribodyn/mca/automaton_system.h>
