@@ -571,22 +571,6 @@ namespace tribodyn
       Mat3               ti{};
       constexpr unsigned none  = static_cast<unsigned int>(-1);
       unsigned int       ti_of = none, run_of = none;
-      const auto         add_side = [&](Mat3              &target,
-                                const unsigned int p,
-                                const unsigned int side,
-                                const unsigned int a,
-                                const double       sigma,
-                                const double       r,
-                                const Vec3        &n) {
-        Vec3 t;
-        for (unsigned int c = 0; c < 3; ++c)
-          t[c] = sigma * n[c] + tau.component[c][p];
-        add_outer(target,
-                  moment_arm(p, r, side) * area_of(p)
-                    / automaton_volume(*this, a),
-                  n,
-                  t);
-      };
       for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
         {
           const unsigned int nb = std::min(block, n_pairs - p0);
@@ -617,9 +601,9 @@ namespace tribodyn
                     ti = trial[i];
                 }
               if (ti_of != none)
-                add_side(ti, p, 0, i, sig_i[p], r, n);
+                add_side_stress(ti, p, 0, i, sig_i[p], 1., r, n);
               if (owned(j) && !elastic(j))
-                add_side(trial[j], p, 1, j, sig_j[p], r, n);
+                add_side_stress(trial[j], p, 1, j, sig_j[p], 1., r, n);
             }
         }
       if (ti_of != none)

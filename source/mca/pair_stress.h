@@ -14,6 +14,29 @@ namespace tribodyn
   namespace mca
   {
     inline void
+    AutomatonSystem::add_side_stress(Mat3              &target,
+                                     const unsigned int p,
+                                     const unsigned int side,
+                                     const unsigned int a,
+                                     const double       sigma,
+                                     const double       alpha,
+                                     const double       r,
+                                     const Vec3        &n) const
+    {
+      // Seed eq. (4): T^a += (q S / V_a) n (x) F / S, F / S the side's
+      // traction sigma n + alpha tau (q_ji = r_ij - q_ij).
+      Vec3 t;
+      for (unsigned int c = 0; c < 3; ++c)
+        t[c] = sigma * n[c] + alpha * tau.component[c][p];
+      add_outer(target,
+                moment_arm(p, r, side) * area_of(p)
+                  / automaton_volume(*this, a),
+                n,
+                t);
+    }
+
+
+    inline void
     AutomatonSystem::add_pair_stress(const unsigned int   p,
                                      const Vec3          &n,
                                      const double         r,
@@ -21,34 +44,17 @@ namespace tribodyn
                                      const bool           skip_elastic,
                                      const unsigned char *only) const
     {
-      // Seed eq. (4): T^i += (q_ij S / V_i) n_ij (x) F_ij / S, for each
-      // owned side of the pair (q_ji = r_ij - q_ij); sigma^i = sym(B^-1 T).
+      // Each owned side of the pair (add_side_stress()); sigma^i =
+      // sym(B^-1 T) (fabric_corrected()).
       // (plastic and bond kernels only, which store the shear factors)
       Assert(shear_factors && mb_stored, dealii::ExcInternalError());
-      if (owned(pi[p]) && !(skip_elastic && elastic(pi[p]))
-          && (only == nullptr || only[pi[p]]))
-        {
-          Vec3 t;
-          for (unsigned int c = 0; c < 3; ++c)
-            t[c] = sig_i[p] * n[c] + tau_scale_i[p] * tau.component[c][p];
-          add_outer(target[pi[p]],
-                    moment_arm(p, r, 0) * area_of(p)
-                      / automaton_volume(*this, pi[p]),
-                    n,
-                    t);
-        }
-      if (owned(pj[p]) && !(skip_elastic && elastic(pj[p]))
-          && (only == nullptr || only[pj[p]]))
-        {
-          Vec3 t;
-          for (unsigned int c = 0; c < 3; ++c)
-            t[c] = sig_j[p] * n[c] + tau_scale_j[p] * tau.component[c][p];
-          add_outer(target[pj[p]],
-                    moment_arm(p, r, 1) * area_of(p)
-                      / automaton_volume(*this, pj[p]),
-                    n,
-                    t);
-        }
+      const unsigned int i = pi[p], j = pj[p];
+      if (owned(i) && !(skip_elastic && elastic(i))
+          && (only == nullptr || only[i]))
+        add_side_stress(target[i], p, 0, i, sig_i[p], tau_scale_i[p], r, n);
+      if (owned(j) && !(skip_elastic && elastic(j))
+          && (only == nullptr || only[j]))
+        add_side_stress(target[j], p, 1, j, sig_j[p], tau_scale_j[p], r, n);
     }
   } // namespace mca
 } // namespace tribodyn

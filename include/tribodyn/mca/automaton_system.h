@@ -648,6 +648,19 @@ namespace tribodyn
       update_neighbourhood_weights(const bool all);
       Sym3
       fabric_corrected(const unsigned int k, const Mat3 &t) const;
+      /// Add the eq.-(4) stress contribution of side @p side (0: i, 1: j)
+      /// of pair @p p, that of automaton @p a, to @p target: (q S / V_a) n
+      /// (x) (@p sigma n + @p alpha tau), @p n the unit normal, @p r the
+      /// distance.
+      void
+      add_side_stress(Mat3              &target,
+                      const unsigned int p,
+                      const unsigned int side,
+                      const unsigned int a,
+                      const double       sigma,
+                      const double       alpha,
+                      const double       r,
+                      const Vec3        &n) const;
       /// Add the eq.-(4) stress contributions of pair @p p (unit normal
       /// @p n, distance @p r) to the owned automata of the pair in @p target
       /// (indexed by local automaton); with @p skip_elastic not to automata
