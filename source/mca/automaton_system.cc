@@ -252,7 +252,7 @@ namespace tribodyn
       t.add("many-body shape", Kind::scratch, mb_shape);
       t.add("stress", Kind::scratch, trial);
       t.add("stress anew", Kind::scratch, stress_anew);
-      t.add("stress norm", Kind::scratch, stress_norm);
+      t.add("stress screen", Kind::scratch, stress_screen);
     }
 
 

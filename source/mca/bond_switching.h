@@ -26,9 +26,9 @@ namespace tribodyn
     template <class B>
     struct has_breaking_screen<
       B,
-      std::void_t<decltype(B::screen_norm(nullptr)),
-                  decltype(B::may_break(0.,
-                                        0.,
+      std::void_t<decltype(B::screen_figures(nullptr, nullptr)),
+                  decltype(B::may_break(nullptr,
+                                        nullptr,
                                         0.,
                                         0.,
                                         std::declval<const Vec3 &>(),
@@ -45,9 +45,15 @@ namespace tribodyn
     {
       // Bond switching (takes effect at the next step), from the automata's
       // stress tensors (eq. 4) exchanged with the neighbours.
-      // member buffer: no allocation per step
+      // member buffer: no allocation per step. A plastic kernel's radial
+      // returns left in it the stress sym(B^-1 T) of each owned
+      // automaton's trial tensor, outside elastic regions: the final one
+      // where pass C did not sum the tensor anew (stress_anew).
       std::vector<double> &ex = bond_buffer;
-      ex.assign(static_cast<std::size_t>(n_local) * 7, 0.);
+      if constexpr (!plastic)
+        ex.assign(static_cast<std::size_t>(n_local) * 7, 0.);
+      Assert(ex.size() == static_cast<std::size_t>(n_local) * 7,
+             dealii::ExcInternalError());
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           ex[7 * k + 6] = plastic_scene ? sigma_y[k] : mc[mat[k]].yield0;
@@ -60,24 +66,32 @@ namespace tribodyn
                 needed = needed || !elastic(side ? pi[p] : pj[p]);
               });
           if (!needed)
-            continue;
+            {
+              if constexpr (plastic)
+                std::fill_n(&ex[7 * k], 6, 0.);
+              continue;
+            }
+          if constexpr (plastic)
+            if (!stress_anew[k])
+              continue;
           const Sym3 s = fabric_corrected(k, trial[k]);
           for (unsigned int c = 0; c < 6; ++c)
             ex[7 * k + c] = s[c];
         }
       if (partition.neighbours().active())
         partition.neighbours().update(ex.data(), 7);
-      // A breaking criterion that screens its pairs by the norms of their
+      // A breaking criterion that screens its pairs by figures of their
       // automata's tensors (may_break(): never false where it breaks)
       // skips the full criterion for most pairs of a bulk far below it.
-      constexpr bool screened = has_breaking_screen<Breaking>::value;
+      constexpr bool screened    = has_breaking_screen<Breaking>::value;
+      unsigned int   screen_size = 0;
       if constexpr (screened)
         {
-          stress_norm.resize(n_local);
+          screen_size = Breaking::screen_size;
+          stress_screen.resize(std::size_t(screen_size) * n_local);
           for (unsigned int k = 0; k < n_local; ++k)
-            // (rounded up: float's relative rounding is below 1e-7)
-            stress_norm[k] = static_cast<float>(
-              Breaking::screen_norm(&ex[7 * k]) * (1 + 1e-6));
+            Breaking::screen_figures(&ex[7 * k],
+                                     &stress_screen[screen_size * k]);
         }
       const unsigned int n_pairs = pi.size();
       // The distance and normal of a pair, as pass A kept them or anew
@@ -112,8 +126,8 @@ namespace tribodyn
             {
               if constexpr (Breaking::active)
                 if constexpr (screened)
-                  if (!breaking.may_break(stress_norm[i],
-                                          stress_norm[j],
+                  if (!breaking.may_break(&stress_screen[screen_size * i],
+                                          &stress_screen[screen_size * j],
                                           sn,
                                           am,
                                           tau[p],

@@ -171,17 +171,12 @@ namespace tribodyn
       // moved dt^2 f^2 / (8 m) per constrained component and half step
       // from load to pair work (measured: 75 % of the damped energy of the
       // flat friction scene, tests/mca/flat_friction_frictionless.prm).
-      const auto &grp      = prm.groups;
-      bool        any_load = false, any_kinematic = false;
+      const auto &grp           = prm.groups;
+      bool        any_kinematic = false;
       for (unsigned int gi = 0; gi < grp.size(); ++gi)
-        {
-          any_load = any_load
-                     || (grp[gi].type == BoundaryGroup::Type::force
-                         && group_size[gi] > 0);
-          any_kinematic = any_kinematic
-                          || grp[gi].type == BoundaryGroup::Type::fixed
-                          || grp[gi].type == BoundaryGroup::Type::velocity;
-        }
+        any_kinematic = any_kinematic
+                        || grp[gi].type == BoundaryGroup::Type::fixed
+                        || grp[gi].type == BoundaryGroup::Type::velocity;
       std::vector<Vec3> kinematic;
       if (any_kinematic)
         for (const auto &g : grp)
@@ -226,47 +221,6 @@ namespace tribodyn
           }
         return std::array<double, 2>{{a_of[m], b_of[m]}};
       };
-      if (!damping_on && !any_load)
-        {
-          // the common case of a free or kinematically driven scene: all
-          // of f is pair force (no per-automaton group look-ups)
-          // (one partial sum per component and kind: independent chains
-          // of additions)
-          double wp[6] = {0, 0, 0, 0, 0, 0}, excess = 0;
-          for (unsigned int k = 0; k < automata.n_owned; ++k)
-            {
-              const auto         ab   = factors(k);
-              const double       a    = ab[0];
-              const unsigned int mask = constrained(k);
-              for (unsigned int c = 0; c < 3; ++c)
-                {
-                  const double vb = automata.v[k][c];
-                  automata.v[k][c] += a * automata.f[k][c];
-                  if (mask & (1u << c))
-                    {
-                      wp[c] += 2 * automata.f[k][c] * vb;
-                      excess += automata.f[k][c] * (automata.v[k][c] - vb);
-                    }
-                  else
-                    wp[c] += automata.f[k][c] * (vb + automata.v[k][c]);
-                }
-              if (rotations)
-                {
-                  const double b = ab[1];
-                  for (unsigned int c = 0; c < 3; ++c)
-                    {
-                      const double wb = automata.w[k][c];
-                      automata.w[k][c] += b * automata.torque[k][c];
-                      wp[3 + c]
-                        += automata.torque[k][c] * (wb + automata.w[k][c]);
-                    }
-                }
-            }
-          work[pair_work]
-            += 0.25 * dt * (wp[0] + wp[1] + wp[2] + wp[3] + wp[4] + wp[5]);
-          work[load_work] += 0.25 * dt * excess;
-          return;
-        }
       const bool stale = damping_on
                          && (st.f_damp_rebuild != scalars.rebuild_count
                              || st.f_damp.size() != automata.n_owned);
@@ -281,53 +235,68 @@ namespace tribodyn
       if (stale)
         for (const auto &g : grp)
           values.push_back(value(g, scalars.current_time));
-      double wp = 0, wl = 0, wd = 0;
+      // An automaton of no group, without global damping, has neither
+      // damping nor loads nor constraints: all of its f is pair force.
+      const bool plain_ungrouped = prm.global_damping == 0;
+      // The works over dt/4, one partial sum per component and kind
+      // (independent chains of additions): a component moves at
+      // (vb + v)/2 over the half step, or at vb where a constraint resets
+      // it (see above; the kick's excess is then the loading machine's).
+      double wp[6] = {0, 0, 0, 0, 0, 0}, wl[3] = {0, 0, 0}, wd[3] = {0, 0, 0};
       for (unsigned int k = 0; k < automata.n_owned; ++k)
         {
           const auto   ab = factors(k);
           const double a  = ab[0];
           const Vec3   vb = automata.v[k];
-          // after a rebuild st.f_damp is in the old order: recompute it (from
-          // the current velocity: an O(dt) error at that step only)
-          const Vec3 fd = !damping_on ? Vec3{{0, 0, 0}}
-                          : stale     ? damping_force(k, values)
-                                      : st.f_damp[k];
-          Vec3       fl{{0, 0, 0}};
-          if (automata.groups[k] != 0)
-            for (unsigned int gi = 0; gi < grp.size(); ++gi)
-              if (automata.groups[k] & (1u << gi))
-                for (unsigned int c = 0; c < 3; ++c)
-                  fl[c] += load[gi][c];
-          for (unsigned int c = 0; c < 3; ++c)
-            automata.v[k][c] += a * automata.f[k][c];
-          const unsigned int mask = constrained(k);
-          for (unsigned int c = 0; c < 3; ++c)
+          if (plain_ungrouped && automata.groups[k] == 0)
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                automata.v[k][c] += a * automata.f[k][c];
+                wp[c] += automata.f[k][c] * (vb[c] + automata.v[k][c]);
+              }
+          else
             {
-              // a constrained component moves at vb (see above)
-              const bool   fixed = mask & (1u << c);
-              const double vm    = fixed ? 0.5 * dt * vb[c]
-                                         : 0.25 * dt * (vb[c] + automata.v[k][c]);
-              wp += (automata.f[k][c] - fd[c] - fl[c]) * vm;
-              wd -= fd[c] * vm;
-              wl += fl[c] * vm;
-              if (fixed)
-                wl += automata.f[k][c] * 0.25 * dt * (automata.v[k][c] - vb[c]);
+              // after a rebuild st.f_damp is in the old order: recompute
+              // it (from the velocity before the kick: an O(dt) error at
+              // that step only)
+              const Vec3 fd = !damping_on ? Vec3{{0, 0, 0}}
+                              : stale     ? damping_force(k, values)
+                                          : st.f_damp[k];
+              Vec3       fl{{0, 0, 0}};
+              if (automata.groups[k] != 0)
+                for (unsigned int gi = 0; gi < grp.size(); ++gi)
+                  if (automata.groups[k] & (1u << gi))
+                    for (unsigned int c = 0; c < 3; ++c)
+                      fl[c] += load[gi][c];
+              const unsigned int mask = constrained(k);
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  automata.v[k][c] += a * automata.f[k][c];
+                  const bool   fixed = mask & (1u << c);
+                  const double vm
+                    = fixed ? 2 * vb[c] : vb[c] + automata.v[k][c];
+                  wp[c] += (automata.f[k][c] - fd[c] - fl[c]) * vm;
+                  wd[c] -= fd[c] * vm;
+                  wl[c] += fl[c] * vm;
+                  if (fixed)
+                    wl[c] += automata.f[k][c] * (automata.v[k][c] - vb[c]);
+                }
             }
           if (rotations)
             {
-              const double b  = ab[1];
-              const Vec3   wb = automata.w[k];
+              const double b = ab[1];
               for (unsigned int c = 0; c < 3; ++c)
                 {
+                  const double wb = automata.w[k][c];
                   automata.w[k][c] += b * automata.torque[k][c];
-                  wp += automata.torque[k][c] * 0.25 * dt
-                        * (wb[c] + automata.w[k][c]);
+                  wp[3 + c] += automata.torque[k][c] * (wb + automata.w[k][c]);
                 }
             }
         }
-      work[pair_work] += wp;
-      work[load_work] += wl;
-      work[damped_work] += wd;
+      work[pair_work]
+        += 0.25 * dt * ((wp[0] + wp[1] + wp[2]) + (wp[3] + wp[4] + wp[5]));
+      work[load_work] += 0.25 * dt * (wl[0] + wl[1] + wl[2]);
+      work[damped_work] += 0.25 * dt * (wd[0] + wd[1] + wd[2]);
     }
 
 
@@ -354,8 +323,16 @@ namespace tribodyn
           st.f_damp.resize(automata.n_owned);
           st.f_damp_rebuild = scalars.rebuild_count;
         }
+      // (an automaton of no group without global damping has none: zero)
+      const bool plain_ungrouped = prm.global_damping == 0;
       for (unsigned int k = 0; k < automata.n_owned; ++k)
         {
+          if (plain_ungrouped && automata.groups[k] == 0)
+            {
+              if (damping_on)
+                st.f_damp[k] = {{0, 0, 0}};
+              continue;
+            }
           if (damping_on)
             {
               st.f_damp[k] = damping_force(k, values);

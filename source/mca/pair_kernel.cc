@@ -639,6 +639,10 @@ namespace tribodyn
       // (pass B): the mean stress sigma_m and the factor M of its sides.
       // (the plastic work is what the sides release, pass C)
       plast.assign(static_cast<std::size_t>(n_local) * 2, 0.);
+      // (bond scenes: each stress s for bond switching, which needs the
+      // final one, this one where pass C does not sum the tensor anew)
+      if (bond_scene)
+        bond_buffer.resize(static_cast<std::size_t>(n_local) * 7);
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           if (elastic(k))
@@ -671,6 +675,8 @@ namespace tribodyn
             }
           plast[2 * k]     = sm;
           plast[2 * k + 1] = M;
+          if (bond_scene)
+            std::copy_n(s.begin(), 6, &bond_buffer[7 * k]);
         }
       if (partition.neighbours().active())
         partition.neighbours().update(plast.data(), 2);

@@ -82,8 +82,9 @@ namespace tribodyn
       std::vector<double> plast;       ///< sigma_m trial, M
       std::vector<double> bond_buffer; ///< stress tensor (6), yield stress
       /// Per local automaton, bond scenes whose breaking criterion screens
-      /// its pairs: the Frobenius norm of its stress tensor, rounded up.
-      std::vector<float> stress_norm;
+      /// its pairs: the criterion's figures of its stress tensor
+      /// (screen_size floats, e.g. VonMisesBondBreaking::screen_figures()).
+      std::vector<float> stress_screen;
       /// Per automaton: the volumetric strain increment, then the
       /// mean-stress increment (exchanged with the ghosts).
       std::vector<double> dsm;

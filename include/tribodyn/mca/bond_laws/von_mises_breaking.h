@@ -87,39 +87,59 @@ namespace tribodyn
         return 1.5 * (norm2 - trace * trace / 3);
       }
 
-      /// Can the bond of a pair break? A screen that needs only the
-      /// Frobenius norms @p norm_i, @p norm_j of its automata's tensors
-      /// (xx, yy, zz and twice the shear components squared): false only
-      /// where breaks() is false. 3 J2(s') <= 3/2 |s'|^2, and of the three
-      /// orthogonal parts of s' (pair_von_mises_squared()) |P s P| <= |s|
-      /// <= (norm_i + norm_j) / 2, (sn + 2 c_n)^2 <= 2 sn^2 + 8 am^2
-      /// |tau|^2, 2 am^2 |P tau|^2 <= 2 am^2 |tau|^2. The margin 1e-9
-      /// covers the rounding of the bound and of the criterion's own
-      /// evaluation (3.1e-14 of |s'|^2, tests/mca/bond_breaking.cc); norms
-      /// kept in single precision must be rounded up.
-      /// The norm may_break() screens by: the Frobenius norm of the
-      /// stress tensor @p s (xx, yy, zz, yz, xz, xy).
-      static double
-      screen_norm(const double *s)
+      /// What may_break() needs of an automaton's stress tensor, in single
+      /// precision: the norm of its deviator (rounded up) and its mean
+      /// stress (computed from the tensors bond switching exchanges).
+      static constexpr unsigned int screen_size = 2;
+
+      /// The screen's figures @p f of the stress tensor @p s (xx, yy, zz,
+      /// yz, xz, xy): |dev s| rounded up (float's relative rounding is
+      /// below 1e-7) and tr s / 3.
+      static void
+      screen_figures(const double *s, float *f)
       {
-        return std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]
-                         + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+        const double m  = (s[0] + s[1] + s[2]) / 3;
+        const double d0 = s[0] - m, d1 = s[1] - m, d2 = s[2] - m;
+        const double norm
+          = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2
+                      + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+        f[0] = static_cast<float>(norm * (1 + 1e-6));
+        f[1] = static_cast<float>(m);
       }
 
+      /// Can the bond of a pair break? A screen from the figures @p f_i,
+      /// @p f_j of its automata's tensors (screen_figures()): false only
+      /// where breaks() is false. For any scalar c, 3 J2(s') = 3/2 |dev
+      /// s'|^2 <= 3/2 |s' - c I|^2, and with P = I - n n, s' - c I = P (s -
+      /// c I) P + (sn + 2 c_n - c) n n + am (n (P tau) + (P tau) n), three
+      /// orthogonal parts (pair_von_mises_squared()). With c the mean of
+      /// the automata's mean stresses, s - c I is the mean of their
+      /// deviators: |P (s - c I) P| <= a = (|dev s_i| + |dev s_j|) / 2,
+      /// (sn + 2 c_n - c)^2 <= 2 (sn - c)^2 + 8 am^2 |tau|^2 and 2 am^2
+      /// |P tau|^2 <= 2 am^2 |tau|^2: 3 J2 <= 3/2 (a^2 + 2 (sn - c)^2 + 10
+      /// am^2 |tau|^2). A pressure common to the pair and its automata (a
+      /// contact's) drops out, where a bound from the tensors' full norms
+      /// kept it. Margins: the means' single precision (1e-6 of their
+      /// magnitudes added to |sn - c|), and 1e-9 of 2 bound + 9 c^2 >= 3/2
+      /// |s'|^2 for the rounding of the bound and of the criterion's own
+      /// evaluation (3.1e-14 of |s'|^2, tests/mca/bond_breaking.cc).
       static bool
-      may_break(const double norm_i,
-                const double norm_j,
+      may_break(const float *f_i,
+                const float *f_j,
                 const double sn,
                 const double am,
                 const Vec3  &tau,
                 const double limit_i,
                 const double limit_j)
       {
-        const double a = 0.5 * (norm_i + norm_j);
+        const double a = 0.5 * (double(f_i[0]) + f_j[0]);
+        const double c = 0.5 * (double(f_i[1]) + f_j[1]);
+        const double e
+          = std::abs(sn - c) + 1e-6 * (std::abs(f_i[1]) + std::abs(f_j[1]));
         const double bound
-          = 1.5 * (a * a + 2 * sn * sn + 10 * am * am * dot(tau, tau));
+          = 1.5 * (a * a + 2 * e * e + 10 * am * am * dot(tau, tau));
         const double limit = std::min(limit_i, limit_j);
-        return bound * (1 + 1e-9) >= limit * limit;
+        return bound + 1e-9 * (2 * bound + 9 * c * c) >= limit * limit;
       }
 
       /// Does the bond of a pair break? @p s_i, @p s_j: the stress tensors
