@@ -235,9 +235,6 @@ namespace tribodyn
       if (stale)
         for (const auto &g : grp)
           values.push_back(value(g, scalars.current_time));
-      // An automaton of no group, without global damping, has neither
-      // damping nor loads nor constraints: all of its f is pair force.
-      const bool plain_ungrouped = prm.global_damping == 0;
       // The works over dt/4, one partial sum per component and kind
       // (independent chains of additions): a component moves at
       // (vb + v)/2 over the half step, or at vb where a constraint resets
@@ -248,7 +245,8 @@ namespace tribodyn
           const auto   ab = factors(k);
           const double a  = ab[0];
           const Vec3   vb = automata.v[k];
-          if (plain_ungrouped && automata.groups[k] == 0)
+          // (an automaton no group acts on: all of its f is pair force)
+          if (untouched(k))
             for (unsigned int c = 0; c < 3; ++c)
               {
                 automata.v[k][c] += a * automata.f[k][c];
@@ -323,11 +321,10 @@ namespace tribodyn
           st.f_damp.resize(automata.n_owned);
           st.f_damp_rebuild = scalars.rebuild_count;
         }
-      // (an automaton of no group without global damping has none: zero)
-      const bool plain_ungrouped = prm.global_damping == 0;
       for (unsigned int k = 0; k < automata.n_owned; ++k)
         {
-          if (plain_ungrouped && automata.groups[k] == 0)
+          // (an automaton no group acts on has no damping force: zero)
+          if (untouched(k))
             {
               if (damping_on)
                 st.f_damp[k] = {{0, 0, 0}};

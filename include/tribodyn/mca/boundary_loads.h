@@ -155,6 +155,14 @@ namespace tribodyn
       /// The value of group @p g at time @p t (its ramp and switch).
       Vec3
       value(const BoundaryGroup &g, const double t) const;
+      /// Is owned automaton @p k free of every group's action: in no group
+      /// and without global damping (no damping, load or constraint; its
+      /// f is all pair force)?
+      bool
+      untouched(const unsigned int k) const
+      {
+        return prm.global_damping == 0 && automata.groups[k] == 0;
+      }
       /// Damping force -c m v of owned automaton @p k (@p values: value()
       /// of every group).
       Vec3
