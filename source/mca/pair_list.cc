@@ -15,6 +15,72 @@ namespace tribodyn
 {
   namespace mca
   {
+    namespace
+    {
+      /// A group of automata of one cell, numbered consecutively in the
+      /// cell's member list, with the bounding box of their positions and
+      /// the summary of their size levels (the largest level, and the
+      /// transitional flag if any has it): no automaton of the group lies
+      /// outside the box, and none has a larger pair-list range against
+      /// another automaton than the summary has.
+      struct Bin
+      {
+        double        lo[3], hi[3];
+        unsigned int  begin, end;
+        unsigned char level;
+      };
+
+      /// The box and level summary of the automata members[begin ... end).
+      Bin
+      bin_of(const std::vector<unsigned int> &members,
+             const unsigned int               begin,
+             const unsigned int               end,
+             const AutomatonArrays           &automata)
+      {
+        Bin bin{{0, 0, 0}, {0, 0, 0}, begin, end, 0};
+        for (unsigned int e = 0; e < 3; ++e)
+          bin.lo[e] = bin.hi[e] = automata.x[members[begin]][e];
+        unsigned char level = 0, transitional = 0;
+        for (unsigned int k = begin; k < end; ++k)
+          {
+            const unsigned int a = members[k];
+            for (unsigned int e = 0; e < 3; ++e)
+              {
+                bin.lo[e] = std::min(bin.lo[e], automata.x[a][e]);
+                bin.hi[e] = std::max(bin.hi[e], automata.x[a][e]);
+              }
+            const unsigned char l
+              = automata.size_level.empty() ? 0 : automata.size_level[a];
+            level = std::max<unsigned char>(
+              level, l & ~AutomatonArrays::transitional_flag);
+            transitional |= l & AutomatonArrays::transitional_flag;
+          }
+        bin.level = level | transitional;
+        return bin;
+      }
+
+      /// The squared distance between the boxes of bins @p a and @p b, the
+      /// latter shifted by @p s, rounded down: for automata x_a in a and
+      /// x_b in b, each component of (x_b - x_a) + s, as the search
+      /// computes it, lies between those of the boxes (rounding is
+      /// monotone), so this is at most their squared distance but for the
+      /// rounding of the sums of squares.
+      double
+      box_distance2(const Bin &a, const Bin &b, const std::array<double, 3> &s)
+      {
+        double g2 = 0;
+        for (unsigned int e = 0; e < 3; ++e)
+          {
+            const double below = (b.lo[e] - a.hi[e]) + s[e],
+                         above = (b.hi[e] - a.lo[e]) + s[e];
+            const double g     = below > 0 ? below : above < 0 ? -above : 0.;
+            g2 += g * g;
+          }
+        return g2;
+      }
+    } // namespace
+
+
     void
     PairList::build(const Decomposition               &cells,
                     const AutomatonArrays             &automata,
@@ -37,6 +103,107 @@ namespace tribodyn
           members[fill[cell_of[k]]++] = k;
       }
 
+      // The members of a cell of many automata in bins by their position in
+      // the cell's bounding box (in cells of at least 24 automata: m^3
+      // bins, the largest m <= 4 that leaves at least three automata a bin
+      // on average). The cells are as wide as the largest pair-list range:
+      // in a graded scene a cell of the finest automata holds ~170 of them,
+      // of which an automaton's range reaches a few dozen. The search
+      // compares boxes first (a cell's, then its bins'), then the automata
+      // of the bins it cannot rule out; which pairs it finds is the same
+      // (box_distance2(), the margin below). A uniform scene's cells hold
+      // about two automata: no cell is binned and the tables stay empty (a
+      // rebuild's peak memory unchanged).
+      constexpr unsigned int binned_from = 24;
+      std::vector<Bin>       bins, cell_box;
+      // (per local cell, its bins bins_first[c] ... bins_first[c + 1],
+      // none where the cell is not binned; empty where none is)
+      std::vector<unsigned int> bins_first;
+      for (unsigned int c = 0; c < n_cells && bins_first.empty(); ++c)
+        if (first[c + 1] - first[c] >= binned_from)
+          {
+            bins_first.assign(n_cells + 1, 0);
+            cell_box.resize(n_cells);
+          }
+      if (!bins_first.empty())
+        {
+          std::vector<unsigned int> key, count, sorted;
+          for (unsigned int c = 0; c < n_cells; ++c)
+            {
+              bins_first[c]        = bins.size();
+              const unsigned int n = first[c + 1] - first[c];
+              if (n < binned_from)
+                continue;
+              cell_box[c] = bin_of(members, first[c], first[c + 1], automata);
+              unsigned int m = 2;
+              while (m < 4 && 3 * (m + 1) * (m + 1) * (m + 1) <= n)
+                ++m;
+              // counting sort of the cell's members by bin (stable)
+              const Bin &box = cell_box[c];
+              key.resize(n);
+              count.assign(m * m * m + 1, 0);
+              for (unsigned int k = 0; k < n; ++k)
+                {
+                  unsigned int b = 0;
+                  for (unsigned int e = 0; e < 3; ++e)
+                    {
+                      const double w = box.hi[e] - box.lo[e];
+                      const double f
+                        = w > 0 ? (x[members[first[c] + k]][e] - box.lo[e]) / w
+                                : 0.;
+                      b = b * m
+                          + std::min(m - 1, static_cast<unsigned int>(f * m));
+                    }
+                  key[k] = b;
+                  ++count[b + 1];
+                }
+              std::partial_sum(count.begin(), count.end(), count.begin());
+              sorted.resize(n);
+              for (unsigned int k = 0; k < n; ++k)
+                sorted[count[key[k]]++] = members[first[c] + k];
+              std::copy(sorted.begin(),
+                        sorted.end(),
+                        members.begin() + first[c]);
+              // (count[b] is now the end of bin b)
+              unsigned int begin = 0;
+              for (unsigned int b = 0; b < m * m * m; ++b)
+                {
+                  if (count[b] > begin)
+                    bins.push_back(bin_of(members,
+                                          first[c] + begin,
+                                          first[c] + count[b],
+                                          automata));
+                  begin = count[b];
+                }
+            }
+          bins_first[n_cells] = bins.size();
+        }
+      const auto binned = [&](const unsigned int c) {
+        return !bins_first.empty() && bins_first[c] < bins_first[c + 1];
+      };
+      // The largest pair-list range of two groups of automata: that of their
+      // summaries, for the ranges grow with the size level and are larger
+      // near a change of size (checked here).
+      if (graded_range)
+        for (unsigned int L = 0; L < (*graded_range)[0].size(); ++L)
+          Assert((*graded_range)[1][L] >= (*graded_range)[0][L]
+                   && (L == 0
+                       || ((*graded_range)[0][L] >= (*graded_range)[0][L - 1]
+                           && (*graded_range)[1][L]
+                                >= (*graded_range)[1][L - 1])),
+                 dealii::ExcInternalError());
+      // Boxes closer than the range may hold a pair: the relative margin
+      // covers the rounding of the sums of squares (box_distance2()).
+      const auto may_hold_pairs
+        = [&](const Bin &a, const Bin &b, const std::array<double, 3> &s) {
+            const double r = graded_range
+                               ? AutomatonArrays::pair_list_range(*graded_range,
+                                                                  a.level,
+                                                                  b.level)
+                               : range;
+            return box_distance2(a, b, s) < r * r * (1 + 1e-9);
+          };
+
       struct Candidate // 12 bytes: the peak memory of a rebuild
       {
         std::uint32_t i, j;
@@ -45,48 +212,85 @@ namespace tribodyn
       std::vector<Candidate> found;
       found.reserve(std::size_t(n_owned) * 7);
       const double range2 = range * range;
+      // Every pair of automata a of members[a_begin ... a_end) and b of
+      // members[b_begin ... b_end), b seen through image shift code @p shift.
+      const auto search = [&](const unsigned int  a_begin,
+                              const unsigned int  a_end,
+                              const unsigned int  b_begin,
+                              const unsigned int  b_end,
+                              const unsigned char shift) {
+        const auto &s = cells.shift_vector(shift);
+        for (unsigned int ia = a_begin; ia < a_end; ++ia)
+          {
+            const unsigned int a = members[ia];
+            for (unsigned int ib = b_begin; ib < b_end; ++ib)
+              {
+                const unsigned int b = members[ib];
+                // an owned-owned pair is found from both sides: keep it
+                // once, from the automaton of smaller key
+                if (b < n_owned && order[b] <= order[a])
+                  continue;
+                double r2 = 0;
+                Vec3   dn;
+                for (unsigned int e = 0; e < 3; ++e)
+                  {
+                    dn[e] = (x[b][e] - x[a][e]) + s[e];
+                    r2 += dn[e] * dn[e];
+                  }
+                if (graded_range)
+                  {
+                    const double r = AutomatonArrays::pair_list_range(
+                      *graded_range,
+                      automata.size_level[a],
+                      automata.size_level[b]);
+                    if (r2 >= r * r)
+                      continue;
+                  }
+                else if (r2 >= range2)
+                  continue;
+                // i is the automaton of smaller key: the same pair and
+                // orientation on every rank and partition
+                if (order[a] < order[b])
+                  found.push_back({a, b, shift});
+                else
+                  found.push_back({b, a, Decomposition::opposite_shift(shift)});
+              }
+          }
+      };
       for (unsigned int c = 0; c < cells.n_owned_cells(); ++c)
         cells.for_each_neighbour(c, [&](const Decomposition::Neighbour &nb) {
           const auto &s = cells.shift_vector(nb.shift);
-          for (unsigned int ia = first[c]; ia < first[c + 1]; ++ia)
-            {
-              const unsigned int a = members[ia];
-              for (unsigned int ib = first[nb.cell]; ib < first[nb.cell + 1];
-                   ++ib)
-                {
-                  const unsigned int b = members[ib];
-                  // an owned-owned pair is found from both sides: keep it
-                  // once, from the automaton of smaller key
-                  if (b < n_owned && order[b] <= order[a])
-                    continue;
-                  double r2 = 0;
-                  Vec3   dn;
-                  for (unsigned int e = 0; e < 3; ++e)
-                    {
-                      dn[e] = (x[b][e] - x[a][e]) + s[e];
-                      r2 += dn[e] * dn[e];
-                    }
-                  if (graded_range)
-                    {
-                      const double r = AutomatonArrays::pair_list_range(
-                        *graded_range,
-                        automata.size_level[a],
-                        automata.size_level[b]);
-                      if (r2 >= r * r)
-                        continue;
-                    }
-                  else if (r2 >= range2)
-                    continue;
-                  // i is the automaton of smaller key: the same pair and
-                  // orientation on every rank and partition
-                  if (order[a] < order[b])
-                    found.push_back({a, b, nb.shift});
-                  else
-                    found.push_back(
-                      {b, a, Decomposition::opposite_shift(nb.shift)});
-                }
-            }
+          if (!binned(c))
+            search(first[c],
+                   first[c + 1],
+                   first[nb.cell],
+                   first[nb.cell + 1],
+                   nb.shift);
+          else
+            for (unsigned int ka = bins_first[c]; ka < bins_first[c + 1]; ++ka)
+              {
+                const Bin &bin_a = bins[ka];
+                if (!binned(nb.cell))
+                  search(bin_a.begin,
+                         bin_a.end,
+                         first[nb.cell],
+                         first[nb.cell + 1],
+                         nb.shift);
+                else if (may_hold_pairs(bin_a, cell_box[nb.cell], s))
+                  for (unsigned int kb = bins_first[nb.cell];
+                       kb < bins_first[nb.cell + 1];
+                       ++kb)
+                    if (may_hold_pairs(bin_a, bins[kb], s))
+                      search(bin_a.begin,
+                             bin_a.end,
+                             bins[kb].begin,
+                             bins[kb].end,
+                             nb.shift);
+              }
         });
+      std::vector<Bin>().swap(bins);
+      std::vector<Bin>().swap(cell_box);
+      std::vector<unsigned int>().swap(bins_first);
       // Order of the pairs: by the keys of i then j, so that every
       // automaton sums its pairs' forces in the same order on any
       // partition (the results do not depend on the number of ranks).
