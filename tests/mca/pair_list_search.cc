@@ -1,29 +1,30 @@
 // The pair list's search (PairList::build(), issue #48): it finds exactly
 // the pairs a brute-force search over all automata finds.
 //
-// Automata at uniform random positions in a box periodic in x, y and z of
-// 3 x 3 x 3 cells, of size levels 0 (90 %), 1 (8 %) and 3 (2 %), a tenth of
+// Automata at uniform random positions in a box periodic in x, y and z,
+// of 3 x 3 x 3 cells, of size levels 0 (90 %), 1 (8 %) and 3 (2 %), a tenth of
 // them with the transitional flag; pair-list ranges r0 2^L, 1.12 times that
-// near a change of size (AutomatonSystem::pair_list_ranges()). The cells
-// are as wide as the largest range (8.96 r0): 6 000 automata in the lowest
-// layer of cells, ~670 a cell, which the search sorts into bins and rules
-// out by their bounding boxes before it compares automata; 350 in the two
-// layers above, ~19 a cell, most of them cells the search does not bin
-// (fewer than 24 automata), some binned: pairs of binned and unbinned
-// cells across the layers and the periodic seam. The brute force compares every
-// two automata at their nearest image (the period exceeds twice the largest
-// range, so no other image can be in range), with the search's own arithmetic:
-// the vector (x_j - x_i) + shift from the automaton of smaller key, the squared
-// distance against the squared range of the two levels. The found pairs (i, j,
-// image shift) must equal its pairs as sets: no tolerance, the same comparisons
-// decide. The same with one range for all (the uniform scenes' path) in the
-// same cells. Random positions put pairs at every fraction of their range: the
-// pairs within 10^-3 of it are counted, to show that the margin of the boxes'
-// test is exercised.
+// near a change of size (AutomatonSystem::pair_list_ranges()). The cells are
+// as wide as the largest range (8.96 r0): 6 000 automata in the lowest layer
+// of cells, ~670 a cell, which the search sorts into bins and rules out by
+// their bounding boxes before it compares automata; 350 in the two layers
+// above, ~19 a cell, most of them cells the search does not bin (fewer than
+// 24 automata), some binned: pairs of binned and unbinned cells across the
+// layers and the periodic seam. The brute force compares every two automata
+// at their nearest image (the period exceeds twice the largest range, so no
+// other image can be in range), with the search's own arithmetic: the vector
+// (x_j - x_i) + shift from the automaton of smaller key, the squared
+// distance against the squared range of the two levels. The found pairs (i,
+// j, image shift) must equal its pairs as sets: no tolerance, the same
+// comparisons decide. The same with one range for all (the uniform scenes'
+// path) in the same cells. Random positions put pairs at every fraction of
+// their range: the pairs within 10^-3 of it are counted, to show that the
+// margin of the boxes' test is exercised.
 
 #include "mca_test_tools.h"
 
 #include <algorithm>
+#include <numeric>
 #include <random>
 #include <tribodyn/mca/decomposition.h>
 #include <tribodyn/mca/pair_list.h>
