@@ -60,11 +60,12 @@ namespace tribodyn
       }
 
       /// The squared distance between the boxes of bins @p a and @p b, the
-      /// latter shifted by @p s, rounded down: for automata x_a in a and
-      /// x_b in b, each component of (x_b - x_a) + s, as the search
-      /// computes it, lies between those of the boxes (rounding is
-      /// monotone), so this is at most their squared distance but for the
-      /// rounding of the sums of squares.
+      /// latter shifted by @p s: for automata x_a in a and x_b in b, each
+      /// component of (x_b - x_a) + s, as the search computes it, lies
+      /// between those of the boxes as computed here (rounding is
+      /// monotone), so this is at most the squared distance the search
+      /// computes for x_a and x_b, but for the rounding of the sums of
+      /// squares.
       double
       box_distance2(const Bin &a, const Bin &b, const std::array<double, 3> &s)
       {
