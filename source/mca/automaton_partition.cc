@@ -276,10 +276,7 @@ namespace tribodyn
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           auto &s = summary[cell_of[k]];
-          s = std::max<unsigned char>(s & ~AutomatonArrays::transitional_flag,
-                                      size_level[k]
-                                        & ~AutomatonArrays::transitional_flag)
-              | ((s | size_level[k]) & AutomatonArrays::transitional_flag);
+          s       = AutomatonArrays::merge_level_summary(s, size_level[k]);
         }
       // and those of the neighbours' cells next to the owned ones
       const unsigned int               n_nb = cells.neighbour_ranks().size();

@@ -40,7 +40,6 @@ namespace tribodyn
         Bin bin{{0, 0, 0}, {0, 0, 0}, begin, end, 0};
         for (unsigned int e = 0; e < 3; ++e)
           bin.lo[e] = bin.hi[e] = automata.x[members[begin]][e];
-        unsigned char level = 0, transitional = 0;
         for (unsigned int k = begin; k < end; ++k)
           {
             const unsigned int a = members[k];
@@ -49,13 +48,11 @@ namespace tribodyn
                 bin.lo[e] = std::min(bin.lo[e], automata.x[a][e]);
                 bin.hi[e] = std::max(bin.hi[e], automata.x[a][e]);
               }
-            const unsigned char l
-              = automata.size_level.empty() ? 0 : automata.size_level[a];
-            level = std::max<unsigned char>(
-              level, l & ~AutomatonArrays::transitional_flag);
-            transitional |= l & AutomatonArrays::transitional_flag;
+            if (!automata.size_level.empty())
+              bin.level
+                = AutomatonArrays::merge_level_summary(bin.level,
+                                                       automata.size_level[a]);
           }
-        bin.level = level | transitional;
         return bin;
       }
 

@@ -125,10 +125,7 @@ namespace tribodyn
         if (count[cell] < 65535)
           ++count[cell];
         const unsigned char b = level_byte(a);
-        summary[cell]
-          = std::max<unsigned char>(summary[cell] & ~transitional_flag,
-                                    b & ~transitional_flag)
-            | ((summary[cell] | b) & transitional_flag);
+        summary[cell]         = merge_level_summary(summary[cell], b);
       });
 
       // p4est's weighted partition (as AutomatonSystem::setup() asks for

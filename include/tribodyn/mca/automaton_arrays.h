@@ -176,6 +176,18 @@ namespace tribodyn
           = std::max(a & ~transitional_flag, b & ~transitional_flag);
         return ranges[((a | b) & transitional_flag) != 0][level];
       }
+      /// The size-level summary of a group of automata (a cell's, a bin's)
+      /// with one more of size-level byte @p b: the largest level, and the
+      /// transitional flag if any has it. pair_list_range() of a summary
+      /// bounds that of each automaton it summarizes (the ranges grow with
+      /// the level and near a change of size).
+      static unsigned char
+      merge_level_summary(const unsigned char summary, const unsigned char b)
+      {
+        return std::max<unsigned char>(summary & ~transitional_flag,
+                                       b & ~transitional_flag)
+               | ((summary | b) & transitional_flag);
+      }
       /// A ghost is sent when its squared distance to a cell of the
       /// receiving rank is below this factor times its squared reach: the
       /// margin covers the round-off of the cells' boxes.
