@@ -49,6 +49,7 @@ namespace tribodyn
                         parameters.geometry.largest_pair_distance()
                           * (1 + parameters.interaction.skin),
                         parameters.partition.mesh_cells_per_rank,
+                        parameters.partition.automaton_order,
                         communicator)
     {
     }
@@ -235,11 +236,12 @@ namespace tribodyn
       auto              &order   = automata.order;
       const auto        &cells   = decomposition;
       auto              &fields  = automata.automaton_fields;
-      // Along the curve of the cells, then by id: a global order, the same
-      // on any partition.
+      // By their places in the automata's order (the curve of the cells,
+      // or the layers of the slabs: Decomposition::curve_index()), then by
+      // id: a global order, the same on any partition.
       std::vector<std::uint64_t> cell_curve(n_owned);
       for (unsigned int k = 0; k < n_owned; ++k)
-        cell_curve[k] = cells.curve_index(cell_of[k]);
+        cell_curve[k] = cells.curve_index(cell_of[k], automata.x[k]);
       std::vector<unsigned int> perm(n_owned);
       std::iota(perm.begin(), perm.end(), 0u);
       std::sort(perm.begin(), perm.end(), [&](unsigned a, unsigned b) {
@@ -331,13 +333,21 @@ namespace tribodyn
       const unsigned int               ghost_width = fields.ghost_width();
       std::vector<std::vector<double>> out(n_nb);
       std::vector<std::vector<unsigned int>> send_indices(n_nb);
+      // the owned automata of each owned cell, in the owned order (the
+      // cells' own order need not be theirs: Partition/Automaton order)
       std::vector<unsigned int> first_of_cell(cells.n_owned_cells() + 1, 0);
       for (unsigned int k = 0; k < n_owned; ++k)
         ++first_of_cell[cell_of[k] + 1];
-      // owned automata are ordered along the curve, as the owned cells are
       std::partial_sum(first_of_cell.begin(),
                        first_of_cell.end(),
                        first_of_cell.begin());
+      std::vector<unsigned int> in_cell(n_owned);
+      {
+        std::vector<unsigned int> fill(first_of_cell.begin(),
+                                       first_of_cell.end() - 1);
+        for (unsigned int k = 0; k < n_owned; ++k)
+          in_cell[fill[cell_of[k]]++] = k;
+      }
       const std::vector<unsigned char> summary
         = graded ? cell_level_summaries() : std::vector<unsigned char>();
       struct Reachable // a neighbour rank's cell, as seen from the owned one
@@ -367,10 +377,11 @@ namespace tribodyn
                 t.summary = graded ? summary[nb.cell] : 0;
                 targets.push_back(t);
               });
-            for (unsigned int k = first_of_cell[c]; k < first_of_cell[c + 1];
-                 ++k)
+            for (unsigned int m = first_of_cell[c]; m < first_of_cell[c + 1];
+                 ++m)
               {
-                bool needed = false;
+                const unsigned int k      = in_cell[m];
+                bool               needed = false;
                 for (const auto &t : targets)
                   {
                     const double reach

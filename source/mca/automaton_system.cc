@@ -48,13 +48,14 @@ namespace tribodyn
                 static_cast<AutomatonArrays &>(*this),
                 static_cast<const SystemScalars &>(*this))
     {
-      const auto &g = prm.geometry;
-      d             = g.automaton_size;
-      r0            = d / 2;
-      S             = d * d / (2 * std::sqrt(2.));
-      V             = d * d * d / std::sqrt(2.);
-      range         = d * (1 + prm.interaction.skin);
-      graded        = !g.size_bands.empty();
+      const auto &g   = prm.geometry;
+      d               = g.automaton_size;
+      r0              = d / 2;
+      S               = d * d / (2 * std::sqrt(2.));
+      V               = d * d * d / std::sqrt(2.);
+      range           = d * (1 + prm.interaction.skin);
+      pairs_per_chunk = prm.partition.pairs_per_chunk;
+      graded          = !g.size_bands.empty();
       // (one volume for all outside graded scenes)
       if (!graded)
         {

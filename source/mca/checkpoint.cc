@@ -192,6 +192,8 @@ namespace tribodyn
         }
       MCA_CHECKPOINT_PAIR_LISTS(MCA_GET)
 #undef MCA_GET
+      // (derived from the lists read: the pair kernel's pipeline)
+      chunk_for_pipeline(n_owned);
       sync_many_body_shapes();
       get(ar, offsets);
       std::size_t n_lists = 0;

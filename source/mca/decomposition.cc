@@ -40,13 +40,16 @@ namespace tribodyn
     } // namespace
 
 
-    Decomposition::Decomposition(const GeometryParameters &geometry,
-                                 const double              interaction_range,
-                                 const unsigned int        mesh_cells_per_rank,
-                                 const MPI_Comm            communicator)
+    Decomposition::Decomposition(
+      const GeometryParameters                 &geometry,
+      const double                              interaction_range,
+      const unsigned int                        mesh_cells_per_rank,
+      const PartitionParameters::AutomatonOrder order,
+      const MPI_Comm                            communicator)
         : geometry(geometry)
         , range(interaction_range)
         , mesh_cells_per_rank(mesh_cells_per_rank)
+        , order(order)
         , comm(communicator)
         , rank(dealii::Utilities::MPI::this_mpi_process(communicator))
         , tria(communicator)
@@ -188,6 +191,24 @@ namespace tribodyn
           n_cells[c] = trees[c] << level;
           h[c]       = period_[c] / n_cells[c];
         }
+      // The slab order's directions: slowest the one with the most cells
+      // among those without periodic faces (of all three where every one
+      // has them), whose neighbours across it are then a layer of cells
+      // away in the order (across a periodic one, the last layer's would
+      // lie beside the first's); then the longer of the other two.
+      const auto more_cells
+        = [this](const unsigned int a, const unsigned int b) {
+            return n_cells[a] != n_cells[b] ? n_cells[a] > n_cells[b] : a > b;
+          };
+      slab_axes = {{2, 1, 0}};
+      std::sort(slab_axes.begin(),
+                slab_axes.end(),
+                [&](const unsigned int a, const unsigned int b) {
+                  return periodic_[a] != periodic_[b] ? !periodic_[a]
+                                                      : more_cells(a, b);
+                });
+      if (more_cells(slab_axes[2], slab_axes[1]))
+        std::swap(slab_axes[1], slab_axes[2]);
 
       // Weighted partition: p4est cuts its space-filling curve so that the
       // ranks' sums of the cells' weights are equal (rather than their
@@ -451,11 +472,23 @@ namespace tribodyn
 
 
     std::uint64_t
-    Decomposition::curve_index(const unsigned int c) const
+    Decomposition::curve_index(const unsigned int c, const Point3 &x) const
     {
       const auto &ijk = cell_index[c];
-      return spread_bits(ijk[0]) | spread_bits(ijk[1]) << 1
-             | spread_bits(ijk[2]) << 2;
+      if (order == PartitionParameters::AutomatonOrder::curve)
+        return spread_bits(ijk[0]) | spread_bits(ijk[1]) << 1
+               | spread_bits(ijk[2]) << 2;
+      // the layer of the cell's slab that holds x (clamped: a periodic
+      // slowest direction's automata may sit just outside their cell)
+      const auto [a, b, e] = slab_axes;
+      const double below   = x[a] - (geometry.domain_lower[a] + ijk[a] * h[a]);
+      const int    in_cell = std::clamp(static_cast<int>(std::floor(
+                                       below / h[a] * layers_per_slab)),
+                                     0,
+                                     static_cast<int>(layers_per_slab) - 1);
+      const std::uint64_t layer
+        = static_cast<std::uint64_t>(ijk[a]) * layers_per_slab + in_cell;
+      return (layer * n_cells[b] + ijk[b]) * n_cells[e] + ijk[e];
     }
 
 

@@ -108,17 +108,19 @@ namespace tribodyn
     }
 
 
-    double
-    AutomatonSystem::many_body_step()
+    void
+    AutomatonSystem::many_body_step(const unsigned int k_begin,
+                                    const unsigned int k_end,
+                                    const bool         last,
+                                    double            &work_mb)
     {
-      double work_mb = 0;
       // Pair kernel, after pass A (dsm: the volumetric strain increments;
       // the mean-stress increments K dsm from here on). The many-body work
       // of D mu at mid-step (mu and half of this step's increment) over
       // the summed sides, minus the change of kappa G^2 (G moves by D dsm
       // gamma) but where the automaton is uniform (the change is the work
       // of its weighted sides, not summed); then mu of the automaton.
-      for (unsigned int k = 0; k < n_owned; ++k)
+      for (unsigned int k = k_begin; k < k_end; ++k)
         {
           dsm[k] *= mc[mat[k]].K;
           const double D  = mc[mat[k]].D;
@@ -145,19 +147,27 @@ namespace tribodyn
             work_mb += pair_energy::shift_sum(st, dm * st.gamma);
           mb_mu[k] += dsm[k];
         }
-      // the ghosts' from their owners' increments
-      if (partition.neighbours().active())
-        partition.neighbours().update(dsm.data(), 1);
-      for (unsigned int k = n_owned; k < n_local; ++k)
-        mb_mu[k] += dsm[k];
+      // the ghosts' from their owners' increments, once every owned one
+      // is done (the pair kernel's last chunk)
+      if (last)
+        {
+          if (partition.neighbours().active())
+            partition.neighbours().update(dsm.data(), 1);
+          for (unsigned int k = n_owned; k < n_local; ++k)
+            mb_mu[k] += dsm[k];
+        }
       // Where the pairs store their sides' common part only (no event can
       // occur, PairArrays::sig_e), pass C reads each side's many-body part
       // m = D mu + c of its automaton instead of adding D dsm to it: dsm
       // holds m from here on, the ghosts' too.
       if (!mb_stored)
-        for (unsigned int k = 0; k < n_local; ++k)
-          dsm[k] = mc[mat[k]].D * mb_mu[k] + mb_offset[k];
-      return work_mb;
+        {
+          for (unsigned int k = k_begin; k < k_end; ++k)
+            dsm[k] = mc[mat[k]].D * mb_mu[k] + mb_offset[k];
+          if (last)
+            for (unsigned int k = n_owned; k < n_local; ++k)
+              dsm[k] = mc[mat[k]].D * mb_mu[k] + mb_offset[k];
+        }
     }
 
 

@@ -118,43 +118,106 @@ namespace tribodyn
         step_dt, n_pairs, n_ahead, keep_normals, plastic && bonds};
       dsm.assign(n_local, 0);
       side_dq.assign(n_owned, 0);
-      // The works of this step's events (added to work at its end), among
-      // them the many-body work (doc/theory/mca.md §8.4): that of the
-      // many-body parts of the side stresses over the step, minus the
-      // change of the automata's kappa G^2.
-      WorkSums dw{};
-
-      pair_pass_a<rot, plastic>(step, dw, geometry, law, moment);
-
-      // Mean-stress increment of each automaton: K times its volumetric
-      // strain increment, the trace of the strain tensor fitted (least
-      // squares) to its pairs' normal strains: dtheta = sum_j beta_ij
-      // deps_ij (beta = 1/4 in a complete FCC neighbourhood).
-      // With it, in the same pass over the owned automata, the many-body
-      // work of the step and their new mu (pair_energy.cc); the ghosts'
-      // mu from their owners' increments.
-      dw[many_body_work] += many_body_step();
-      // (where the pairs store their sides' common part only, dsm holds
-      // each automaton's many-body part m from here on: PairArrays::sig_e)
-      Assert(mb_stored || !plastic, dealii::ExcInternalError());
-
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           f[k]      = {{0, 0, 0}};
           torque[k] = {{0, 0, 0}};
         }
-
+      // (the trial tensors; the automata with an unbonded contact, whose
+      // final tensor pass C of a bond kernel sums anew; the returns)
       if constexpr (plastic)
         {
-          pair_pass_b(step);
-          radial_returns();
+          trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
+          if (step.anew_tensors)
+            stress_anew.assign(n_local, 0);
+          plast.assign(static_cast<std::size_t>(n_local) * 2, 0.);
+          // (bond scenes: each stress s for bond switching, which needs
+          // the final one, this one where pass C does not sum the tensor
+          // anew)
+          if (bond_scene)
+            bond_buffer.resize(static_cast<std::size_t>(n_local) * 7);
         }
+      else if constexpr (bonds)
+        trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
+      // The works of this step's events (added to work at its end), among
+      // them the many-body work (doc/theory/mca.md §8.4): that of the
+      // many-body parts of the side stresses over the step, minus the
+      // change of the automata's kappa G^2. Pass C's apart, as it runs
+      // beside pass A.
+      WorkSums dw{}, dw_c{};
+      double   mb_work = 0;
+      bool     events  = false;
 
-      const bool events
-        = pair_pass_c<rot, plastic, bonds>(step, dw, geometry, law, moment);
+      // The passes as a pipeline over chunks of the pair list
+      // (PairList::chunk_for_pipeline()): each automaton's sums in pass A
+      // are complete once pass A has done its chunk, so pass B can follow
+      // chunk_lag chunks behind it and pass C as far behind pass B; the
+      // pairs between the fronts stay in the cache, where three passes over
+      // the whole list would each read it from memory. Every pass still
+      // visits the pairs in their order, so each automaton's sums are the
+      // same as pass by pass, bit for bit. Where a ghost takes part (its
+      // values come from the neighbour ranks once every owned automaton is
+      // done) the list is one chunk: the passes one after the other.
+      if (chunk_pair.empty() || chunk_pair.back() != n_pairs
+          || chunk_automaton.back() != n_owned)
+        chunk_for_pipeline(n_owned);
+      const bool         pipelined = this->pipelined();
+      const unsigned int n_chunks  = pipelined ? this->n_chunks() : 1;
+      const unsigned int lag       = pipelined ? chunk_lag : 0;
+      const auto         pairs_of
+        = [&](const unsigned int c, unsigned int &begin, unsigned int &end) {
+            begin = pipelined ? chunk_pair[c] : 0;
+            end   = pipelined ? chunk_pair[c + 1] : n_pairs;
+          };
+      const auto automata_of
+        = [&](const unsigned int c, unsigned int &begin, unsigned int &end) {
+            begin = pipelined ? chunk_automaton[c] : 0;
+            end   = pipelined ? chunk_automaton[c + 1] : n_owned;
+          };
+      for (unsigned int t = 0; t < n_chunks + 2 * lag; ++t)
+        {
+          unsigned int begin, end;
+          if (t < n_chunks)
+            {
+              pairs_of(t, begin, end);
+              pair_pass_a<rot, plastic>(
+                step, begin, end, dw, geometry, law, moment);
+              // Mean-stress increment of each automaton: K times its
+              // volumetric strain increment, the trace of the strain tensor
+              // fitted (least squares) to its pairs' normal strains: dtheta
+              // = sum_j beta_ij deps_ij (beta = 1/4 in a complete FCC
+              // neighbourhood). With it, in the same pass over the owned
+              // automata, the many-body work of the step and their new mu
+              // (pair_energy.cc); the ghosts' mu from their owners'
+              // increments.
+              automata_of(t, begin, end);
+              many_body_step(begin, end, t + 1 == n_chunks, mb_work);
+            }
+          // (where the pairs store their common part only, dsm holds each
+          // automaton's many-body part m from here on: PairArrays::sig_e)
+          if constexpr (plastic)
+            if (t >= lag && t - lag < n_chunks)
+              {
+                pairs_of(t - lag, begin, end);
+                pair_pass_b(step, begin, end);
+                automata_of(t - lag, begin, end);
+                radial_returns(begin, end, t - lag + 1 == n_chunks);
+                if constexpr (bonds)
+                  final_tensors_anew(begin, end);
+              }
+          if (t >= 2 * lag && t - 2 * lag < n_chunks)
+            {
+              pairs_of(t - 2 * lag, begin, end);
+              events = pair_pass_c<rot, plastic, bonds>(
+                         step, begin, end, dw_c, geometry, law, moment)
+                       || events;
+            }
+        }
+      Assert(mb_stored || !plastic, dealii::ExcInternalError());
+      dw[many_body_work] += mb_work;
 
       for (unsigned int k = 0; k < n_works; ++k)
-        work[k] += dw[k];
+        work[k] += dw[k] + dw_c[k];
       // the uniform automata whose shape an event ended (lambda = 0)
       if (plastic || events)
         sync_many_body_shapes();
@@ -163,11 +226,13 @@ namespace tribodyn
 
     template <bool rot, bool plastic, class Pairs, class Law, class Moment>
     void
-    AutomatonSystem::pair_pass_a(const PairStep &step,
-                                 WorkSums       &dw,
-                                 const Pairs    &geometry,
-                                 Law            &law,
-                                 Moment         &moment)
+    AutomatonSystem::pair_pass_a(const PairStep    &step,
+                                 const unsigned int p_begin,
+                                 const unsigned int p_end,
+                                 WorkSums          &dw,
+                                 const Pairs       &geometry,
+                                 Law               &law,
+                                 Moment            &moment)
     {
       const unsigned int n_pairs = step.n_pairs, n_ahead = step.n_ahead;
       const bool         keep_normals = step.keep_normals;
@@ -197,9 +262,9 @@ namespace tribodyn
       // the mid-step normals; the pairs' materials and size factors)
       alignas(64) double b_nm[3][block], b_K[3][block], b_f[block];
       unsigned int       b_type[block];
-      for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
+      for (unsigned int p0 = p_begin; p0 < p_end; p0 += block)
         {
-          const unsigned int nb = std::min(block, n_pairs - p0);
+          const unsigned int nb = std::min(block, p_end - p0);
           for (unsigned int b = 0; b < nb; ++b)
             {
               const unsigned int p = p0 + b, i = pi[p], j = pj[p];
@@ -549,7 +614,9 @@ namespace tribodyn
 
 
     void
-    AutomatonSystem::pair_pass_b(const PairStep &step)
+    AutomatonSystem::pair_pass_b(const PairStep    &step,
+                                 const unsigned int p_begin,
+                                 const unsigned int p_end)
     {
       // Pass B (plastic scenes): trial side stresses and trial tensors.
       const unsigned int     n_pairs = step.n_pairs, n_ahead = step.n_ahead;
@@ -557,11 +624,7 @@ namespace tribodyn
       NormalBlock            nblock;
       auto                   pair_vector_of
         = [this](const unsigned int p) { return pair_vector(p); };
-      trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
-      // (the automata with an unbonded contact, whose final tensor pass C
-      // of a bond kernel sums anew)
-      if (step.anew_tensors)
-        stress_anew.assign(n_local, 0);
+      // (the tensors and flags start from zero: pair_kernel())
       // The trial tensor T^a += (q S / V_a) n (x) (sigma n + tau) of seed
       // eq. (4) for each owned side outside elastic regions (which need
       // no trial stress); both shear factors are 1 after pass A. The i
@@ -571,9 +634,9 @@ namespace tribodyn
       Mat3               ti{};
       constexpr unsigned none  = static_cast<unsigned int>(-1);
       unsigned int       ti_of = none, run_of = none;
-      for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
+      for (unsigned int p0 = p_begin; p0 < p_end; p0 += block)
         {
-          const unsigned int nb = std::min(block, n_pairs - p0);
+          const unsigned int nb = std::min(block, p_end - p0);
           nblock.fill(p0, nb, step_normals, n_pairs, pair_vector_of);
           for (unsigned int b = 0; b < nb; ++b)
             {
@@ -633,17 +696,15 @@ namespace tribodyn
 
 
     void
-    AutomatonSystem::radial_returns()
+    AutomatonSystem::radial_returns(const unsigned int k_begin,
+                                    const unsigned int k_end,
+                                    const bool         last)
     {
       // The radial return of each owned automaton from its trial tensor
       // (pass B): the mean stress sigma_m and the factor M of its sides.
-      // (the plastic work is what the sides release, pass C)
-      plast.assign(static_cast<std::size_t>(n_local) * 2, 0.);
-      // (bond scenes: each stress s for bond switching, which needs the
-      // final one, this one where pass C does not sum the tensor anew)
-      if (bond_scene)
-        bond_buffer.resize(static_cast<std::size_t>(n_local) * 7);
-      for (unsigned int k = 0; k < n_owned; ++k)
+      // (the plastic work is what the sides release, pass C; plast and
+      // the bond scenes' stresses sized by pair_kernel())
+      for (unsigned int k = k_begin; k < k_end; ++k)
         {
           if (elastic(k))
             {
@@ -678,8 +739,29 @@ namespace tribodyn
           if (bond_scene)
             std::copy_n(s.begin(), 6, &bond_buffer[7 * k]);
         }
-      if (partition.neighbours().active())
+      // (the ghosts' from their owners, once every owned one is done)
+      if (last && partition.neighbours().active())
         partition.neighbours().update(plast.data(), 2);
+    }
+
+
+    void
+    AutomatonSystem::final_tensors_anew(const unsigned int k_begin,
+                                        const unsigned int k_end)
+    {
+      // A plastic bond kernel's pass C sums anew only the final tensors
+      // of the automata whose sides it can change: a side changes in pass C
+      // only by its automaton's plastic return (M < 1) or the constraints
+      // of an unbonded contact (pair_events()); every other automaton's
+      // final tensor is pass B's trial one, the same terms of the same
+      // stresses in the same order, bit for bit (and an elastic region's,
+      // which pass B skips, is summed as before).
+      for (unsigned int k = k_begin; k < k_end; ++k)
+        if (stress_anew[k] || plast[2 * k + 1] < 1 || elastic(k))
+          {
+            stress_anew[k] = 1;
+            trial[k]       = Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}};
+          }
     }
 
 
@@ -690,11 +772,13 @@ namespace tribodyn
               class Law,
               class Moment>
     bool
-    AutomatonSystem::pair_pass_c(const PairStep &step,
-                                 WorkSums       &dw,
-                                 const Pairs    &geometry,
-                                 Law            &law,
-                                 Moment         &moment)
+    AutomatonSystem::pair_pass_c(const PairStep    &step,
+                                 const unsigned int p_begin,
+                                 const unsigned int p_end,
+                                 WorkSums          &dw,
+                                 const Pairs       &geometry,
+                                 Law               &law,
+                                 Moment            &moment)
     {
       const unsigned int     n_pairs = step.n_pairs, n_ahead = step.n_ahead;
       constexpr unsigned int block = NormalBlock::size;
@@ -717,32 +801,13 @@ namespace tribodyn
 
       // Pass C: plastic correction, contact constraints, forces, torques;
       // in bond scenes also the final stress tensors (T of eq. 4) of the
-      // owned automata, which the bond criteria need. A plastic kernel
-      // sums anew only those whose sides this pass can change: a side
-      // changes in pass C only by its automaton's plastic return (M < 1)
-      // or the constraints of an unbonded contact (pair_events()); every
-      // other automaton's final tensor is pass B's trial one, the same
-      // terms of the same stresses in the same order, bit for bit (and an
-      // elastic region's, which pass B skips, is summed as before).
-      if constexpr (bonds)
-        {
-          if constexpr (plastic)
-            {
-              Assert(step.anew_tensors, dealii::ExcInternalError());
-              for (unsigned int k = 0; k < n_owned; ++k)
-                if (stress_anew[k] || plast[2 * k + 1] < 1 || elastic(k))
-                  {
-                    stress_anew[k] = 1;
-                    trial[k]       = Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}};
-                  }
-            }
-          else
-            trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
-        }
+      // owned automata, which the bond criteria need (those a plastic
+      // kernel sums anew: final_tensors_anew(); an elastic kernel's all,
+      // from zero: pair_kernel()).
       // (blocks as in pass A: normals of a block in one vectorized loop).
-      for (unsigned int p0 = 0; p0 < n_pairs; p0 += block)
+      for (unsigned int p0 = p_begin; p0 < p_end; p0 += block)
         {
-          const unsigned int nb = std::min(block, n_pairs - p0);
+          const unsigned int nb = std::min(block, p_end - p0);
           nblock.fill(p0, nb, step_normals, n_pairs, pair_vector_of);
           for (unsigned int b = 0; b < nb; ++b)
             {

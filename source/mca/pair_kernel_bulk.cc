@@ -87,7 +87,9 @@ namespace tribodyn
       pair_pass_a_bulk<rot>(step, dw, geometry, moment);
       // The many-body step (pair_kernel()): dsm holds each automaton's
       // many-body part m from here on.
-      dw[many_body_work] += many_body_step();
+      double mb_work = 0;
+      many_body_step(0, n_owned, true, mb_work);
+      dw[many_body_work] += mb_work;
       pair_pass_c_bulk<rot>(step, geometry, moment);
       for (unsigned int k = 0; k < n_works; ++k)
         work[k] += dw[k];

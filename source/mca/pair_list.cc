@@ -346,6 +346,52 @@ namespace tribodyn
                    dealii::ExcInternalError());
           }
       index_j_side();
+      chunk_for_pipeline(n_owned);
+    }
+
+
+    void
+    PairList::chunk_for_pipeline(const unsigned int n_owned)
+    {
+      const unsigned int n_pairs = pi.size();
+      chunk_automaton.assign({0u});
+      chunk_pair.assign({0u});
+      chunk_lag     = 0;
+      bool in_order = true;
+      for (unsigned int p = 0; p < n_pairs && in_order; ++p)
+        in_order = pi[p] < n_owned && pj[p] < n_owned
+                   && (p == 0 || pi[p] >= pi[p - 1]);
+      if (!in_order)
+        {
+          chunk_automaton.push_back(n_owned);
+          chunk_pair.push_back(n_pairs);
+          return;
+        }
+      // chunks of whole automata (their pairs as i), the last one of the
+      // rest; each automaton's chunk, for the lag
+      std::vector<unsigned int> chunk_of(n_owned);
+      for (unsigned int k = 0, p = 0; k < n_owned; ++k)
+        {
+          chunk_of[k] = chunk_automaton.size() - 1;
+          while (p < n_pairs && pi[p] == k)
+            ++p;
+          if (p - chunk_pair.back() >= pairs_per_chunk || k + 1 == n_owned)
+            {
+              chunk_automaton.push_back(k + 1);
+              chunk_pair.push_back(p);
+            }
+        }
+      if (n_owned == 0)
+        {
+          chunk_automaton.push_back(0);
+          chunk_pair.push_back(n_pairs);
+        }
+      for (unsigned int p = 0; p < n_pairs; ++p)
+        {
+          Assert(chunk_of[pj[p]] >= chunk_of[pi[p]],
+                 dealii::ExcInternalError());
+          chunk_lag = std::max(chunk_lag, chunk_of[pj[p]] - chunk_of[pi[p]]);
+        }
     }
 
 
@@ -385,7 +431,9 @@ namespace tribodyn
                       i_pairs_first,
                       i_pairs_count,
                       j_pairs_first,
-                      j_pairs);
+                      j_pairs,
+                      chunk_automaton,
+                      chunk_pair);
     }
   } // namespace mca
 } // namespace tribodyn

@@ -11,6 +11,15 @@ namespace tribodyn
 {
   namespace mca
   {
+    namespace
+    {
+      const SelectionTable<PartitionParameters::AutomatonOrder, 2>
+        automaton_order_table{
+          {{"Morton curve", PartitionParameters::AutomatonOrder::curve},
+           {"slabs", PartitionParameters::AutomatonOrder::slabs}}};
+    } // namespace
+
+
     ParameterBinding
     PartitionParameters::binding()
     {
@@ -39,6 +48,33 @@ namespace tribodyn
             "others. Results do not change. 0 = one search cell per mesh "
             "cell always.",
             dealii::Patterns::Integer(0));
+      b.add("Automaton order",
+            automaton_order,
+            "The order in which each rank stores its automata, and with "
+            "them their pairs (each pair listed once, by the automaton that "
+            "comes first): 'Morton curve' of the search cells, or 'slabs': "
+            "the cells row by row, layer by layer across the longest "
+            "direction without periodic faces (the longest of all where "
+            "every direction is periodic), so that the pairs of an "
+            "automaton's neighbours lie within about one layer of its own "
+            "in the pair list. Within a cell the automata go by id. The "
+            "order is global, the same on any partition; it sets the order "
+            "of the pair sums, so the two orders' results differ at "
+            "round-off, which the friction scenes amplify into different "
+            "trajectories of the same statistics (doc/performance.md, "
+            "\"The automata's order\").",
+            automaton_order_table);
+      b.add("Pairs per chunk",
+            pairs_per_chunk,
+            "On a rank without neighbour ranks the pair kernel's passes run "
+            "as a pipeline over chunks of its pair list, each pass some "
+            "chunks behind the one before, so that the pairs between them "
+            "stay in the cache (doc/performance.md, \"The pair kernel's "
+            "pipeline\"); a chunk holds the pairs of whole automata, about "
+            "this many. Results do not change, bit for bit. The 'slabs' "
+            "order above keeps the passes a few chunks apart; along the "
+            "curve they are far apart, most of the list.",
+            dealii::Patterns::Integer(1));
       return b;
     }
 

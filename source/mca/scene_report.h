@@ -130,13 +130,19 @@ namespace tribodyn
         // Mesh cells per rank)
         summary["mesh_cell_split"]
           = system.decomposition().cells_per_mesh_cell();
-        summary["n_pairs"]               = system.n_global_pairs();
-        summary["n_steps"]               = n_steps;
-        summary["dt"]                    = system.time_step();
-        summary["critical_dt"]           = system.critical_time_step();
-        summary["courant_limit"]         = system.courant_limit();
-        summary["end_time"]              = system.time();
-        summary["n_pair_list_rebuilds"]  = system.n_rebuilds();
+        summary["n_pairs"]              = system.n_global_pairs();
+        summary["n_steps"]              = n_steps;
+        summary["dt"]                   = system.time_step();
+        summary["critical_dt"]          = system.critical_time_step();
+        summary["courant_limit"]        = system.courant_limit();
+        summary["end_time"]             = system.time();
+        summary["n_pair_list_rebuilds"] = system.n_rebuilds();
+        // the pair kernel's pipeline (Partition/Pairs per chunk) for the
+        // last pair list, its largest over the ranks
+        summary["pipeline_chunks"]
+          = dealii::Utilities::MPI::max(system.pipeline_chunks(), comm);
+        summary["pipeline_lag"]
+          = dealii::Utilities::MPI::max(system.pipeline_lag(), comm);
         const unsigned long long dropped = system.n_dropped_bonds();
         summary["n_dropped_bonds"]       = dropped;
         if (dropped > 0)

@@ -1,7 +1,7 @@
 """The shipped automata studies run (issue #49 item 2), cut short:
 prm/study/mca_laptop.prm, mca_seed_heights.prm, mca_seed_heights_12.prm,
 mca_seed_heights_044.prm, its 48-ns campaign mca_seed_heights_044_48ns.prm,
-mca_fibre_content.prm, mca_time_step_lever.prm,
+mca_fibre_content.prm, mca_time_step_lever.prm, mca_automaton_order.prm,
 mca_time_step_lever_composite.prm and the two seed-heights levers
 mca_time_step_lever_seed_heights(_composite).prm and the coarse layout's
 mca_coarse_lever_seed_heights(_composite).prm and its campaign
@@ -25,12 +25,14 @@ mca_size_bands_interface derives from the layout; the coarse layout
 'interface 6 18 2': 22 592, the outer one 'interface 8 16 2': 26 176), and
 the seed-heights scenes really run the study's setting or their base's
 (their parameters.prm reads 'interface 8 16', the coarse bases 'interface 6
-18 2', the outer ones 'interface 8 16 2'); the time-step levers' two bases differ in dt by the
+18 2', the outer ones 'interface 8 16 2'), the order study's scenes the
+order of their base ('Morton curve' or 'slabs'); the time-step levers' two bases differ in dt by the
 ratio of their Courant factors, 0.5/0.35 or 0.44/0.35 (the same d and c_p:
 to 1e-12)."""
 import csv
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -48,6 +50,7 @@ AUTOMATA = {"mca_laptop": 12288, "mca_seed_heights": 35136,
             "mca_seed_heights_12": 35136, "mca_seed_heights_044": 35136,
             "mca_seed_heights_044_48ns": 35136,
             "mca_fibre_content": 12288, "mca_time_step_lever": 12288,
+            "mca_automaton_order": 12288,
             "mca_time_step_lever_composite": 12288,
             "mca_time_step_lever_seed_heights": 35136,
             "mca_time_step_lever_seed_heights_composite": 35136,
@@ -133,6 +136,12 @@ subsection Study
                and tag.get("inclusion_seed") == inclusions,
                f"{name} {base}: {summary.get('n_automata')} automata "
                f"(documented {expected}), scene tagged {tag}")
+        if name == "mca_automaton_order":
+            prm = open(os.path.join(scene, "parameters.prm")).read()
+            order = "slabs" if base == "slabs" else "Morton curve"
+            report(re.search(rf"set Automaton order += {order}\n", prm)
+                   is not None,
+                   f"{name} {base}: the order '{order}' reached the scene")
         if "seed_heights" in name:
             prm = open(os.path.join(scene, "parameters.prm")).read()
             bands = BANDS.get(base, "interface 8 16")

@@ -27,8 +27,9 @@ namespace tribodyn
      * owned by other ranks come from those ranks only (NeighbourExchange).
      * At a pair-list rebuild the automata that entered a cell of another
      * rank migrate there (deal.II's ParticleHandler, point to point across
-     * periodic faces), the owned automata are ordered along the curve of
-     * their cells (the global order key of the pair list) and the ghosts
+     * periodic faces), the owned automata are ordered by their cells
+     * (Partition/Automaton order: the global order key of the pair list)
+     * and the ghosts
      * are received anew; when the ranks' work drifted apart the cells are
      * weighted by the automata they hold and partitioned anew.
      *
@@ -131,9 +132,9 @@ namespace tribodyn
       double
       work_imbalance() const;
 
-      /// Sort the owned automata along the curve of their cells, then by
-      /// id, and set their order keys (cell along the curve << 16 | rank in
-      /// the cell).
+      /// Sort the owned automata by their cells' place in the automata's
+      /// order (Decomposition::curve_index()), then by id, and set their
+      /// order keys (the cell's place << 16 | rank in the cell).
       void
       order_owned_automata();
       /// Collective: receive the ghosts from the neighbour ranks (the

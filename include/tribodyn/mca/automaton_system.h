@@ -58,7 +58,8 @@ namespace tribodyn
      * the states of their pairs follow them point to point.
      *
      * Results do not depend on the partition: the pairs are ordered by a
-     * global key (cell along the curve, then rank in the cell), so every
+     * global key (the cell's place in the automata's order, Partition/
+     * Automaton order, then rank in the cell), so every
      * automaton sums its pair forces in the same order on any number of
      * ranks.
      *
@@ -185,6 +186,21 @@ namespace tribodyn
       n_rebuilds() const
       {
         return rebuild_count;
+      }
+      /// The pair kernel's pipeline on this rank for the pair list now
+      /// (PairList::chunk_for_pipeline()): its chunks and how many chunks
+      /// each pass trails the one before; 1 and 0 where the passes run one
+      /// after the other (a rank with neighbour ranks; an elastic bulk's
+      /// kernel, pair_kernel_bulk.cc, which has no pass B).
+      unsigned int
+      pipeline_chunks() const
+      {
+        return pipelined() ? n_chunks() : 1;
+      }
+      unsigned int
+      pipeline_lag() const
+      {
+        return pipelined() ? chunk_lag : 0;
       }
       /// Bonded pairs that left the pair-list range (and so were dropped),
       /// global count since the start.
@@ -440,6 +456,15 @@ namespace tribodyn
                   const Pairs &geometry,
                   FrictionLaw &law,
                   MomentLaw   &moment);
+      /// Do the pair kernel's passes run as a pipeline over the chunks of
+      /// the pair list (pair_kernel())? On a rank without neighbour ranks,
+      /// whose values then need no exchange between the passes, and not in
+      /// an elastic bulk's kernel (pair_kernel_bulk.cc).
+      bool
+      pipelined() const
+      {
+        return !partition.neighbours().active() && (mb_stored || q_stored);
+      }
       /// What the passes of one step of the pair kernel share; each adds
       /// the works of its events to the step's sums (WorkSums).
       struct PairStep
@@ -465,17 +490,28 @@ namespace tribodyn
                 class FrictionLaw,
                 class MomentLaw>
       [[gnu::always_inline]] inline void
-      pair_pass_a(const PairStep &step,
-                  WorkSums       &works,
-                  const Pairs    &geometry,
-                  FrictionLaw    &law,
-                  MomentLaw      &moment);
+      pair_pass_a(const PairStep    &step,
+                  const unsigned int p_begin,
+                  const unsigned int p_end,
+                  WorkSums          &works,
+                  const Pairs       &geometry,
+                  FrictionLaw       &law,
+                  MomentLaw         &moment);
       /// Pass B (plastic kernels): trial side stresses and tensors.
       [[gnu::always_inline]] inline void
-      pair_pass_b(const PairStep &step);
-      /// The radial return of each owned automaton (plastic kernels).
+      pair_pass_b(const PairStep    &step,
+                  const unsigned int p_begin,
+                  const unsigned int p_end);
+      /// The radial return of each owned automaton k_begin ... k_end
+      /// (plastic kernels); the ghosts' from their owners after the @p last
+      /// chunk.
       [[gnu::always_inline]] inline void
-      radial_returns();
+      radial_returns(const unsigned int k_begin,
+                     const unsigned int k_end,
+                     const bool         last);
+      /// Plastic bond kernels: the final tensors pass C sums anew, from zero.
+      [[gnu::always_inline]] inline void
+      final_tensors_anew(const unsigned int k_begin, const unsigned int k_end);
       /// Pass C: plastic correction, contact constraints, forces and
       /// torques; in bond scenes the final stress tensors. Whether an
       /// elastic kernel ran events (its uniform automata's shapes to sync).
@@ -486,11 +522,13 @@ namespace tribodyn
                 class FrictionLaw,
                 class MomentLaw>
       [[gnu::always_inline]] inline bool
-      pair_pass_c(const PairStep &step,
-                  WorkSums       &works,
-                  const Pairs    &geometry,
-                  FrictionLaw    &law,
-                  MomentLaw      &moment);
+      pair_pass_c(const PairStep    &step,
+                  const unsigned int p_begin,
+                  const unsigned int p_end,
+                  WorkSums          &works,
+                  const Pairs       &geometry,
+                  FrictionLaw       &law,
+                  MomentLaw         &moment);
       /// The pair geometry of the scene as a choice for with_chosen()
       /// (source/mca/pair_geometry_choice.h).
       auto
@@ -560,8 +598,14 @@ namespace tribodyn
       /// times K (sent to the ghosts) and mu anew; where the pairs store
       /// their sides' common stress only (PairArrays::sig_e), dsm then
       /// holds each automaton's many-body part m = D mu + c for pass C.
-      double
-      many_body_step();
+      /// For the owned automata k_begin ... k_end (a chunk of the pair
+      /// kernel's pipeline; the ghosts after the @p last one), the
+      /// many-body work added to @p work, in the automata's order.
+      void
+      many_body_step(const unsigned int k_begin,
+                     const unsigned int k_end,
+                     const bool         last,
+                     double            &work);
       /// The shapes of the owned automata from their lambda (0: general).
       void
       sync_many_body_shapes();

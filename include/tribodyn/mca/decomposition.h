@@ -67,10 +67,12 @@ namespace tribodyn
       /// Cells of @p interaction_range; deal.II cells of 2 x 2 x 2 of them
       /// where each rank keeps at least @p mesh_cells_per_rank (0: never;
       /// cell_split()).
+      /// The automata are stored in the order @p order (curve_index()).
       Decomposition(const GeometryParameters &geometry,
                     const double              interaction_range,
                     const unsigned int        mesh_cells_per_rank,
-                    const MPI_Comm            comm);
+                    const PartitionParameters::AutomatonOrder order,
+                    const MPI_Comm                            comm);
 
       /// Choose the cell grid for the box and the interaction range: the
       /// coarse mesh of nearly cubic p4est trees, refined to cells of at
@@ -210,10 +212,19 @@ namespace tribodyn
       /// @p c (the cells are boxes), clamped to the unit cell.
       dealii::Point<3>
       reference_point(const unsigned int c, const Point3 &x) const;
-      /// Position of local cell @p c along a space-filling (Morton) curve of
-      /// the global cell grid: the same on every partition.
+      /// Place of an automaton at @p x in local cell @p c in the
+      /// automata's order (Partition/Automaton order), the same on every
+      /// partition: its cell's along a Morton curve of the global cell
+      /// grid, or in slabs: by layers of the cells' slabs across the
+      /// longest direction without periodic faces (layers_per_slab a slab),
+      /// then by the rows and columns of the cells, the longer direction
+      /// first. An automaton's partners then lie within about one
+      /// interaction range of layers of it in the order (the pair kernel's
+      /// pipeline, PairList::chunk_for_pipeline()).
       std::uint64_t
-      curve_index(const unsigned int c) const;
+      curve_index(const unsigned int c, const Point3 &x) const;
+      /// Layers of a slab of cells in the slab order (curve_index()).
+      static constexpr unsigned int layers_per_slab = 8;
 
       /// Structured cell of a point (wrapped into the box in periodic
       /// directions); false if outside the box in a non-periodic direction.
@@ -325,11 +336,14 @@ namespace tribodyn
                + ijk[0];
       }
 
-      const GeometryParameters &geometry;
-      const double              range;
-      const unsigned int        mesh_cells_per_rank;
-      MPI_Comm                  comm;
-      unsigned int              rank;
+      const GeometryParameters                 &geometry;
+      const double                              range;
+      const unsigned int                        mesh_cells_per_rank;
+      const PartitionParameters::AutomatonOrder order;
+      /// The directions of the slab order, slowest first (curve_index()).
+      std::array<unsigned int, 3> slab_axes{{2, 1, 0}};
+      MPI_Comm                    comm;
+      unsigned int                rank;
 
       dealii::parallel::distributed::Triangulation<3> tria;
       std::array<unsigned int, 3>                     n_cells{{0, 0, 0}};

@@ -74,6 +74,32 @@ namespace tribodyn
       void
       release_j_lists();
 
+      /**
+       * The pair kernel's pipeline (AutomatonSystem::pair_kernel()):
+       * chunk c holds the owned automata chunk_automaton[c] ...
+       * chunk_automaton[c + 1] and their pairs as i, chunk_pair[c] ...
+       * chunk_pair[c + 1]; a pair of chunk c has its j in chunk c ...
+       * c + chunk_lag. Chunks of about @p pairs_per_chunk pairs where every
+       * pair joins two owned automata (the list is then ordered by the
+       * owned automata), one chunk of all pairs (lag 0) where a ghost takes
+       * part: its values come from the neighbour ranks once every owned
+       * automaton is done. Set by index_by_automaton().
+       */
+      std::vector<unsigned int> chunk_automaton, chunk_pair;
+      unsigned int              chunk_lag = 0;
+      /// (Partition/Pairs per chunk)
+      unsigned int pairs_per_chunk = 2048;
+      /// Set the pipeline's chunks and lag for the list now (also after a
+      /// checkpoint's lists are read back).
+      void
+      chunk_for_pipeline(const unsigned int n_owned);
+
+      unsigned int
+      n_chunks() const
+      {
+        return chunk_pair.empty() ? 0 : chunk_pair.size() - 1;
+      }
+
       /// Call @p f(p, side) for each pair p of owned automaton @p k (side 0:
       /// k is the pair's i, 1: its j), as i first, in pair order.
       template <typename F>

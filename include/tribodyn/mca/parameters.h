@@ -494,6 +494,19 @@ namespace tribodyn
       /// Deal.II cells a rank keeps at least where the mesh holds 2 x 2 x 2
       /// search cells per cell (Decomposition::cell_split()); 0 = never.
       unsigned int mesh_cells_per_rank = 1000;
+      /// The order in which each rank stores its automata and their pairs
+      /// (AutomatonPartition::order_owned_automata()): along a Morton curve
+      /// of the search cells, or in slabs across the longest direction
+      /// without periodic faces (Decomposition::curve_index()).
+      enum class AutomatonOrder
+      {
+        curve,
+        slabs
+      };
+      AutomatonOrder automaton_order = AutomatonOrder::curve;
+      /// Pairs a chunk of the pair kernel's pipeline holds (about;
+      /// PairList::chunk_for_pipeline()).
+      unsigned int pairs_per_chunk = 2048;
 
       /// The entries of the subsection, each bound to its member
       /// (core/parameter_binding.h).
