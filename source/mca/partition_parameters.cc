@@ -62,15 +62,16 @@ namespace tribodyn
             "of the pair sums, so the two orders' results differ at "
             "round-off, which the friction scenes amplify into different "
             "trajectories of the same statistics (doc/performance.md, "
-            "\"The automata's order\").",
+            "\"The friction scene's step, tenth round\").",
             automaton_order_table);
       b.add("Pairs per chunk",
             pairs_per_chunk,
             "On a rank without neighbour ranks the pair kernel's passes run "
             "as a pipeline over chunks of its pair list, each pass some "
             "chunks behind the one before, so that the pairs between them "
-            "stay in the cache (doc/performance.md, \"The pair kernel's "
-            "pipeline\"); a chunk holds the pairs of whole automata, about "
+            "stay in the cache (doc/performance.md, \"The friction scene's "
+            "step, tenth round\"); a chunk holds the pairs of whole automata, "
+            "about "
             "this many. Results do not change, bit for bit. The 'slabs' "
             "order above keeps the passes a few chunks apart; along the "
             "curve they are far apart, most of the list.",
