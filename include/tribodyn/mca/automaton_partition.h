@@ -27,11 +27,11 @@ namespace tribodyn
      * owned by other ranks come from those ranks only (NeighbourExchange).
      * At a pair-list rebuild the automata that entered a cell of another
      * rank migrate there (deal.II's ParticleHandler, point to point across
-     * periodic faces), the owned automata are ordered by their cells
+     * periodic faces), the owned automata are ordered by their places
      * (Partition/Automaton order: the global order key of the pair list)
-     * and the ghosts
-     * are received anew; when the ranks' work drifted apart the cells are
-     * weighted by the automata they hold and partitioned anew.
+     * and the ghosts are received anew; when the ranks' work drifted
+     * apart the cells are weighted by the automata they hold and
+     * partitioned anew.
      *
      * A part of AutomatonSystem in the way of BoundaryLoads: it reads and
      * writes the automata (AutomatonArrays: their records, positions,
@@ -132,9 +132,10 @@ namespace tribodyn
       double
       work_imbalance() const;
 
-      /// Sort the owned automata by their cells' place in the automata's
-      /// order (Decomposition::curve_index()), then by id, and set their
-      /// order keys (the cell's place << 16 | rank in the cell).
+      /// Sort the owned automata by their places in the automata's order
+      /// (Decomposition::curve_index(): their cell's along the curve, or
+      /// the layer of their cell's slab), then by id, and set their order
+      /// keys (the place << 16 | rank among the automata of that place).
       void
       order_owned_automata();
       /// Collective: receive the ghosts from the neighbour ranks (the

@@ -58,8 +58,8 @@ namespace tribodyn
      * the states of their pairs follow them point to point.
      *
      * Results do not depend on the partition: the pairs are ordered by a
-     * global key (the cell's place in the automata's order, Partition/
-     * Automaton order, then rank in the cell), so every
+     * global key (an automaton's place in the automata's order,
+     * Partition/Automaton order, then its id), so every
      * automaton sums its pair forces in the same order on any number of
      * ranks.
      *
