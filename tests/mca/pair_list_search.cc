@@ -119,7 +119,8 @@ main(int argc, char **argv)
   g.periodic       = {{true, true, true}};
   const std::array<double, 3> period{
     {g.domain_upper[0], g.domain_upper[1], g.domain_upper[2]}};
-  Decomposition cells(g, largest, 0, MPI_COMM_WORLD);
+  Decomposition cells(
+    g, largest, 0, PartitionParameters::AutomatonOrder::curve, MPI_COMM_WORLD);
   cells.setup();
 
   AutomatonArrays automata;
