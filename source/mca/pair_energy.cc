@@ -160,13 +160,16 @@ namespace tribodyn
       // occur, PairArrays::sig_e), pass C reads each side's many-body part
       // m = D mu + c of its automaton instead of adding D dsm to it: dsm
       // holds m from here on, the ghosts' too.
+      const auto to_many_body_part
+        = [this](const unsigned int begin, const unsigned int end) {
+            for (unsigned int k = begin; k < end; ++k)
+              dsm[k] = mc[mat[k]].D * mb_mu[k] + mb_offset[k];
+          };
       if (!mb_stored)
         {
-          for (unsigned int k = k_begin; k < k_end; ++k)
-            dsm[k] = mc[mat[k]].D * mb_mu[k] + mb_offset[k];
+          to_many_body_part(k_begin, k_end);
           if (last)
-            for (unsigned int k = n_owned; k < n_local; ++k)
-              dsm[k] = mc[mat[k]].D * mb_mu[k] + mb_offset[k];
+            to_many_body_part(n_owned, n_local);
         }
     }
 

@@ -158,30 +158,28 @@ namespace tribodyn
       // same as pass by pass, bit for bit. Where a ghost takes part (its
       // values come from the neighbour ranks once every owned automaton is
       // done) the list is one chunk: the passes one after the other.
-      if (chunk_pair.empty() || chunk_pair.back() != n_pairs
-          || chunk_automaton.back() != n_owned)
-        chunk_for_pipeline(n_owned);
-      const bool         pipelined = this->pipelined();
-      const unsigned int n_chunks  = pipelined ? this->n_chunks() : 1;
-      const unsigned int lag       = pipelined ? chunk_lag : 0;
-      const auto         pairs_of
-        = [&](const unsigned int c, unsigned int &begin, unsigned int &end) {
-            begin = pipelined ? chunk_pair[c] : 0;
-            end   = pipelined ? chunk_pair[c + 1] : n_pairs;
-          };
-      const auto automata_of
-        = [&](const unsigned int c, unsigned int &begin, unsigned int &end) {
-            begin = pipelined ? chunk_automaton[c] : 0;
-            end   = pipelined ? chunk_automaton[c + 1] : n_owned;
-          };
+      // (the chunks are set with the list, index_by_automaton(), and
+      // after a checkpoint's lists are read back)
+      Assert(n_chunks() > 0 && chunk_pair.back() == n_pairs
+               && chunk_automaton.back() == n_owned,
+             dealii::ExcInternalError());
+      const bool pipelined = this->pipelined();
+      // chunk c: pairs pair_at[c] ... pair_at[c + 1], owned automata
+      // automaton_at[c] ... automaton_at[c + 1]; one chunk of all of them
+      // where the passes run one after the other
+      const unsigned int all_pairs[2]    = {0, n_pairs},
+                         all_automata[2] = {0, n_owned};
+      const unsigned int *pair_at = pipelined ? chunk_pair.data() : all_pairs;
+      const unsigned int *automaton_at
+        = pipelined ? chunk_automaton.data() : all_automata;
+      const unsigned int n_chunks = pipelined ? this->n_chunks() : 1;
+      const unsigned int lag      = pipelined ? chunk_lag : 0;
       for (unsigned int t = 0; t < n_chunks + 2 * lag; ++t)
         {
-          unsigned int begin, end;
           if (t < n_chunks)
             {
-              pairs_of(t, begin, end);
               pair_pass_a<rot, plastic>(
-                step, begin, end, dw, geometry, law, moment);
+                step, pair_at[t], pair_at[t + 1], dw, geometry, law, moment);
               // Mean-stress increment of each automaton: K times its
               // volumetric strain increment, the trace of the strain tensor
               // fitted (least squares) to its pairs' normal strains: dtheta
@@ -190,27 +188,35 @@ namespace tribodyn
               // automata, the many-body work of the step and their new mu
               // (pair_energy.cc); the ghosts' mu from their owners'
               // increments.
-              automata_of(t, begin, end);
-              many_body_step(begin, end, t + 1 == n_chunks, mb_work);
+              many_body_step(automaton_at[t],
+                             automaton_at[t + 1],
+                             t + 1 == n_chunks,
+                             mb_work);
             }
           // (where the pairs store their common part only, dsm holds each
           // automaton's many-body part m from here on: PairArrays::sig_e)
           if constexpr (plastic)
             if (t >= lag && t - lag < n_chunks)
               {
-                pairs_of(t - lag, begin, end);
-                pair_pass_b(step, begin, end);
-                automata_of(t - lag, begin, end);
-                radial_returns(begin, end, t - lag + 1 == n_chunks);
+                const unsigned int c = t - lag;
+                pair_pass_b(step, pair_at[c], pair_at[c + 1]);
+                radial_returns(automaton_at[c],
+                               automaton_at[c + 1],
+                               c + 1 == n_chunks);
                 if constexpr (bonds)
-                  final_tensors_anew(begin, end);
+                  final_tensors_anew(automaton_at[c], automaton_at[c + 1]);
               }
           if (t >= 2 * lag && t - 2 * lag < n_chunks)
             {
-              pairs_of(t - 2 * lag, begin, end);
-              events = pair_pass_c<rot, plastic, bonds>(
-                         step, begin, end, dw_c, geometry, law, moment)
-                       || events;
+              const unsigned int c = t - 2 * lag;
+              if (pair_pass_c<rot, plastic, bonds>(step,
+                                                   pair_at[c],
+                                                   pair_at[c + 1],
+                                                   dw_c,
+                                                   geometry,
+                                                   law,
+                                                   moment))
+                events = true;
             }
         }
       Assert(mb_stored || !plastic, dealii::ExcInternalError());
