@@ -116,29 +116,50 @@ namespace tribodyn
                                        : 0);
       const PairStep step{
         step_dt, n_pairs, n_ahead, keep_normals, plastic && bonds};
-      dsm.assign(n_local, 0);
-      side_dq.assign(n_owned, 0);
-      for (unsigned int k = 0; k < n_owned; ++k)
-        {
-          f[k]      = {{0, 0, 0}};
-          torque[k] = {{0, 0, 0}};
-        }
-      // (the trial tensors; the automata with an unbonded contact, whose
-      // final tensor pass C of a bond kernel sums anew; the returns)
+      // The automata's sums of the step: volumetric increments, forces and
+      // torques; the trial tensors, the automata with an unbonded contact,
+      // whose final tensor pass C of a bond kernel sums anew, and the
+      // returns. They start from zero chunk by chunk (clear_sums below).
+      dsm.resize(n_local);
+      side_dq.resize(n_owned);
+      if constexpr (plastic || bonds)
+        trial.resize(n_local);
       if constexpr (plastic)
         {
-          trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
           if (step.anew_tensors)
-            stress_anew.assign(n_local, 0);
-          plast.assign(static_cast<std::size_t>(n_local) * 2, 0.);
+            stress_anew.resize(n_local);
+          plast.resize(static_cast<std::size_t>(n_local) * 2);
           // (bond scenes: each stress s for bond switching, which needs
           // the final one, this one where pass C does not sum the tensor
           // anew)
           if (bond_scene)
             bond_buffer.resize(static_cast<std::size_t>(n_local) * 7);
         }
-      else if constexpr (bonds)
-        trial.assign(n_local, Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
+      const auto clear_sums
+        = [&](const unsigned int k_begin, const unsigned int k_end) {
+            std::fill(dsm.begin() + k_begin, dsm.begin() + k_end, 0.);
+            if constexpr (plastic || bonds)
+              std::fill(trial.begin() + k_begin,
+                        trial.begin() + k_end,
+                        Mat3{{0, 0, 0, 0, 0, 0, 0, 0, 0}});
+            if constexpr (plastic)
+              {
+                if (step.anew_tensors)
+                  std::fill(stress_anew.begin() + k_begin,
+                            stress_anew.begin() + k_end,
+                            0);
+                std::fill(plast.begin() + 2 * std::size_t(k_begin),
+                          plast.begin() + 2 * std::size_t(k_end),
+                          0.);
+              }
+            for (unsigned int k = k_begin; k < std::min(k_end, n_owned); ++k)
+              {
+                side_dq[k] = 0;
+                f[k]       = {{0, 0, 0}};
+                torque[k]  = {{0, 0, 0}};
+              }
+          };
+      clear_sums(n_owned, n_local); // (the ghosts')
       // The works of this step's events (added to work at its end), among
       // them the many-body work (doc/theory/mca.md §8.4): that of the
       // many-body parts of the side stresses over the step, minus the
@@ -174,8 +195,16 @@ namespace tribodyn
         = pipelined ? chunk_automaton.data() : all_automata;
       const unsigned int n_chunks = pipelined ? this->n_chunks() : 1;
       const unsigned int lag      = pipelined ? chunk_lag : 0;
+      // The owned automata's sums start from zero just ahead of pass A,
+      // which adds to automata up to lag chunks ahead of its own (the
+      // passes after it add to no automaton beyond): each sum's lines are
+      // then in the cache when it starts, rather than swept out of it by
+      // one clearing of all of them before the passes.
+      unsigned int cleared = 0;
       for (unsigned int t = 0; t < n_chunks + 2 * lag; ++t)
         {
+          for (; cleared < n_chunks && cleared <= t + lag; ++cleared)
+            clear_sums(automaton_at[cleared], automaton_at[cleared + 1]);
           if (t < n_chunks)
             {
               pair_pass_a<rot, plastic>(
