@@ -11,7 +11,8 @@ of d = 1 mm, periodic in x and y; make_block.py), time-step loop only
 (summary.json). LAMMPS (Debian package 'lammps', command lmp): the same FCC
 lattice of 100,920 spheres of diameter 1.001 d (12 contacts per sphere),
 pair_style gran/hooke/history, fix nve/sphere, the same time step and number
-of steps; its 'Loop time'. With 2 in --ranks, also two independent one-rank
+of steps; its 'Loop time'; with 2 in --ranks also on 2 processes (per process, the
+per-rank criterion's reference). With 2 in --ranks, also two independent one-rank
 runs of the block at once: what each core delivers when both are busy (shared
 caches, memory bandwidth), the ceiling of a two-rank run on this machine. The ratio tribodyn / LAMMPS is printed. Both run
 one after the other on the same machine, so they see the same load; check
@@ -95,6 +96,16 @@ def spread(values):
     return " (%.3e .. %.3e over %d runs)" % (min(values), max(values), len(values))
 
 
+def round_ratios(ours, theirs):
+    """' (per round: median, min .. max)' of the ratios of runs made in the
+    same round (alternating), when there are several rounds."""
+    ratios = [a / b for a, b in zip(ours, theirs)]
+    if len(ratios) < 2:
+        return ""
+    return " (per round: median %.2f, %.2f .. %.2f)" % (statistics.median(ratios), min(ratios),
+                                                         max(ratios))
+
+
 def print_efficiency(block, medians, runs):
     """The two-rank efficiency of a block against one rank and against two
     independent one-rank runs at once (medians, and the runs' ranges)."""
@@ -124,7 +135,8 @@ def tribodyn_friction_scene(args):
     return json.load(open(os.path.join(out, "summary.json")))
 
 
-def lammps_rate(args, steps):
+def lammps_rate(args, steps, procs=1):
+    """LAMMPS's atom-steps per second per process on `procs` processes."""
     lmp = shutil.which("lmp") or shutil.which("lmp_serial")
     if not lmp:
         return None
@@ -154,8 +166,9 @@ run {steps}
     path = os.path.join(args.work, "lammps_fcc.in")
     with open(path, "w") as f:
         f.write(script)
-    run = subprocess.run([lmp, "-in", path, "-log", "none"], cwd=args.work, env=env,
-                         capture_output=True, text=True)
+    command = ([] if procs == 1 else ["mpirun", "-np", str(procs)]) + [lmp, "-in", path,
+                                                                       "-log", "none"]
+    run = subprocess.run(command, cwd=args.work, env=env, capture_output=True, text=True)
     m = re.search(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms",
                   run.stdout)
     if not m:
@@ -186,18 +199,23 @@ def main():
     # Repeats alternate tribodyn and LAMMPS so that both see the same drift
     # of a shared (virtual) machine; the medians are reported.
     runs = {}
-    lammps_runs = []
+    lammps_runs, lammps_runs_2 = [], []
+    ranks_list = [int(r) for r in args.ranks.split(",")]
     for _ in range(args.repeat):
-        for ranks in [int(r) for r in args.ranks.split(",")]:
+        for ranks in ranks_list:
             s, _ = tribodyn_block(args, 29, 30, args.steps, ranks, "block_1e5_%d" % ranks)
             runs.setdefault(ranks, []).append(s["automaton_steps_per_second_per_rank"])
             n_block = s["n_automata"]
-        if 2 in [int(r) for r in args.ranks.split(",")]:
+        if 2 in ranks_list:
             runs.setdefault("pair", []).append(
                 tribodyn_concurrent_pair(args, 29, 30, args.steps, "block_1e5_pair"))
         lammps = lammps_rate(args, args.steps)
         if lammps is not None:
             lammps_runs.append(lammps)
+            # the same lattice on 2 processes: the per-rank criterion's
+            # reference (both codes then share the caches and the bandwidth)
+            if 2 in ranks_list:
+                lammps_runs_2.append(lammps_rate(args, args.steps, 2))
     rates = {ranks: statistics.median(r) for ranks, r in runs.items()}
     for ranks, rate in rates.items():
         if ranks != "pair":
@@ -212,7 +230,17 @@ def main():
         print("LAMMPS    100920 spheres, gran/hooke/history, 1 proc: %.3e atom-steps/s%s"
               % (lammps, spread(lammps_runs)))
         if 1 in rates:
-            print("ratio     tribodyn / LAMMPS = %.2f (issue #48: >= 1.0 per core)" % (rates[1] / lammps))
+            print("ratio     tribodyn / LAMMPS = %.2f (issue #48: >= 1.0 per core)%s"
+                  % (rates[1] / lammps, round_ratios(runs[1], lammps_runs)))
+        if lammps_runs_2:
+            lammps_2 = statistics.median(lammps_runs_2)
+            print("LAMMPS    100920 spheres, gran/hooke/history, 2 procs: %.3e atom-steps/s per "
+                  "proc%s" % (lammps_2, spread(lammps_runs_2)))
+            if 2 in rates:
+                print("ratio     tribodyn / LAMMPS on 2 ranks = %.2f per rank (issue #48: >= 1.0)%s; "
+                      "against LAMMPS on 1 proc %.2f"
+                      % (rates[2] / lammps_2, round_ratios(runs[2], lammps_runs_2),
+                         rates[2] / lammps))
 
     if args.large:
         large_runs = {}
