@@ -317,7 +317,9 @@ main(int argc, char **argv)
       });
     auto                             law = ContactFriction::make(contact, 1e-9);
     tribodyn::contact::ContactNode   before;
-    tribodyn::contact::ContactStatus slip_status, stick_status;
+    tribodyn::contact::ContactStatus slip_status = tribodyn::contact::separated,
+                                     stick_status
+                                     = tribodyn::contact::separated;
     before.slip_rate = -4; // v = v_c: mu = (0.5 + 0.25) / 2 = 0.375
     double slip = 0, stick = 0;
     ContactFriction::visit(law, [&](const auto &l) {
