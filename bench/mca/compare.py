@@ -11,8 +11,8 @@ of d = 1 mm, periodic in x and y; make_block.py), time-step loop only
 (summary.json). LAMMPS (Debian package 'lammps', command lmp): the same FCC
 lattice of 100,920 spheres of diameter 1.001 d (12 contacts per sphere),
 pair_style gran/hooke/history, fix nve/sphere, the same time step and number
-of steps; its 'Loop time'; with 2 in --ranks also on 2 processes (per process, the
-per-rank criterion's reference). With 2 in --ranks, also two independent one-rank
+of steps; its 'Loop time'; with 2 in --ranks also on 2 processes (per process:
+the reference of the per-rank criterion). With 2 in --ranks, also two independent one-rank
 runs of the block at once: what each core delivers when both are busy (shared
 caches, memory bandwidth), the ceiling of a two-rank run on this machine. The ratio tribodyn / LAMMPS is printed. Both run
 one after the other on the same machine, so they see the same load; check
@@ -173,7 +173,12 @@ run {steps}
                   run.stdout)
     if not m:
         sys.exit("LAMMPS did not run:\n" + run.stdout[-2000:] + run.stderr[-2000:])
-    seconds, procs, n_steps, atoms = float(m[1]), int(m[2]), int(m[3]), int(m[4])
+    seconds, ran_on, n_steps, atoms = float(m[1]), int(m[2]), int(m[3]), int(m[4])
+    if ran_on != procs:
+        # (a LAMMPS built without MPI runs mpirun's copies each on its own)
+        print("LAMMPS    ran on %d process(es) where %d were asked (not built with MPI?): "
+              "no %d-process figure" % (ran_on, procs, procs))
+        return None
     return atoms * n_steps / seconds / procs
 
 
@@ -214,8 +219,9 @@ def main():
             lammps_runs.append(lammps)
             # the same lattice on 2 processes: the per-rank criterion's
             # reference (both codes then share the caches and the bandwidth)
-            if 2 in ranks_list:
-                lammps_runs_2.append(lammps_rate(args, args.steps, 2))
+            lammps_2 = lammps_rate(args, args.steps, 2) if 2 in ranks_list else None
+            if lammps_2 is not None:
+                lammps_runs_2.append(lammps_2)
     rates = {ranks: statistics.median(r) for ranks, r in runs.items()}
     for ranks, rate in rates.items():
         if ranks != "pair":
