@@ -11,12 +11,14 @@ of d = 1 mm, periodic in x and y; make_block.py), time-step loop only
 (summary.json). LAMMPS (Debian package 'lammps', command lmp): the same FCC
 lattice of 100,920 spheres of diameter 1.001 d (12 contacts per sphere),
 pair_style gran/hooke/history, fix nve/sphere, the same time step and number
-of steps; its 'Loop time'; with 2 in --ranks also on 2 processes (per process:
-the reference of the per-rank criterion). With 2 in --ranks, also two independent one-rank
-runs of the block at once: what each core delivers when both are busy (shared
-caches, memory bandwidth), the ceiling of a two-rank run on this machine. The ratio tribodyn / LAMMPS is printed. Both run
-one after the other on the same machine, so they see the same load; check
-that the machine is idle (uptime) before quoting figures.
+of steps; its 'Loop time'. With 2 in --ranks, LAMMPS also runs on 2
+processes (per process: the reference of the per-rank criterion), and two
+independent one-rank runs of the block run at once: what each core delivers
+when both are busy (shared caches, memory bandwidth), the ceiling of a
+two-rank run on this machine. The ratios tribodyn / LAMMPS are printed, on 1
+rank and per rank on 2, with their per-round ranges. Both codes run one after
+the other on the same machine, so they see the same load; check that the
+machine is idle (uptime) before quoting figures.
 
 --large: the 10^6 block (63^3 cells, 1,000,188 automata, 40 steps) on 1 and
 2 ranks, for the parallel efficiency at size. --friction: the friction scene
