@@ -455,9 +455,11 @@ namespace tribodyn
 
 
     void
-    AutomatonSystem::step()
+    AutomatonSystem::step(const bool may_defer)
     {
-      // Rebuild the pair list when an automaton moved more than skin/2.
+      // Rebuild the pair list when an automaton moved more than skin/2 (the
+      // last step's end complete first: the rebuild reorders the automata
+      // and their forces).
       {
         double max_disp2 = agreed_displacement2;
         if (max_disp2 < 0)
@@ -469,43 +471,99 @@ namespace tribodyn
         agreed_displacement2 = -1;
         const double limit   = 0.5 * prm.interaction.skin * d;
         if (max_disp2 > limit * limit)
-          rebuild(false);
-      }
-      const double t = current_time;
-      // First half kick (f holds the pair and external forces of the last
-      // step).
-      loads.half_kick(work);
-      loads.apply_constraints(t + 0.5 * dt, work);
-      // Drift (the pair kernel takes the increment as dt v again); the
-      // automata's displacements where an output reads them, the groups'
-      // as their automata move.
-      const auto drift = [&](auto with_u) {
-        for (unsigned int k = 0; k < n_owned; ++k)
           {
-            Vec3 dx;
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                dx[c] = dt * v[k][c];
-                x[k][c] += dx[c];
-                if constexpr (decltype(with_u)::value)
-                  u[k][c] += dx[c];
-              }
-            loads.book_displacement(k, dx);
+            complete_step();
+            rebuild(false);
           }
-      };
-      if (u_stored)
-        drift(std::true_type());
+      }
+      const double t      = current_time;
+      known_displacement2 = -1;
+      if (second_kick_pending)
+        {
+          // The last step's second half kick, this step's first half kick
+          // and its drift in one pass (f holds the pair and external
+          // forces of the last step).
+          const KickDriftFigures figures
+            = loads.kick_kick_drift(work, deferral_speed_limit);
+          second_kick_pending = false;
+          unstable_since_asked += figures.unstable;
+          known_displacement2 = figures.max_displacement2;
+        }
       else
-        drift(std::false_type());
+        {
+          // First half kick (f holds the pair and external forces of the
+          // last step).
+          loads.half_kick(work);
+          loads.apply_constraints(t + 0.5 * dt, work);
+          // Drift (the pair kernel takes the increment as dt v again); the
+          // automata's displacements where an output reads them, the
+          // groups' as their automata move.
+          const auto drift = [&](auto with_u) {
+            for (unsigned int k = 0; k < n_owned; ++k)
+              {
+                Vec3 dx;
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    dx[c] = dt * v[k][c];
+                    x[k][c] += dx[c];
+                    if constexpr (decltype(with_u)::value)
+                      u[k][c] += dx[c];
+                  }
+                loads.book_displacement(k, dx);
+              }
+          };
+          if (u_stored)
+            drift(std::true_type());
+          else
+            drift(std::false_type());
+        }
       current_time = t + dt;
       evaluate_pairs(dt);
       detect_first_contact();
       loads.apply_forces(current_time);
-      loads.half_kick(work);
-      loads.apply_constraints(current_time, work);
       ++n_steps_done;
+      // The second half kick: now, or with the next step's first
+      // (kick_kick_drift()) where the driver lets it wait.
+      second_kick_pending = true;
+      if (!(may_defer && deferral_speed_limit >= 0
+            && loads.may_kick_kick_drift()))
+        complete_step();
       // Finiteness and growth: checked by the driver after each step
       // (count_unstable_automata(), source/mca/stability.cc).
+    }
+
+
+    void
+    AutomatonSystem::complete_step()
+    {
+      if (!second_kick_pending)
+        return;
+      loads.half_kick(work);
+      loads.apply_constraints(current_time, work);
+      second_kick_pending = false;
+      // (the velocities of this step's end, which no deferred kick counts)
+      if (deferral_speed_limit >= 0)
+        unstable_since_asked += count_unstable_automata(deferral_speed_limit);
+    }
+
+
+    void
+    AutomatonSystem::defer_second_kicks(const double speed_limit)
+    {
+      AssertThrow(speed_limit >= 0, dealii::ExcInternalError());
+      deferral_speed_limit = speed_limit;
+    }
+
+
+    unsigned int
+    AutomatonSystem::take_unstable_count(const double limit)
+    {
+      unsigned int n       = unstable_since_asked;
+      unstable_since_asked = 0;
+      // (counted at complete_step() where the kicks are deferred)
+      if (!second_kick_pending && deferral_speed_limit < 0)
+        n += count_unstable_automata(limit);
+      return n;
     }
 
 
@@ -529,6 +587,8 @@ namespace tribodyn
     double
     AutomatonSystem::displacement_since_rebuild() const
     {
+      if (known_displacement2 >= 0)
+        return known_displacement2;
       double max_disp2 = 0;
       for (unsigned int k = 0; k < n_owned; ++k)
         {

@@ -3,10 +3,12 @@
 // and damping layers, with smooth ramps and switches; the half kick with
 // its works; the group reductions reported to the observers.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <tribodyn/mca/boundary_loads.h>
 #include <tribodyn/mca/vector_algebra.h>
+#include <type_traits>
 
 namespace tribodyn
 {
@@ -87,45 +89,81 @@ namespace tribodyn
     }
 
 
+    /**
+     * The fixed and prescribed velocities at one time, prepared once and
+     * applied automaton by automaton (apply_constraints(), and
+     * kick_kick_drift() between its kicks): the kinetic energy a
+     * constraint adds or removes is work of the loads (the loading
+     * machine), recorded for the energy balance.
+     */
+    struct BoundaryLoads::Constraints
+    {
+      Constraints(const BoundaryLoads &loads, const double t)
+          : loads(loads)
+          , active(!loads.prm.groups.empty())
+      {
+        if (!active)
+          return;
+        values.resize(loads.prm.groups.size());
+        for (unsigned int gi = 0; gi < values.size(); ++gi)
+          values[gi] = loads.value(loads.prm.groups[gi], t);
+      }
+
+      /// Owned automaton @p k's constrained velocity components set.
+      [[gnu::always_inline]] void
+      apply(const unsigned int k)
+      {
+        AutomatonArrays &automata = loads.automata;
+        if (automata.groups[k] == 0)
+          return;
+        const auto  &grp    = loads.prm.groups;
+        const double before = dot(automata.v[k], automata.v[k]);
+        bool         set    = false;
+        for (unsigned int gi = 0; gi < grp.size(); ++gi)
+          if (automata.groups[k] & (1u << gi))
+            {
+              if (grp[gi].type == BoundaryGroup::Type::fixed)
+                {
+                  automata.v[k] = {{0, 0, 0}};
+                  set           = true;
+                }
+              else if (grp[gi].type == BoundaryGroup::Type::velocity)
+                for (unsigned int c = 0; c < 3; ++c)
+                  if (!std::isnan(values[gi][c]))
+                    {
+                      automata.v[k][c] = values[gi][c];
+                      set              = true;
+                    }
+            }
+        if (set)
+          kick_work += 0.5 * loads.scalars.automaton_mass(automata, k)
+                       * (dot(automata.v[k], automata.v[k]) - before);
+      }
+
+      /// The load work of the automata constrained so far into @p work.
+      void
+      book(WorkSums &work) const
+      {
+        if (active)
+          work[load_work] += kick_work;
+      }
+
+      const BoundaryLoads &loads;
+      const bool           active;
+      std::vector<Vec3>    values;
+      double               kick_work = 0;
+    };
+
+
     void
     BoundaryLoads::apply_constraints(const double t, WorkSums &work)
     {
-      const auto &grp = prm.groups;
-      if (grp.empty())
+      Constraints constraints(*this, t);
+      if (!constraints.active)
         return;
-      std::vector<Vec3> values(grp.size());
-      for (unsigned int gi = 0; gi < grp.size(); ++gi)
-        values[gi] = value(grp[gi], t);
-      // The kinetic energy a constraint adds or removes is work of the
-      // loads (the loading machine), recorded for the energy balance.
-      double kick_work = 0;
       for (unsigned int k = 0; k < automata.n_owned; ++k)
-        {
-          if (automata.groups[k] == 0)
-            continue;
-          const double before = dot(automata.v[k], automata.v[k]);
-          bool         set    = false;
-          for (unsigned int gi = 0; gi < grp.size(); ++gi)
-            if (automata.groups[k] & (1u << gi))
-              {
-                if (grp[gi].type == BoundaryGroup::Type::fixed)
-                  {
-                    automata.v[k] = {{0, 0, 0}};
-                    set           = true;
-                  }
-                else if (grp[gi].type == BoundaryGroup::Type::velocity)
-                  for (unsigned int c = 0; c < 3; ++c)
-                    if (!std::isnan(values[gi][c]))
-                      {
-                        automata.v[k][c] = values[gi][c];
-                        set              = true;
-                      }
-              }
-          if (set)
-            kick_work += 0.5 * scalars.automaton_mass(automata, k)
-                         * (dot(automata.v[k], automata.v[k]) - before);
-        }
-      work[load_work] += kick_work;
+        constraints.apply(k);
+      constraints.book(work);
     }
 
 
@@ -148,41 +186,73 @@ namespace tribodyn
     }
 
 
-    void
-    BoundaryLoads::half_kick(WorkSums &work)
+    /**
+     * Velocity Verlet's half kick v += dt/2 F/m (and of the rotations) at
+     * the time of the system, prepared once and given automaton by
+     * automaton (half_kick(), and kick_kick_drift() twice), with its work.
+     *
+     * The kick changes the kinetic energy by exactly dt/2 F.(v_before +
+     * v_after)/2: that is credited to the damping (st.f_damp), the applied
+     * forces of the force groups and the pair forces and torques (the rest
+     * of f), so that kinetic energy = pair + load - damped work holds to
+     * round-off (energy test). A loading plate's redistribution of its
+     * forces among its automata does no work (they share one velocity), so
+     * it may be counted with the pair forces.
+     *
+     * A velocity component that a kinematic constraint resets right after
+     * the kick stays at its prescribed value v_c: the forces do the work f
+     * dt/2 v_c on it, and the kick's excess dt/2 f (v_after - v_c)/2 =
+     * dt^2 f^2 / (8 m), which the constraint removes again, is the loading
+     * machine's (credited to load_work, where the constraint books that
+     * removal). Counting it as pair work moved dt^2 f^2 / (8 m) per
+     * constrained component and half step from load to pair work
+     * (measured: 75 % of the damped energy of the flat friction scene,
+     * tests/mca/flat_friction_frictionless.prm).
+     */
+    struct BoundaryLoads::HalfKick
     {
-      const double dt        = scalars.dt;
-      const bool   rotations = scalars.rotations;
-      // Velocity Verlet's half kick v += dt/2 F/m changes the kinetic
-      // energy by exactly dt/2 F.(v_before + v_after)/2: that is credited
-      // to the damping (st.f_damp), the applied forces of the force groups
-      // and the pair forces and torques (the rest of f), so that kinetic
-      // energy = pair + load - damped work holds to round-off (energy test).
-      // A loading plate's redistribution of its forces among its automata
-      // does no work (they share one velocity), so it may be counted with
-      // the pair forces.
-      //
-      // A velocity component that a kinematic constraint resets right
-      // after the kick stays at its prescribed value v_c: the forces do
-      // the work f dt/2 v_c on it, and the kick's excess
-      // dt/2 f (v_after - v_c)/2 = dt^2 f^2 / (8 m), which the constraint
-      // removes again, is the loading machine's (credited to load_work,
-      // where the constraint books that removal). Counting it as pair work
-      // moved dt^2 f^2 / (8 m) per constrained component and half step
-      // from load to pair work (measured: 75 % of the damped energy of the
-      // flat friction scene, tests/mca/flat_friction_frictionless.prm).
-      const auto &grp           = prm.groups;
-      bool        any_kinematic = false;
-      for (unsigned int gi = 0; gi < grp.size(); ++gi)
-        any_kinematic = any_kinematic
-                        || grp[gi].type == BoundaryGroup::Type::fixed
-                        || grp[gi].type == BoundaryGroup::Type::velocity;
-      std::vector<Vec3> kinematic;
-      if (any_kinematic)
-        for (const auto &g : grp)
-          kinematic.push_back(value(g, scalars.current_time));
-      // bit c set: component c of automaton k is reset by a constraint
-      auto constrained = [&](const unsigned int k) {
+      explicit HalfKick(const BoundaryLoads &loads)
+          : loads(loads)
+          , automata(loads.automata)
+          , dt(loads.scalars.dt)
+          , rotations(loads.scalars.rotations)
+          , per_material(!loads.scalars.graded)
+          , stale(loads.damping_stale())
+      {
+        const auto &grp = loads.prm.groups;
+        for (unsigned int gi = 0; gi < grp.size(); ++gi)
+          any_kinematic = any_kinematic
+                          || grp[gi].type == BoundaryGroup::Type::fixed
+                          || grp[gi].type == BoundaryGroup::Type::velocity;
+        const double t = loads.scalars.current_time;
+        if (any_kinematic)
+          for (const auto &g : grp)
+            kinematic.push_back(loads.value(g, t));
+        // (without automata of several sizes, every automaton of a
+        // material has its mass and moment of inertia: the factors
+        // dt/2m and dt/2I of each material are computed at its first
+        // automaton, the same divisions once instead of per automaton)
+        a_of.assign(per_material ? loads.scalars.n_materials : 0, 0.);
+        b_of.assign(a_of.size(), 0.);
+        load.assign(grp.size(), Vec3{{0, 0, 0}});
+        for (unsigned int gi = 0; gi < grp.size(); ++gi)
+          if (grp[gi].type == BoundaryGroup::Type::force
+              && loads.group_size[gi] > 0)
+            {
+              load[gi] = loads.value(grp[gi], t);
+              for (unsigned int c = 0; c < 3; ++c)
+                load[gi][c] /= loads.group_size[gi];
+            }
+        if (stale)
+          for (const auto &g : grp)
+            values.push_back(loads.value(g, t));
+      }
+
+      /// Bit c set: component c of automaton k is reset by a constraint.
+      unsigned int
+      constrained(const unsigned int k) const
+      {
+        const auto  &grp  = loads.prm.groups;
         unsigned int mask = 0;
         if (!any_kinematic || automata.groups[k] == 0)
           return mask;
@@ -197,15 +267,12 @@ namespace tribodyn
                     mask |= 1u << c;
             }
         return mask;
-      };
-      // (without automata of several sizes, every automaton of a
-      // material has its mass and moment of inertia: the factors
-      // dt/2m and dt/2I of each material are computed at its first
-      // automaton, the same divisions once instead of per automaton)
-      const bool          per_material = !scalars.graded;
-      std::vector<double> a_of(per_material ? scalars.n_materials : 0, 0.),
-        b_of(a_of.size(), 0.);
-      const auto factors = [&](const unsigned int k) {
+      }
+
+      [[gnu::always_inline]] std::array<double, 2>
+      factors(const unsigned int k)
+      {
+        const SystemScalars &scalars = loads.scalars;
         if (!per_material)
           return std::array<double, 2>{
             {0.5 * dt / scalars.automaton_mass(automata, k),
@@ -220,81 +287,222 @@ namespace tribodyn
                         : 0.;
           }
         return std::array<double, 2>{{a_of[m], b_of[m]}};
+      }
+
+      /// The works of a half kick over dt/4, one partial sum per
+      /// component and kind (independent chains of additions): pair
+      /// forces and torques, loads, damping.
+      struct Works
+      {
+        double wp[6] = {0, 0, 0, 0, 0, 0}, wl[3] = {0, 0, 0}, wd[3] = {0, 0, 0};
       };
-      const bool stale = damping_on
-                         && (st.f_damp_rebuild != scalars.rebuild_count
-                             || st.f_damp.size() != automata.n_owned);
-      std::vector<Vec3> load(grp.size(), Vec3{{0, 0, 0}}), values;
-      for (unsigned int gi = 0; gi < grp.size(); ++gi)
-        if (grp[gi].type == BoundaryGroup::Type::force && group_size[gi] > 0)
+
+      /// The kick of owned automaton @p k, its works added to @p w: a
+      /// component moves at (vb + v)/2 over the half step, or at vb where a
+      /// constraint resets it (see above; the kick's excess is then the
+      /// loading machine's).
+      [[gnu::always_inline]] void
+      kick(const unsigned int k, Works &w)
+      {
+        double *const wp = w.wp, *const wl = w.wl, *const wd = w.wd;
+        const auto  &grp = loads.prm.groups;
+        const auto   ab  = factors(k);
+        const double a   = ab[0];
+        const Vec3   vb  = automata.v[k];
+        // (an automaton no group acts on: all of its f is pair force)
+        if (loads.untouched(k))
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              automata.v[k][c] += a * automata.f[k][c];
+              wp[c] += automata.f[k][c] * (vb[c] + automata.v[k][c]);
+            }
+        else
           {
-            load[gi] = value(grp[gi], scalars.current_time);
-            for (unsigned int c = 0; c < 3; ++c)
-              load[gi][c] /= group_size[gi];
-          }
-      if (stale)
-        for (const auto &g : grp)
-          values.push_back(value(g, scalars.current_time));
-      // The works over dt/4, one partial sum per component and kind
-      // (independent chains of additions): a component moves at
-      // (vb + v)/2 over the half step, or at vb where a constraint resets
-      // it (see above; the kick's excess is then the loading machine's).
-      double wp[6] = {0, 0, 0, 0, 0, 0}, wl[3] = {0, 0, 0}, wd[3] = {0, 0, 0};
-      for (unsigned int k = 0; k < automata.n_owned; ++k)
-        {
-          const auto   ab = factors(k);
-          const double a  = ab[0];
-          const Vec3   vb = automata.v[k];
-          // (an automaton no group acts on: all of its f is pair force)
-          if (untouched(k))
+            // after a rebuild st.f_damp is in the old order: recompute
+            // it (from the velocity before the kick: an O(dt) error at
+            // that step only)
+            const Vec3 fd = !loads.damping_on ? Vec3{{0, 0, 0}}
+                            : stale           ? loads.damping_force(k, values)
+                                              : loads.st.f_damp[k];
+            Vec3       fl{{0, 0, 0}};
+            if (automata.groups[k] != 0)
+              for (unsigned int gi = 0; gi < grp.size(); ++gi)
+                if (automata.groups[k] & (1u << gi))
+                  for (unsigned int c = 0; c < 3; ++c)
+                    fl[c] += load[gi][c];
+            const unsigned int mask = constrained(k);
             for (unsigned int c = 0; c < 3; ++c)
               {
                 automata.v[k][c] += a * automata.f[k][c];
-                wp[c] += automata.f[k][c] * (vb[c] + automata.v[k][c]);
+                const bool   fixed = mask & (1u << c);
+                const double vm = fixed ? 2 * vb[c] : vb[c] + automata.v[k][c];
+                wp[c] += (automata.f[k][c] - fd[c] - fl[c]) * vm;
+                wd[c] -= fd[c] * vm;
+                wl[c] += fl[c] * vm;
+                if (fixed)
+                  wl[c] += automata.f[k][c] * (automata.v[k][c] - vb[c]);
               }
-          else
-            {
-              // after a rebuild st.f_damp is in the old order: recompute
-              // it (from the velocity before the kick: an O(dt) error at
-              // that step only)
-              const Vec3 fd = !damping_on ? Vec3{{0, 0, 0}}
-                              : stale     ? damping_force(k, values)
-                                          : st.f_damp[k];
-              Vec3       fl{{0, 0, 0}};
-              if (automata.groups[k] != 0)
-                for (unsigned int gi = 0; gi < grp.size(); ++gi)
-                  if (automata.groups[k] & (1u << gi))
+          }
+        if (rotations)
+          {
+            const double b = ab[1];
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                const double wb = automata.w[k][c];
+                automata.w[k][c] += b * automata.torque[k][c];
+                wp[3 + c] += automata.torque[k][c] * (wb + automata.w[k][c]);
+              }
+          }
+      }
+
+      /// The works @p w of the automata kicked into @p work.
+      void
+      book(const Works &w, WorkSums &work) const
+      {
+        const double *const wp = w.wp, *const wl = w.wl, *const wd = w.wd;
+        work[pair_work]
+          += 0.25 * dt * ((wp[0] + wp[1] + wp[2]) + (wp[3] + wp[4] + wp[5]));
+        work[load_work] += 0.25 * dt * (wl[0] + wl[1] + wl[2]);
+        work[damped_work] += 0.25 * dt * (wd[0] + wd[1] + wd[2]);
+      }
+
+      const BoundaryLoads &loads;
+      AutomatonArrays     &automata;
+      const double         dt;
+      const bool           rotations, per_material, stale;
+      bool                 any_kinematic = false;
+      std::vector<Vec3>    kinematic, load, values;
+      std::vector<double>  a_of, b_of;
+    };
+
+
+    bool
+    BoundaryLoads::damping_stale() const
+    {
+      return damping_on
+             && (st.f_damp_rebuild != scalars.rebuild_count
+                 || st.f_damp.size() != automata.n_owned);
+    }
+
+
+    void
+    BoundaryLoads::half_kick(WorkSums &work)
+    {
+      HalfKick        kick(*this);
+      HalfKick::Works w;
+      for (unsigned int k = 0; k < automata.n_owned; ++k)
+        kick.kick(k, w);
+      kick.book(w, work);
+    }
+
+
+    KickDriftFigures
+    BoundaryLoads::kick_kick_drift(WorkSums &work, const double speed_limit)
+    {
+      // The steps of velocity Verlet as they come (step(),
+      // complete_step()): second half kick of step n at t_n, constraints
+      // at t_n, first half kick of step n+1 (f unchanged, at t_n),
+      // constraints at t_n + dt/2, drift. Each automaton goes through all
+      // of them at once, in one pass over its data instead of three; each
+      // kind of work keeps its own sums, added in the order of the steps,
+      // so that every number is that of the separate passes, bit for bit.
+      Assert(!damping_stale(), dealii::ExcInternalError());
+      const double     t = scalars.current_time, dt = scalars.dt;
+      HalfKick         second(*this), first(*this);
+      Constraints      at_step(*this, t), at_half(*this, t + 0.5 * dt);
+      HalfKick::Works  w2, w1;
+      KickDriftFigures figures;
+      const double     limit2 = speed_limit * speed_limit;
+      // (automata of one size: the half size of every one)
+      const double half_d    = 0.5 * scalars.d;
+      const bool   free      = prm.global_damping == 0;
+      const bool   rotations = scalars.rotations;
+      const auto   pass      = [&](auto with_u, auto graded) {
+        // (the sums local to the loop, so that they stay in registers: the
+        // automata's stores cannot change them)
+        HalfKick::Works s2, s1;
+        unsigned int    unstable = 0;
+        double          max_d2   = 0;
+        for (unsigned int k = 0; k < automata.n_owned; ++k)
+          {
+            // the health of step n's velocities (count_unstable_automata())
+            const auto health = [&]() {
+              const double half = decltype(graded)::value
+                                           ? 0.5 * scalars.automaton_size(automata, k)
+                                           : half_d;
+              const double s    = dot(automata.v[k], automata.v[k]);
+              const double r = dot(automata.w[k], automata.w[k]) * half * half;
+              unstable += !(s <= limit2 && r <= limit2);
+            };
+            if (free && automata.groups[k] == 0)
+              {
+                // (an automaton no group acts on: the common path of
+                // HalfKick::kick() twice, with the same factors, and no
+                // constraint)
+                const auto ab = second.factors(k);
+                Vec3      &v = automata.v[k], &w = automata.w[k];
+                const Vec3 f         = automata.f[k];
+                const auto free_kick = [&](HalfKick::Works &sums) {
+                  for (unsigned int c = 0; c < 3; ++c)
+                    {
+                      const double vb = v[c];
+                      v[c] += ab[0] * f[c];
+                      sums.wp[c] += f[c] * (vb + v[c]);
+                    }
+                  if (rotations)
                     for (unsigned int c = 0; c < 3; ++c)
-                      fl[c] += load[gi][c];
-              const unsigned int mask = constrained(k);
-              for (unsigned int c = 0; c < 3; ++c)
-                {
-                  automata.v[k][c] += a * automata.f[k][c];
-                  const bool   fixed = mask & (1u << c);
-                  const double vm
-                    = fixed ? 2 * vb[c] : vb[c] + automata.v[k][c];
-                  wp[c] += (automata.f[k][c] - fd[c] - fl[c]) * vm;
-                  wd[c] -= fd[c] * vm;
-                  wl[c] += fl[c] * vm;
-                  if (fixed)
-                    wl[c] += automata.f[k][c] * (automata.v[k][c] - vb[c]);
-                }
-            }
-          if (rotations)
-            {
-              const double b = ab[1];
-              for (unsigned int c = 0; c < 3; ++c)
-                {
-                  const double wb = automata.w[k][c];
-                  automata.w[k][c] += b * automata.torque[k][c];
-                  wp[3 + c] += automata.torque[k][c] * (wb + automata.w[k][c]);
-                }
-            }
-        }
-      work[pair_work]
-        += 0.25 * dt * ((wp[0] + wp[1] + wp[2]) + (wp[3] + wp[4] + wp[5]));
-      work[load_work] += 0.25 * dt * (wl[0] + wl[1] + wl[2]);
-      work[damped_work] += 0.25 * dt * (wd[0] + wd[1] + wd[2]);
+                      {
+                        const double wb = w[c], tc = automata.torque[k][c];
+                        w[c] += ab[1] * tc;
+                        sums.wp[3 + c] += tc * (wb + w[c]);
+                      }
+                };
+                free_kick(s2);
+                health();
+                free_kick(s1);
+              }
+            else
+              {
+                second.kick(k, s2);
+                if (at_step.active)
+                  at_step.apply(k);
+                health();
+                first.kick(k, s1);
+                if (at_half.active)
+                  at_half.apply(k);
+              }
+            // the drift (AutomatonSystem::step()) and the displacement
+            // since the last rebuild (displacement_since_rebuild())
+            Vec3   dx;
+            double d2 = 0;
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                dx[c] = dt * automata.v[k][c];
+                automata.x[k][c] += dx[c];
+                if constexpr (decltype(with_u)::value)
+                  automata.u[k][c] += dx[c];
+                const double e = automata.x[k][c] - automata.x_at_rebuild[k][c];
+                d2 += e * e;
+              }
+            max_d2 = std::max(max_d2, d2);
+            book_displacement(k, dx);
+          }
+        w2                        = s2;
+        w1                        = s1;
+        figures.unstable          = unstable;
+        figures.max_displacement2 = max_d2;
+      };
+      if (automata.u_stored)
+        scalars.graded ? pass(std::true_type(), std::true_type())
+                       : pass(std::true_type(), std::false_type());
+      else
+        scalars.graded ? pass(std::false_type(), std::true_type())
+                       : pass(std::false_type(), std::false_type());
+      second.book(w2, work);
+      at_step.book(work);
+      first.book(w1, work);
+      at_half.book(work);
+      return figures;
     }
 
 

@@ -1,5 +1,6 @@
 #include "scene_report.h"
 
+#include <algorithm>
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 #include <boost/serialization/string.hpp>
@@ -223,7 +224,13 @@ namespace tribodyn
             , timer(timer)
             , comm(comm)
             , cadence(cadence)
+            , every_step(std::any_of(postprocessors.begin(),
+                                     postprocessors.end(),
+                                     [](const auto &pp) {
+                                       return pp->reads_every_step();
+                                     }))
         {
+          system.defer_second_kicks(cadence.v_limit);
         }
 
         /// A fresh run's outputs and series row at t = 0.
@@ -252,21 +259,26 @@ namespace tribodyn
           return (index + 1) % cadence.series_every == 0;
         }
 
+        /// A step's second half kick waits for the next step
+        /// (AutomatonSystem::step()) unless something reads the automata
+        /// right after it: a sample, the run's end, a postprocessor at every
+        /// step. The other readers (checkpoints, the instability report)
+        /// complete the step first.
         void
-        advance(const LoopStep &) override
+        advance(const LoopStep &step) override
         {
-          system.step();
+          system.step(!(step.sample || step.last || every_step));
         }
 
+        /// The automata's speeds (each step's end once, the step after it
+        /// where its second half kick waited) and the displacement that
+        /// decides the next rebuild, agreed in one reduction.
         RunHealth
         agree_on_health(const LoopStep &) override
         {
           double          displacement2 = system.displacement_since_rebuild();
-          const RunHealth health
-            = tribodyn::agree_on_health(system.count_unstable_automata(
-                                          cadence.v_limit),
-                                        comm,
-                                        &displacement2);
+          const RunHealth health        = tribodyn::agree_on_health(
+            system.take_unstable_count(cadence.v_limit), comm, &displacement2);
           system.set_agreed_displacement_since_rebuild(displacement2);
           return health;
         }
@@ -274,6 +286,7 @@ namespace tribodyn
         [[noreturn]] void
         report_instability(const LoopStep &) override
         {
+          system.complete_step();
           system.report_instability(cadence.v_limit);
           throw RunError("The automata became unstable.");
         }
@@ -306,6 +319,7 @@ namespace tribodyn
         save_checkpoint() override
         {
           dealii::TimerOutput::Scope scope(timer, "checkpoint");
+          system.complete_step();
           series.flush(true);
           store.write(save_checkpoint_blob(system,
                                            postprocessors,
@@ -320,6 +334,7 @@ namespace tribodyn
         void
         stop_early() override
         {
+          system.complete_step();
           for (const auto &pp : postprocessors)
             pp->write_partial_results();
         }
@@ -375,7 +390,9 @@ namespace tribodyn
         dealii::TimerOutput       &timer;
         const MPI_Comm             comm;
         const Cadence              cadence;
-        std::string                key_figure;
+        /// A postprocessor reads the automata after every step.
+        const bool  every_step;
+        std::string key_figure;
       };
     } // namespace
 

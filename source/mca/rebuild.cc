@@ -81,6 +81,7 @@ namespace tribodyn
       for (unsigned int k = 0; k < n_owned; ++k)
         for (unsigned int c = 0; c < 3; ++c)
           x_at_rebuild[k][c] = static_cast<float>(x[k][c]);
+      known_displacement2 = -1;
       ++rebuild_count;
     }
 

@@ -300,7 +300,8 @@ namespace tribodyn
       auto &f_damp = loads_state.f_damp;
       f_damp.assign(loads.damping() ? n_owned : 0, Vec3{{0, 0, 0}});
       x_at_rebuild.resize(n_owned);
-      bool any_damp = false;
+      known_displacement2 = -1;
+      bool any_damp       = false;
       for (unsigned int k = 0; k < n_owned; ++k)
         {
           const auto it

@@ -48,15 +48,7 @@ namespace
     dealii::ParameterHandler handler;
     Parameters::declare_parameters(handler);
     std::ostringstream text;
-    text << std::setprecision(17) << "subsection Geometry\n"
-         << "set Automaton size = " << d << "\n"
-         << "set Domain lower = 0, 0, " << -2 * a << "\n"
-         << "set Domain upper = " << W << ", " << W << ", " << 12 * a << "\n"
-         << "set Periodic x = true\nset Periodic y = true\n"
-         << "set Bodies = 0 0 0 " << W << " " << W << " " << 8 * a << " steel\n"
-         << "subsection Rough interface\nset Enabled = true\n"
-         << "set Height = " << 4 * a << "\nset Amplitude = " << 1.5 * d
-         << "\nset Wavelength = " << W << "\nset Seed = 3\nend\nend\n"
+    text << std::setprecision(17) << rough_interface_geometry(d)
          << "subsection Interaction\nset Plasticity = false\n"
          << "set Friction coefficient = 0.3\nend\n"
          << "subsection Boundary conditions\nset Ramp time = 1e-10\nend\n"

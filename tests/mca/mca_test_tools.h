@@ -5,7 +5,10 @@
 
 #include <cmath>
 #include <deal.II/base/mpi.h>
+#include <iomanip>
 #include <map>
+#include <sstream>
+#include <string>
 #include <tribodyn/mca/automaton_system.h>
 #include <tribodyn/mca/parameters.h>
 
@@ -73,6 +76,28 @@ namespace tribodyn_test
     p.interaction.bond_formation.get<PlasticHeatBondFormation>().on = true;
     p.interaction.friction.get<Coulomb>().mu                        = mu;
     return p;
+  }
+
+  /// The 'Geometry' subsection of the staged friction scenes
+  /// (friction_loading.cc, deferred_kicks.cc): automata of size @p d, a box
+  /// of 4 x 4 FCC cells periodic in x and y, one steel body of 8 cells
+  /// high split by a rough interface at 4 cells (amplitude 1.5 d, one
+  /// wavelength over the box, seed 3), 2 cells of room below and 4 above.
+  inline std::string
+  rough_interface_geometry(const double d)
+  {
+    const double       a = d * std::sqrt(2.), W = 4 * a;
+    std::ostringstream text;
+    text << std::setprecision(17) << "subsection Geometry\n"
+         << "set Automaton size = " << d << "\n"
+         << "set Domain lower = 0, 0, " << -2 * a << "\n"
+         << "set Domain upper = " << W << ", " << W << ", " << 12 * a << "\n"
+         << "set Periodic x = true\nset Periodic y = true\n"
+         << "set Bodies = 0 0 0 " << W << " " << W << " " << 8 * a << " steel\n"
+         << "subsection Rough interface\nset Enabled = true\n"
+         << "set Height = " << 4 * a << "\nset Amplitude = " << 1.5 * d
+         << "\nset Wavelength = " << W << "\nset Seed = 3\nend\nend\n";
+    return text.str();
   }
 
   /// Hooke's stress (xx yy zz yz xz xy) for strain eps.

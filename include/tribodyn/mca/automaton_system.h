@@ -111,9 +111,39 @@ namespace tribodyn
         return n_steps_done;
       }
 
-      /// One velocity-Verlet step.
+      /**
+       * One velocity-Verlet step. With @p may_defer (and a speed limit
+       * given to defer_second_kicks()), the step may leave its second half
+       * kick and its constraints pending: the next step() gives them
+       * together with its own first half kick and drift, in one pass over
+       * the automata (BoundaryLoads::kick_kick_drift(): the same numbers,
+       * bit for bit). Until then the automata's velocities are those
+       * before that kick, and whoever reads the automata between the steps
+       * calls complete_step() first.
+       */
       void
-      step();
+      step(const bool may_defer = false);
+      /// Give the last step's pending second half kick, if any (step()):
+      /// the automata then hold the state at the step's end.
+      void
+      complete_step();
+      bool
+      step_complete() const
+      {
+        return !second_kick_pending;
+      }
+      /// Let step() defer its second half kicks; @p speed_limit (m/s): that
+      /// of count_unstable_automata(), which the deferred kicks apply to
+      /// the velocities at each step's end on their way.
+      void
+      defer_second_kicks(const double speed_limit);
+      /// The owned automata found unstable (count_unstable_automata() with
+      /// @p limit) since the last call: those the deferred kicks counted,
+      /// and those of the current state if its step is complete. Each
+      /// step's end is counted once, the step after it where its kick was
+      /// deferred.
+      unsigned int
+      take_unstable_count(const double limit);
 
       /// Squared largest displacement (m^2) of the owned automata since the
       /// last pair-list rebuild: local to the rank. step() rebuilds the

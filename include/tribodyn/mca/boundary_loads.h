@@ -15,6 +15,20 @@ namespace tribodyn
 {
   namespace mca
   {
+    /// What BoundaryLoads::kick_kick_drift() sees of the automata on its
+    /// way (owned automata of this rank).
+    struct KickDriftFigures
+    {
+      /// Automata whose velocity or rotation speed at the end of the step
+      /// (after its second half kick) is not finite or above the limit
+      /// (AutomatonSystem::count_unstable_automata()).
+      unsigned int unstable = 0;
+      /// Squared largest displacement since the last rebuild after the
+      /// drift (AutomatonSystem::displacement_since_rebuild()).
+      double max_displacement2 = 0;
+    };
+
+
     /**
      * The groups of 'Boundary conditions' acting on the automata:
      * kinematic constraints (fixed, prescribed velocity), loads (a force
@@ -112,6 +126,29 @@ namespace tribodyn
       /// energy they add or remove is load work.
       void
       apply_constraints(const double t, WorkSums &work);
+      /// Whether kick_kick_drift() may run: not right after a rebuild of a
+      /// scene with damping, whose damping forces half_kick() then
+      /// recomputes from each kick's velocities.
+      bool
+      may_kick_kick_drift() const
+      {
+        return !damping_stale();
+      }
+      /**
+       * The leapfrog form of velocity Verlet: the second half kick of the
+       * step just done and its constraints (at the system's time t), the
+       * first half kick of the next step (with the same forces) and its
+       * constraints (at t + dt/2), and that step's drift x += dt v (with
+       * the automata's displacements u where stored, and their groups'),
+       * in one pass over the automata: the same numbers as half_kick(),
+       * apply_constraints(), half_kick(), apply_constraints() and the drift
+       * one after the other, bit for bit, each automaton's data read once
+       * instead of three times. On its way it counts the automata whose
+       * speed at the end of the step exceeds @p speed_limit and measures
+       * the displacements since the last rebuild after the drift.
+       */
+      KickDriftFigures
+      kick_kick_drift(WorkSums &work, const double speed_limit);
       /// The groups' reactions (the pair forces f, summed per rank), then
       /// the loads and damping at time @p t added to f, which then holds
       /// the forces of the next kicks; a loading plate's automata share
@@ -149,6 +186,14 @@ namespace tribodyn
       }
 
     private:
+      /// A half kick and the constraints at one time, prepared once and
+      /// applied automaton by automaton (boundary_loads.cc).
+      struct HalfKick;
+      struct Constraints;
+      /// Is State::f_damp in another order than the automata's (a rebuild
+      /// since apply_forces())?
+      bool
+      damping_stale() const;
       /// The smooth (C1) ramp of velocities and forces at time @p t.
       double
       ramp(const double t) const;

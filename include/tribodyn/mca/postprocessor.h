@@ -81,6 +81,14 @@ namespace tribodyn
       after_step()
       {
       }
+      /// Whether after_step() reads the automata (their positions,
+      /// velocities): each step then ends with its second half kick
+      /// (AutomatonSystem::step()) rather than leave it to the next.
+      virtual bool
+      reads_every_step() const
+      {
+        return false;
+      }
 
       /// At each series sample: append one value per column to @p row.
       virtual void

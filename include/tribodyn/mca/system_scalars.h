@@ -44,7 +44,18 @@ namespace tribodyn
       unsigned long n_steps_done = 0;
       /// set_agreed_displacement_since_rebuild()'s value, for the next
       /// step only (negative: not given, step() reduces on its own)
-      double             agreed_displacement2 = -1;
+      double agreed_displacement2 = -1;
+      /// The displacement_since_rebuild() of the automata where their last
+      /// drift measured it on its way (BoundaryLoads::kick_kick_drift());
+      /// negative: not known, computed when asked.
+      double known_displacement2 = -1;
+      /// Velocity Verlet's second half kick of the last step is pending
+      /// (AutomatonSystem::step()); the speed limit its deferred kicks
+      /// check (negative: step() does not defer), and the automata they
+      /// found above it since the driver last asked.
+      bool               second_kick_pending  = false;
+      double             deferral_speed_limit = -1;
+      unsigned int       unstable_since_asked = 0;
       unsigned long long n_global             = 0;
       unsigned int       rebuild_count        = 0;
 

@@ -24,6 +24,12 @@ namespace tribodyn
         {
         }
 
+        bool
+        reads_every_step() const override
+        {
+          return true;
+        }
+
         /// The mean axial velocity of each probe layer, every step.
         void
         after_step() override
