@@ -498,24 +498,14 @@ namespace tribodyn
           // Drift (the pair kernel takes the increment as dt v again); the
           // automata's displacements where an output reads them, the
           // groups' as their automata move.
-          const auto drift = [&](auto with_u) {
+          const auto drift_all = [&](auto with_u) {
             for (unsigned int k = 0; k < n_owned; ++k)
-              {
-                Vec3 dx;
-                for (unsigned int c = 0; c < 3; ++c)
-                  {
-                    dx[c] = dt * v[k][c];
-                    x[k][c] += dx[c];
-                    if constexpr (decltype(with_u)::value)
-                      u[k][c] += dx[c];
-                  }
-                loads.book_displacement(k, dx);
-              }
+              loads.book_displacement(k, drift(k, dt, with_u));
           };
           if (u_stored)
-            drift(std::true_type());
+            drift_all(std::true_type());
           else
-            drift(std::false_type());
+            drift_all(std::false_type());
         }
       current_time = t + dt;
       evaluate_pairs(dt);
@@ -591,15 +581,7 @@ namespace tribodyn
         return known_displacement2;
       double max_disp2 = 0;
       for (unsigned int k = 0; k < n_owned; ++k)
-        {
-          double d2 = 0;
-          for (unsigned int c = 0; c < 3; ++c)
-            {
-              const double e = x[k][c] - x_at_rebuild[k][c];
-              d2 += e * e;
-            }
-          max_disp2 = std::max(max_disp2, d2);
-        }
+        max_disp2 = std::max(max_disp2, displacement2_since_rebuild(k));
       return max_disp2;
     }
 

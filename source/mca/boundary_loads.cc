@@ -427,12 +427,13 @@ namespace tribodyn
           {
             // the health of step n's velocities (count_unstable_automata())
             const auto health = [&]() {
-              const double half = decltype(graded)::value
-                                           ? 0.5 * scalars.automaton_size(automata, k)
-                                           : half_d;
-              const double s    = dot(automata.v[k], automata.v[k]);
-              const double r = dot(automata.w[k], automata.w[k]) * half * half;
-              unstable += !(s <= limit2 && r <= limit2);
+              unstable
+                += automata.too_fast(k,
+                                     limit2,
+                                     decltype(graded)::value
+                                              ? 0.5
+                                           * scalars.automaton_size(automata, k)
+                                              : half_d);
             };
             if (free && automata.groups[k] == 0)
               {
@@ -473,18 +474,8 @@ namespace tribodyn
               }
             // the drift (AutomatonSystem::step()) and the displacement
             // since the last rebuild (displacement_since_rebuild())
-            Vec3   dx;
-            double d2 = 0;
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                dx[c] = dt * automata.v[k][c];
-                automata.x[k][c] += dx[c];
-                if constexpr (decltype(with_u)::value)
-                  automata.u[k][c] += dx[c];
-                const double e = automata.x[k][c] - automata.x_at_rebuild[k][c];
-                d2 += e * e;
-              }
-            max_d2 = std::max(max_d2, d2);
+            const Vec3 dx = automata.drift(k, dt, with_u);
+            max_d2 = std::max(max_d2, automata.displacement2_since_rebuild(k));
             book_displacement(k, dx);
           }
         w2                        = s2;

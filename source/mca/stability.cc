@@ -103,12 +103,7 @@ namespace tribodyn
       const double limit2 = limit * limit;
       unsigned int n      = 0;
       for (unsigned int k = 0; k < n_owned; ++k)
-        {
-          const double half = 0.5 * automaton_size(k);
-          const double s    = dot(v[k], v[k]);
-          const double r    = dot(w[k], w[k]) * half * half;
-          n += !(s <= limit2 && r <= limit2);
-        }
+        n += too_fast(k, limit2, 0.5 * automaton_size(k));
       return n;
     }
 

@@ -271,6 +271,51 @@ namespace tribodyn
       {
         return torque;
       }
+
+      // ---- one automaton's share of a step's loops (AutomatonSystem::step(),
+      // BoundaryLoads::kick_kick_drift(), the health check), written once
+      /// The drift x += dt v of owned automaton @p k (and of its
+      /// displacement u where @p with_u, std::true_type or std::false_type);
+      /// returns the move dt v.
+      template <class WithU>
+      Vec3
+      drift(const unsigned int k, const double dt, WithU)
+      {
+        Vec3 dx;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            dx[c] = dt * v[k][c];
+            x[k][c] += dx[c];
+            if constexpr (WithU::value)
+              u[k][c] += dx[c];
+          }
+        return dx;
+      }
+      /// Squared displacement of owned automaton @p k since the last
+      /// pair-list rebuild.
+      double
+      displacement2_since_rebuild(const unsigned int k) const
+      {
+        double d2 = 0;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            const double e = x[k][c] - x_at_rebuild[k][c];
+            d2 += e * e;
+          }
+        return d2;
+      }
+      /// Is the velocity |v| or the surface speed |w| @p half of local
+      /// automaton @p k (@p half: half its size) above the speed whose
+      /// square is @p limit2, or not finite? (Written so that NaN counts.)
+      bool
+      too_fast(const unsigned int k,
+               const double       limit2,
+               const double       half) const
+      {
+        const double s = dot(v[k], v[k]);
+        const double r = dot(w[k], w[k]) * half * half;
+        return !(s <= limit2 && r <= limit2);
+      }
     };
   } // namespace mca
 } // namespace tribodyn
