@@ -26,7 +26,6 @@
 
 #include "mca_test_tools.h"
 
-#include <deal.II/base/parameter_handler.h>
 
 using namespace tribodyn_test;
 
@@ -37,8 +36,6 @@ namespace
   Parameters
   scene()
   {
-    dealii::ParameterHandler handler;
-    Parameters::declare_parameters(handler);
     std::ostringstream text;
     text << std::setprecision(17) << rough_interface_geometry(d)
          << "subsection Materials\nsubsection Steel\n"
@@ -52,10 +49,7 @@ namespace
          << "subsection Friction loading\nset Enabled = true\n"
          << "set Approach velocity = 20\nset Pressure = 300e6\n"
          << "set Sliding velocity = 40\nend\n";
-    handler.parse_input_from_string(text.str());
-    Parameters p;
-    p.parse_parameters(handler);
-    return p;
+    return parameters_from_text(text.str());
   }
 
   /// Are the first @p n three-vectors of @p x and @p y the same numbers,

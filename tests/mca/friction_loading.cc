@@ -34,7 +34,6 @@
 
 #include "mca_test_tools.h"
 
-#include <deal.II/base/parameter_handler.h>
 
 using namespace tribodyn_test;
 
@@ -45,8 +44,6 @@ namespace
   Parameters
   scene(const bool staged, const double delay = 0)
   {
-    dealii::ParameterHandler handler;
-    Parameters::declare_parameters(handler);
     std::ostringstream text;
     text << std::setprecision(17) << rough_interface_geometry(d)
          << "subsection Interaction\nset Plasticity = false\n"
@@ -57,10 +54,7 @@ namespace
          << "\nset Approach velocity = 5\nset Pressure = 300e6\n"
          << "set Sliding velocity = 10\nset Sliding delay = " << delay
          << "\nend\n";
-    handler.parse_input_from_string(text.str());
-    Parameters p;
-    p.parse_parameters(handler);
-    return p;
+    return parameters_from_text(text.str());
   }
 } // namespace
 

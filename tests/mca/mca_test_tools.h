@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 #include <iomanip>
 #include <map>
 #include <sstream>
@@ -98,6 +99,18 @@ namespace tribodyn_test
          << "set Height = " << 4 * a << "\nset Amplitude = " << 1.5 * d
          << "\nset Wavelength = " << W << "\nset Seed = 3\nend\nend\n";
     return text.str();
+  }
+
+  /// The parameters of prm text @p text (the rest at their defaults).
+  inline Parameters
+  parameters_from_text(const std::string &text)
+  {
+    dealii::ParameterHandler handler;
+    Parameters::declare_parameters(handler);
+    handler.parse_input_from_string(text);
+    Parameters p;
+    p.parse_parameters(handler);
+    return p;
   }
 
   /// Hooke's stress (xx yy zz yz xz xy) for strain eps.
