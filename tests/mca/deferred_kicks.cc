@@ -26,7 +26,6 @@
 
 #include "mca_test_tools.h"
 
-
 using namespace tribodyn_test;
 
 namespace
