@@ -181,12 +181,16 @@ namespace tribodyn
                     lines.push_back(
                       path + it.key() + " = "
                       + it.value()["default_value"].get<std::string>());
-                    const auto doc = it.value().find("documentation");
-                    if (doc != it.value().end() && doc->is_string()
-                        && doc->get<std::string>().find(
-                             ParameterBinding::analysis_only_tag)
-                             != std::string::npos)
+                    const auto doc    = it.value().find("documentation");
+                    const auto tagged = [&doc, &it](const char *tag) {
+                      return doc != it.value().end() && doc->is_string()
+                             && doc->get<std::string>().find(tag)
+                                  != std::string::npos;
+                    };
+                    if (tagged(ParameterBinding::analysis_only_tag))
                       r.analysis_only.push_back(path + it.key());
+                    if (tagged(ParameterBinding::layout_only_tag))
+                      r.layout_only.push_back(path + it.key());
                   }
                 else
                   walk(it.value(), path + it.key() + "/");
@@ -195,6 +199,7 @@ namespace tribodyn
     walk(nlohmann::json::parse(json.str()), "");
     r.defaults = comparable_lines(lines);
     std::sort(r.analysis_only.begin(), r.analysis_only.end());
+    std::sort(r.layout_only.begin(), r.layout_only.end());
     return r;
   }
 
@@ -243,6 +248,9 @@ namespace tribodyn
     for (const auto &s : b)
       if (!a.count(s))
         names.insert(s.substr(0, s.find(" = ")));
+    // (the work's layout: never a difference)
+    for (const std::string &name : layout_only)
+      names.erase(name);
     return {names.begin(), names.end()};
   }
 
@@ -540,7 +548,7 @@ namespace tribodyn
           + quoted_names(names)
           + ". A resumed run may change only 'End time' (to a larger value), "
             "the Checkpoint subsection and the entries marked 'Analysis "
-            "only'; set the others back, or start "
+            "only' or 'Layout only'; set the others back, or start "
             "afresh with 'Checkpoint/Resume = false'.");
       }
 

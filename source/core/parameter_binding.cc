@@ -227,6 +227,17 @@ namespace tribodyn
   }
 
 
+  ParameterBinding &
+  ParameterBinding::layout_only()
+  {
+    if (entries.empty())
+      throw std::logic_error("ParameterBinding::layout_only() before any "
+                             "entry was added.");
+    entries.back().documentation += layout_only_tag;
+    return *this;
+  }
+
+
   void
   ParameterBinding::declare(dealii::ParameterHandler &prm) const
   {

@@ -47,23 +47,27 @@ namespace tribodyn
             "graded scenes, whose cells weigh up to 64 times more than "
             "others. Results do not change. 0 = one search cell per mesh "
             "cell always.",
-            dealii::Patterns::Integer(0));
+            dealii::Patterns::Integer(0))
+        .layout_only();
       b.add("Automaton order",
             automaton_order,
             "The order in which each rank stores its automata, and with "
             "them their pairs (each pair listed once, by the automaton that "
-            "comes first): 'Morton curve' of the search cells, or 'slabs': "
-            "the cells row by row, layer by layer across the longest "
-            "direction without periodic faces (the longest of all where "
-            "every direction is periodic), so that the pairs of an "
-            "automaton's neighbours lie within about one layer of its own "
-            "in the pair list. Within a cell the automata go by id. The "
-            "order is global, the same on any partition; it sets the order "
-            "of the pair sums, so the two orders' results differ at "
-            "round-off, which the friction scenes amplify into different "
-            "trajectories of the same statistics (doc/performance.md, "
-            "\"The friction scene's step, tenth round\").",
-            automaton_order_table);
+            "comes first): 'slabs': the cells row by row, layer by layer "
+            "across the longest direction without periodic faces (the "
+            "longest of all where every direction is periodic), so that the "
+            "pairs of an automaton's neighbours lie within about one layer "
+            "of its own in the pair list; or 'Morton curve' of the search "
+            "cells (the default until 2026-12-07, slower on every scene "
+            "measured: doc/performance.md, \"The automata in slabs by "
+            "default\"). Within a cell the automata go by id. The order is "
+            "global, the same on any partition; it sets the order of the "
+            "pair sums, so the two orders' results differ at round-off, "
+            "which the friction scenes amplify into different trajectories "
+            "of the same statistics (five roughness seeds: "
+            "prm/study/mca_automaton_order.prm).",
+            automaton_order_table)
+        .layout_only();
       b.add("Pairs per chunk",
             pairs_per_chunk,
             "On a rank without neighbour ranks the pair kernel's passes run "
@@ -75,7 +79,8 @@ namespace tribodyn
             "this many. Results do not change, bit for bit. The 'slabs' "
             "order above keeps the passes a few chunks apart; along the "
             "curve they are far apart, most of the list.",
-            dealii::Patterns::Integer(1));
+            dealii::Patterns::Integer(1))
+        .layout_only();
       return b;
     }
 

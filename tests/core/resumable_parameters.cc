@@ -5,8 +5,10 @@
 // leaves that entry at its default, and not once it sets it otherwise; an
 // entry a stored run left at a default that this version changed is a
 // difference; numbers compare by value; the end time, the Checkpoint
-// subsection and the Output directory never count. The stored run is a
-// parameters.prm written here by hand, as an older version wrote it.
+// subsection and the Output directory never count, nor does an entry of
+// the work's layout (ParameterBinding::layout_only(): the automata's order)
+// whatever either run sets it to. The stored run is a parameters.prm
+// written here by hand, as an older version wrote it.
 #include "../test_utilities.h"
 
 #include <deal.II/base/mpi.h>
@@ -14,6 +16,7 @@
 #include <sstream>
 #include <string>
 #include <tribodyn/core/checkpoint.h>
+#include <tribodyn/core/parameter_binding.h>
 #include <vector>
 
 using namespace tribodyn;
@@ -21,10 +24,13 @@ using tribodyn_test::check;
 
 namespace
 {
-  /// A run's parameters: three entries of subsection Partition and the
-  /// end time; @p cells and @p speed set when not empty.
+  /// A run's parameters: three entries of subsection Partition (one of
+  /// the layout only) and the end time; @p cells, @p speed and @p order
+  /// set when not empty.
   ResumableParameters
-  run(const std::string &cells, const std::string &speed)
+  run(const std::string &cells,
+      const std::string &speed,
+      const std::string &order = "")
   {
     dealii::ParameterHandler prm;
     prm.declare_entry("Output directory", "out", dealii::Patterns::Anything());
@@ -33,6 +39,11 @@ namespace
                       "1000",
                       dealii::Patterns::Integer());
     prm.declare_entry("Ranks", "1", dealii::Patterns::Integer());
+    prm.declare_entry("Order",
+                      "slabs",
+                      dealii::Patterns::Anything(),
+                      std::string("The order.")
+                        + ParameterBinding::layout_only_tag);
     prm.leave_subsection();
     prm.enter_subsection("Time");
     prm.declare_entry("End time", "1e-9", dealii::Patterns::Double());
@@ -41,6 +52,8 @@ namespace
     prm.enter_subsection("Partition");
     if (!cells.empty())
       prm.set("Mesh cells per rank", cells);
+    if (!order.empty())
+      prm.set("Order", order);
     prm.leave_subsection();
     prm.enter_subsection("Time");
     if (!speed.empty())
@@ -124,6 +137,21 @@ main(int argc, char **argv)
           == std::vector<std::string>{"Partition/Gone"},
         "an entry this version does not declare: a difference ("
           + names(at_default.differing(removed)) + ")");
+
+  // The layout-only entry: a stored run at another value of it (its old
+  // default, written out) is the same run, for this run at its default
+  // and at a value of its own; a difference elsewhere still counts.
+  std::vector<std::string> other_order = older;
+  other_order.push_back("Partition/Order = Morton curve");
+  check(at_default.same_as(other_order)
+          && run("", "", "rows").same_as(other_order)
+          && at_default.differing_in_run(other_order).empty(),
+        "a stored run in another order: the same run (differing: "
+          + names(at_default.differing(other_order)) + ")");
+  check(faster.differing(other_order) == std::vector<std::string>{"Time/Speed"},
+        "in another order and at another speed: the runs differ in the "
+        "speed alone ("
+          + names(faster.differing(other_order)) + ")");
 
   return tribodyn_test::result();
 }

@@ -16,6 +16,7 @@ identical) for contact, 1e-12 relative for mca.
 Usage: restart_test.py TRIBODYN BASE.prm WORKDIR END_SECTION T TOLERANCE
        "LAUNCHER" FILE [FILE...] [--before-checkpoint KEY]
        [--resume-launcher "LAUNCHER2"] [--written-before-renames]
+       [--first-order ORDER]
 END_SECTION is the subsection holding 'End time' ('Time' in every
 engine); FILE are the CSV files to compare. With
 --before-checkpoint KEY, the first part's summary.json must have KEY > 0
@@ -27,6 +28,12 @@ have written it: its parameter lines in the old names (OLD_NAMES, the
 names tribodyn used up to commit 6969d3e), without the lines of entries
 added since at their defaults (ADDED_SINCE). The resumed run must accept it
 and still equal the uninterrupted run.
+
+With --first-order ORDER (mca), the first part stores its automata in
+ORDER (Partition/Automaton order, an entry of the work's layout only), A
+and the resumed part in the default order: the resumed part must take the
+checkpoint, and its values are judged as after a restart on another number
+of ranks (below), the pair sums having changed their order.
 
 With --resume-launcher (restart on another number of ranks, issue #21), A
 and the resumed part run with LAUNCHER2 (e.g. "mpirun -np 1") and the first
@@ -106,7 +113,7 @@ def write_old_names(latest_path):
     return changed
 
 
-def write_prm(path, base, out, section, end, interval, resume):
+def write_prm(path, base, out, section, end, interval, resume, order=None):
     with open(path, "w") as f:
         f.write(f"include {base}\n"
                 f"set Output directory = {out}\n"
@@ -114,6 +121,9 @@ def write_prm(path, base, out, section, end, interval, resume):
                 f"subsection {section}\n  set End time = {end!r}\nend\n"
                 f"subsection Checkpoint\n  set Interval = {interval!r}\n"
                 f"  set Resume = {'true' if resume else 'false'}\nend\n")
+        if order is not None:
+            f.write(f"subsection Partition\n  set Automaton order = {order}\n"
+                    "end\n")
 
 
 def run(launcher, tribodyn, prm, cwd):
@@ -253,6 +263,11 @@ def main():
         at = args.index("--resume-launcher")
         resume_launcher = args[at + 1]
         args = args[:at] + args[at + 2:]
+    first_order = None
+    if "--first-order" in args:
+        at = args.index("--first-order")
+        first_order = args[at + 1]
+        args = args[:at] + args[at + 2:]
     old_names = "--written-before-renames" in args
     if old_names:
         args.remove("--written-before-renames")
@@ -271,7 +286,7 @@ def main():
     write_prm(os.path.join(work, "a.prm"), base, a, section, 2 * t_end, 0,
               False)
     write_prm(os.path.join(work, "b1.prm"), base, b, section, t_end,
-              t_end / 2, False)
+              t_end / 2, False, first_order)
     write_prm(os.path.join(work, "b2.prm"), base, b, section, 2 * t_end,
               t_end / 2, True)
     run(resume_launcher or launcher, tribodyn, "a.prm", work)
@@ -303,16 +318,26 @@ def main():
         with open(os.path.join(other, name + ".tmp"), "wb") as f:
             f.write(b"partial")
     ranks_b1 = json.load(open(os.path.join(b, "summary.json")))["n_mpi_ranks"]
+    prm_b1 = open(os.path.join(b, "parameters.prm")).read()
     out = run(resume_launcher or launcher, tribodyn, "b2.prm", work)
     if "Resuming from the checkpoint" not in out:
         sys.exit("FAIL: the second part did not resume")
     errors = []
-    if resume_launcher:
+    if first_order is not None:
+        prm_b2 = open(os.path.join(b, "parameters.prm")).read()
+        orders = [re.search(r"set Automaton order += (.*)\n", t).group(1)
+                  for t in (prm_b1, prm_b2)]
+        print(f"first part in the order '{orders[0]}', resumed in "
+              f"'{orders[1]}'")
+        if orders[0] != first_order or orders[0] == orders[1]:
+            errors.append("the two parts did not run in the two orders")
+    if resume_launcher or first_order is not None:
         ranks_b2 = json.load(open(os.path.join(b, "summary.json")))["n_mpi_ranks"]
         line = [l for l in out.splitlines() if "Resuming" in l][0]
         print(f"first part on {ranks_b1} rank(s), resumed on {ranks_b2}: "
               f"{line.strip()}")
-        if ranks_b1 == ranks_b2 or "redistributed" not in line:
+        if resume_launcher and (ranks_b1 == ranks_b2
+                                or "redistributed" not in line):
             errors.append("the resumed part did not change the number of "
                           "ranks or did not redistribute the state")
         # n_rebalances counts the partitions of each part's own ranks
@@ -320,7 +345,8 @@ def main():
         global VECTOR_SCALE
         VECTOR_SCALE = True
     for name in files:
-        compare = compare_csv_scaled if resume_launcher else compare_csv
+        compare = (compare_csv_scaled if resume_launcher or first_order
+                   else compare_csv)
         errors += compare(name, os.path.join(a, name),
                           os.path.join(b, name), tolerance)
         last = open(os.path.join(b, name)).read().splitlines()[-1]

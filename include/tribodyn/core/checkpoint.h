@@ -63,10 +63,14 @@ namespace tribodyn
     /// The paths of the entries that only analyse the run's record
     /// (ParameterBinding::analysis_only(); sorted).
     std::vector<std::string> analysis_only;
+    /// The paths of the entries of the work's layout only
+    /// (ParameterBinding::layout_only(); sorted): never a difference.
+    std::vector<std::string> layout_only;
 
     /// The names of the entries in which the stored lines @p stored
     /// (resumable_parameter_lines() of a stored run, any version) differ
-    /// from this run's: empty for the same run.
+    /// from this run's, but for the layout-only ones: empty for the same
+    /// run.
     std::vector<std::string>
     differing(const std::vector<std::string> &stored) const;
 

@@ -163,6 +163,24 @@ namespace tribodyn
         "its finished scenes with the new value instead of running them "
         "again.]";
 
+    /**
+     * Mark the entry added last as one of how the work is laid out (the
+     * order of the automata, the chunks of the pair kernel's pipeline):
+     * like the number of MPI ranks, it changes a run's results at most
+     * at round-off. A run resumed from a checkpoint may change it, and a
+     * study reuses a finished scene run with another value as it is
+     * (resumable_parameters(), core/checkpoint.h). The mark is
+     * layout_only_tag at the end of the entry's documentation.
+     */
+    ParameterBinding &
+    layout_only();
+
+    /// What layout_only() appends to an entry's documentation.
+    static constexpr const char *layout_only_tag
+      = " [Layout only: results change at most at round-off, as on another "
+        "number of MPI ranks; a resumed run may change it, and a study "
+        "reuses its finished scenes run with another value.]";
+
     /// Declare the entries in @p prm (which is at the subsection `outer`).
     void
     declare(dealii::ParameterHandler &prm) const;

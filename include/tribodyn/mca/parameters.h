@@ -503,7 +503,7 @@ namespace tribodyn
         curve,
         slabs
       };
-      AutomatonOrder automaton_order = AutomatonOrder::curve;
+      AutomatonOrder automaton_order = AutomatonOrder::slabs;
       /// Pairs a chunk of the pair kernel's pipeline holds (about;
       /// PairList::chunk_for_pipeline()).
       unsigned int pairs_per_chunk = 2048;
