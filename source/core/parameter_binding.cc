@@ -217,24 +217,27 @@ namespace tribodyn
 
 
   ParameterBinding &
-  ParameterBinding::analysis_only()
+  ParameterBinding::mark_last(const char *tag, const char *mark)
   {
     if (entries.empty())
-      throw std::logic_error("ParameterBinding::analysis_only() before any "
-                             "entry was added.");
-    entries.back().documentation += analysis_only_tag;
+      throw std::logic_error("ParameterBinding::" + std::string(mark)
+                             + "() before any entry was added.");
+    entries.back().documentation += tag;
     return *this;
+  }
+
+
+  ParameterBinding &
+  ParameterBinding::analysis_only()
+  {
+    return mark_last(analysis_only_tag, "analysis_only");
   }
 
 
   ParameterBinding &
   ParameterBinding::layout_only()
   {
-    if (entries.empty())
-      throw std::logic_error("ParameterBinding::layout_only() before any "
-                             "entry was added.");
-    entries.back().documentation += layout_only_tag;
-    return *this;
+    return mark_last(layout_only_tag, "layout_only");
   }
 
 

@@ -195,6 +195,11 @@ namespace tribodyn
     path(const std::string &name) const;
 
   private:
+    /// Append @p tag to the documentation of the entry added last (the
+    /// marks above; @p mark names the one asked for in the error).
+    ParameterBinding &
+    mark_last(const char *tag, const char *mark);
+
     struct Entry
     {
       std::string                                     name;
