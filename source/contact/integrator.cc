@@ -25,6 +25,7 @@
 #include <tribodyn/contact/spectrum.h>
 #include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/interruption.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/plugin_states.h>
 #include <tribodyn/core/time_loop.h>

@@ -24,7 +24,6 @@
 #include <tribodyn/contact/contact_solver.h>
 #include <tribodyn/contact/element_kernels.h>
 #include <tribodyn/contact/spectrum.h>
-#include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/progress.h>

@@ -6,9 +6,9 @@
 #include <iostream>
 #include <sstream>
 #include <tribodyn/core/application.h>
-#include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/global_parameters.h>
+#include <tribodyn/core/interruption.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/output_directory.h>
 #include <tribodyn/core/parameter_file.h>

@@ -1,11 +1,10 @@
 // Checkpoint storage (two slots and an atomically replaced pointer file),
-// the Checkpoint parameters, CSV truncation for resumed runs, and the
-// SIGTERM/SIGINT handling of long runs (doc/user_guide.md, "Checkpoints").
+// the Checkpoint parameters and CSV truncation for resumed runs
+// (doc/user_guide.md, "Checkpoints").
 #include <algorithm>
 #include <boost/archive/binary_iarchive.hpp>
 #include <cerrno>
 #include <cmath>
-#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -13,14 +12,11 @@
 #include <fstream>
 #include <functional>
 #include <iomanip>
-#include <nlohmann/json.hpp>
-#include <set>
 #include <sstream>
 #include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/output_directory.h>
-#include <tribodyn/core/parameter_renames.h>
 #include <unistd.h>
 
 namespace tribodyn
@@ -67,191 +63,6 @@ namespace tribodyn
                     b.path("Interval"),
                     "must be a finite time >= 0 (s); got "
                       + format_number(interval) + ".");
-  }
-
-
-  namespace
-  {
-    /// Parameter lines as a run of any version compares them: renamed
-    /// entries in their current names (with_current_names()), a value that
-    /// is one number in one spelling ("0.5e6" and "5e5", as defaults were
-    /// written before and after they came from the parameter structs),
-    /// sorted.
-    std::vector<std::string>
-    comparable_lines(const std::vector<std::string> &lines)
-    {
-      std::vector<std::string> out;
-      for (std::string line : with_current_names(lines))
-        {
-          const auto eq = line.find(" = ");
-          if (eq != std::string::npos)
-            {
-              const std::string value = line.substr(eq + 3);
-              try
-                {
-                  std::size_t  used = 0;
-                  const double x    = std::stod(value, &used);
-                  if (used == value.size())
-                    {
-                      line = line.substr(0, eq + 3) + exact_number(x);
-                    }
-                }
-              catch (const std::exception &)
-                {
-                  // not a number: compared as written
-                }
-            }
-          out.push_back(line);
-        }
-      std::sort(out.begin(), out.end());
-      return out;
-    }
-  } // namespace
-
-
-  std::vector<std::string>
-  resumable_parameter_lines(std::istream      &short_prm,
-                            const std::string &end_time_entry,
-                            double            *end_time)
-  {
-    std::vector<std::string> sections, lines;
-    std::string              line;
-    auto                     trim = [](const std::string &s) {
-      const auto b = s.find_first_not_of(" \t");
-      const auto e = s.find_last_not_of(" \t\r");
-      return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
-    };
-    while (std::getline(short_prm, line))
-      {
-        line = trim(line);
-        if (line.rfind("subsection ", 0) == 0)
-          sections.push_back(trim(line.substr(11)));
-        else if (line == "end" && !sections.empty())
-          sections.pop_back();
-        else if (line.rfind("set ", 0) == 0)
-          {
-            const auto  eq = line.find('=');
-            std::string path;
-            for (const auto &s : sections)
-              path += s + "/";
-            path += trim(line.substr(4, eq - 4));
-            lines.push_back(path + " = "
-                            + (eq == std::string::npos
-                                 ? std::string()
-                                 : trim(line.substr(eq + 1))));
-          }
-      }
-    // a run written before a rename reads as one of the current names
-    std::vector<std::string> kept;
-    for (const std::string &l : comparable_lines(lines))
-      {
-        const std::string path = l.substr(0, l.find(" = "));
-        if (path == end_time_entry && end_time != nullptr)
-          *end_time = std::stod(l.substr(l.find(" = ") + 3));
-        if (path == end_time_entry || path == "Progress interval"
-            || path == "Output directory" || path.rfind("Checkpoint/", 0) == 0)
-          continue;
-        kept.push_back(l);
-      }
-    return kept;
-  }
-
-
-  ResumableParameters
-  resumable_parameters(dealii::ParameterHandler &prm,
-                       const std::string        &end_time_entry)
-  {
-    ResumableParameters r;
-    std::ostringstream  text;
-    prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
-    std::istringstream short_prm(text.str());
-    r.lines = resumable_parameter_lines(short_prm, end_time_entry);
-    // Every entry's default, from deal.II's JSON description of the
-    // declared tree (an entry is an object with a "default_value").
-    std::ostringstream json;
-    prm.print_parameters(json, dealii::ParameterHandler::JSON);
-    std::vector<std::string>                                       lines;
-    const std::function<void(const nlohmann::json &, std::string)> walk
-      = [&](const nlohmann::json &node, const std::string &path) {
-          for (auto it = node.begin(); it != node.end(); ++it)
-            if (it.value().is_object())
-              {
-                if (it.value().contains("default_value"))
-                  {
-                    lines.push_back(
-                      path + it.key() + " = "
-                      + it.value()["default_value"].get<std::string>());
-                    const auto doc    = it.value().find("documentation");
-                    const auto tagged = [&doc, &it](const char *tag) {
-                      return doc != it.value().end() && doc->is_string()
-                             && doc->get<std::string>().find(tag)
-                                  != std::string::npos;
-                    };
-                    if (tagged(ParameterBinding::analysis_only_tag))
-                      r.analysis_only.push_back(path + it.key());
-                    if (tagged(ParameterBinding::layout_only_tag))
-                      r.layout_only.push_back(path + it.key());
-                  }
-                else
-                  walk(it.value(), path + it.key() + "/");
-              }
-        };
-    walk(nlohmann::json::parse(json.str()), "");
-    r.defaults = comparable_lines(lines);
-    std::sort(r.analysis_only.begin(), r.analysis_only.end());
-    std::sort(r.layout_only.begin(), r.layout_only.end());
-    return r;
-  }
-
-
-  std::string
-  quoted_names(const std::vector<std::string> &names)
-  {
-    std::string list;
-    for (const std::string &name : names)
-      list += (list.empty() ? "'" : ", '") + name + "'";
-    return list;
-  }
-
-
-  std::vector<std::string>
-  ResumableParameters::differing_in_run(
-    const std::vector<std::string> &stored) const
-  {
-    std::vector<std::string> names;
-    for (const std::string &name : differing(stored))
-      if (!std::binary_search(analysis_only.begin(), analysis_only.end(), name))
-        names.push_back(name);
-    return names;
-  }
-
-
-  std::vector<std::string>
-  ResumableParameters::differing(const std::vector<std::string> &stored) const
-  {
-    // Both sides without the lines that say "this entry is at its
-    // default": what remains is each run's choices (the stored lines in
-    // today's names and spellings first; this run's are already).
-    const auto choices = [this](const std::vector<std::string> &comparable) {
-      std::set<std::string> kept;
-      for (const std::string &l : comparable)
-        if (!std::binary_search(defaults.begin(), defaults.end(), l))
-          kept.insert(l);
-      return kept;
-    };
-    const std::set<std::string> a = choices(comparable_lines(stored)),
-                                b = choices(lines);
-    std::set<std::string> names;
-    for (const auto &s : a)
-      if (!b.count(s))
-        names.insert(s.substr(0, s.find(" = ")));
-    for (const auto &s : b)
-      if (!a.count(s))
-        names.insert(s.substr(0, s.find(" = ")));
-    // (the work's layout: never a difference)
-    for (const std::string &name : layout_only)
-      names.erase(name);
-    return {names.begin(), names.end()};
   }
 
 
@@ -476,8 +287,6 @@ namespace tribodyn
           else if (line.rfind("ranks = ", 0) == 0)
             info.n_ranks = std::stoul(line.substr(8));
         }
-      // a checkpoint written before a rename: its lines in today's names
-      info.parameters = comparable_lines(info.parameters);
       return info;
     }
   } // namespace
@@ -645,108 +454,5 @@ namespace tribodyn
                        + " (was the file changed?). Start afresh with "
                          "'Checkpoint/Resume = false'.");
     return text;
-  }
-
-
-  // ---- interruptions
-
-  namespace
-  {
-    volatile std::sig_atomic_t received_signal = 0;
-
-    void
-    record_signal(int signal_number)
-    {
-      // A second signal stops at once (no checkpoint): the usual
-      // "press Ctrl-C twice".
-      if (received_signal != 0)
-        {
-          std::signal(signal_number, SIG_DFL);
-          std::raise(signal_number);
-          return;
-        }
-      received_signal = signal_number;
-    }
-  } // namespace
-
-
-  namespace
-  {
-    bool acknowledged = false;
-    /// Handlers alive: a study installs them around its scenes, each
-    /// scene's time loop inside; a signal the outer ones recorded (between
-    /// two scenes, during a scene's set-up) is not forgotten by the inner.
-    unsigned int handler_depth = 0;
-  } // namespace
-
-
-  InterruptHandlers::InterruptHandlers()
-  {
-    if (handler_depth++ == 0)
-      {
-        received_signal = 0;
-        acknowledged    = false;
-      }
-    struct sigaction action;
-    std::memset(&action, 0, sizeof(action));
-    action.sa_handler = record_signal;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESTART;
-    sigaction(SIGTERM, &action, &previous_term);
-    sigaction(SIGINT, &action, &previous_int);
-  }
-
-
-  InterruptHandlers::~InterruptHandlers()
-  {
-    sigaction(SIGTERM, &previous_term, nullptr);
-    sigaction(SIGINT, &previous_int, nullptr);
-    if (--handler_depth > 0)
-      return; // the outer handlers act on a pending signal
-    const int pending = received_signal;
-    received_signal   = 0;
-    if (pending != 0 && !acknowledged)
-      std::raise(pending);
-  }
-
-
-  void
-  InterruptHandlers::acknowledge()
-  {
-    acknowledged = true;
-  }
-
-
-  int
-  local_interrupt_signal()
-  {
-    return received_signal;
-  }
-
-
-  Interrupted::Interrupted(const int signal, const std::string &message)
-      : std::runtime_error(message)
-      , signal_number(signal)
-  {
-  }
-
-
-  RunHealth
-  agree_on_health(const double   local_badness,
-                  const MPI_Comm comm,
-                  double        *shared_max)
-  {
-    double values[3] = {local_badness >= 0 ? local_badness : 1e300,
-                        static_cast<double>(received_signal),
-                        shared_max ? *shared_max : 0.};
-    if (dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
-      MPI_Allreduce(
-        MPI_IN_PLACE, values, shared_max ? 3 : 2, MPI_DOUBLE, MPI_MAX, comm);
-    RunHealth h;
-    h.badness = values[0];
-    h.signal  = static_cast<int>(values[1]);
-    if (shared_max)
-      *shared_max = values[2];
-    return h;
   }
 } // namespace tribodyn

@@ -15,6 +15,7 @@
 #include <sstream>
 #include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/interruption.h>
 #include <tribodyn/core/json.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/plugin_states.h>

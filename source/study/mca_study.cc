@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/errors.h>
+#include <tribodyn/core/interruption.h>
 #include <tribodyn/core/output.h>
 #include <tribodyn/core/parameter_file.h>
 #include <tribodyn/core/version.h>

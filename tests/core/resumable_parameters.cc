@@ -15,8 +15,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <sstream>
 #include <string>
-#include <tribodyn/core/checkpoint.h>
 #include <tribodyn/core/parameter_binding.h>
+#include <tribodyn/core/resumable_parameters.h>
 #include <vector>
 
 using namespace tribodyn;

@@ -150,7 +150,7 @@ namespace tribodyn
      * after the fact (a smoothing window, a band test): changing it changes
      * no step of the run. A run resumed from a checkpoint may change it,
      * and a study re-analyses a finished scene instead of running it again
-     * (resumable_parameters(), core/checkpoint.h). The mark is
+     * (resumable_parameters(), core/resumable_parameters.h). The mark is
      * analysis_only_tag at the end of the entry's documentation, so the
      * declared tree carries it and the parameter reference shows it.
      */
@@ -169,7 +169,7 @@ namespace tribodyn
      * like the number of MPI ranks, it changes a run's results at most
      * at round-off. A run resumed from a checkpoint may change it, and a
      * study reuses a finished scene run with another value as it is
-     * (resumable_parameters(), core/checkpoint.h). The mark is
+     * (resumable_parameters(), core/resumable_parameters.h). The mark is
      * layout_only_tag at the end of the entry's documentation.
      */
     ParameterBinding &

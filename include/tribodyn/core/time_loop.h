@@ -11,7 +11,7 @@
 #include <deal.II/base/timer.h>
 #include <ostream>
 #include <string>
-#include <tribodyn/core/checkpoint.h>
+#include <tribodyn/core/interruption.h>
 
 namespace tribodyn
 {
