@@ -13,6 +13,7 @@
 #include "pair_events.h"
 #include "pair_geometry.h"
 #include "pair_geometry_choice.h"
+#include "pair_kinematics.h"
 #include "pair_stress.h"
 
 #include <algorithm>
@@ -349,42 +350,24 @@ namespace tribodyn
           for (unsigned int b = 0; b < nb; ++b)
             {
               const double xn = b_dnew[0][b], yn = b_dnew[1][b],
-                           zn = b_dnew[2][b];
-              const double xo = xn - b_du[0][b], yo = yn - b_du[1][b],
-                           zo    = zn - b_du[2][b];
-              const double r     = std::sqrt(xn * xn + yn * yn + zn * zn);
-              const double ro    = std::sqrt(xo * xo + yo * yo + zo * zo);
-              const double inv_r = 1. / r, inv_ro = 1. / ro;
-              // mid-step normal n + n_old, normalized below
-              const double mx = xn * inv_r + xo * inv_ro,
-                           my = yn * inv_r + yo * inv_ro,
-                           mz = zn * inv_r + zo * inv_ro;
-              b_r[b]          = r;
-              b_ro[b]         = ro;
-              b_inv_r[b]      = inv_r;
-              b_inv_ro[b]     = inv_ro;
-              b_inv_nm[b]     = 1. / std::sqrt(mx * mx + my * my + mz * mz);
-              // r - ro without cancellation: (dnew - dold).(dnew + dold)
-              // / (r + ro)
-              b_dr[b] = ((xn - xo) * (xn + xo) + (yn - yo) * (yn + yo)
-                         + (zn - zo) * (zn + zo))
-                        / (r + ro);
-              // the stored shear stress rotated into the new tangent
-              // plane, keeping its magnitude (both sides are multiples of
-              // it); a stress (nearly) along the new normal is dropped
-              const double tx = tau.component[0][p0 + b],
-                           ty = tau.component[1][p0 + b],
-                           tz = tau.component[2][p0 + b];
-              const double t2 = tx * tx + ty * ty + tz * tz;
-              const double tn = (tx * xn + ty * yn + tz * zn) * inv_r;
-              const double px = tx - tn * xn * inv_r, py = ty - tn * yn * inv_r,
-                           pz = tz - tn * zn * inv_r;
-              const double p2 = px * px + py * py + pz * pz;
-              const double s
-                = p2 > 1e-12 * t2 ? std::sqrt(t2 / std::max(p2, 1e-300)) : 0.;
-              b_t[0][b] = px * s;
-              b_t[1][b] = py * s;
-              b_t[2][b] = pz * s;
+                           zn          = b_dnew[2][b];
+              const PairStepGeometry g = pair_step_geometry(
+                xn, yn, zn, b_du[0][b], b_du[1][b], b_du[2][b]);
+              b_r[b]       = g.r;
+              b_ro[b]      = g.ro;
+              b_inv_r[b]   = g.inv_r;
+              b_inv_ro[b]  = g.inv_ro;
+              b_inv_nm[b]  = g.inv_nm;
+              b_dr[b]      = g.dr;
+              const Vec3 t = turned_shear(tau.component[0][p0 + b],
+                                          tau.component[1][p0 + b],
+                                          tau.component[2][p0 + b],
+                                          xn,
+                                          yn,
+                                          zn,
+                                          g.inv_r);
+              for (unsigned int c = 0; c < 3; ++c)
+                b_t[c][b] = t[c];
             }
           // Kernels with rotations: the normals n and n_old of the step
           // (the moment law turns with them), each rounded on its own, and
@@ -522,34 +505,11 @@ namespace tribodyn
               if constexpr (Moment::active)
                 moment.store_trial(p, b, b_K);
 
-              // Tangential: relative displacement of the contact points.
-              if constexpr (rot)
-                {
-                  Vec3 th;
-                  for (unsigned int c = 0; c < 3; ++c)
-                    th[c] = step_dt * (qi * b_wi[c][b] + qj * b_wj[c][b]);
-                  const Vec3 rc = cross(th, nm);
-                  for (unsigned int c = 0; c < 3; ++c)
-                    du[c] -= rc[c];
-                  // graded: the contact point is the face centroid, e off
-                  // the line of centres; it moves by (theta_j - theta_i) x
-                  // e more, its normal part too (the work of the torques
-                  // e x F below)
-                  if constexpr (Pairs::offsets)
-                    {
-                      const Vec3 e = geometry.offset(p);
-                      Vec3       dw;
-                      for (unsigned int c = 0; c < 3; ++c)
-                        dw[c] = step_dt * (b_wj[c][b] - b_wi[c][b]);
-                      const Vec3 re = cross(dw, e);
-                      for (unsigned int c = 0; c < 3; ++c)
-                        du[c] += re[c];
-                      dr_p += dot(re, nm);
-                    }
-                }
-              const double dun = dot(du, nm);
-              for (unsigned int c = 0; c < 3; ++c)
-                du[c] -= dun * nm[c];
+              // Tangential: relative displacement of the contact points
+              // (graded: the contact point is the face centroid, off the
+              // line of centres; the work of the torques e x F below).
+              contact_point_slip<rot>(
+                du, dr_p, nm, qi, qj, b_wi, b_wj, b, step_dt, geometry, p);
               // a rate-dependent friction law: the contact's state over
               // the step at its slip rate, the relative tangential speed
               // of the contact points

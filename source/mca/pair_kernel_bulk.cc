@@ -26,6 +26,7 @@
 
 #include "pair_blocks.h"
 #include "pair_geometry_choice.h"
+#include "pair_kinematics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -217,29 +218,15 @@ namespace tribodyn
             {
               const unsigned int p  = p0 + b;
               const double       xn = b_dnew[0][b], yn = b_dnew[1][b],
-                           zn = b_dnew[2][b];
-              const double xo = xn - b_du[0][b], yo = yn - b_du[1][b],
-                           zo    = zn - b_du[2][b];
-              const double r     = std::sqrt(xn * xn + yn * yn + zn * zn);
-              const double ro    = std::sqrt(xo * xo + yo * yo + zo * zo);
-              const double inv_r = 1. / r, inv_ro = 1. / ro;
-              const double mx     = xn * inv_r + xo * inv_ro,
-                           my     = yn * inv_r + yo * inv_ro,
-                           mz     = zn * inv_r + zo * inv_ro;
-              const double inv_nm = 1. / std::sqrt(mx * mx + my * my + mz * mz);
-              double       dr_p = ((xn - xo) * (xn + xo) + (yn - yo) * (yn + yo)
-                             + (zn - zo) * (zn + zo))
-                            / (r + ro);
-              const double tx = b_t[0][b], ty = b_t[1][b], tz = b_t[2][b];
-              const double t2 = tx * tx + ty * ty + tz * tz;
-              const double tn = (tx * xn + ty * yn + tz * zn) * inv_r;
-              const double px = tx - tn * xn * inv_r, py = ty - tn * yn * inv_r,
-                           pz = tz - tn * zn * inv_r;
-              const double p2 = px * px + py * py + pz * pz;
-              const double s
-                = p2 > 1e-12 * t2 ? std::sqrt(t2 / std::max(p2, 1e-300)) : 0.;
-              const Vec3 t{{px * s, py * s, pz * s}};
-              Vec3       n, nm, du;
+                           zn          = b_dnew[2][b];
+              const PairStepGeometry g = pair_step_geometry(
+                xn, yn, zn, b_du[0][b], b_du[1][b], b_du[2][b]);
+              const double r = g.r, ro = g.ro, inv_r = g.inv_r,
+                           inv_ro = g.inv_ro, inv_nm = g.inv_nm;
+              double     dr_p = g.dr;
+              const Vec3 t    = turned_shear(
+                b_t[0][b], b_t[1][b], b_t[2][b], xn, yn, zn, inv_r);
+              Vec3 n, nm, du;
               for (unsigned int c = 0; c < 3; ++c)
                 {
                   du[c] = b_du[c][b];
@@ -263,29 +250,8 @@ namespace tribodyn
                 }
               // equally stiff halves: the moment arms are r/2
               const double qi = 0.5 * ro, qj = ro - qi;
-              if constexpr (rot)
-                {
-                  Vec3 th;
-                  for (unsigned int c = 0; c < 3; ++c)
-                    th[c] = step_dt * (qi * b_wi[c][b] + qj * b_wj[c][b]);
-                  const Vec3 rc = cross(th, nm);
-                  for (unsigned int c = 0; c < 3; ++c)
-                    du[c] -= rc[c];
-                  if constexpr (Pairs::offsets)
-                    {
-                      const Vec3 e = geometry.offset(p);
-                      Vec3       dwe;
-                      for (unsigned int c = 0; c < 3; ++c)
-                        dwe[c] = step_dt * (b_wj[c][b] - b_wi[c][b]);
-                      const Vec3 re = cross(dwe, e);
-                      for (unsigned int c = 0; c < 3; ++c)
-                        du[c] += re[c];
-                      dr_p += dot(re, nm);
-                    }
-                }
-              const double dun = dot(du, nm);
-              for (unsigned int c = 0; c < 3; ++c)
-                du[c] -= dun * nm[c];
+              contact_point_slip<rot>(
+                du, dr_p, nm, qi, qj, b_wi, b_wj, b, step_dt, geometry, p);
               // series springs, both shear factors 1
               const double ki = b_k[0][b], kj = b_k[1][b], inv = b_k[2][b];
               const double mix = kj * 1. + ki * 1.;
