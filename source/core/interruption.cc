@@ -22,11 +22,7 @@ namespace tribodyn
         }
       received_signal = signal_number;
     }
-  } // namespace
 
-
-  namespace
-  {
     bool acknowledged = false;
     /// Handlers alive: a study installs them around its scenes, each
     /// scene's time loop inside; a signal the outer ones recorded (between

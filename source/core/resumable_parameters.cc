@@ -1,6 +1,7 @@
 // What identifies a run for a resume or a reuse: the comparable lines of
 // its parameters and the entries that may differ (resumable_parameters.h).
 #include <algorithm>
+#include <deal.II/base/utilities.h>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -56,13 +57,9 @@ namespace tribodyn
                             const std::string &end_time_entry,
                             double            *end_time)
   {
+    using dealii::Utilities::trim;
     std::vector<std::string> sections, lines;
     std::string              line;
-    auto                     trim = [](const std::string &s) {
-      const auto b = s.find_first_not_of(" \t");
-      const auto e = s.find_last_not_of(" \t\r");
-      return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
-    };
     while (std::getline(short_prm, line))
       {
         line = trim(line);
