@@ -199,6 +199,12 @@ def main():
                         help="also the friction scene prm/mca/two_body_friction.prm")
     args = parser.parse_args()
     args.tribodyn = os.path.abspath(args.tribodyn)
+    # A copied build (tribodyn and libtribodyn.so in one directory) runs
+    # with the library beside it, not with the one its RUNPATH names (the
+    # build tree it was linked in), as in bench/alternating_prms.py.
+    env["LD_LIBRARY_PATH"] = os.pathsep.join(
+        [os.path.dirname(args.tribodyn)]
+        + ([env["LD_LIBRARY_PATH"]] if env.get("LD_LIBRARY_PATH") else []))
     args.work = os.path.abspath(args.work)
     os.makedirs(args.work, exist_ok=True)
     print("load average before:", open("/proc/loadavg").read().split()[:3])
